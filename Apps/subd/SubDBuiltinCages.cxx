@@ -1,0 +1,95 @@
+#include "SubDBuiltinCages.h"
+
+#include "vtkCellArray.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <cmath>
+
+namespace subdapp
+{
+namespace
+{
+vtkSmartPointer<vtkPolyData> MakePolyData(
+  const std::vector<double>& xyz, const std::vector<std::vector<vtkIdType>>& faces)
+{
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataType(VTK_DOUBLE);
+  for (size_t i = 0; i + 2 < xyz.size(); i += 3)
+  {
+    points->InsertNextPoint(xyz[i], xyz[i + 1], xyz[i + 2]);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (const auto& face : faces)
+  {
+    polys->InsertNextCell(static_cast<vtkIdType>(face.size()), face.data());
+  }
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+
+// The unit cube: every vertex has valence 3, the classic Catmull-Clark test.
+vtkSmartPointer<vtkPolyData> Cube()
+{
+  return MakePolyData({ 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1 },
+    { { 0, 3, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 }, { 3, 0, 4, 7 } });
+}
+
+// A square pyramid: a quad base and four triangles, an apex of valence 4 and base vertices
+// of valence 3 -- mixed face sizes.
+vtkSmartPointer<vtkPolyData> Pyramid()
+{
+  return MakePolyData({ -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0, 0, 0, 1.5 },
+    { { 0, 3, 2, 1 }, { 0, 1, 4 }, { 1, 2, 4 }, { 2, 3, 4 }, { 3, 0, 4 } });
+}
+
+// An open 4x4 grid of quads, gently curved: boundary edges and corners.
+vtkSmartPointer<vtkPolyData> OpenGrid()
+{
+  std::vector<double> xyz;
+  const int n = 5;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double x = i - 2.0, y = j - 2.0;
+      xyz.insert(xyz.end(), { x, y, 0.15 * (x * x - y * y) });
+    }
+  }
+  std::vector<std::vector<vtkIdType>> faces;
+  for (int j = 0; j + 1 < n; ++j)
+  {
+    for (int i = 0; i + 1 < n; ++i)
+    {
+      const vtkIdType a = j * n + i;
+      faces.push_back({ a, a + 1, a + n + 1, a + n });
+    }
+  }
+  return MakePolyData(xyz, faces);
+}
+}
+
+std::vector<std::string> BuiltinCageNames()
+{
+  return { "cube", "pyramid", "open-grid" };
+}
+
+vtkSmartPointer<vtkPolyData> MakeBuiltinCage(const std::string& name)
+{
+  if (name == "cube")
+  {
+    return Cube();
+  }
+  if (name == "pyramid")
+  {
+    return Pyramid();
+  }
+  if (name == "open-grid")
+  {
+    return OpenGrid();
+  }
+  return nullptr;
+}
+}

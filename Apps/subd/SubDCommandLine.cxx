@@ -1,0 +1,214 @@
+#include "SubDCommandLine.h"
+#include "SubDBuiltinCages.h"
+#include "SubDMeshIO.h"
+
+#include <cstdlib>
+#include <sstream>
+
+namespace subdapp
+{
+namespace
+{
+bool ParseInt(const std::string& text, int& value)
+{
+  char* end = nullptr;
+  const long v = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || v < -1000000 || v > 1000000)
+  {
+    return false;
+  }
+  value = static_cast<int>(v);
+  return true;
+}
+
+bool ParseBoundary(const std::string& text, int& rule)
+{
+  if (text == "none")
+  {
+    rule = 0;
+  }
+  else if (text == "edge-only")
+  {
+    rule = 1;
+  }
+  else if (text == "edge-and-corner")
+  {
+    rule = 2;
+  }
+  else
+  {
+    return false;
+  }
+  return true;
+}
+}
+
+std::string UsageText()
+{
+  std::ostringstream out;
+  out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--output FILE]\n"
+         "\n"
+         "Subdivides the polygon mesh INPUT (" << SupportedExtensions() << ") and writes the\n"
+         "result; the formats are chosen by the file extensions. Without INPUT, a built-in\n"
+         "control cage is used.\n"
+         "\n"
+         "options:\n"
+         "  --scheme NAME      subdivision scheme (default catmull-clark):\n";
+  for (const SchemeEntry& entry : Schemes())
+  {
+    out << "                       " << entry.Name << ": " << entry.Summary << "\n";
+  }
+  out << "  --levels N         number of subdivision levels, 0..30 (default 2)\n"
+         "  --boundary RULE    boundary interpolation, OpenSubdiv's meanings (default edge-only):\n"
+         "                       none: faces at the boundary become holes (shape, not output)\n"
+         "                       edge-only: boundary edges are sharp creases\n"
+         "                       edge-and-corner: also pin vertices that have a single face\n"
+         "  --builtin NAME     built-in cage when there is no INPUT:";
+  for (const std::string& name : BuiltinCageNames())
+  {
+    out << " " << name;
+  }
+  out << " (default " << BuiltinCageNames().front() << ")\n"
+         "  -o, --output FILE  output file (default <input>-<scheme>-L<levels>.vtp)\n"
+         "  -q, --quiet        no summary line\n"
+         "  -h, --help         this text\n"
+         "  --version          the program's version\n"
+         "\n"
+         "Exit status: 0 on success, 1 when the work failed, 2 on a usage error.\n";
+  return out.str();
+}
+
+bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& error)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= argc)
+      {
+        error = "option " + arg + " needs a value";
+        return false;
+      }
+      out = argv[++i];
+      return true;
+    };
+    std::string text;
+    if (arg == "-h" || arg == "--help")
+    {
+      cmd.Help = true;
+    }
+    else if (arg == "--version")
+    {
+      cmd.Version = true;
+    }
+    else if (arg == "-q" || arg == "--quiet")
+    {
+      cmd.Quiet = true;
+    }
+    else if (arg == "--scheme")
+    {
+      if (!value(cmd.Scheme))
+      {
+        return false;
+      }
+      if (!FindScheme(cmd.Scheme))
+      {
+        error = "unknown scheme '" + cmd.Scheme + "' (known:";
+        for (const SchemeEntry& entry : Schemes())
+        {
+          error += " " + entry.Name;
+        }
+        error += ")";
+        return false;
+      }
+    }
+    else if (arg == "--levels")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      if (!ParseInt(text, cmd.Options.Levels) || cmd.Options.Levels < 0 || cmd.Options.Levels > 30)
+      {
+        error = "--levels wants an integer in 0..30, not '" + text + "'";
+        return false;
+      }
+    }
+    else if (arg == "--boundary")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      if (!ParseBoundary(text, cmd.Options.BoundaryRule))
+      {
+        error = "--boundary wants none, edge-only or edge-and-corner, not '" + text + "'";
+        return false;
+      }
+    }
+    else if (arg == "--builtin")
+    {
+      if (!value(cmd.Builtin))
+      {
+        return false;
+      }
+      if (!MakeBuiltinCage(cmd.Builtin))
+      {
+        error = "unknown built-in cage '" + cmd.Builtin + "'";
+        return false;
+      }
+    }
+    else if (arg == "-o" || arg == "--output")
+    {
+      if (!value(cmd.Output))
+      {
+        return false;
+      }
+    }
+    else if (!arg.empty() && arg[0] == '-')
+    {
+      error = "unknown option '" + arg + "' (see --help)";
+      return false;
+    }
+    else if (cmd.Input.empty())
+    {
+      cmd.Input = arg;
+    }
+    else
+    {
+      error = "more than one input file ('" + cmd.Input + "', '" + arg + "')";
+      return false;
+    }
+  }
+  if (!cmd.Input.empty() && !cmd.Builtin.empty())
+  {
+    error = "give either an input file or --builtin, not both";
+    return false;
+  }
+  if (cmd.Input.empty() && cmd.Builtin.empty())
+  {
+    cmd.Builtin = BuiltinCageNames().front();
+  }
+  return true;
+}
+
+std::string DefaultOutputPath(const CommandLine& cmd)
+{
+  std::string stem = cmd.Builtin;
+  if (!cmd.Input.empty())
+  {
+    stem = cmd.Input;
+    const auto slash = stem.find_last_of('/');
+    if (slash != std::string::npos)
+    {
+      stem = stem.substr(slash + 1);
+    }
+    const auto dot = stem.find_last_of('.');
+    if (dot != std::string::npos && dot > 0)
+    {
+      stem = stem.substr(0, dot);
+    }
+  }
+  return stem + "-" + cmd.Scheme + "-L" + std::to_string(cmd.Options.Levels) + ".vtp";
+}
+}

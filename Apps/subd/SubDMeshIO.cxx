@@ -1,0 +1,203 @@
+#include "SubDMeshIO.h"
+
+#include "SubDMessageCollector.h"
+#include "vtkAlgorithm.h"
+#include "vtkOBJReader.h"
+#include "vtkOBJWriter.h"
+#include "vtkPLYReader.h"
+#include "vtkPLYWriter.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataReader.h"
+#include "vtkPolyDataWriter.h"
+#include "vtkSTLReader.h"
+#include "vtkSTLWriter.h"
+#include "vtkSubDOFFReader.h"
+#include "vtkSubDOFFWriter.h"
+#include "vtkTriangleFilter.h"
+#include "vtkXMLPolyDataReader.h"
+#include "vtkXMLPolyDataWriter.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+namespace subdapp
+{
+namespace
+{
+bool FileReadable(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return static_cast<bool>(in);
+}
+
+template <typename Reader>
+vtkSmartPointer<vtkPolyData> RunReader(const std::string& path, std::string& error)
+{
+  vtkNew<Reader> reader;
+  MessageCollector messages;
+  messages.Watch(reader);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* out = reader->GetOutput();
+  if (!messages.Errors.empty() || reader->GetErrorCode() != 0)
+  {
+    error = "cannot read '" + path + "': " +
+      (messages.Errors.empty() ? std::string("the file is not valid") : messages.Errors);
+    return nullptr;
+  }
+  if (!out || out->GetNumberOfPoints() == 0)
+  {
+    error = "'" + path + "' holds no points (empty or not a valid file of its type)";
+    return nullptr;
+  }
+  vtkSmartPointer<vtkPolyData> mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(out);
+  return mesh;
+}
+}
+
+std::string LowerExtension(const std::string& path)
+{
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of('/');
+  if (dot == std::string::npos || (slash != std::string::npos && dot < slash))
+  {
+    return "";
+  }
+  std::string ext = path.substr(dot);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+const char* SupportedExtensions()
+{
+  return ".vtp .vtk .obj .ply .stl .off";
+}
+
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& error)
+{
+  if (!FileReadable(path))
+  {
+    error = "cannot open '" + path + "' for reading";
+    return nullptr;
+  }
+  const std::string ext = LowerExtension(path);
+  if (ext == ".vtp")
+  {
+    return RunReader<vtkXMLPolyDataReader>(path, error);
+  }
+  if (ext == ".vtk")
+  {
+    return RunReader<vtkPolyDataReader>(path, error);
+  }
+  if (ext == ".obj")
+  {
+    return RunReader<vtkOBJReader>(path, error);
+  }
+  if (ext == ".ply")
+  {
+    return RunReader<vtkPLYReader>(path, error);
+  }
+  if (ext == ".stl")
+  {
+    return RunReader<vtkSTLReader>(path, error);
+  }
+  if (ext == ".off")
+  {
+    return RunReader<vtkSubDOFFReader>(path, error);
+  }
+  error = "'" + path + "': unknown file type '" + ext + "' (supported: " + SupportedExtensions() + ")";
+  return nullptr;
+}
+
+namespace
+{
+template <typename Writer>
+vtkSmartPointer<vtkAlgorithm> NewWriter(const std::string& fileName)
+{
+  auto writer = vtkSmartPointer<Writer>::New();
+  writer->SetFileName(fileName.c_str());
+  return writer;
+}
+
+// A writer for the extension, writing to fileName; nullptr for an unknown extension.
+vtkSmartPointer<vtkAlgorithm> MakeWriter(const std::string& ext, const std::string& fileName)
+{
+  if (ext == ".vtp")
+  {
+    auto writer = NewWriter<vtkXMLPolyDataWriter>(fileName);
+    vtkXMLPolyDataWriter::SafeDownCast(writer)->SetDataModeToBinary();
+    return writer;
+  }
+  if (ext == ".vtk")
+  {
+    auto writer = NewWriter<vtkPolyDataWriter>(fileName);
+    vtkPolyDataWriter::SafeDownCast(writer)->SetFileTypeToBinary();
+    return writer;
+  }
+  if (ext == ".obj")
+  {
+    return NewWriter<vtkOBJWriter>(fileName);
+  }
+  if (ext == ".ply")
+  {
+    auto writer = NewWriter<vtkPLYWriter>(fileName);
+    vtkPLYWriter::SafeDownCast(writer)->SetFileTypeToBinary();
+    return writer;
+  }
+  if (ext == ".stl")
+  {
+    auto writer = NewWriter<vtkSTLWriter>(fileName);
+    vtkSTLWriter::SafeDownCast(writer)->SetFileTypeToBinary();
+    return writer;
+  }
+  if (ext == ".off")
+  {
+    return NewWriter<vtkSubDOFFWriter>(fileName);
+  }
+  return nullptr;
+}
+}
+
+bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
+{
+  const std::string ext = LowerExtension(path);
+  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+  vtkSmartPointer<vtkAlgorithm> writer = MakeWriter(ext, temporary);
+  if (!writer)
+  {
+    error = "'" + path + "': unknown output type '" + ext + "' (supported: " + SupportedExtensions() + ")";
+    return false;
+  }
+  vtkSmartPointer<vtkPolyData> data = mesh;
+  if (ext == ".stl")
+  {
+    // STL stores triangles only.
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputData(mesh);
+    triangles->Update();
+    data = triangles->GetOutput();
+  }
+  MessageCollector messages;
+  messages.Watch(writer);
+  writer->SetInputDataObject(data);
+  writer->Modified();
+  writer->Update();
+  if (writer->GetErrorCode() != 0 || !messages.Errors.empty() || !FileReadable(temporary))
+  {
+    std::remove(temporary.c_str());
+    error = "cannot write '" + path + "'" + (messages.Errors.empty() ? "" : ": " + messages.Errors);
+    return false;
+  }
+  if (std::rename(temporary.c_str(), path.c_str()) != 0)
+  {
+    std::remove(temporary.c_str());
+    error = "cannot move the finished output to '" + path + "'";
+    return false;
+  }
+  return true;
+}
+}

@@ -1,0 +1,25 @@
+// subd: reading and writing meshes, the format chosen by the file extension.
+#ifndef SubDMeshIO_h
+#define SubDMeshIO_h
+
+#include "vtkPolyData.h" // for vtkSmartPointer<vtkPolyData>
+#include "vtkSmartPointer.h"
+#include <string>
+
+
+namespace subdapp
+{
+/// Extensions understood by ReadMesh and WriteMesh (lower case, with the dot).
+const char* SupportedExtensions();
+
+/// Reads .vtp .vtk .obj .ply .stl .off. On failure returns nullptr and sets `error`.
+vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& error);
+
+/// Writes by extension, atomically: into a temporary file beside `path`, renamed over it only
+/// when complete. Returns false and sets `error` on failure (nothing is left behind).
+bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error);
+
+std::string LowerExtension(const std::string& path);
+}
+
+#endif

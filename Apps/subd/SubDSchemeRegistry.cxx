@@ -1,0 +1,39 @@
+#include "SubDSchemeRegistry.h"
+
+#include "vtkSubDCatmullClarkFilter.h"
+
+namespace subdapp
+{
+namespace
+{
+template <typename Filter>
+vtkSmartPointer<vtkPolyDataAlgorithm> MakeSurfaceFilter(const SchemeOptions& options)
+{
+  auto filter = vtkSmartPointer<Filter>::New();
+  filter->SetNumberOfSubdivisions(options.Levels);
+  filter->SetBoundaryRule(options.BoundaryRule);
+  return filter;
+}
+}
+
+const std::vector<SchemeEntry>& Schemes()
+{
+  static const std::vector<SchemeEntry> schemes = {
+    { "catmull-clark", "Catmull-Clark: quads from any polygons (approximating, C2 where regular)",
+      &MakeSurfaceFilter<vtkSubDCatmullClarkFilter> },
+  };
+  return schemes;
+}
+
+const SchemeEntry* FindScheme(const std::string& name)
+{
+  for (const SchemeEntry& entry : Schemes())
+  {
+    if (entry.Name == name)
+    {
+      return &entry;
+    }
+  }
+  return nullptr;
+}
+}

@@ -1,0 +1,31 @@
+// subd: the one place that lists the schemes `subd --scheme` knows.
+#ifndef SubDSchemeRegistry_h
+#define SubDSchemeRegistry_h
+
+#include "vtkSmartPointer.h"
+#include <string>
+#include <vector>
+
+class vtkPolyDataAlgorithm;
+
+namespace subdapp
+{
+struct SchemeOptions
+{
+  int Levels = 2;
+  int BoundaryRule = 1; // vtkSubDSurfaceFilter::BOUNDARY_EDGE_ONLY
+};
+
+struct SchemeEntry
+{
+  std::string Name;
+  std::string Summary;
+  /// A configured filter for the options.
+  vtkSmartPointer<vtkPolyDataAlgorithm> (*Make)(const SchemeOptions&);
+};
+
+const std::vector<SchemeEntry>& Schemes();
+const SchemeEntry* FindScheme(const std::string& name);
+}
+
+#endif

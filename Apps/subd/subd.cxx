@@ -1,0 +1,167 @@
+// subd: the command-line program. Reads a polygon mesh (or takes a built-in cage), subdivides
+// it with the chosen scheme and writes the result, printing a one-line summary.
+#include "SubDBuiltinCages.h"
+#include "SubDCommandLine.h"
+#include "SubDMeshIO.h"
+#include "SubDMessageCollector.h"
+#include "SubDSchemeRegistry.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkVersion.h"
+
+#include <chrono>
+#include <climits>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+
+// A progress bar on stderr, drawn only when stderr is a terminal and the work has already
+// taken half a second (short runs stay quiet).
+struct ProgressBar
+{
+  Clock::time_point Start = Clock::now();
+  bool Enabled = ::isatty(STDERR_FILENO) != 0;
+  bool Drawn = false;
+
+  static void OnProgress(vtkObject*, unsigned long, void* client, void* callData)
+  {
+    auto* self = static_cast<ProgressBar*>(client);
+    const double fraction = *static_cast<double*>(callData);
+    if (!self->Enabled || std::chrono::duration<double>(Clock::now() - self->Start).count() < 0.5)
+    {
+      return;
+    }
+    const int width = 40;
+    const int filled = static_cast<int>(fraction * width + 0.5);
+    std::fprintf(stderr, "\r[%s%s] %3d%%", std::string(filled, '#').c_str(),
+      std::string(width - filled, ' ').c_str(), static_cast<int>(fraction * 100 + 0.5));
+    std::fflush(stderr);
+    self->Drawn = true;
+  }
+  void Finish()
+  {
+    if (this->Drawn)
+    {
+      std::fprintf(stderr, "\r%60s\r", "");
+    }
+  }
+};
+
+bool SameFile(const std::string& a, const std::string& b)
+{
+  struct stat sa, sb;
+  return ::stat(a.c_str(), &sa) == 0 && ::stat(b.c_str(), &sb) == 0 && sa.st_dev == sb.st_dev &&
+    sa.st_ino == sb.st_ino;
+}
+
+void PrintMessages(const std::string& lines, const char* kind)
+{
+  std::istringstream in(lines);
+  std::string line;
+  while (std::getline(in, line))
+  {
+    if (!line.empty())
+    {
+      std::cerr << "subd: " << kind << ": " << line << "\n";
+    }
+  }
+}
+}
+
+int main(int argc, char* argv[])
+{
+  subdapp::CommandLine cmd;
+  std::string error;
+  if (!subdapp::ParseCommandLine(argc, argv, cmd, error))
+  {
+    std::cerr << "subd: " << error << "\n";
+    return 2;
+  }
+  if (cmd.Help)
+  {
+    std::cout << subdapp::UsageText();
+    return 0;
+  }
+  if (cmd.Version)
+  {
+    std::cout << "subd " << SUBD_VERSION << " (VTK " << vtkVersion::GetVTKVersion() << ")\n";
+    return 0;
+  }
+
+  vtkSmartPointer<vtkPolyData> input;
+  std::string inputName;
+  if (cmd.Input.empty())
+  {
+    input = subdapp::MakeBuiltinCage(cmd.Builtin);
+    inputName = "built-in " + cmd.Builtin;
+  }
+  else
+  {
+    input = subdapp::ReadMesh(cmd.Input, error);
+    inputName = cmd.Input;
+    if (!input)
+    {
+      std::cerr << "subd: " << error << "\n";
+      return 1;
+    }
+  }
+  const std::string output = cmd.Output.empty() ? subdapp::DefaultOutputPath(cmd) : cmd.Output;
+  if (!cmd.Input.empty() && SameFile(cmd.Input, output))
+  {
+    std::cerr << "subd: refusing to overwrite the input file '" << cmd.Input << "'\n";
+    return 1;
+  }
+  if (subdapp::LowerExtension(output).empty() ||
+    std::string(subdapp::SupportedExtensions()).find(subdapp::LowerExtension(output)) == std::string::npos)
+  {
+    std::cerr << "subd: cannot write '" << output << "': unknown output type (supported: "
+              << subdapp::SupportedExtensions() << ")\n";
+    return 2;
+  }
+
+  const subdapp::SchemeEntry* scheme = subdapp::FindScheme(cmd.Scheme);
+  vtkSmartPointer<vtkPolyDataAlgorithm> filter = scheme->Make(cmd.Options);
+  subdapp::MessageCollector messages;
+  messages.Watch(filter);
+  ProgressBar progress;
+  vtkNew<vtkCallbackCommand> progressCallback;
+  progressCallback->SetClientData(&progress);
+  progressCallback->SetCallback(&ProgressBar::OnProgress);
+  filter->AddObserver(vtkCommand::ProgressEvent, progressCallback);
+  filter->SetInputData(input);
+
+  const Clock::time_point start = Clock::now();
+  filter->Update();
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  progress.Finish();
+  PrintMessages(messages.Warnings, "warning");
+  vtkPolyData* result = filter->GetOutput();
+  if (!messages.Errors.empty() || filter->GetErrorCode() != 0 || result->GetNumberOfCells() == 0)
+  {
+    PrintMessages(messages.Errors.empty() ? "subdivision produced no output\n" : messages.Errors, "error");
+    return 1;
+  }
+  if (!subdapp::WriteMesh(result, output, error))
+  {
+    std::cerr << "subd: " << error << "\n";
+    return 1;
+  }
+  if (!cmd.Quiet)
+  {
+    std::cout << "subd: " << inputName << " (" << input->GetNumberOfPoints() << " points, "
+              << input->GetNumberOfPolys() + input->GetNumberOfStrips() << " faces) -> " << cmd.Scheme
+              << ", " << cmd.Options.Levels << " level(s) -> " << result->GetNumberOfPoints()
+              << " points, " << result->GetNumberOfPolys() << " faces in " << seconds << " s -> "
+              << output << "\n";
+  }
+  return 0;
+}

@@ -1,0 +1,16 @@
+#include "vtkSubDCatmullClarkFilter.h"
+
+#include "SubDScheme.h"
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkSubDCatmullClarkFilter);
+
+subd::Scheme* vtkSubDCatmullClarkFilter::NewScheme()
+{
+  return new subd::CatmullClarkScheme;
+}
+
+void vtkSubDCatmullClarkFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

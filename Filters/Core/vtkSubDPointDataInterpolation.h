@@ -1,0 +1,40 @@
+// Private helper of vtkSubDSurfaceFilter: applies a kernel hierarchy's stencils to one
+// vtkDataArray of per-point values and returns the refined array.
+//
+// Values are refined in double precision whatever the array type, then stored in the
+// requested type: integer types are rounded to nearest and clamped to the type's range
+// (stencils with negative weights must not wrap an unsigned char colour around), and an
+// array flagged as normals is re-normalized, since averaged unit vectors are shorter.
+#ifndef vtkSubDPointDataInterpolation_h
+#define vtkSubDPointDataInterpolation_h
+
+#include "SubDRefiner.h"
+#include "vtkDataArray.h"
+#include "vtkSmartPointer.h"
+
+#include <vector>
+
+class vtkSubDPointDataInterpolation
+{
+public:
+  /// `selection`, when given, lists the finest points to output, in output order.
+  vtkSubDPointDataInterpolation(const subd::Hierarchy& hierarchy, subd::ParallelFor parallelFor,
+    const std::vector<vtkIdType>* selection)
+    : Hierarchy(hierarchy)
+    , ParallelFor(std::move(parallelFor))
+    , Selection(selection)
+  {
+  }
+
+  /// Returns the refined array (same name and component names as `base`), or nullptr when
+  /// `progress` asked to stop.
+  vtkSmartPointer<vtkDataArray> Interpolate(vtkDataArray* base, int outputType, bool normalize,
+    const subd::ProgressCallback& progress) const;
+
+private:
+  const subd::Hierarchy& Hierarchy;
+  subd::ParallelFor ParallelFor;
+  const std::vector<vtkIdType>* Selection;
+};
+
+#endif

@@ -1,0 +1,481 @@
+#include "vtkSubDSurfaceFilter.h"
+
+#include "SubDMeshValidation.h"
+#include "SubDRefiner.h"
+#include "SubDScheme.h"
+#include "vtkSubDPointDataInterpolation.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkFloatArray.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <numeric>
+#include <sstream>
+#include <vector>
+
+namespace
+{
+// Faces of the input (polygons, then triangles cut from strips) in one offsets/connectivity
+// pair, and the input cell id of each. Polygons are read in place when there are no strips.
+struct InputFaces
+{
+  const vtkIdType* Offsets = nullptr;
+  const vtkIdType* Connectivity = nullptr;
+  vtkIdType NumFaces = 0;
+  std::vector<vtkIdType> OwnedOffsets, OwnedConnectivity;
+  vtkIdType FirstPolyCellId = 0;
+  std::vector<vtkIdType> StripCellIds; // cell id of faces past the polygons
+
+  vtkIdType CellIdOf(vtkIdType face, vtkIdType numPolys) const
+  {
+    return face < numPolys ? this->FirstPolyCellId + face : this->StripCellIds[face - numPolys];
+  }
+};
+
+void ReadCells(vtkCellArray* cells, std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& conn)
+{
+  offsets.clear();
+  conn.clear();
+  offsets.push_back(0);
+  vtkIdType n;
+  const vtkIdType* pts;
+  for (cells->InitTraversal(); cells->GetNextCell(n, pts);)
+  {
+    conn.insert(conn.end(), pts, pts + n);
+    offsets.push_back(static_cast<vtkIdType>(conn.size()));
+  }
+}
+
+InputFaces GatherFaces(vtkPolyData* input)
+{
+  InputFaces faces;
+  vtkCellArray* polys = input->GetPolys();
+  vtkCellArray* strips = input->GetStrips();
+  const vtkIdType numPolys = polys ? polys->GetNumberOfCells() : 0;
+  const vtkIdType numStrips = strips ? strips->GetNumberOfCells() : 0;
+  faces.FirstPolyCellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
+
+  if (numStrips == 0 && numPolys > 0 && polys->IsStorage64Bit() && sizeof(vtkIdType) == 8)
+  {
+    faces.Offsets = reinterpret_cast<const vtkIdType*>(polys->GetOffsetsArray64()->GetPointer(0));
+    faces.Connectivity =
+      reinterpret_cast<const vtkIdType*>(polys->GetConnectivityArray64()->GetPointer(0));
+    faces.NumFaces = numPolys;
+    return faces;
+  }
+  if (numPolys > 0)
+  {
+    ReadCells(polys, faces.OwnedOffsets, faces.OwnedConnectivity);
+  }
+  else
+  {
+    faces.OwnedOffsets.assign(1, 0);
+  }
+  if (numStrips > 0)
+  {
+    // A strip p0 p1 p2 p3 ... is the triangles (p0 p1 p2), (p2 p1 p3), ... with alternating
+    // orientation so all of them face the same way.
+    const vtkIdType firstStripCellId = faces.FirstPolyCellId + numPolys;
+    vtkIdType n;
+    const vtkIdType* pts;
+    vtkIdType s = 0;
+    for (strips->InitTraversal(); strips->GetNextCell(n, pts); ++s)
+    {
+      for (vtkIdType k = 0; k + 2 < n; ++k)
+      {
+        const bool even = (k % 2) == 0;
+        faces.OwnedConnectivity.push_back(even ? pts[k] : pts[k + 1]);
+        faces.OwnedConnectivity.push_back(even ? pts[k + 1] : pts[k]);
+        faces.OwnedConnectivity.push_back(pts[k + 2]);
+        faces.OwnedOffsets.push_back(static_cast<vtkIdType>(faces.OwnedConnectivity.size()));
+        faces.StripCellIds.push_back(firstStripCellId + s);
+      }
+    }
+  }
+  faces.Offsets = faces.OwnedOffsets.data();
+  faces.Connectivity = faces.OwnedConnectivity.data();
+  faces.NumFaces = static_cast<vtkIdType>(faces.OwnedOffsets.size()) - 1;
+  return faces;
+}
+
+// Runs the kernel's row loops with vtkSMPTools.
+void SMPFor(subd::Index begin, subd::Index end, const subd::RangeTask& task)
+{
+  constexpr vtkIdType grain = 2048;
+  vtkSMPTools::For(begin, end, grain,
+    [&task](vtkIdType b, vtkIdType e) { task(static_cast<subd::Index>(b), static_cast<subd::Index>(e)); });
+}
+
+vtkIdType FirstNonFinitePoint(vtkPoints* points)
+{
+  const vtkIdType n = points->GetNumberOfPoints();
+  double p[3];
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      return i;
+    }
+  }
+  return -1;
+}
+}
+
+// What an execution leaves for the next one: the screened input connectivity it refined,
+// the stencils, and how finest points map to output points.
+class vtkSubDSurfaceFilter::vtkInternals
+{
+public:
+  bool Valid = false;
+  vtkMTimeType FilterMTime = 0;
+  vtkIdType NumInputPoints = 0;
+  std::vector<subd::Index> Offsets, Vertices;
+  std::vector<subd::Index> KeptFaces;
+  subd::Hierarchy Hierarchy;
+  std::vector<subd::Index> EmittedFaces;    // finest faces that are not holes
+  std::vector<vtkIdType> OutputPointOfFinest; // -1 where a finest point is unused
+  std::vector<vtkIdType> FinestPointOfOutput;
+  bool CompactPoints = false;
+};
+
+vtkSubDSurfaceFilter::vtkSubDSurfaceFilter()
+  : Internals(new vtkInternals)
+{
+}
+
+vtkSubDSurfaceFilter::~vtkSubDSurfaceFilter()
+{
+  delete this->Internals;
+}
+
+const char* vtkSubDSurfaceFilter::GetBoundaryRuleAsString()
+{
+  return subd::ToString(static_cast<subd::BoundaryRule>(this->BoundaryRule));
+}
+
+int vtkSubDSurfaceFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->Initialize();
+  this->SetErrorCode(vtkErrorCode::NoError);
+  auto fail = [this, output]() {
+    output->Initialize();
+    this->SetErrorCode(vtkErrorCode::UserError);
+    return 0;
+  };
+
+  const vtkIdType numPoints = (input && input->GetPoints()) ? input->GetNumberOfPoints() : 0;
+  if (numPoints == 0)
+  {
+    vtkErrorMacro("Input has no points: nothing to subdivide.");
+    return fail();
+  }
+  if (numPoints >= static_cast<vtkIdType>(std::numeric_limits<subd::Index>::max() / 8))
+  {
+    vtkErrorMacro("Input has " << numPoints << " points; at most "
+                               << std::numeric_limits<subd::Index>::max() / 8 << " are supported.");
+    return fail();
+  }
+  const vtkIdType badPoint = FirstNonFinitePoint(input->GetPoints());
+  if (badPoint >= 0)
+  {
+    double p[3];
+    input->GetPoint(badPoint, p);
+    vtkErrorMacro("Point " << badPoint << " has a non-finite coordinate (" << p[0] << ", " << p[1]
+                           << ", " << p[2] << "); NaN or infinite coordinates cannot be subdivided.");
+    return fail();
+  }
+
+  InputFaces faces = GatherFaces(input);
+  if (faces.NumFaces == 0)
+  {
+    vtkErrorMacro("Input has no polygons (it has " << input->GetNumberOfVerts() << " verts, "
+                                                 << input->GetNumberOfLines()
+                                                 << " lines): a surface scheme needs faces.");
+    return fail();
+  }
+  if (faces.Offsets[faces.NumFaces] >= std::numeric_limits<subd::Index>::max() / 8)
+  {
+    vtkErrorMacro("Input has " << faces.Offsets[faces.NumFaces] << " face corners; too many.");
+    return fail();
+  }
+  subd::FaceScreening screened = subd::ScreenFaces(static_cast<subd::Index>(numPoints),
+    static_cast<subd::Index>(faces.NumFaces), faces.Offsets, faces.Connectivity);
+  const vtkIdType numPolys = input->GetNumberOfPolys();
+  if (screened.NumOutOfRange > 0)
+  {
+    vtkErrorMacro(<< screened.NumOutOfRange << " input cell(s) refer to points that do not exist; "
+                  << "the first, cell " << faces.CellIdOf(screened.FirstOutOfRangeFace, numPolys)
+                  << ", uses point id " << screened.FirstOutOfRangeId << " but the input has "
+                  << numPoints << " points.");
+    return fail();
+  }
+  if (screened.NumDropped > 0)
+  {
+    vtkWarningMacro(<< "Ignored " << screened.NumDropped
+                    << " degenerate polygon(s) (fewer than 3 distinct points, or a point repeated); "
+                    << "the first is cell " << faces.CellIdOf(screened.FirstDroppedFace, numPolys)
+                    << ".");
+  }
+  if (screened.KeptFaces.empty())
+  {
+    vtkErrorMacro("No usable polygon remains after removing degenerate ones.");
+    return fail();
+  }
+
+  vtkInternals& cache = *this->Internals;
+  const bool reuse = cache.Valid && cache.FilterMTime == this->GetMTime() &&
+    cache.NumInputPoints == numPoints && cache.Offsets == screened.Offsets &&
+    cache.Vertices == screened.Vertices;
+  auto refineProgress = [this](double fraction) {
+    this->UpdateProgress(0.5 * fraction);
+    return !this->GetAbortExecute();
+  };
+  if (!reuse)
+  {
+    cache.Valid = false;
+    std::unique_ptr<subd::Scheme> scheme(this->NewScheme());
+    subd::MeshTopology topology =
+      subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices);
+    if (topology.GetNumNonManifoldEdges() > 0 || topology.GetNumNonManifoldVertices() > 0)
+    {
+      vtkWarningMacro(<< "Input is non-manifold (" << topology.GetNumNonManifoldEdges()
+                      << " edges with more than two faces or inconsistent orientation, "
+                      << topology.GetNumNonManifoldVertices()
+                      << " non-manifold vertices); they are subdivided as infinitely sharp.");
+    }
+
+    // Size guard: predict the finest level before allocating it.
+    subd::MeshCounts counts{ static_cast<double>(topology.GetNumFaces()),
+      static_cast<double>(topology.GetNumEdges()), static_cast<double>(numPoints),
+      static_cast<double>(topology.GetNumFaceCorners()) };
+    for (int l = 0; l < this->NumberOfSubdivisions; ++l)
+    {
+      counts = scheme->PredictChildCounts(counts);
+    }
+    double pointDataBytes = 0.0;
+    vtkPointData* inPD = input->GetPointData();
+    for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
+    {
+      if (vtkDataArray* array = inPD->GetArray(a))
+      {
+        pointDataBytes += array->GetNumberOfComponents() * (8.0 + array->GetDataTypeSize());
+      }
+    }
+    // points (double, plus a scratch level), point data, connectivity + offsets, the finest
+    // topology's relations and the last stencil table.
+    const double bytes = counts.Vertices * (24.0 * 3 + pointDataBytes + 40.0) +
+      counts.Corners * (8.0 + 20.0 + 12.0) + counts.Faces * 24.0 + counts.Edges * 24.0;
+    const double limit = this->MaximumMemory * 1024.0 * 1024.0;
+    if (bytes > limit)
+    {
+      vtkErrorMacro("Refusing " << this->NumberOfSubdivisions << " subdivision level(s): the output "
+                                << "would have about " << counts.Faces << " faces and "
+                                << counts.Vertices << " points and need about "
+                                << bytes / (1024.0 * 1024.0) << " MiB, more than MaximumMemory ("
+                                << this->MaximumMemory << " MiB).");
+      return fail();
+    }
+
+    subd::Level base = subd::MakeBaseLevel(
+      std::move(topology), subd::BaseTags{}, static_cast<subd::BoundaryRule>(this->BoundaryRule));
+    if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy,
+          refineProgress))
+    {
+      return fail();
+    }
+    ++this->NumberOfStencilBuilds;
+
+    const subd::Level& finest = cache.Hierarchy.Finest;
+    const subd::Index numFinestFaces = finest.Topology.GetNumFaces();
+    cache.EmittedFaces.clear();
+    cache.EmittedFaces.reserve(static_cast<size_t>(numFinestFaces));
+    for (subd::Index f = 0; f < numFinestFaces; ++f)
+    {
+      if (!finest.FaceIsHole[f])
+      {
+        cache.EmittedFaces.push_back(f);
+      }
+    }
+    // Points no emitted face uses (isolated input points, points inside holes) are dropped.
+    const subd::Index numFinestPoints = finest.Topology.GetNumVertices();
+    cache.OutputPointOfFinest.assign(static_cast<size_t>(numFinestPoints), -1);
+    for (subd::Index f : cache.EmittedFaces)
+    {
+      for (subd::Index v : finest.Topology.GetFaceVertices(f))
+      {
+        cache.OutputPointOfFinest[v] = 0;
+      }
+    }
+    cache.FinestPointOfOutput.clear();
+    for (subd::Index v = 0; v < numFinestPoints; ++v)
+    {
+      if (cache.OutputPointOfFinest[v] == 0)
+      {
+        cache.OutputPointOfFinest[v] = static_cast<vtkIdType>(cache.FinestPointOfOutput.size());
+        cache.FinestPointOfOutput.push_back(v);
+      }
+    }
+    cache.CompactPoints = static_cast<subd::Index>(cache.FinestPointOfOutput.size()) != numFinestPoints;
+    cache.NumInputPoints = numPoints;
+    cache.Offsets = std::move(screened.Offsets);
+    cache.Vertices = std::move(screened.Vertices);
+    cache.KeptFaces = std::move(screened.KeptFaces);
+    cache.FilterMTime = this->GetMTime();
+    cache.Valid = true;
+  }
+  else
+  {
+    refineProgress(1.0);
+  }
+
+  const subd::Hierarchy& hierarchy = cache.Hierarchy;
+  const subd::Level& finest = hierarchy.Finest;
+  vtkSubDPointDataInterpolation interpolation(hierarchy, SMPFor,
+    cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr);
+
+  // Points.
+  vtkNew<vtkDoubleArray> basePoints;
+  basePoints->SetNumberOfComponents(3);
+  basePoints->SetNumberOfTuples(numPoints);
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    input->GetPoint(i, basePoints->GetPointer(3 * i));
+  }
+  int precision = this->OutputPointsPrecision;
+  if (precision == DEFAULT_PRECISION)
+  {
+    precision = input->GetPoints()->GetDataType() == VTK_DOUBLE ? DOUBLE_PRECISION : SINGLE_PRECISION;
+  }
+  vtkNew<vtkPoints> outPoints;
+  outPoints->SetDataType(precision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
+  const int numArrays = input->GetPointData()->GetNumberOfArrays();
+  auto evaluateProgress = [this, numArrays](int step) {
+    return [this, numArrays, step](double fraction) {
+      this->UpdateProgress(0.5 + 0.5 * (step + fraction) / (numArrays + 1));
+      return !this->GetAbortExecute();
+    };
+  };
+  vtkSmartPointer<vtkDataArray> outCoords =
+    interpolation.Interpolate(basePoints, outPoints->GetDataType(), false, evaluateProgress(0));
+  if (!outCoords)
+  {
+    return fail(); // aborted
+  }
+  outPoints->SetData(outCoords);
+  output->SetPoints(outPoints);
+
+  // Point data: every array, with the same stencils.
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  for (int a = 0; a < numArrays; ++a)
+  {
+    vtkAbstractArray* abstractArray = inPD->GetAbstractArray(a);
+    vtkDataArray* array = vtkDataArray::SafeDownCast(abstractArray);
+    if (!array)
+    {
+      vtkWarningMacro(<< "Point-data array '" << (abstractArray->GetName() ? abstractArray->GetName() : "")
+                      << "' is not numeric and cannot be interpolated; it is not passed on.");
+      continue;
+    }
+    if (array->GetNumberOfTuples() != numPoints)
+    {
+      vtkWarningMacro(<< "Point-data array '" << (array->GetName() ? array->GetName() : "")
+                      << "' has " << array->GetNumberOfTuples() << " tuples for " << numPoints
+                      << " points; it is not passed on.");
+      continue;
+    }
+    const int attribute = inPD->IsArrayAnAttribute(a);
+    vtkSmartPointer<vtkDataArray> out = interpolation.Interpolate(
+      array, array->GetDataType(), attribute == vtkDataSetAttributes::NORMALS, evaluateProgress(a + 1));
+    if (!out)
+    {
+      return fail();
+    }
+    outPD->AddArray(out);
+    if (attribute >= 0)
+    {
+      outPD->SetActiveAttribute(outPD->GetNumberOfArrays() - 1, attribute);
+    }
+  }
+
+  // Faces, straight into offsets/connectivity.
+  const subd::MeshTopology& topo = finest.Topology;
+  const vtkIdType numOut = static_cast<vtkIdType>(cache.EmittedFaces.size());
+  vtkNew<vtkIdTypeArray> offsets;
+  offsets->SetNumberOfTuples(numOut + 1);
+  vtkIdType* off = offsets->GetPointer(0);
+  off[0] = 0;
+  for (vtkIdType c = 0; c < numOut; ++c)
+  {
+    off[c + 1] = off[c] + topo.GetFaceSize(cache.EmittedFaces[c]);
+  }
+  vtkNew<vtkIdTypeArray> connectivity;
+  connectivity->SetNumberOfTuples(off[numOut]);
+  vtkIdType* conn = connectivity->GetPointer(0);
+  const std::vector<vtkIdType>& remap = cache.OutputPointOfFinest;
+  vtkSMPTools::For(0, numOut, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      vtkIdType* out = conn + off[c];
+      for (subd::Index v : topo.GetFaceVertices(cache.EmittedFaces[c]))
+      {
+        *out++ = remap[v];
+      }
+    }
+  });
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->SetPolys(polys);
+
+  // Cell data: inherited from the input cell each face descends from.
+  vtkNew<vtkIdList> sourceCells, targetCells;
+  sourceCells->SetNumberOfIds(numOut);
+  targetCells->SetNumberOfIds(numOut);
+  for (vtkIdType c = 0; c < numOut; ++c)
+  {
+    const subd::Index baseFace = finest.FaceOrigin[cache.EmittedFaces[c]];
+    sourceCells->SetId(c, faces.CellIdOf(cache.KeptFaces[baseFace], numPolys));
+    targetCells->SetId(c, c);
+  }
+  vtkCellData* outCD = output->GetCellData();
+  outCD->CopyAllocate(input->GetCellData(), numOut);
+  outCD->CopyData(input->GetCellData(), sourceCells, targetCells);
+  if (this->GenerateParentCellIds)
+  {
+    vtkNew<vtkIdTypeArray> parents;
+    parents->SetName("ParentCellId");
+    parents->SetNumberOfTuples(numOut);
+    std::copy(sourceCells->GetPointer(0), sourceCells->GetPointer(0) + numOut, parents->GetPointer(0));
+    outCD->AddArray(parents);
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "NumberOfSubdivisions: " << this->NumberOfSubdivisions << "\n";
+  os << indent << "BoundaryRule: " << this->GetBoundaryRuleAsString() << "\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "GenerateParentCellIds: " << (this->GenerateParentCellIds ? "On" : "Off") << "\n";
+  os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
+  os << indent << "NumberOfStencilBuilds: " << this->NumberOfStencilBuilds << "\n";
+}

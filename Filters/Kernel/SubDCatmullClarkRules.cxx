@@ -1,0 +1,168 @@
+#include "SubDCatmullClarkRules.h"
+#include "SubDCrease.h"
+#include "SubDQuadSplit.h"
+
+namespace subd
+{
+namespace
+{
+// The vertex rule of every parent vertex, and the two crease neighbours where it is a crease.
+struct VertexMaskPlan
+{
+  VertexRule Rule;
+  Index CreaseEnds[2];
+};
+
+VertexMaskPlan PlanVertexMask(const Level& level, Index v)
+{
+  const MeshTopology& topo = level.Topology;
+  VertexMaskPlan plan{ VertexRule::Corner, { InvalidIndex, InvalidIndex } };
+  const IndexSpan edges = topo.GetVertexEdges(v);
+  const IndexSpan faces = topo.GetVertexFaces(v);
+  Index sharpCount = 0;
+  for (Index e : edges)
+  {
+    if (IsSharp(level.EdgeSharpness[e]))
+    {
+      if (sharpCount < 2)
+      {
+        plan.CreaseEnds[sharpCount] = topo.GetOtherEndpoint(e, v);
+      }
+      ++sharpCount;
+    }
+  }
+  plan.Rule = ClassifyVertex(level.VertexSharpness[v], sharpCount);
+  // The smooth mask needs a closed manifold fan (as many edges as faces); an isolated vertex
+  // or a fan that is not closed can only be interpolated.
+  if ((plan.Rule == VertexRule::Smooth || plan.Rule == VertexRule::Dart) &&
+    (faces.size() == 0 || faces.size() != edges.size()))
+  {
+    plan.Rule = VertexRule::Corner;
+  }
+  return plan;
+}
+
+Index VertexRowSize(const VertexMaskPlan& plan, Index valence)
+{
+  switch (plan.Rule)
+  {
+    case VertexRule::Corner:
+      return 1;
+    case VertexRule::Crease:
+      return 3;
+    default:
+      return 1 + 2 * valence;
+  }
+}
+}
+
+StencilTable BuildCatmullClarkStencils(const Level& parent)
+{
+  const MeshTopology& topo = parent.Topology;
+  const Index numFaces = topo.GetNumFaces();
+  const Index numEdges = topo.GetNumEdges();
+  const Index numVertices = topo.GetNumVertices();
+  const QuadSplitNumbering number{ numFaces, numEdges };
+  // Sources >= numParents name child points of this level.
+  const Index numParents = numVertices;
+  auto childSource = [numParents](Index childPoint) { return numParents + childPoint; };
+
+  std::vector<VertexMaskPlan> plans(static_cast<size_t>(numVertices));
+  for (Index v = 0; v < numVertices; ++v)
+  {
+    plans[v] = PlanVertexMask(parent, v);
+  }
+  auto edgeIsSmooth = [&](Index e) {
+    return !IsSharp(parent.EdgeSharpness[e]) && topo.GetEdgeFaces(e).size() == 2;
+  };
+
+  StencilTable table(numParents);
+  table.ReserveRows(numFaces + numEdges + numVertices);
+  for (Index f = 0; f < numFaces; ++f)
+  {
+    table.SetRowSize(number.FacePoint(f), topo.GetFaceSize(f));
+  }
+  for (Index e = 0; e < numEdges; ++e)
+  {
+    table.SetRowSize(number.EdgePoint(e), edgeIsSmooth(e) ? 4 : 2);
+  }
+  for (Index v = 0; v < numVertices; ++v)
+  {
+    table.SetRowSize(number.VertexPoint(v), VertexRowSize(plans[v], topo.GetVertexFaces(v).size()));
+  }
+  table.FinalizeSizes();
+
+  for (Index f = 0; f < numFaces; ++f)
+  {
+    const IndexSpan fv = topo.GetFaceVertices(f);
+    const double w = 1.0 / fv.size();
+    Index* src = table.GetMutableSources(number.FacePoint(f));
+    double* wts = table.GetMutableWeights(number.FacePoint(f));
+    for (Index j = 0; j < fv.size(); ++j)
+    {
+      src[j] = fv[j];
+      wts[j] = w;
+    }
+  }
+  table.EndBlock(numFaces);
+
+  for (Index e = 0; e < numEdges; ++e)
+  {
+    const Index* ev = topo.GetEdgeVertices(e);
+    Index* src = table.GetMutableSources(number.EdgePoint(e));
+    double* wts = table.GetMutableWeights(number.EdgePoint(e));
+    src[0] = ev[0];
+    src[1] = ev[1];
+    if (edgeIsSmooth(e))
+    {
+      const IndexSpan ef = topo.GetEdgeFaces(e);
+      src[2] = childSource(number.FacePoint(ef[0]));
+      src[3] = childSource(number.FacePoint(ef[1]));
+      wts[0] = wts[1] = wts[2] = wts[3] = 0.25;
+    }
+    else
+    {
+      wts[0] = wts[1] = 0.5;
+    }
+  }
+
+  for (Index v = 0; v < numVertices; ++v)
+  {
+    const VertexMaskPlan& plan = plans[v];
+    Index* src = table.GetMutableSources(number.VertexPoint(v));
+    double* wts = table.GetMutableWeights(number.VertexPoint(v));
+    src[0] = v;
+    if (plan.Rule == VertexRule::Corner)
+    {
+      wts[0] = 1.0;
+    }
+    else if (plan.Rule == VertexRule::Crease)
+    {
+      wts[0] = 0.75;
+      src[1] = plan.CreaseEnds[0];
+      src[2] = plan.CreaseEnds[1];
+      wts[1] = wts[2] = 0.125;
+    }
+    else
+    {
+      const IndexSpan edges = topo.GetVertexEdges(v);
+      const IndexSpan faces = topo.GetVertexFaces(v);
+      const double n = faces.size();
+      const double ringWeight = 1.0 / (n * n);
+      wts[0] = (n - 2.0) / n;
+      for (Index i = 0; i < edges.size(); ++i)
+      {
+        src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
+        wts[1 + i] = ringWeight;
+      }
+      for (Index i = 0; i < faces.size(); ++i)
+      {
+        src[1 + edges.size() + i] = childSource(number.FacePoint(faces[i]));
+        wts[1 + edges.size() + i] = ringWeight;
+      }
+    }
+  }
+  table.EndBlock(numFaces + numEdges + numVertices);
+  return table;
+}
+}

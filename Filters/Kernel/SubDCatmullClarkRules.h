@@ -1,0 +1,29 @@
+// SubD kernel: Catmull-Clark masks for one level (E. Catmull, J. Clark, "Recursively
+// generated B-spline surfaces on arbitrary topological meshes", CAD 10(6), 1978), with the
+// boundary and crease rules of Hoppe et al. (SIGGRAPH 1994) and DeRose et al. (SIGGRAPH 1998)
+// in the form OpenSubdiv uses, so the results agree with it to round-off:
+//
+//   face point   f  = average of the face's n vertices
+//   edge point   e  = (v0 + v1 + f0 + f1) / 4                     smooth edge (two faces)
+//                e  = (v0 + v1) / 2                               sharp, boundary, non-manifold
+//   vertex point v' = (n-2)/n v + 1/n^2 sum(e_i) + 1/n^2 sum(f_i)  Smooth or Dart rule, n faces,
+//                     e_i the far ends of the n edges, f_i the new face points
+//                v' = 3/4 v + 1/8 (a + b)                         Crease rule, a, b the far ends
+//                                                                  of the two sharp edges
+//                v' = v                                           Corner rule
+//
+// The returned table has two blocks: the face points, then the edge and vertex points,
+// which read the face points of the same level. Its rows are numbered like the child
+// points of the quad split (SubDQuadSplit.h).
+#ifndef SubDCatmullClarkRules_h
+#define SubDCatmullClarkRules_h
+
+#include "SubDLevel.h"
+#include "SubDStencilTable.h"
+
+namespace subd
+{
+SUBDKERNEL_EXPORT StencilTable BuildCatmullClarkStencils(const Level& parent);
+}
+
+#endif

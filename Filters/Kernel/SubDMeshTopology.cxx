@@ -1,0 +1,284 @@
+#include "SubDMeshTopology.h"
+
+#include <algorithm>
+#include <numeric>
+#include <utility>
+
+namespace subd
+{
+namespace
+{
+// Turns per-item counts stored at [i+1] into offsets (exclusive prefix sum in place).
+void CountsToOffsets(std::vector<Index>& offsets)
+{
+  for (size_t i = 1; i < offsets.size(); ++i)
+  {
+    offsets[i] += offsets[i - 1];
+  }
+}
+}
+
+MeshTopology MeshTopology::Build(
+  Index numVertices, std::vector<Index> faceOffsets, std::vector<Index> faceVertices)
+{
+  MeshTopology topology;
+  topology.NumVertices = numVertices;
+  topology.FaceOffsets = std::move(faceOffsets);
+  topology.FaceVertices = std::move(faceVertices);
+  if (topology.FaceOffsets.empty())
+  {
+    topology.FaceOffsets.push_back(0);
+  }
+  topology.BuildEdges();
+  topology.BuildEdgeFaces();
+  topology.BuildVertexRelations();
+  topology.TagEdges();
+  topology.TagVertices();
+  return topology;
+}
+
+// Edges are found by bucketing every half-edge under its lower vertex and sorting each
+// (small) bucket by the upper vertex: linear in the mesh size for bounded valence, and
+// O(k log k) for a vertex of valence k, so even a 100k-valent hub stays fast.
+void MeshTopology::BuildEdges()
+{
+  const Index numFaces = this->GetNumFaces();
+  const size_t numHalfEdges = this->FaceVertices.size();
+
+  std::vector<Index> upper(numHalfEdges);
+  std::vector<Index> bucketOffsets(static_cast<size_t>(this->NumVertices) + 1, 0);
+  for (Index f = 0; f < numFaces; ++f)
+  {
+    const Index begin = this->FaceOffsets[f], end = this->FaceOffsets[f + 1];
+    for (Index h = begin; h < end; ++h)
+    {
+      const Index a = this->FaceVertices[h];
+      const Index b = this->FaceVertices[h + 1 < end ? h + 1 : begin];
+      upper[h] = std::max(a, b);
+      ++bucketOffsets[std::min(a, b) + 1];
+    }
+  }
+  CountsToOffsets(bucketOffsets);
+
+  std::vector<Index> buckets(numHalfEdges);
+  {
+    std::vector<Index> fill(bucketOffsets.begin(), bucketOffsets.end() - 1);
+    for (Index f = 0; f < numFaces; ++f)
+    {
+      const Index begin = this->FaceOffsets[f], end = this->FaceOffsets[f + 1];
+      for (Index h = begin; h < end; ++h)
+      {
+        const Index a = this->FaceVertices[h];
+        const Index b = this->FaceVertices[h + 1 < end ? h + 1 : begin];
+        buckets[fill[std::min(a, b)]++] = h;
+      }
+    }
+  }
+
+  // representative[h]: the first half-edge (lowest index) with the same vertex pair as h.
+  std::vector<Index> representative(numHalfEdges);
+  for (Index v = 0; v < this->NumVertices; ++v)
+  {
+    Index* first = buckets.data() + bucketOffsets[v];
+    Index* last = buckets.data() + bucketOffsets[v + 1];
+    if (last - first > 1)
+    {
+      std::sort(first, last, [&upper](Index x, Index y) {
+        return upper[x] != upper[y] ? upper[x] < upper[y] : x < y;
+      });
+    }
+    for (Index* it = first; it != last; ++it)
+    {
+      const bool startsRun = (it == first) || upper[*(it - 1)] != upper[*it];
+      representative[*it] = startsRun ? *it : representative[*(it - 1)];
+    }
+  }
+
+  this->FaceEdges.assign(numHalfEdges, InvalidIndex);
+  this->EdgeVertices.clear();
+  this->EdgeVertices.reserve(numHalfEdges + 8);
+  Index numEdges = 0;
+  for (Index f = 0; f < numFaces; ++f)
+  {
+    const Index begin = this->FaceOffsets[f], end = this->FaceOffsets[f + 1];
+    for (Index h = begin; h < end; ++h)
+    {
+      if (representative[h] == h)
+      {
+        this->FaceEdges[h] = numEdges++;
+        this->EdgeVertices.push_back(this->FaceVertices[h]);
+        this->EdgeVertices.push_back(this->FaceVertices[h + 1 < end ? h + 1 : begin]);
+      }
+      else
+      {
+        this->FaceEdges[h] = this->FaceEdges[representative[h]];
+      }
+    }
+  }
+  this->EdgeVertices.shrink_to_fit();
+}
+
+void MeshTopology::BuildEdgeFaces()
+{
+  const Index numFaces = this->GetNumFaces();
+  const Index numEdges = this->GetNumEdges();
+  this->EdgeFaceOffsets.assign(static_cast<size_t>(numEdges) + 1, 0);
+  for (Index e : this->FaceEdges)
+  {
+    ++this->EdgeFaceOffsets[e + 1];
+  }
+  CountsToOffsets(this->EdgeFaceOffsets);
+  this->EdgeFaces.resize(this->FaceEdges.size());
+  std::vector<Index> fill(this->EdgeFaceOffsets.begin(), this->EdgeFaceOffsets.end() - 1);
+  for (Index f = 0; f < numFaces; ++f)
+  {
+    for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
+    {
+      this->EdgeFaces[fill[this->FaceEdges[h]]++] = f;
+    }
+  }
+}
+
+void MeshTopology::BuildVertexRelations()
+{
+  const size_t numVertexSlots = static_cast<size_t>(this->NumVertices) + 1;
+  this->VertexFaceOffsets.assign(numVertexSlots, 0);
+  for (Index v : this->FaceVertices)
+  {
+    ++this->VertexFaceOffsets[v + 1];
+  }
+  CountsToOffsets(this->VertexFaceOffsets);
+  this->VertexFaces.resize(this->FaceVertices.size());
+  {
+    std::vector<Index> fill(this->VertexFaceOffsets.begin(), this->VertexFaceOffsets.end() - 1);
+    const Index numFaces = this->GetNumFaces();
+    for (Index f = 0; f < numFaces; ++f)
+    {
+      for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
+      {
+        this->VertexFaces[fill[this->FaceVertices[h]]++] = f;
+      }
+    }
+  }
+
+  this->VertexEdgeOffsets.assign(numVertexSlots, 0);
+  for (Index v : this->EdgeVertices)
+  {
+    ++this->VertexEdgeOffsets[v + 1];
+  }
+  CountsToOffsets(this->VertexEdgeOffsets);
+  this->VertexEdges.resize(this->EdgeVertices.size());
+  std::vector<Index> fill(this->VertexEdgeOffsets.begin(), this->VertexEdgeOffsets.end() - 1);
+  const Index numEdges = this->GetNumEdges();
+  for (Index e = 0; e < numEdges; ++e)
+  {
+    this->VertexEdges[fill[this->EdgeVertices[2 * e]]++] = e;
+    this->VertexEdges[fill[this->EdgeVertices[2 * e + 1]]++] = e;
+  }
+  this->MaxValence = 0;
+  for (Index v = 0; v < this->NumVertices; ++v)
+  {
+    this->MaxValence = std::max(this->MaxValence, this->GetVertexEdges(v).size());
+  }
+}
+
+void MeshTopology::TagEdges()
+{
+  const Index numEdges = this->GetNumEdges();
+  // How many incident faces run along the edge in its stored direction: a consistently
+  // oriented manifold edge with two faces has exactly one.
+  std::vector<std::uint8_t> forwardCount(static_cast<size_t>(numEdges), 0);
+  const Index numFaces = this->GetNumFaces();
+  for (Index f = 0; f < numFaces; ++f)
+  {
+    for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
+    {
+      const Index e = this->FaceEdges[h];
+      if (this->FaceVertices[h] == this->EdgeVertices[2 * e] && forwardCount[e] < 255)
+      {
+        ++forwardCount[e];
+      }
+    }
+  }
+  this->EdgeTags.assign(static_cast<size_t>(numEdges), EdgeTag{ 0, 0 });
+  this->NumNonManifoldEdges = 0;
+  this->NumBoundaryEdges = 0;
+  for (Index e = 0; e < numEdges; ++e)
+  {
+    const Index faces = this->GetEdgeFaces(e).size();
+    EdgeTag& tag = this->EdgeTags[e];
+    tag.Boundary = faces == 1;
+    tag.NonManifold = faces > 2 || (faces == 2 && forwardCount[e] != 1);
+    this->NumNonManifoldEdges += tag.NonManifold;
+    this->NumBoundaryEdges += tag.Boundary;
+  }
+}
+
+// A vertex is manifold when its faces form one fan: union the faces that share an edge at
+// the vertex (manifold edges only) and count the groups.
+void MeshTopology::TagVertices()
+{
+  this->VertexTags.assign(static_cast<size_t>(this->NumVertices), VertexTag{ 0, 0 });
+  this->NumNonManifoldVertices = 0;
+  std::vector<Index> parent;
+  for (Index v = 0; v < this->NumVertices; ++v)
+  {
+    VertexTag& tag = this->VertexTags[v];
+    const IndexSpan edges = this->GetVertexEdges(v);
+    const IndexSpan faces = this->GetVertexFaces(v);
+    for (Index e : edges)
+    {
+      tag.Boundary |= this->EdgeTags[e].Boundary;
+      tag.NonManifold |= this->EdgeTags[e].NonManifold;
+    }
+    if (!tag.NonManifold && faces.size() > 1)
+    {
+      parent.resize(faces.size());
+      std::iota(parent.begin(), parent.end(), 0);
+      auto root = [&parent](Index i) {
+        while (parent[i] != i)
+        {
+          i = parent[i] = parent[parent[i]];
+        }
+        return i;
+      };
+      // Faces of a vertex are stored in increasing order: binary search gives local slots.
+      auto slot = [&faces](Index f) {
+        return static_cast<Index>(std::lower_bound(faces.begin(), faces.end(), f) - faces.begin());
+      };
+      Index groups = faces.size();
+      for (Index e : edges)
+      {
+        const IndexSpan ef = this->GetEdgeFaces(e);
+        if (ef.size() == 2)
+        {
+          const Index r0 = root(slot(ef[0])), r1 = root(slot(ef[1]));
+          if (r0 != r1)
+          {
+            parent[r0] = r1;
+            --groups;
+          }
+        }
+      }
+      tag.NonManifold = groups > 1;
+    }
+    this->NumNonManifoldVertices += tag.NonManifold;
+  }
+}
+
+Index MeshTopology::FindEdge(Index a, Index b) const
+{
+  if (a < 0 || a >= this->NumVertices)
+  {
+    return InvalidIndex;
+  }
+  for (Index e : this->GetVertexEdges(a))
+  {
+    if (this->GetOtherEndpoint(e, a) == b)
+    {
+      return e;
+    }
+  }
+  return InvalidIndex;
+}
+}

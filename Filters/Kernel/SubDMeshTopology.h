@@ -1,0 +1,118 @@
+// SubD kernel: the connectivity of a polygon mesh of any face sizes, in flat arrays.
+//
+// Built once from faces given as offsets + vertex indices (the layout of vtkCellArray), it
+// derives the edges and every incidence relation the subdivision rules query:
+// face->edges (edge i of a face joins its corners i and i+1), edge->vertices, edge->faces,
+// vertex->faces and vertex->edges, each as count/offset arrays. Edges are numbered in the
+// order they are first met walking the faces, which keeps neighbouring data close in memory.
+//
+// Non-manifold configurations are representable and tagged, never rejected:
+// an edge with more than two faces, or whose two faces traverse it in the same direction
+// (inconsistent orientation), is tagged non-manifold; a vertex is non-manifold when it lies on
+// such an edge or when its faces form more than one fan (a "bow-tie"). The subdivision rules
+// treat both as infinitely sharp, as OpenSubdiv does.
+#ifndef SubDMeshTopology_h
+#define SubDMeshTopology_h
+
+#include "SubDTypes.h"
+#include <vector>
+
+namespace subd
+{
+/// Per-edge topological tags.
+struct EdgeTag
+{
+  std::uint8_t Boundary : 1;    ///< exactly one incident face
+  std::uint8_t NonManifold : 1; ///< more than two faces, or inconsistent orientation
+};
+
+/// Per-vertex topological tags.
+struct VertexTag
+{
+  std::uint8_t Boundary : 1;    ///< lies on a boundary edge
+  std::uint8_t NonManifold : 1; ///< on a non-manifold edge, or faces form several fans
+};
+
+class SUBDKERNEL_EXPORT MeshTopology
+{
+public:
+  MeshTopology() = default;
+
+  /// Builds the topology. Preconditions (checked by the caller, see MeshValidation): every
+  /// face has >= 3 corners, no face repeats a vertex, all indices are in [0, numVertices).
+  /// `faceOffsets` has numFaces+1 entries, the last one equal to the size of `faceVertices`.
+  static MeshTopology Build(Index numVertices, std::vector<Index> faceOffsets,
+    std::vector<Index> faceVertices);
+
+  Index GetNumVertices() const { return NumVertices; }
+  Index GetNumFaces() const { return static_cast<Index>(FaceOffsets.size()) - 1; }
+  Index GetNumEdges() const { return static_cast<Index>(EdgeVertices.size() / 2); }
+  /// Sum of all face sizes (number of face corners / half-edges).
+  Index GetNumFaceCorners() const { return static_cast<Index>(FaceVertices.size()); }
+
+  Index GetFaceSize(Index f) const { return FaceOffsets[f + 1] - FaceOffsets[f]; }
+  Index GetFaceOffset(Index f) const { return FaceOffsets[f]; }
+  IndexSpan GetFaceVertices(Index f) const { return Span(FaceVertices, FaceOffsets, f); }
+  IndexSpan GetFaceEdges(Index f) const { return Span(FaceEdges, FaceOffsets, f); }
+
+  const Index* GetEdgeVertices(Index e) const { return &EdgeVertices[2 * static_cast<size_t>(e)]; }
+  IndexSpan GetEdgeFaces(Index e) const { return Span(EdgeFaces, EdgeFaceOffsets, e); }
+
+  IndexSpan GetVertexFaces(Index v) const { return Span(VertexFaces, VertexFaceOffsets, v); }
+  IndexSpan GetVertexEdges(Index v) const { return Span(VertexEdges, VertexEdgeOffsets, v); }
+
+  /// The vertex at the other end of edge `e` from `v`.
+  Index GetOtherEndpoint(Index e, Index v) const
+  {
+    const Index* ev = GetEdgeVertices(e);
+    return ev[0] == v ? ev[1] : ev[0];
+  }
+
+  EdgeTag GetEdgeTag(Index e) const { return EdgeTags[e]; }
+  VertexTag GetVertexTag(Index v) const { return VertexTags[v]; }
+
+  Index GetNumNonManifoldEdges() const { return NumNonManifoldEdges; }
+  Index GetNumNonManifoldVertices() const { return NumNonManifoldVertices; }
+  Index GetNumBoundaryEdges() const { return NumBoundaryEdges; }
+  Index GetMaxValence() const { return MaxValence; }
+
+  /// Raw arrays (read-only), for splits that emit child topology in bulk.
+  const std::vector<Index>& GetFaceOffsetArray() const { return FaceOffsets; }
+  const std::vector<Index>& GetFaceVertexArray() const { return FaceVertices; }
+  const std::vector<Index>& GetFaceEdgeArray() const { return FaceEdges; }
+
+  /// Returns the edge joining a and b, or InvalidIndex.
+  Index FindEdge(Index a, Index b) const;
+
+private:
+  static IndexSpan Span(const std::vector<Index>& data, const std::vector<Index>& offsets, Index i)
+  {
+    return IndexSpan{ data.data() + offsets[i], offsets[i + 1] - offsets[i] };
+  }
+  void BuildEdges();
+  void BuildEdgeFaces();
+  void BuildVertexRelations();
+  void TagEdges();
+  void TagVertices();
+
+  Index NumVertices = 0;
+  std::vector<Index> FaceOffsets{ 0 };
+  std::vector<Index> FaceVertices;
+  std::vector<Index> FaceEdges;
+  std::vector<Index> EdgeVertices;
+  std::vector<Index> EdgeFaceOffsets{ 0 };
+  std::vector<Index> EdgeFaces;
+  std::vector<Index> VertexFaceOffsets{ 0 };
+  std::vector<Index> VertexFaces;
+  std::vector<Index> VertexEdgeOffsets{ 0 };
+  std::vector<Index> VertexEdges;
+  std::vector<EdgeTag> EdgeTags;
+  std::vector<VertexTag> VertexTags;
+  Index NumNonManifoldEdges = 0;
+  Index NumNonManifoldVertices = 0;
+  Index NumBoundaryEdges = 0;
+  Index MaxValence = 0;
+};
+}
+
+#endif

@@ -1,0 +1,101 @@
+// SubD kernel: checks and repairs polygon lists before a topology is built from them.
+//
+// Subdivision rules assume every face has at least three distinct corners. Real meshes break
+// that (repeated ids from welding, two-point "faces", out-of-range ids from broken files), so
+// faces are screened once here: consecutive repeated corners are collapsed, faces left with
+// fewer than three corners or repeating a vertex elsewhere are dropped and counted, and
+// out-of-range ids are reported (the caller refuses such input).
+#ifndef SubDMeshValidation_h
+#define SubDMeshValidation_h
+
+#include "SubDTypes.h"
+#include <vector>
+
+namespace subd
+{
+struct FaceScreening
+{
+  std::vector<Index> Offsets{ 0 };  ///< kept faces, offsets
+  std::vector<Index> Vertices;      ///< kept faces, corners
+  std::vector<Index> KeptFaces;     ///< for each kept face, its index in the input
+  Index NumOutOfRange = 0;          ///< faces naming a vertex outside [0, numVertices)
+  Index FirstOutOfRangeFace = InvalidIndex;
+  Index FirstOutOfRangeId = InvalidIndex;
+  Index NumDropped = 0;             ///< faces with < 3 distinct corners or repeated vertices
+  Index FirstDroppedFace = InvalidIndex;
+  Index NumCollapsedCorners = 0;    ///< consecutive duplicates removed from kept faces
+};
+
+/// Screens `numFaces` faces given as offsets (numFaces+1 entries) into `vertices`.
+/// IdType is any integer type (VTK's vtkIdType, or Index).
+template <typename IdType>
+FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offsets, const IdType* vertices);
+
+/// True when the n corners hold a vertex twice (n small: pairwise, else sorted copy).
+SUBDKERNEL_EXPORT bool HasRepeatedVertex(const Index* corners, Index n, std::vector<Index>& scratch);
+
+template <typename IdType>
+FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offsets, const IdType* vertices)
+{
+  FaceScreening s;
+  s.Offsets.reserve(static_cast<size_t>(numFaces) + 1);
+  s.Vertices.reserve(static_cast<size_t>(offsets[numFaces] - offsets[0]));
+  s.KeptFaces.reserve(static_cast<size_t>(numFaces));
+  std::vector<Index> scratch;
+  for (Index f = 0; f < numFaces; ++f)
+  {
+    const IdType begin = offsets[f], end = offsets[f + 1];
+    bool inRange = true;
+    for (IdType k = begin; k < end; ++k)
+    {
+      if (vertices[k] < 0 || vertices[k] >= static_cast<IdType>(numVertices))
+      {
+        if (s.NumOutOfRange == 0)
+        {
+          s.FirstOutOfRangeFace = f;
+          s.FirstOutOfRangeId = static_cast<Index>(vertices[k] < 0 ? -1 : vertices[k]);
+        }
+        inRange = false;
+        break;
+      }
+    }
+    if (!inRange)
+    {
+      ++s.NumOutOfRange;
+      continue;
+    }
+    const size_t start = s.Vertices.size();
+    for (IdType k = begin; k < end; ++k)
+    {
+      const Index v = static_cast<Index>(vertices[k]);
+      if (s.Vertices.size() > start && s.Vertices.back() == v)
+      {
+        ++s.NumCollapsedCorners;
+        continue;
+      }
+      s.Vertices.push_back(v);
+    }
+    while (s.Vertices.size() > start + 1 && s.Vertices.back() == s.Vertices[start])
+    {
+      s.Vertices.pop_back();
+      ++s.NumCollapsedCorners;
+    }
+    const Index n = static_cast<Index>(s.Vertices.size() - start);
+    if (n < 3 || HasRepeatedVertex(s.Vertices.data() + start, n, scratch))
+    {
+      s.Vertices.resize(start);
+      if (s.NumDropped == 0)
+      {
+        s.FirstDroppedFace = f;
+      }
+      ++s.NumDropped;
+      continue;
+    }
+    s.Offsets.push_back(static_cast<Index>(s.Vertices.size()));
+    s.KeptFaces.push_back(f);
+  }
+  return s;
+}
+}
+
+#endif

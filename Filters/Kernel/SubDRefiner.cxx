@@ -1,0 +1,33 @@
+#include "SubDRefiner.h"
+
+namespace subd
+{
+void SerialFor(Index begin, Index end, const RangeTask& task)
+{
+  if (begin < end)
+  {
+    task(begin, end);
+  }
+}
+
+bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
+  const ProgressCallback& progress)
+{
+  out.NumBasePoints = base.Topology.GetNumVertices();
+  out.Stencils.clear();
+  out.Stencils.reserve(static_cast<size_t>(levels > 0 ? levels : 0));
+  Level current = std::move(base);
+  for (int l = 0; l < levels; ++l)
+  {
+    out.Stencils.push_back(scheme.BuildStencils(current));
+    current = scheme.Split(current);
+    if (progress && !progress(static_cast<double>(l + 1) / levels))
+    {
+      out.Finest = std::move(current);
+      return false;
+    }
+  }
+  out.Finest = std::move(current);
+  return true;
+}
+}

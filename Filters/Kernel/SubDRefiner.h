@@ -1,0 +1,84 @@
+// SubD kernel: refines a base level N times with a scheme and evaluates per-point data.
+//
+// Refinement (topology + stencils) depends only on the connectivity and tags; evaluation
+// applies the stored stencils to any per-point data. Keeping them apart is what lets a
+// caller refine once and re-evaluate cheaply when only point positions change.
+#ifndef SubDRefiner_h
+#define SubDRefiner_h
+
+#include "SubDScheme.h"
+
+#include <algorithm>
+#include <functional>
+#include <vector>
+
+namespace subd
+{
+/// Runs task(begin, end) over [begin, end), possibly split among threads. The kernel is
+/// thread-agnostic; the VTK layer passes a vtkSMPTools-backed implementation.
+using RangeTask = std::function<void(Index, Index)>;
+using ParallelFor = std::function<void(Index, Index, const RangeTask&)>;
+SUBDKERNEL_EXPORT void SerialFor(Index begin, Index end, const RangeTask& task);
+
+/// Reports progress in [0, 1]; returning false asks the work to stop.
+using ProgressCallback = std::function<bool(double)>;
+
+struct SUBDKERNEL_EXPORT Hierarchy
+{
+  Index NumBasePoints = 0;
+  std::vector<StencilTable> Stencils; ///< one per level, level 0 -> 1 first
+  Level Finest;                       ///< topology and tags of the last level
+
+  int GetNumLevels() const { return static_cast<int>(Stencils.size()); }
+  Index GetNumFinestPoints() const { return Finest.Topology.GetNumVertices(); }
+
+  /// Applies every level's stencils to `components` values per base point; `finest` receives
+  /// GetNumFinestPoints() * components values. T is float or double (accumulation is in
+  /// double either way). Returns false when progress asked to stop.
+  template <typename T>
+  bool Evaluate(const T* base, int components, T* finest, const ParallelFor& parallelFor = SerialFor,
+    const ProgressCallback& progress = nullptr) const;
+};
+
+/// Refines `base` `levels` times. Returns false if progress asked to stop (out is then
+/// incomplete).
+SUBDKERNEL_EXPORT bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
+  const ProgressCallback& progress = nullptr);
+
+template <typename T>
+bool Hierarchy::Evaluate(const T* base, int components, T* finest, const ParallelFor& parallelFor,
+  const ProgressCallback& progress) const
+{
+  const int levels = this->GetNumLevels();
+  if (levels == 0)
+  {
+    std::copy(base, base + static_cast<size_t>(this->NumBasePoints) * components, finest);
+    return true;
+  }
+  std::vector<T> scratch[2];
+  const T* parents = base;
+  for (int l = 0; l < levels; ++l)
+  {
+    const StencilTable& table = this->Stencils[l];
+    T* children = finest;
+    if (l + 1 < levels)
+    {
+      scratch[l % 2].resize(static_cast<size_t>(table.GetNumRows()) * components);
+      children = scratch[l % 2].data();
+    }
+    for (Index b = 0; b < table.GetNumBlocks(); ++b)
+    {
+      parallelFor(table.GetBlockBegin(b), table.GetBlockEnd(b),
+        [&](Index begin, Index end) { table.ApplyRows(parents, children, components, begin, end); });
+    }
+    parents = children;
+    if (progress && !progress(static_cast<double>(l + 1) / levels))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+}
+
+#endif

@@ -1,0 +1,27 @@
+#include "SubDScheme.h"
+#include "SubDCatmullClarkRules.h"
+#include "SubDQuadSplit.h"
+
+namespace subd
+{
+Level CatmullClarkScheme::Split(const Level& parent) const
+{
+  return SplitQuads(parent);
+}
+
+StencilTable CatmullClarkScheme::BuildStencils(const Level& parent) const
+{
+  return BuildCatmullClarkStencils(parent);
+}
+
+MeshCounts CatmullClarkScheme::PredictChildCounts(const MeshCounts& parent) const
+{
+  // Each corner becomes a quad; each edge splits in two and each corner adds an inner edge.
+  MeshCounts child;
+  child.Faces = parent.Corners;
+  child.Edges = 2.0 * parent.Edges + parent.Corners;
+  child.Vertices = parent.Faces + parent.Edges + parent.Vertices;
+  child.Corners = 4.0 * parent.Corners;
+  return child;
+}
+}

@@ -1,0 +1,258 @@
+#include "vtkSubDOFFReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkErrorCode.h"
+#include "vtkIdTypeArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtksys/FStream.hxx"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkSubDOFFReader);
+
+namespace
+{
+// Splits the file into lines without comments or blank lines, remembering line numbers so
+// errors can point at the offending line.
+class OFFLines
+{
+public:
+  explicit OFFLines(std::istream& in)
+    : In(in)
+  {
+  }
+
+  // Next non-empty line (comment stripped); false at end of file.
+  bool Next(std::string& line)
+  {
+    while (std::getline(this->In, line))
+    {
+      ++this->Number;
+      const auto hash = line.find('#');
+      if (hash != std::string::npos)
+      {
+        line.erase(hash);
+      }
+      if (line.find_first_not_of(" \t\r\n") != std::string::npos)
+      {
+        return true;
+      }
+    }
+    return false;
+  }
+  long GetNumber() const { return this->Number; }
+
+private:
+  std::istream& In;
+  long Number = 0;
+};
+
+// Parses whitespace-separated numbers of a line.
+bool ParseNumbers(const std::string& line, std::vector<double>& values)
+{
+  values.clear();
+  const char* p = line.c_str();
+  char* end = nullptr;
+  while (true)
+  {
+    while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')
+    {
+      ++p;
+    }
+    if (*p == '\0')
+    {
+      return true;
+    }
+    errno = 0;
+    const double v = std::strtod(p, &end);
+    if (end == p || errno == ERANGE)
+    {
+      return false;
+    }
+    values.push_back(v);
+    p = end;
+  }
+}
+}
+
+vtkSubDOFFReader::vtkSubDOFFReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+vtkSubDOFFReader::~vtkSubDOFFReader()
+{
+  this->SetFileName(nullptr);
+}
+
+int vtkSubDOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->SetErrorCode(vtkErrorCode::NoError);
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No file name was set.");
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
+    return 0;
+  }
+  vtksys::ifstream file(this->FileName);
+  if (!file)
+  {
+    vtkErrorMacro("Cannot open '" << this->FileName << "'.");
+    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
+    return 0;
+  }
+  OFFLines lines(file);
+  std::string line;
+  std::vector<double> values;
+  auto fail = [&](const std::string& what) {
+    vtkErrorMacro("'" << this->FileName << "', line " << lines.GetNumber() << ": " << what);
+    this->SetErrorCode(vtkErrorCode::FileFormatError);
+    output->Initialize();
+    return 0;
+  };
+
+  if (!lines.Next(line))
+  {
+    return fail("the file is empty; expected an OFF header.");
+  }
+  bool vertexColors = false;
+  {
+    std::istringstream words(line);
+    std::string first;
+    words >> first;
+    if (first.size() >= 3 && first.compare(first.size() - 3, 3, "OFF") == 0)
+    {
+      const std::string prefix = first.substr(0, first.size() - 3);
+      if (!prefix.empty() && prefix != "C")
+      {
+        return fail("header '" + first + "' is not supported (OFF and COFF are).");
+      }
+      vertexColors = prefix == "C";
+      std::string rest;
+      std::getline(words, rest);
+      if (rest.find_first_not_of(" \t\r") != std::string::npos)
+      {
+        line = rest; // counts on the header line
+      }
+      else if (!lines.Next(line))
+      {
+        return fail("the file ends after its header; expected 'vertices faces edges'.");
+      }
+    }
+  }
+  if (!ParseNumbers(line, values) || values.size() < 2)
+  {
+    return fail("expected the counts 'vertices faces edges', found '" + line + "'.");
+  }
+  const double numVerticesValue = values[0], numFacesValue = values[1];
+  if (numVerticesValue < 0 || numFacesValue < 0 || numVerticesValue > 2e9 || numFacesValue > 2e9 ||
+    numVerticesValue != static_cast<double>(static_cast<long long>(numVerticesValue)) ||
+    numFacesValue != static_cast<double>(static_cast<long long>(numFacesValue)))
+  {
+    return fail("invalid vertex or face count in '" + line + "'.");
+  }
+  const vtkIdType numVertices = static_cast<vtkIdType>(numVerticesValue);
+  const vtkIdType numFaces = static_cast<vtkIdType>(numFacesValue);
+
+  vtkNew<vtkPoints> points;
+  points->SetDataType(VTK_DOUBLE);
+  points->SetNumberOfPoints(numVertices);
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("Colors");
+  colors->SetNumberOfComponents(4);
+  if (vertexColors)
+  {
+    colors->SetNumberOfTuples(numVertices);
+  }
+  for (vtkIdType i = 0; i < numVertices; ++i)
+  {
+    if (!lines.Next(line))
+    {
+      return fail("the file ends after " + std::to_string(i) + " of " + std::to_string(numVertices) +
+        " vertices.");
+    }
+    if (!ParseNumbers(line, values) || values.size() < 3)
+    {
+      return fail("expected the coordinates of vertex " + std::to_string(i) + ", found '" + line + "'.");
+    }
+    points->SetPoint(i, values[0], values[1], values[2]);
+    if (vertexColors)
+    {
+      unsigned char rgba[4] = { 255, 255, 255, 255 };
+      const size_t numColor = values.size() - 3;
+      bool unit = true;
+      for (size_t c = 3; c < values.size(); ++c)
+      {
+        unit = unit && values[c] <= 1.0 && std::floor(values[c]) != values[c];
+      }
+      for (size_t c = 0; c < numColor && c < 4; ++c)
+      {
+        double v = values[3 + c] * (unit ? 255.0 : 1.0);
+        v = v < 0 ? 0 : (v > 255 ? 255 : v);
+        rgba[c] = static_cast<unsigned char>(v + 0.5);
+      }
+      colors->SetTypedTuple(i, rgba);
+    }
+  }
+
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->Allocate(numFaces + 1);
+  connectivity->Allocate(4 * numFaces);
+  offsets->InsertNextValue(0);
+  for (vtkIdType f = 0; f < numFaces; ++f)
+  {
+    if (!lines.Next(line))
+    {
+      return fail("the file ends after " + std::to_string(f) + " of " + std::to_string(numFaces) +
+        " faces.");
+    }
+    if (!ParseNumbers(line, values) || values.empty())
+    {
+      return fail("expected face " + std::to_string(f) + " as 'n i0 i1 ...', found '" + line + "'.");
+    }
+    const double n = values[0];
+    if (n < 1 || n != std::floor(n) || static_cast<double>(values.size()) < n + 1)
+    {
+      return fail("face " + std::to_string(f) + " announces " + std::to_string(static_cast<long long>(n)) +
+        " vertices but lists " + std::to_string(values.size() - 1) + ".");
+    }
+    for (vtkIdType k = 1; k <= static_cast<vtkIdType>(n); ++k)
+    {
+      const double id = values[k];
+      if (id < 0 || id >= static_cast<double>(numVertices) || id != std::floor(id))
+      {
+        return fail("face " + std::to_string(f) + " uses vertex " + std::to_string(id) +
+          ", but the file has " + std::to_string(numVertices) + " vertices.");
+      }
+      connectivity->InsertNextValue(static_cast<vtkIdType>(id));
+    }
+    offsets->InsertNextValue(connectivity->GetNumberOfTuples());
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  if (vertexColors)
+  {
+    output->GetPointData()->SetScalars(colors);
+  }
+  return 1;
+}
+
+void vtkSubDOFFReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+}

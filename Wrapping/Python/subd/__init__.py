@@ -1,0 +1,10 @@
+"""SubD: subdivision surfaces and curves as VTK filters.
+
+Importing this package loads VTK's Python modules it depends on, then the wrapped SubD
+classes, e.g. ``subd.vtkSubDCatmullClarkFilter``.
+"""
+from vtkmodules import vtkCommonCore as _vtkCommonCore  # noqa: F401  (registers VTK types)
+from .SubDFilters import *  # noqa: F401,F403
+from .SubDIO import *  # noqa: F401,F403
+
+__all__ = [name for name in dir() if name.startswith("vtkSubD")]
