@@ -1,0 +1,227 @@
+// Test fixtures: small control meshes generated in code (closed, open, mixed face sizes,
+// valences 3..8, non-manifold), with deterministic jitter so that no symmetry hides a wrong
+// weight. Shared by the kernel, property and oracle tests.
+#ifndef SubDTestMeshes_h
+#define SubDTestMeshes_h
+
+#include "SubDTypes.h"
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace subdtest
+{
+struct TestMesh
+{
+  std::string Name;
+  std::vector<double> Points; // xyz per vertex
+  std::vector<subd::Index> Offsets{ 0 };
+  std::vector<subd::Index> Vertices;
+
+  subd::Index NumVertices() const { return static_cast<subd::Index>(Points.size() / 3); }
+  subd::Index NumFaces() const { return static_cast<subd::Index>(Offsets.size()) - 1; }
+  void AddPoint(double x, double y, double z) { Points.insert(Points.end(), { x, y, z }); }
+  void AddFace(std::initializer_list<subd::Index> f)
+  {
+    Vertices.insert(Vertices.end(), f);
+    Offsets.push_back(static_cast<subd::Index>(Vertices.size()));
+  }
+  void AddFace(const std::vector<subd::Index>& f)
+  {
+    Vertices.insert(Vertices.end(), f.begin(), f.end());
+    Offsets.push_back(static_cast<subd::Index>(Vertices.size()));
+  }
+  /// Moves every point by a small deterministic pseudo-random offset.
+  TestMesh& Jitter(double amount)
+  {
+    std::uint32_t state = 12345u;
+    for (double& x : Points)
+    {
+      state = state * 1664525u + 1013904223u;
+      x += amount * ((state >> 8) / double(1u << 24) - 0.5);
+    }
+    return *this;
+  }
+};
+
+/// nx by ny quads; closed directions wrap around (both closed: a torus, all valence 4).
+inline TestMesh Grid(int nx, int ny, bool closedX, bool closedY)
+{
+  TestMesh m;
+  m.Name = std::string(closedX && closedY ? "torus" : "grid") + std::to_string(nx) + "x" + std::to_string(ny);
+  const int px = closedX ? nx : nx + 1, py = closedY ? ny : ny + 1;
+  const double pi = 3.14159265358979323846;
+  for (int j = 0; j < py; ++j)
+  {
+    for (int i = 0; i < px; ++i)
+    {
+      if (closedX && closedY)
+      {
+        const double u = 2 * pi * i / nx, v = 2 * pi * j / ny;
+        m.AddPoint((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v));
+      }
+      else
+      {
+        m.AddPoint(i, j, 0.1 * i * j - 0.05 * i * i);
+      }
+    }
+  }
+  auto id = [&](int i, int j) { return static_cast<subd::Index>((j % py) * px + (i % px)); };
+  for (int j = 0; j < ny; ++j)
+  {
+    for (int i = 0; i < nx; ++i)
+    {
+      m.AddFace({ id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1) });
+    }
+  }
+  return m;
+}
+
+inline TestMesh Cube()
+{
+  TestMesh m;
+  m.Name = "cube";
+  const double p[8][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 0, 0, 1 },
+    { 1, 0, 1 }, { 1, 1, 1 }, { 0, 1, 1 } };
+  for (auto& q : p)
+  {
+    m.AddPoint(q[0], q[1], q[2]);
+  }
+  m.AddFace({ 0, 3, 2, 1 });
+  m.AddFace({ 4, 5, 6, 7 });
+  m.AddFace({ 0, 1, 5, 4 });
+  m.AddFace({ 1, 2, 6, 5 });
+  m.AddFace({ 2, 3, 7, 6 });
+  m.AddFace({ 3, 0, 4, 7 });
+  return m;
+}
+
+/// A closed house: pentagon gables, quad walls and roof, a floor split into two triangles.
+/// `open` leaves the floor out.
+inline TestMesh House(bool open)
+{
+  TestMesh m;
+  m.Name = open ? "house-open" : "house";
+  const double p[10][3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 2, 0, 1 }, { 1, 0, 1.8 }, { 0, 0, 1 },
+    { 0, 3, 0 }, { 2, 3, 0 }, { 2, 3, 1 }, { 1, 3, 1.8 }, { 0, 3, 1 } };
+  for (auto& q : p)
+  {
+    m.AddPoint(q[0], q[1], q[2]);
+  }
+  m.AddFace({ 0, 1, 2, 3, 4 });  // front gable (pentagon)
+  m.AddFace({ 5, 9, 8, 7, 6 });  // back gable
+  m.AddFace({ 1, 6, 7, 2 });     // right wall
+  m.AddFace({ 0, 4, 9, 5 });     // left wall
+  m.AddFace({ 2, 7, 8, 3 });     // right roof
+  m.AddFace({ 4, 3, 8, 9 });     // left roof
+  if (!open)
+  {
+    m.AddFace({ 0, 5, 6 });      // floor, two triangles
+    m.AddFace({ 0, 6, 1 });
+  }
+  return m;
+}
+
+/// An n-gon prism (two n-gon caps, n quads) joined to an n-sided bipyramid-like fan: the
+/// apex of the fan has valence n, so n in 3..8 gives every extraordinary valence.
+inline TestMesh Star(int n)
+{
+  TestMesh m;
+  m.Name = "star" + std::to_string(n);
+  const double pi = 3.14159265358979323846;
+  for (int k = 0; k < n; ++k)
+  {
+    const double a = 2 * pi * k / n;
+    m.AddPoint(std::cos(a), std::sin(a), 0.0);
+    m.AddPoint(std::cos(a), std::sin(a), 1.0);
+  }
+  m.AddPoint(0, 0, 2.0); // apex over the top cap
+  const subd::Index apex = 2 * n;
+  std::vector<subd::Index> bottom;
+  for (int k = n - 1; k >= 0; --k)
+  {
+    bottom.push_back(2 * k);
+  }
+  m.AddFace(bottom); // bottom cap, an n-gon
+  for (int k = 0; k < n; ++k)
+  {
+    const int k1 = (k + 1) % n;
+    m.AddFace({ 2 * k, 2 * k1, 2 * k1 + 1, 2 * k + 1 }); // side quad
+    m.AddFace({ 2 * k + 1, 2 * k1 + 1, apex });          // roof triangle
+  }
+  return m;
+}
+
+/// Three quads sharing one edge (a non-manifold "fin"), plus a bow-tie vertex.
+inline TestMesh NonManifold()
+{
+  TestMesh m;
+  m.Name = "non-manifold";
+  m.AddPoint(0, 0, 0);  // 0: shared edge
+  m.AddPoint(0, 1, 0);  // 1: shared edge
+  m.AddPoint(1, 0, 0);  // 2
+  m.AddPoint(1, 1, 0);  // 3
+  m.AddPoint(-1, 0, 0); // 4
+  m.AddPoint(-1, 1, 0); // 5
+  m.AddPoint(0, 0, 1);  // 6
+  m.AddPoint(0, 1, 1);  // 7
+  m.AddFace({ 0, 2, 3, 1 });
+  m.AddFace({ 1, 5, 4, 0 });
+  m.AddFace({ 0, 1, 7, 6 });
+  // bow-tie: two triangles touching only at vertex 3
+  m.AddPoint(2, 1, 0);  // 8
+  m.AddPoint(2, 2, 0);  // 9
+  m.AddPoint(0.5, 2, 0.5); // 10
+  m.AddPoint(0, 2, 0.5);   // 11
+  m.AddFace({ 3, 8, 9 });
+  m.AddFace({ 3, 10, 11 });
+  return m;
+}
+
+/// Two cubes touching at one vertex: a pinch whose faces form two closed fans, non-manifold
+/// without any boundary or non-manifold edge.
+inline TestMesh PinchedCubes()
+{
+  TestMesh m = Cube();
+  m.Name = "pinched-cubes";
+  const TestMesh second = Cube();
+  const subd::Index shared = 6, offset = 8;
+  auto map = [&](subd::Index v) { return v == 0 ? shared : offset + v - 1; };
+  for (subd::Index v = 1; v < 8; ++v)
+  {
+    m.AddPoint(second.Points[3 * v] + 1, second.Points[3 * v + 1] + 1, second.Points[3 * v + 2] + 1);
+  }
+  for (subd::Index f = 0; f < second.NumFaces(); ++f)
+  {
+    std::vector<subd::Index> face;
+    for (subd::Index k = second.Offsets[f]; k < second.Offsets[f + 1]; ++k)
+    {
+      face.push_back(map(second.Vertices[k]));
+    }
+    m.AddFace(face);
+  }
+  return m;
+}
+
+/// The oracle and property fixture set.
+inline std::vector<TestMesh> StandardMeshes()
+{
+  std::vector<TestMesh> meshes;
+  meshes.push_back(Cube().Jitter(0.1));
+  meshes.push_back(Grid(4, 3, false, false).Jitter(0.1));
+  meshes.push_back(Grid(6, 5, true, true).Jitter(0.05));
+  meshes.push_back(House(false).Jitter(0.1));
+  meshes.push_back(House(true).Jitter(0.1));
+  for (int n = 3; n <= 8; ++n)
+  {
+    meshes.push_back(Star(n).Jitter(0.1));
+  }
+  meshes.push_back(NonManifold().Jitter(0.05));
+  meshes.push_back(PinchedCubes().Jitter(0.05));
+  return meshes;
+}
+}
+
+#endif
