@@ -1,1 +1,137 @@
+// Kernel unit tests: topology construction, tags, and face screening.
+#include "SubDMeshTopology.h"
+#include "SubDMeshValidation.h"
+#include "SubDTestMeshes.h"
+
 #include <gtest/gtest.h>
+
+using subd::Index;
+using subd::MeshTopology;
+
+namespace
+{
+MeshTopology Build(const subdtest::TestMesh& m)
+{
+  return MeshTopology::Build(m.NumVertices(), m.Offsets, m.Vertices);
+}
+}
+
+TEST(MeshTopology, CubeCountsAndRelations)
+{
+  const MeshTopology t = Build(subdtest::Cube());
+  EXPECT_EQ(t.GetNumVertices(), 8);
+  EXPECT_EQ(t.GetNumEdges(), 12);
+  EXPECT_EQ(t.GetNumFaces(), 6);
+  EXPECT_EQ(t.GetNumBoundaryEdges(), 0);
+  EXPECT_EQ(t.GetNumNonManifoldEdges(), 0);
+  EXPECT_EQ(t.GetNumNonManifoldVertices(), 0);
+  for (Index v = 0; v < 8; ++v)
+  {
+    EXPECT_EQ(t.GetVertexEdges(v).size(), 3);
+    EXPECT_EQ(t.GetVertexFaces(v).size(), 3);
+  }
+  for (Index f = 0; f < 6; ++f)
+  {
+    const subd::IndexSpan fv = t.GetFaceVertices(f), fe = t.GetFaceEdges(f);
+    for (Index j = 0; j < 4; ++j)
+    {
+      // Edge j of a face joins corners j and j+1.
+      const Index* ev = t.GetEdgeVertices(fe[j]);
+      const Index a = fv[j], b = fv[(j + 1) % 4];
+      EXPECT_TRUE((ev[0] == a && ev[1] == b) || (ev[0] == b && ev[1] == a));
+      EXPECT_EQ(t.FindEdge(a, b), fe[j]);
+      EXPECT_EQ(t.FindEdge(b, a), fe[j]);
+    }
+  }
+  for (Index e = 0; e < 12; ++e)
+  {
+    EXPECT_EQ(t.GetEdgeFaces(e).size(), 2);
+  }
+}
+
+TEST(MeshTopology, OpenGridBoundary)
+{
+  const MeshTopology t = Build(subdtest::Grid(4, 3, false, false));
+  EXPECT_EQ(t.GetNumVertices(), 20);
+  EXPECT_EQ(t.GetNumEdges(), 4 * 4 + 5 * 3);
+  EXPECT_EQ(t.GetNumBoundaryEdges(), 2 * (4 + 3));
+  Index boundaryVertices = 0;
+  for (Index v = 0; v < t.GetNumVertices(); ++v)
+  {
+    boundaryVertices += t.GetVertexTag(v).Boundary;
+  }
+  EXPECT_EQ(boundaryVertices, 14);
+  EXPECT_EQ(t.GetNumNonManifoldVertices(), 0);
+}
+
+TEST(MeshTopology, NonManifoldEdgeAndBowTie)
+{
+  const MeshTopology t = Build(subdtest::NonManifold());
+  const Index fin = t.FindEdge(0, 1);
+  ASSERT_NE(fin, subd::InvalidIndex);
+  EXPECT_EQ(t.GetEdgeFaces(fin).size(), 3);
+  EXPECT_TRUE(t.GetEdgeTag(fin).NonManifold);
+  EXPECT_EQ(t.GetNumNonManifoldEdges(), 1);
+  EXPECT_TRUE(t.GetVertexTag(0).NonManifold);
+  EXPECT_TRUE(t.GetVertexTag(1).NonManifold);
+  EXPECT_TRUE(t.GetVertexTag(3).NonManifold) << "bow-tie vertex";
+  EXPECT_FALSE(t.GetVertexTag(2).NonManifold);
+}
+
+TEST(MeshTopology, PinchedClosedFansAreNonManifold)
+{
+  const MeshTopology t = Build(subdtest::PinchedCubes());
+  EXPECT_EQ(t.GetNumNonManifoldEdges(), 0);
+  EXPECT_EQ(t.GetNumBoundaryEdges(), 0);
+  EXPECT_EQ(t.GetNumNonManifoldVertices(), 1);
+  EXPECT_TRUE(t.GetVertexTag(6).NonManifold);
+}
+
+TEST(MeshTopology, InconsistentOrientationIsNonManifold)
+{
+  // Both triangles run along edge 0->1 in the same direction.
+  const MeshTopology t = MeshTopology::Build(4, { 0, 3, 6 }, { 0, 1, 2, 0, 1, 3 });
+  EXPECT_TRUE(t.GetEdgeTag(t.FindEdge(0, 1)).NonManifold);
+  const MeshTopology ok = MeshTopology::Build(4, { 0, 3, 6 }, { 0, 1, 2, 1, 0, 3 });
+  EXPECT_FALSE(ok.GetEdgeTag(ok.FindEdge(0, 1)).NonManifold);
+}
+
+TEST(MeshTopology, HighValenceHubAndIsolatedVertex)
+{
+  const Index n = 1000;
+  std::vector<Index> offsets{ 0 }, verts;
+  for (Index k = 0; k < n; ++k)
+  {
+    verts.insert(verts.end(), { 0, 1 + k, 1 + (k + 1) % n });
+    offsets.push_back(static_cast<Index>(verts.size()));
+  }
+  const MeshTopology t = MeshTopology::Build(n + 2, offsets, verts); // vertex n+1 unused
+  EXPECT_EQ(t.GetMaxValence(), n);
+  EXPECT_EQ(t.GetVertexFaces(0).size(), n);
+  EXPECT_EQ(t.GetNumNonManifoldVertices(), 0);
+  EXPECT_EQ(t.GetVertexFaces(n + 1).size(), 0);
+  EXPECT_EQ(t.GetNumEdges(), 2 * n);
+}
+
+TEST(MeshValidation, CollapsesDropsAndReports)
+{
+  // face 0 ok, face 1 has a repeated consecutive corner (kept as a triangle), face 2 collapses
+  // to two corners (dropped), face 3 repeats a vertex non-consecutively (dropped).
+  const std::vector<long long> offsets{ 0, 3, 7, 10, 15 };
+  const std::vector<long long> verts{ 0, 1, 2, 0, 2, 2, 3, 1, 1, 2, 0, 1, 2, 0, 3 };
+  subd::FaceScreening s = subd::ScreenFaces(4, 4, offsets.data(), verts.data());
+  EXPECT_EQ(s.NumOutOfRange, 0);
+  EXPECT_EQ(s.KeptFaces, (std::vector<Index>{ 0, 1 }));
+  EXPECT_EQ(s.NumDropped, 2);
+  EXPECT_EQ(s.FirstDroppedFace, 2);
+  EXPECT_EQ(s.Vertices, (std::vector<Index>{ 0, 1, 2, 0, 2, 3 }));
+  EXPECT_EQ(s.NumCollapsedCorners, 2);
+
+  const std::vector<long long> bad{ 0, 1, 7 };
+  const std::vector<long long> badOffsets{ 0, 3 };
+  subd::FaceScreening r = subd::ScreenFaces(4, 1, badOffsets.data(), bad.data());
+  EXPECT_EQ(r.NumOutOfRange, 1);
+  EXPECT_EQ(r.FirstOutOfRangeFace, 0);
+  EXPECT_EQ(r.FirstOutOfRangeId, 7);
+  EXPECT_TRUE(r.KeptFaces.empty());
+}
