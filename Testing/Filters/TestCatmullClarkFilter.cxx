@@ -1,1 +1,419 @@
+// Filter tests: vtkSubDCatmullClarkFilter in pipelines, attributes, caching, threads, and
+// every error path (clear message, empty output, error code, no crash).
+#include "vtkSubDCatmullClarkFilter.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkCommand.h"
+#include "vtkDoubleArray.h"
+#include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkSphereSource.h"
+#include "vtkUnsignedCharArray.h"
+
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+#include <string>
+
+namespace
+{
+// Records error and warning messages of an algorithm.
+struct Messages
+{
+  std::string Errors, Warnings;
+  int NumErrors = 0, NumWarnings = 0;
+  void Watch(vtkObject* object)
+  {
+    vtkNew<vtkCallbackCommand> cb;
+    cb->SetClientData(this);
+    cb->SetCallback([](vtkObject*, unsigned long event, void* client, void* data) {
+      auto* self = static_cast<Messages*>(client);
+      const std::string text = data ? static_cast<const char*>(data) : "";
+      if (event == vtkCommand::ErrorEvent)
+      {
+        self->Errors += text;
+        ++self->NumErrors;
+      }
+      else
+      {
+        self->Warnings += text;
+        ++self->NumWarnings;
+      }
+    });
+    object->AddObserver(vtkCommand::ErrorEvent, cb);
+    object->AddObserver(vtkCommand::WarningEvent, cb);
+  }
+};
+
+vtkSmartPointer<vtkPolyData> MakeMesh(const std::vector<double>& xyz, const std::vector<std::vector<vtkIdType>>& faces)
+{
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (size_t i = 0; i < xyz.size(); i += 3)
+    points->InsertNextPoint(xyz[i], xyz[i + 1], xyz[i + 2]);
+  vtkNew<vtkCellArray> polys;
+  for (const auto& f : faces)
+    polys->InsertNextCell(static_cast<vtkIdType>(f.size()), f.data());
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+
+vtkSmartPointer<vtkPolyData> Cube()
+{
+  return MakeMesh({ 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1 },
+    { { 0, 3, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 }, { 3, 0, 4, 7 } });
+}
+
+vtkSmartPointer<vtkPolyData> Subdivide(vtkPolyData* input, int levels, Messages* messages = nullptr,
+  int boundaryRule = vtkSubDSurfaceFilter::BOUNDARY_EDGE_ONLY)
+{
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  if (messages)
+    messages->Watch(filter);
+  filter->SetInputData(input);
+  filter->SetNumberOfSubdivisions(levels);
+  filter->SetBoundaryRule(boundaryRule);
+  filter->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->DeepCopy(filter->GetOutput());
+  return out;
+}
+
+void ExpectEmptyError(vtkPolyData* input, const std::string& expectedWords)
+{
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  Messages messages;
+  messages.Watch(filter);
+  filter->SetInputData(input);
+  filter->Update();
+  EXPECT_GE(messages.NumErrors, 1);
+  EXPECT_NE(messages.Errors.find(expectedWords), std::string::npos) << messages.Errors;
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_NE(filter->GetErrorCode(), 0ul);
+}
+}
+
+TEST(CatmullClarkFilter, CubeCountsAndClosedSurface)
+{
+  for (int levels = 0; levels <= 3; ++levels)
+  {
+    vtkSmartPointer<vtkPolyData> out = Subdivide(Cube(), levels);
+    EXPECT_EQ(out->GetNumberOfPolys(), 6 * (1 << (2 * levels)));
+    // V - E + F = 2 with E = 2F for a closed quad mesh: V = F + 2.
+    EXPECT_EQ(out->GetNumberOfPoints(), out->GetNumberOfPolys() + 2);
+  }
+}
+
+TEST(CatmullClarkFilter, SpherePipelineShrinksTowardCentre)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(12);
+  sphere->SetPhiResolution(8);
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputConnection(sphere->GetOutputPort());
+  filter->SetNumberOfSubdivisions(2);
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  sphere->Update();
+  const vtkIdType triangles = sphere->GetOutput()->GetNumberOfPolys();
+  EXPECT_EQ(out->GetNumberOfPolys(), triangles * 3 * 4);
+  // Catmull-Clark is approximating: every point is inside the unit-diameter sphere.
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    EXPECT_LE(std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]), 0.5 + 1e-12);
+  }
+}
+
+TEST(CatmullClarkFilter, PointDataFollowsPointsAndIntegersAreClamped)
+{
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  const vtkIdType n = cube->GetNumberOfPoints();
+  vtkNew<vtkDoubleArray> copy; // a copy of the coordinates must come out equal to the points
+  copy->SetName("CoordinatesCopy");
+  copy->SetNumberOfComponents(3);
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("Colors");
+  colors->SetNumberOfComponents(3);
+  vtkNew<vtkIntArray> labels;
+  labels->SetName("Label");
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    double p[3];
+    cube->GetPoint(i, p);
+    copy->InsertNextTuple(p);
+    // 0/255 extremes: a negative weight anywhere would push them out of range.
+    const unsigned char c[3] = { static_cast<unsigned char>(i % 2 ? 255 : 0), 0, 255 };
+    colors->InsertNextTypedTuple(c);
+    labels->InsertNextValue(static_cast<int>(10 * i));
+    const double len = std::sqrt((p[0] - .5) * (p[0] - .5) + (p[1] - .5) * (p[1] - .5) + (p[2] - .5) * (p[2] - .5));
+    normals->InsertNextTuple3((p[0] - .5) / len, (p[1] - .5) / len, (p[2] - .5) / len);
+  }
+  cube->GetPointData()->AddArray(copy);
+  cube->GetPointData()->SetScalars(colors);
+  cube->GetPointData()->AddArray(labels);
+  cube->GetPointData()->SetNormals(normals);
+
+  vtkSmartPointer<vtkPolyData> out = Subdivide(cube, 2);
+  vtkDataArray* outCopy = out->GetPointData()->GetArray("CoordinatesCopy");
+  ASSERT_NE(outCopy, nullptr);
+  ASSERT_EQ(outCopy->GetNumberOfTuples(), out->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_DOUBLE_EQ(outCopy->GetComponent(i, c), p[c]);
+  }
+  auto* outColors = vtkUnsignedCharArray::SafeDownCast(out->GetPointData()->GetScalars());
+  ASSERT_NE(outColors, nullptr);
+  EXPECT_STREQ(outColors->GetName(), "Colors");
+  EXPECT_EQ(outColors->GetNumberOfComponents(), 3);
+  auto* outLabels = vtkIntArray::SafeDownCast(out->GetPointData()->GetArray("Label"));
+  ASSERT_NE(outLabels, nullptr);
+  double lo = 1e9, hi = -1e9;
+  for (vtkIdType i = 0; i < outLabels->GetNumberOfTuples(); ++i)
+  {
+    lo = std::min<double>(lo, outLabels->GetValue(i));
+    hi = std::max<double>(hi, outLabels->GetValue(i));
+  }
+  EXPECT_GE(lo, 0);
+  EXPECT_LE(hi, 70);
+  vtkDataArray* outNormals = out->GetPointData()->GetNormals();
+  ASSERT_NE(outNormals, nullptr);
+  for (vtkIdType i = 0; i < outNormals->GetNumberOfTuples(); ++i)
+  {
+    double v[3];
+    outNormals->GetTuple(i, v);
+    EXPECT_NEAR(v[0] * v[0] + v[1] * v[1] + v[2] * v[2], 1.0, 1e-6);
+  }
+}
+
+TEST(CatmullClarkFilter, UnsignedCharClampsNegativeWeights)
+{
+  // On an open strip, EdgeOnly boundary rules use only non-negative weights, so build a case
+  // with a large value next to zeros and check the output stays within [0, 255] and rounds.
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  vtkNew<vtkUnsignedCharArray> value;
+  value->SetName("Value");
+  for (vtkIdType i = 0; i < 8; ++i)
+    value->InsertNextValue(i == 0 ? 255 : 0);
+  cube->GetPointData()->AddArray(value);
+  vtkSmartPointer<vtkPolyData> out = Subdivide(cube, 1);
+  auto* v = vtkUnsignedCharArray::SafeDownCast(out->GetPointData()->GetArray("Value"));
+  ASSERT_NE(v, nullptr);
+  // The face point of a face containing vertex 0 is 255/4 = 63.75 -> 64.
+  bool found64 = false;
+  for (vtkIdType i = 0; i < v->GetNumberOfTuples(); ++i)
+    found64 = found64 || v->GetValue(i) == 64;
+  EXPECT_TRUE(found64);
+}
+
+TEST(CatmullClarkFilter, CellDataInheritedAndParentIds)
+{
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  vtkNew<vtkIntArray> faceId;
+  faceId->SetName("FaceId");
+  for (int f = 0; f < 6; ++f)
+    faceId->InsertNextValue(100 + f);
+  cube->GetCellData()->AddArray(faceId);
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(cube);
+  filter->SetNumberOfSubdivisions(2);
+  filter->GenerateParentCellIdsOn();
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  auto* ids = vtkIntArray::SafeDownCast(out->GetCellData()->GetArray("FaceId"));
+  auto* parents = vtkIdTypeArray::SafeDownCast(out->GetCellData()->GetArray("ParentCellId"));
+  ASSERT_NE(ids, nullptr);
+  ASSERT_NE(parents, nullptr);
+  ASSERT_EQ(ids->GetNumberOfTuples(), out->GetNumberOfPolys());
+  std::vector<int> perParent(6, 0);
+  for (vtkIdType c = 0; c < out->GetNumberOfPolys(); ++c)
+  {
+    EXPECT_EQ(ids->GetValue(c), 100 + parents->GetValue(c));
+    ++perParent[parents->GetValue(c)];
+  }
+  for (int f = 0; f < 6; ++f)
+    EXPECT_EQ(perParent[f], 16);
+}
+
+TEST(CatmullClarkFilter, CachedStencilsReusedWhenOnlyPointsChange)
+{
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(cube);
+  filter->SetNumberOfSubdivisions(3);
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 1);
+  // Move a point: same connectivity, so the stencils are reused...
+  cube->GetPoints()->SetPoint(6, 2.0, 1.5, 1.2);
+  cube->GetPoints()->Modified();
+  cube->Modified();
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 1);
+  // ...and the result equals a fresh filter's.
+  vtkSmartPointer<vtkPolyData> fresh = Subdivide(cube, 3);
+  ASSERT_EQ(fresh->GetNumberOfPoints(), filter->GetOutput()->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < fresh->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    fresh->GetPoint(i, a);
+    filter->GetOutput()->GetPoint(i, b);
+    EXPECT_EQ(a[0], b[0]);
+    EXPECT_EQ(a[1], b[1]);
+    EXPECT_EQ(a[2], b[2]);
+  }
+  // A changed option rebuilds.
+  filter->SetBoundaryRuleToEdgeAndCorner();
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 2);
+}
+
+TEST(CatmullClarkFilter, SameOutputWithOneAndTwoThreads)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(40);
+  sphere->SetPhiResolution(30);
+  sphere->Update();
+  vtkSMPTools::Initialize(1);
+  vtkSmartPointer<vtkPolyData> one = Subdivide(sphere->GetOutput(), 3);
+  vtkSMPTools::Initialize(2);
+  vtkSmartPointer<vtkPolyData> two = Subdivide(sphere->GetOutput(), 3);
+  ASSERT_EQ(one->GetNumberOfPoints(), two->GetNumberOfPoints());
+  ASSERT_GT(one->GetNumberOfPoints(), 10000);
+  for (vtkIdType i = 0; i < one->GetNumberOfPoints(); ++i)
+  {
+    double a[3], b[3];
+    one->GetPoint(i, a);
+    two->GetPoint(i, b);
+    ASSERT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << "point " << i;
+  }
+}
+
+TEST(CatmullClarkFilter, BoundaryRuleNoneDropsBoundaryFacesAndTheirPoints)
+{
+  // 4x4 quads: the ring of 12 boundary faces becomes holes, the inner 2x2 stay.
+  std::vector<double> xyz;
+  std::vector<std::vector<vtkIdType>> faces;
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 4; ++i)
+      xyz.insert(xyz.end(), { double(i), double(j), 0.0 });
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i)
+      faces.push_back({ j * 5 + i, j * 5 + i + 1, (j + 1) * 5 + i + 1, (j + 1) * 5 + i });
+  vtkSmartPointer<vtkPolyData> out = Subdivide(MakeMesh(xyz, faces), 1, nullptr, vtkSubDSurfaceFilter::BOUNDARY_NONE);
+  EXPECT_EQ(out->GetNumberOfPolys(), 4 * 4);
+  EXPECT_EQ(out->GetNumberOfPoints(), 5 * 5); // a 4x4 quad patch, no unused points
+}
+
+TEST(CatmullClarkFilter, NonManifoldEdgeIsSubdividedWithOneWarning)
+{
+  vtkSmartPointer<vtkPolyData> fin = MakeMesh({ 0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, -1, 1, 0, 0, 0, 1, 0, 1, 1 },
+    { { 0, 2, 3, 1 }, { 1, 5, 4, 0 }, { 0, 1, 7, 6 } });
+  Messages messages;
+  vtkSmartPointer<vtkPolyData> out = Subdivide(fin, 2, &messages);
+  EXPECT_EQ(messages.NumErrors, 0);
+  EXPECT_EQ(messages.NumWarnings, 1);
+  EXPECT_NE(messages.Warnings.find("non-manifold"), std::string::npos);
+  EXPECT_EQ(out->GetNumberOfPolys(), 3 * 16);
+  // The shared edge is infinitely sharp: its points stay on the segment x = z = 0.
+  vtkIdType onEdge = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    onEdge += (std::abs(p[0]) < 1e-15 && std::abs(p[2]) < 1e-15);
+  }
+  EXPECT_EQ(onEdge, 5); // the sharp edge, split twice, has 5 points
+}
+
+TEST(CatmullClarkFilter, DegenerateFacesDroppedWithWarning)
+{
+  vtkSmartPointer<vtkPolyData> mesh = Cube();
+  const vtkIdType bad[3] = { 0, 0, 1 };
+  mesh->GetPolys()->InsertNextCell(3, bad);
+  Messages messages;
+  vtkSmartPointer<vtkPolyData> out = Subdivide(mesh, 1, &messages);
+  EXPECT_EQ(messages.NumWarnings, 1);
+  EXPECT_NE(messages.Warnings.find("degenerate"), std::string::npos);
+  EXPECT_EQ(out->GetNumberOfPolys(), 24);
+}
+
+TEST(CatmullClarkFilter, ErrorEmptyInput)
+{
+  vtkNew<vtkPolyData> empty;
+  ExpectEmptyError(empty, "no points");
+}
+
+TEST(CatmullClarkFilter, ErrorNoPolygons)
+{
+  vtkNew<vtkPolyData> lines;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  vtkNew<vtkCellArray> cells;
+  const vtkIdType line[2] = { 0, 1 };
+  cells->InsertNextCell(2, line);
+  lines->SetPoints(points);
+  lines->SetLines(cells);
+  ExpectEmptyError(lines, "no polygons");
+}
+
+TEST(CatmullClarkFilter, ErrorNonFiniteCoordinates)
+{
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  cube->GetPoints()->SetPoint(5, 1, std::numeric_limits<double>::quiet_NaN(), 1);
+  ExpectEmptyError(cube, "Point 5 has a non-finite coordinate");
+  vtkSmartPointer<vtkPolyData> cube2 = Cube();
+  cube2->GetPoints()->SetPoint(2, std::numeric_limits<double>::infinity(), 1, 0);
+  ExpectEmptyError(cube2, "Point 2 has a non-finite coordinate");
+}
+
+TEST(CatmullClarkFilter, ErrorOutOfRangePointIds)
+{
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  const vtkIdType bad[4] = { 0, 1, 99, 3 };
+  cube->GetPolys()->InsertNextCell(4, bad);
+  ExpectEmptyError(cube, "uses point id 99");
+}
+
+TEST(CatmullClarkFilter, ErrorHugeLevelCountRefusedBeforeAllocating)
+{
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  Messages messages;
+  messages.Watch(filter);
+  filter->SetInputData(Cube());
+  filter->SetNumberOfSubdivisions(1000); // clamped to 30, still far too large
+  EXPECT_EQ(filter->GetNumberOfSubdivisions(), 30);
+  filter->Update();
+  EXPECT_NE(messages.Errors.find("MaximumMemory"), std::string::npos) << messages.Errors;
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(CatmullClarkFilter, PrintSelfNamesOptions)
+{
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetBoundaryRuleToNone();
+  std::ostringstream os;
+  filter->Print(os);
+  EXPECT_NE(os.str().find("BoundaryRule: None"), std::string::npos);
+  EXPECT_NE(os.str().find("NumberOfSubdivisions: 1"), std::string::npos);
+}

@@ -1,1 +1,154 @@
+// OFF reader/writer: exact round trip, colours, and clear errors for broken files.
+#include "vtkSubDOFFReader.h"
+#include "vtkSubDOFFWriter.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
 #include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace
+{
+std::string TempPath(const std::string& name)
+{
+  return std::string(::testing::TempDir()) + "subd_off_" + name;
+}
+
+void WriteText(const std::string& path, const std::string& text)
+{
+  std::ofstream(path) << text;
+}
+
+// Reads `text` as an OFF file; returns the collected error text ("" if none).
+std::string ReadErrors(const std::string& text, vtkPolyData* result = nullptr)
+{
+  const std::string path = TempPath("case.off");
+  WriteText(path, text);
+  vtkNew<vtkSubDOFFReader> reader;
+  std::string errors;
+  vtkNew<vtkCallbackCommand> cb;
+  cb->SetClientData(&errors);
+  cb->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+    *static_cast<std::string*>(client) += static_cast<const char*>(data);
+  });
+  reader->AddObserver(vtkCommand::ErrorEvent, cb);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (result)
+    result->DeepCopy(reader->GetOutput());
+  if (!errors.empty())
+  {
+    EXPECT_EQ(reader->GetOutput()->GetNumberOfPoints(), 0);
+    EXPECT_NE(reader->GetErrorCode(), 0ul);
+  }
+  return errors;
+}
+}
+
+TEST(OFF, RoundTripIsExact)
+{
+  vtkNew<vtkPolyData> mesh;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->InsertNextPoint(0.1, 1.0 / 3.0, -2.5e-7);
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(1, 1, 0);
+  points->InsertNextPoint(0, 1, 3.141592653589793);
+  points->InsertNextPoint(0.5, 2, 0);
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType quad[4] = { 0, 1, 2, 3 }, tri[3] = { 3, 2, 4 };
+  polys->InsertNextCell(4, quad);
+  polys->InsertNextCell(3, tri);
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+
+  const std::string path = TempPath("roundtrip.off");
+  vtkNew<vtkSubDOFFWriter> writer;
+  writer->SetInputData(mesh);
+  writer->SetFileName(path.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+
+  vtkNew<vtkSubDOFFReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* back = reader->GetOutput();
+  ASSERT_EQ(back->GetNumberOfPoints(), 5);
+  ASSERT_EQ(back->GetNumberOfPolys(), 2);
+  for (vtkIdType i = 0; i < 5; ++i)
+  {
+    double a[3], b[3];
+    mesh->GetPoint(i, a);
+    back->GetPoint(i, b);
+    EXPECT_EQ(a[0], b[0]);
+    EXPECT_EQ(a[1], b[1]);
+    EXPECT_EQ(a[2], b[2]);
+  }
+  vtkIdType n;
+  const vtkIdType* pts;
+  back->GetPolys()->GetCellAtId(1, n, pts);
+  ASSERT_EQ(n, 3);
+  EXPECT_EQ(pts[0], 3);
+  EXPECT_EQ(pts[2], 4);
+  std::remove(path.c_str());
+}
+
+TEST(OFF, CommentsCountsOnHeaderLineAndColours)
+{
+  vtkNew<vtkPolyData> mesh;
+  EXPECT_EQ(ReadErrors("COFF 3 1 0 # counts on the header line\n"
+                       "0 0 0 255 0 0 255\n# a comment line\n"
+                       "1 0 0 0 255 0 255\n0 1 0 0 0 255 128\n3 0 1 2\n",
+              mesh),
+    "");
+  EXPECT_EQ(mesh->GetNumberOfPolys(), 1);
+  auto* colors = vtkUnsignedCharArray::SafeDownCast(mesh->GetPointData()->GetScalars());
+  ASSERT_NE(colors, nullptr);
+  EXPECT_EQ(colors->GetValue(4 * 1 + 1), 255);
+  EXPECT_EQ(colors->GetValue(4 * 2 + 3), 128);
+}
+
+TEST(OFF, HeaderlessFileIsAccepted)
+{
+  vtkNew<vtkPolyData> mesh;
+  EXPECT_EQ(ReadErrors("3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", mesh), "");
+  EXPECT_EQ(mesh->GetNumberOfPoints(), 3);
+}
+
+TEST(OFF, BrokenFilesGiveClearErrors)
+{
+  EXPECT_NE(ReadErrors("").find("empty"), std::string::npos);
+  EXPECT_NE(ReadErrors("OFF\n").find("ends after its header"), std::string::npos);
+  EXPECT_NE(ReadErrors("OFF\nthree two one\n").find("expected the counts"), std::string::npos);
+  EXPECT_NE(ReadErrors("OFF\n4 1 0\n0 0 0\n1 0 0\n").find("ends after 2 of 4 vertices"), std::string::npos);
+  EXPECT_NE(ReadErrors("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n").find("ends after 0 of 1 faces"), std::string::npos);
+  EXPECT_NE(ReadErrors("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n").find("uses vertex 7"), std::string::npos);
+  EXPECT_NE(ReadErrors("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n").find("announces 4"), std::string::npos);
+  EXPECT_NE(ReadErrors("OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n").find("line 4"), std::string::npos);
+  EXPECT_NE(ReadErrors("OFF\n-3 1 0\n").find("invalid vertex or face count"), std::string::npos);
+  EXPECT_NE(ReadErrors("NOFF\n3 1 0\n").find("not supported"), std::string::npos);
+}
+
+TEST(OFF, MissingFileIsAnError)
+{
+  vtkNew<vtkSubDOFFReader> reader;
+  std::string errors;
+  vtkNew<vtkCallbackCommand> cb;
+  cb->SetClientData(&errors);
+  cb->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+    *static_cast<std::string*>(client) += static_cast<const char*>(data);
+  });
+  reader->AddObserver(vtkCommand::ErrorEvent, cb);
+  reader->SetFileName("/nonexistent/dir/mesh.off");
+  reader->Update();
+  EXPECT_NE(errors.find("Cannot open"), std::string::npos);
+}
