@@ -16,6 +16,7 @@
 #include "vtkTriangleFilter.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
+#include "vtkXMLWriter.h"
 
 #include <algorithm>
 #include <cctype>
@@ -44,8 +45,12 @@ vtkSmartPointer<vtkPolyData> RunReader(const std::string& path, std::string& err
   vtkPolyData* out = reader->GetOutput();
   if (!messages.Errors.empty() || reader->GetErrorCode() != 0)
   {
-    error = "cannot read '" + path + "': " +
-      (messages.Errors.empty() ? std::string("the file is not valid") : messages.Errors);
+    std::string why = messages.Errors.empty() ? std::string("the file is not valid") : messages.Errors;
+    while (!why.empty() && why.back() == '\n')
+    {
+      why.pop_back();
+    }
+    error = "cannot read '" + path + "': " + why;
     return nullptr;
   }
   if (!out || out->GetNumberOfPoints() == 0)
@@ -165,7 +170,9 @@ vtkSmartPointer<vtkAlgorithm> MakeWriter(const std::string& ext, const std::stri
 bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
 {
   const std::string ext = LowerExtension(path);
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+  // The marker goes before the extension: some writers (PLY) append theirs otherwise.
+  const std::string temporary =
+    path.substr(0, path.size() - ext.size()) + ".tmp-" + std::to_string(::getpid()) + ext;
   vtkSmartPointer<vtkAlgorithm> writer = MakeWriter(ext, temporary);
   if (!writer)
   {
@@ -184,8 +191,15 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error)
   MessageCollector messages;
   messages.Watch(writer);
   writer->SetInputDataObject(data);
-  writer->Modified();
-  writer->Update();
+  // vtkWriter and vtkXMLWriter share no base class that declares Write().
+  if (auto* legacy = vtkWriter::SafeDownCast(writer))
+  {
+    legacy->Write();
+  }
+  else if (auto* xml = vtkXMLWriter::SafeDownCast(writer))
+  {
+    xml->Write();
+  }
   if (writer->GetErrorCode() != 0 || !messages.Errors.empty() || !FileReadable(temporary))
   {
     std::remove(temporary.c_str());

@@ -6,8 +6,11 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 
 #include <cctype>
+#include <cstdio>
 #include <string>
 
 namespace subdapp
@@ -43,6 +46,38 @@ private:
     (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings) += text + "\n";
   }
 };
+
+/// Replaces VTK's output window: messages the program did not collect itself (from objects
+/// without observers) are printed as "subd: <message>", and the executive's follow-up
+/// "Algorithm ... returned failure" reports, which repeat an error already shown, are dropped.
+class QuietOutputWindow : public vtkOutputWindow
+{
+public:
+  static QuietOutputWindow* New();
+  vtkTypeMacro(QuietOutputWindow, vtkOutputWindow);
+  void DisplayText(const char* text) override
+  {
+    std::string message = text ? text : "";
+    if (message.find("returned failure for request") != std::string::npos)
+    {
+      return;
+    }
+    const auto colon = message.find("): ");
+    if (colon != std::string::npos)
+    {
+      message = message.substr(colon + 3);
+    }
+    while (!message.empty() && std::isspace(static_cast<unsigned char>(message.back())))
+    {
+      message.pop_back();
+    }
+    std::fprintf(stderr, "subd: %s\n", message.c_str());
+  }
+};
+inline QuietOutputWindow* QuietOutputWindow::New()
+{
+  VTK_STANDARD_NEW_BODY(QuietOutputWindow);
+}
 }
 
 #endif

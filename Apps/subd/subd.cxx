@@ -7,6 +7,7 @@
 #include "SubDSchemeRegistry.h"
 
 #include "vtkCallbackCommand.h"
+#include "vtkLogger.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkVersion.h"
@@ -79,6 +80,9 @@ void PrintMessages(const std::string& lines, const char* kind)
 
 int main(int argc, char* argv[])
 {
+  vtkNew<subdapp::QuietOutputWindow> outputWindow;
+  vtkOutputWindow::SetInstance(outputWindow);
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // messages come through outputWindow
   subdapp::CommandLine cmd;
   std::string error;
   if (!subdapp::ParseCommandLine(argc, argv, cmd, error))
