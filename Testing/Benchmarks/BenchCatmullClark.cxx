@@ -1,0 +1,228 @@
+// Benchmark (a program, not a test): Catmull-Clark levels 1..4 on a real mesh, SubD against
+// OpenSubdiv's Far (TopologyRefinerFactory + RefineUniform + PrimvarRefinerReal<double>,
+// i.e. topology and interpolation) measured in the same run. Each measurement runs in a
+// forked child so its peak RSS is its own. Prints seconds, output faces per second, peak
+// RSS and the ratio OpenSubdiv time / SubD time.
+//
+//   usage: BenchCatmullClark mesh.off [maxLevel=4] [repeats=3]
+#include "SubDRefiner.h"
+#include "SubDScheme.h"
+#include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDOFFReader.h"
+
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+#include "vtkCellArray.h"
+
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <memory>
+#include <string>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <vector>
+
+namespace
+{
+using Clock = std::chrono::steady_clock;
+using namespace OpenSubdiv;
+
+struct Mesh
+{
+  int NumVertices = 0;
+  std::vector<int> Sizes;
+  std::vector<int> Corners;
+  std::vector<double> Points;
+  vtkSmartPointer<vtkPolyData> PolyData;
+};
+
+struct Point3
+{
+  double P[3];
+  void Clear() { P[0] = P[1] = P[2] = 0; }
+  void AddWithWeight(const Point3& s, double w)
+  {
+    P[0] += w * s.P[0];
+    P[1] += w * s.P[1];
+    P[2] += w * s.P[2];
+  }
+};
+
+struct Result
+{
+  double Seconds = 0;
+  double Faces = 0;
+  double PeakMiB = 0;
+};
+
+// Runs `work` (returning seconds and output faces) in a child process `repeats` times and
+// keeps the fastest; the peak RSS is the child's own.
+Result Measure(const std::function<std::pair<double, double>()>& work, int repeats)
+{
+  Result best;
+  best.Seconds = 1e300;
+  for (int r = 0; r < repeats; ++r)
+  {
+    int pipeFd[2];
+    if (pipe(pipeFd) != 0)
+      std::abort();
+    const pid_t pid = fork();
+    if (pid == 0)
+    {
+      close(pipeFd[0]);
+      const auto [seconds, faces] = work();
+      const double message[2] = { seconds, faces };
+      if (write(pipeFd[1], message, sizeof(message)) != sizeof(message))
+        _exit(1);
+      _exit(0);
+    }
+    close(pipeFd[1]);
+    double message[2] = { 0, 0 };
+    const bool ok = read(pipeFd[0], message, sizeof(message)) == sizeof(message);
+    close(pipeFd[0]);
+    int status = 0;
+    struct rusage usage;
+    wait4(pid, &status, 0, &usage);
+    if (!ok || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    {
+      std::fprintf(stderr, "bench: a measurement failed\n");
+      std::exit(1);
+    }
+    if (message[0] < best.Seconds)
+    {
+      best.Seconds = message[0];
+      best.Faces = message[1];
+      best.PeakMiB = usage.ru_maxrss / 1024.0;
+    }
+  }
+  return best;
+}
+
+std::pair<double, double> RunOpenSubdiv(const Mesh& mesh, int level)
+{
+  const Clock::time_point start = Clock::now();
+  Far::TopologyDescriptor desc;
+  desc.numVertices = mesh.NumVertices;
+  desc.numFaces = static_cast<int>(mesh.Sizes.size());
+  desc.numVertsPerFace = mesh.Sizes.data();
+  desc.vertIndicesPerFace = mesh.Corners.data();
+  Sdc::Options options;
+  options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  std::unique_ptr<Far::TopologyRefiner> refiner(
+    Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, options)));
+  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
+  std::vector<Point3> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
+  for (int v = 0; v < mesh.NumVertices; ++v)
+    for (int c = 0; c < 3; ++c)
+      buffer[v].P[c] = mesh.Points[3 * v + c];
+  Far::PrimvarRefinerReal<double> primvar(*refiner);
+  Point3* src = buffer.data();
+  for (int l = 1; l <= level; ++l)
+  {
+    Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
+    primvar.Interpolate(l, src, dst);
+    src = dst;
+  }
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return { seconds, double(refiner->GetLevel(level).GetNumFaces()) };
+}
+
+std::pair<double, double> RunKernel(const Mesh& mesh, int level)
+{
+  const Clock::time_point start = Clock::now();
+  std::vector<subd::Index> offsets{ 0 };
+  for (int s : mesh.Sizes)
+    offsets.push_back(offsets.back() + s);
+  subd::CatmullClarkScheme scheme;
+  subd::Hierarchy h;
+  subd::Refine(scheme,
+    subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices, std::move(offsets),
+                          std::vector<subd::Index>(mesh.Corners.begin(), mesh.Corners.end())),
+      {}, subd::BoundaryRule::EdgeOnly),
+    level, h);
+  std::vector<double> finest(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
+  h.Evaluate(mesh.Points.data(), 3, finest.data());
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return { seconds, double(h.Finest.Topology.GetNumFaces()) };
+}
+
+std::pair<double, double> RunFilter(const Mesh& mesh, int level, int threads)
+{
+  vtkSMPTools::Initialize(threads);
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(mesh.PolyData);
+  filter->SetNumberOfSubdivisions(level);
+  const Clock::time_point start = Clock::now();
+  filter->Update();
+  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  return { seconds, double(filter->GetOutput()->GetNumberOfPolys()) };
+}
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc < 2)
+  {
+    std::fprintf(stderr, "usage: %s mesh.off [maxLevel=4] [repeats=3]\n", argv[0]);
+    return 2;
+  }
+  const int maxLevel = argc > 2 ? std::atoi(argv[2]) : 4;
+  const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
+  vtkNew<vtkSubDOFFReader> reader;
+  reader->SetFileName(argv[1]);
+  reader->Update();
+  Mesh mesh;
+  mesh.PolyData = reader->GetOutput();
+  mesh.NumVertices = static_cast<int>(mesh.PolyData->GetNumberOfPoints());
+  if (mesh.NumVertices == 0)
+  {
+    std::fprintf(stderr, "bench: cannot read %s\n", argv[1]);
+    return 1;
+  }
+  for (vtkIdType i = 0; i < mesh.NumVertices; ++i)
+  {
+    double p[3];
+    mesh.PolyData->GetPoint(i, p);
+    mesh.Points.insert(mesh.Points.end(), p, p + 3);
+  }
+  vtkIdType n;
+  const vtkIdType* pts;
+  for (mesh.PolyData->GetPolys()->InitTraversal(); mesh.PolyData->GetPolys()->GetNextCell(n, pts);)
+  {
+    mesh.Sizes.push_back(static_cast<int>(n));
+    mesh.Corners.insert(mesh.Corners.end(), pts, pts + n);
+  }
+  std::printf("Catmull-Clark on %s: %d points, %zu faces; best of %d runs each\n", argv[1],
+    mesh.NumVertices, mesh.Sizes.size(), repeats);
+  std::printf("%-5s %-28s %10s %12s %10s %9s\n", "level", "implementation", "seconds", "faces/s",
+    "peak MiB", "OSD/this");
+  for (int level = 1; level <= maxLevel; ++level)
+  {
+    const Result osd = Measure([&] { return RunOpenSubdiv(mesh, level); }, repeats);
+    const Result kernel = Measure([&] { return RunKernel(mesh, level); }, repeats);
+    const Result filter1 = Measure([&] { return RunFilter(mesh, level, 1); }, repeats);
+    const Result filter2 = Measure([&] { return RunFilter(mesh, level, 2); }, repeats);
+    auto row = [&](const char* name, const Result& r) {
+      std::printf("%-5d %-28s %10.4f %12.3g %10.1f %9.2f\n", level, name, r.Seconds,
+        r.Faces / r.Seconds, r.PeakMiB, osd.Seconds / r.Seconds);
+    };
+    row("OpenSubdiv Far (1 thread)", osd);
+    row("SubD kernel (1 thread)", kernel);
+    row("SubD filter (1 thread)", filter1);
+    row("SubD filter (2 threads)", filter2);
+    if (kernel.Faces != osd.Faces || filter2.Faces != osd.Faces)
+    {
+      std::fprintf(stderr, "bench: face counts differ (%g, %g, %g)\n", osd.Faces, kernel.Faces, filter2.Faces);
+      return 1;
+    }
+  }
+  return 0;
+}

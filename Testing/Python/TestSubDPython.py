@@ -1,0 +1,44 @@
+"""Python: Debian's /usr/bin/python3 imports subd next to vtkmodules and runs the filter."""
+import math
+import sys
+
+import subd
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkFiltersSources import vtkSphereSource
+
+
+def main():
+    assert "vtkSubDCatmullClarkFilter" in subd.__all__, subd.__all__
+    assert "vtkSubDOFFReader" in subd.__all__
+
+    sphere = vtkSphereSource()
+    sphere.SetThetaResolution(16)
+    sphere.SetPhiResolution(10)
+    cc = subd.vtkSubDCatmullClarkFilter()
+    cc.SetInputConnection(sphere.GetOutputPort())
+    cc.SetNumberOfSubdivisions(2)
+    cc.SetBoundaryRuleToEdgeAndCorner()
+    assert cc.GetBoundaryRuleAsString() == "EdgeAndCorner"
+    cc.SetNumberOfSubdivisions(99)  # clamped by the Set macro
+    assert cc.GetNumberOfSubdivisions() == 30
+    cc.SetNumberOfSubdivisions(2)
+
+    progress = []
+    cc.AddObserver(vtkCommand.ProgressEvent, lambda obj, _: progress.append(obj.GetProgress()))
+    cc.Update()
+    out = cc.GetOutput()
+    sphere.Update()
+    triangles = sphere.GetOutput().GetNumberOfPolys()
+    assert out.GetNumberOfPolys() == triangles * 3 * 4, out.GetNumberOfPolys()
+    assert progress and progress[-1] == 1.0, progress
+    # Approximating scheme: nothing leaves the input sphere (radius 0.5).
+    radius = max(math.sqrt(sum(c * c for c in out.GetPoint(i))) for i in range(out.GetNumberOfPoints()))
+    assert radius <= 0.5 + 1e-12, radius
+    # The class documentation comes through the wrapping.
+    assert "Catmull" in subd.vtkSubDCatmullClarkFilter.__doc__
+    print("python: %d faces, %d points" % (out.GetNumberOfPolys(), out.GetNumberOfPoints()))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
