@@ -179,6 +179,11 @@ int vtkSubDSurfaceFilter::RequestData(
     this->SetErrorCode(vtkErrorCode::UserError);
     return 0;
   };
+  // An abort (AbortExecute set by an observer) is not an error: empty output, success.
+  auto aborted = [output]() {
+    output->Initialize();
+    return 1;
+  };
 
   const vtkIdType numPoints = (input && input->GetPoints()) ? input->GetNumberOfPoints() : 0;
   if (numPoints == 0)
@@ -298,7 +303,7 @@ int vtkSubDSurfaceFilter::RequestData(
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy,
           refineProgress))
     {
-      return fail();
+      return aborted();
     }
     ++this->NumberOfStencilBuilds;
 
@@ -376,7 +381,7 @@ int vtkSubDSurfaceFilter::RequestData(
     interpolation.Interpolate(basePoints, outPoints->GetDataType(), false, evaluateProgress(0));
   if (!outCoords)
   {
-    return fail(); // aborted
+    return aborted();
   }
   outPoints->SetData(outCoords);
   output->SetPoints(outPoints);
@@ -406,7 +411,7 @@ int vtkSubDSurfaceFilter::RequestData(
       array, array->GetDataType(), attribute == vtkDataSetAttributes::NORMALS, evaluateProgress(a + 1));
     if (!out)
     {
-      return fail();
+      return aborted();
     }
     outPD->AddArray(out);
     if (attribute >= 0)

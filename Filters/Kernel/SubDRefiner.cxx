@@ -20,6 +20,11 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   for (int l = 0; l < levels; ++l)
   {
     out.Stencils.push_back(scheme.BuildStencils(current));
+    if (progress && !progress((l + 0.5) / levels))
+    {
+      out.Finest = std::move(current);
+      return false;
+    }
     current = scheme.Split(current);
     if (progress && !progress(static_cast<double>(l + 1) / levels))
     {

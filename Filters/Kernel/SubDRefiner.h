@@ -66,16 +66,17 @@ bool Hierarchy::Evaluate(const T* base, int components, T* finest, const Paralle
       scratch[l % 2].resize(static_cast<size_t>(table.GetNumRows()) * components);
       children = scratch[l % 2].data();
     }
-    for (Index b = 0; b < table.GetNumBlocks(); ++b)
+    const Index blocks = table.GetNumBlocks();
+    for (Index b = 0; b < blocks; ++b)
     {
       parallelFor(table.GetBlockBegin(b), table.GetBlockEnd(b),
         [&](Index begin, Index end) { table.ApplyRows(parents, children, components, begin, end); });
+      if (progress && !progress((l + static_cast<double>(b + 1) / blocks) / levels))
+      {
+        return false;
+      }
     }
     parents = children;
-    if (progress && !progress(static_cast<double>(l + 1) / levels))
-    {
-      return false;
-    }
   }
   return true;
 }

@@ -20,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -406,6 +407,37 @@ TEST(CatmullClarkFilter, ErrorHugeLevelCountRefusedBeforeAllocating)
   filter->Update();
   EXPECT_NE(messages.Errors.find("MaximumMemory"), std::string::npos) << messages.Errors;
   EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(CatmullClarkFilter, ProgressIsReportedAndAbortLeavesEmptyOutput)
+{
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(Cube());
+  filter->SetNumberOfSubdivisions(4);
+  std::vector<double> progress;
+  vtkNew<vtkCallbackCommand> record;
+  record->SetClientData(&progress);
+  record->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+    static_cast<std::vector<double>*>(client)->push_back(*static_cast<double*>(data));
+  });
+  filter->AddObserver(vtkCommand::ProgressEvent, record);
+  filter->Update();
+  ASSERT_GE(progress.size(), 8u); // several reports per level
+  EXPECT_TRUE(std::is_sorted(progress.begin(), progress.end()));
+  EXPECT_EQ(progress.back(), 1.0);
+
+  vtkNew<vtkSubDCatmullClarkFilter> aborted;
+  aborted->SetInputData(Cube());
+  aborted->SetNumberOfSubdivisions(4);
+  vtkNew<vtkCallbackCommand> abort;
+  abort->SetCallback([](vtkObject* caller, unsigned long, void*, void* data) {
+    if (*static_cast<double*>(data) > 0.2)
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+  });
+  aborted->AddObserver(vtkCommand::ProgressEvent, abort);
+  aborted->Update();
+  EXPECT_EQ(aborted->GetOutput()->GetNumberOfCells(), 0);
+  EXPECT_EQ(aborted->GetOutput()->GetNumberOfPoints(), 0);
 }
 
 TEST(CatmullClarkFilter, PrintSelfNamesOptions)
