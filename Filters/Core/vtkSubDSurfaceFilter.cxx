@@ -146,11 +146,68 @@ public:
   std::vector<subd::Index> Offsets, Vertices;
   std::vector<subd::Index> KeptFaces;
   subd::Hierarchy Hierarchy;
-  std::vector<subd::Index> EmittedFaces;    // finest faces that are not holes
-  std::vector<vtkIdType> OutputPointOfFinest; // -1 where a finest point is unused
-  std::vector<vtkIdType> FinestPointOfOutput;
+  // Which finest faces and points are output. In the common case (no holes, no isolated
+  // input points) all are, and no maps are stored.
   bool CompactPoints = false;
+  std::vector<subd::Index> EmittedFaces;      // when holes exist: finest faces that are not holes
+  std::vector<vtkIdType> OutputPointOfFinest; // when compacting: -1 where a finest point is unused
+  std::vector<vtkIdType> FinestPointOfOutput;
+
+  vtkIdType GetNumberOfOutputFaces() const
+  {
+    return this->CompactPoints ? static_cast<vtkIdType>(this->EmittedFaces.size())
+                               : this->Hierarchy.Finest.Topology.GetNumFaces();
+  }
+  subd::Index FinestFace(vtkIdType outputFace) const
+  {
+    return this->CompactPoints ? this->EmittedFaces[outputFace] : static_cast<subd::Index>(outputFace);
+  }
+  vtkIdType OutputPoint(subd::Index finestPoint) const
+  {
+    return this->CompactPoints ? this->OutputPointOfFinest[finestPoint] : finestPoint;
+  }
+  void SelectOutput(bool someBaseVertexUnused);
 };
+
+void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
+{
+  const subd::Level& finest = this->Hierarchy.Finest;
+  this->EmittedFaces.clear();
+  this->OutputPointOfFinest.clear();
+  this->FinestPointOfOutput.clear();
+  this->CompactPoints = someBaseVertexUnused || finest.HasHoles();
+  if (!this->CompactPoints)
+  {
+    return;
+  }
+  // Faces inside holes are not output, nor are the points no output face uses (isolated
+  // input points, points inside holes).
+  const subd::Index numFinestFaces = finest.Topology.GetNumFaces();
+  for (subd::Index f = 0; f < numFinestFaces; ++f)
+  {
+    if (!finest.FaceIsHole[f])
+    {
+      this->EmittedFaces.push_back(f);
+    }
+  }
+  const subd::Index numFinestPoints = finest.Topology.GetNumVertices();
+  this->OutputPointOfFinest.assign(static_cast<size_t>(numFinestPoints), -1);
+  for (subd::Index f : this->EmittedFaces)
+  {
+    for (subd::Index v : finest.Topology.GetFaceVertices(f))
+    {
+      this->OutputPointOfFinest[v] = 0;
+    }
+  }
+  for (subd::Index v = 0; v < numFinestPoints; ++v)
+  {
+    if (this->OutputPointOfFinest[v] == 0)
+    {
+      this->OutputPointOfFinest[v] = static_cast<vtkIdType>(this->FinestPointOfOutput.size());
+      this->FinestPointOfOutput.push_back(v);
+    }
+  }
+}
 
 vtkSubDSurfaceFilter::vtkSubDSurfaceFilter()
   : Internals(new vtkInternals)
@@ -298,6 +355,11 @@ int vtkSubDSurfaceFilter::RequestData(
       return fail();
     }
 
+    bool someBaseVertexUnused = false;
+    for (subd::Index v = 0; v < topology.GetNumVertices() && !someBaseVertexUnused; ++v)
+    {
+      someBaseVertexUnused = topology.GetVertexFaces(v).empty();
+    }
     subd::Level base = subd::MakeBaseLevel(
       std::move(topology), subd::BaseTags{}, static_cast<subd::BoundaryRule>(this->BoundaryRule));
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy,
@@ -307,37 +369,7 @@ int vtkSubDSurfaceFilter::RequestData(
     }
     ++this->NumberOfStencilBuilds;
 
-    const subd::Level& finest = cache.Hierarchy.Finest;
-    const subd::Index numFinestFaces = finest.Topology.GetNumFaces();
-    cache.EmittedFaces.clear();
-    cache.EmittedFaces.reserve(static_cast<size_t>(numFinestFaces));
-    for (subd::Index f = 0; f < numFinestFaces; ++f)
-    {
-      if (!finest.FaceIsHole[f])
-      {
-        cache.EmittedFaces.push_back(f);
-      }
-    }
-    // Points no emitted face uses (isolated input points, points inside holes) are dropped.
-    const subd::Index numFinestPoints = finest.Topology.GetNumVertices();
-    cache.OutputPointOfFinest.assign(static_cast<size_t>(numFinestPoints), -1);
-    for (subd::Index f : cache.EmittedFaces)
-    {
-      for (subd::Index v : finest.Topology.GetFaceVertices(f))
-      {
-        cache.OutputPointOfFinest[v] = 0;
-      }
-    }
-    cache.FinestPointOfOutput.clear();
-    for (subd::Index v = 0; v < numFinestPoints; ++v)
-    {
-      if (cache.OutputPointOfFinest[v] == 0)
-      {
-        cache.OutputPointOfFinest[v] = static_cast<vtkIdType>(cache.FinestPointOfOutput.size());
-        cache.FinestPointOfOutput.push_back(v);
-      }
-    }
-    cache.CompactPoints = static_cast<subd::Index>(cache.FinestPointOfOutput.size()) != numFinestPoints;
+    cache.SelectOutput(someBaseVertexUnused);
     cache.NumInputPoints = numPoints;
     cache.Offsets = std::move(screened.Offsets);
     cache.Vertices = std::move(screened.Vertices);
@@ -422,26 +454,25 @@ int vtkSubDSurfaceFilter::RequestData(
 
   // Faces, straight into offsets/connectivity.
   const subd::MeshTopology& topo = finest.Topology;
-  const vtkIdType numOut = static_cast<vtkIdType>(cache.EmittedFaces.size());
+  const vtkIdType numOut = cache.GetNumberOfOutputFaces();
   vtkNew<vtkIdTypeArray> offsets;
   offsets->SetNumberOfTuples(numOut + 1);
   vtkIdType* off = offsets->GetPointer(0);
   off[0] = 0;
   for (vtkIdType c = 0; c < numOut; ++c)
   {
-    off[c + 1] = off[c] + topo.GetFaceSize(cache.EmittedFaces[c]);
+    off[c + 1] = off[c] + topo.GetFaceSize(cache.FinestFace(c));
   }
   vtkNew<vtkIdTypeArray> connectivity;
   connectivity->SetNumberOfTuples(off[numOut]);
   vtkIdType* conn = connectivity->GetPointer(0);
-  const std::vector<vtkIdType>& remap = cache.OutputPointOfFinest;
   vtkSMPTools::For(0, numOut, 4096, [&](vtkIdType begin, vtkIdType end) {
     for (vtkIdType c = begin; c < end; ++c)
     {
       vtkIdType* out = conn + off[c];
-      for (subd::Index v : topo.GetFaceVertices(cache.EmittedFaces[c]))
+      for (subd::Index v : topo.GetFaceVertices(cache.FinestFace(c)))
       {
-        *out++ = remap[v];
+        *out++ = cache.OutputPoint(v);
       }
     }
   });
@@ -450,12 +481,17 @@ int vtkSubDSurfaceFilter::RequestData(
   output->SetPolys(polys);
 
   // Cell data: inherited from the input cell each face descends from.
+  if (input->GetCellData()->GetNumberOfArrays() == 0 && !this->GenerateParentCellIds)
+  {
+    this->UpdateProgress(1.0);
+    return 1;
+  }
   vtkNew<vtkIdList> sourceCells, targetCells;
   sourceCells->SetNumberOfIds(numOut);
   targetCells->SetNumberOfIds(numOut);
   for (vtkIdType c = 0; c < numOut; ++c)
   {
-    const subd::Index baseFace = finest.FaceOrigin[cache.EmittedFaces[c]];
+    const subd::Index baseFace = finest.FaceOrigin[cache.FinestFace(c)];
     sourceCells->SetId(c, faces.CellIdOf(cache.KeptFaces[baseFace], numPolys));
     targetCells->SetId(c, c);
   }

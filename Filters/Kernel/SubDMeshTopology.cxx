@@ -37,6 +37,20 @@ MeshTopology MeshTopology::Build(
   return topology;
 }
 
+MeshTopology MeshTopology::BuildFacesOnly(
+  Index numVertices, std::vector<Index> faceOffsets, std::vector<Index> faceVertices)
+{
+  MeshTopology topology;
+  topology.NumVertices = numVertices;
+  topology.FaceOffsets = std::move(faceOffsets);
+  topology.FaceVertices = std::move(faceVertices);
+  if (topology.FaceOffsets.empty())
+  {
+    topology.FaceOffsets.push_back(0);
+  }
+  return topology;
+}
+
 // Edges are found by bucketing every half-edge under its lower vertex and sorting each
 // (small) bucket by the upper vertex: linear in the mesh size for bounded valence, and
 // O(k log k) for a vertex of valence k, so even a 100k-valent hub stays fast.

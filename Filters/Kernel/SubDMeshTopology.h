@@ -81,6 +81,12 @@ public:
   const std::vector<Index>& GetFaceVertexArray() const { return FaceVertices; }
   const std::vector<Index>& GetFaceEdgeArray() const { return FaceEdges; }
 
+  /// Keeps only the faces: no edges, no incidence relations, no tags (GetNumEdges() is 0).
+  /// For a last level that is only output.
+  static MeshTopology BuildFacesOnly(Index numVertices, std::vector<Index> faceOffsets,
+    std::vector<Index> faceVertices);
+  bool HasEdges() const { return !FaceEdges.empty() || FaceVertices.empty(); }
+
   /// Returns the edge joining a and b, or InvalidIndex.
   Index FindEdge(Index a, Index b) const;
 

@@ -3,7 +3,7 @@
 
 namespace subd
 {
-Level SplitQuads(const Level& parent)
+Level SplitQuads(const Level& parent, ChildTopology depth)
 {
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
@@ -34,8 +34,25 @@ Level SplitQuads(const Level& parent)
   }
 
   Level child;
-  child.Topology = MeshTopology::Build(
-    numFaces + numEdges + numVertices, std::move(childOffsets), std::move(childVertices));
+  child.FaceIsHole.resize(static_cast<size_t>(numCorners));
+  child.FaceOrigin.resize(static_cast<size_t>(numCorners));
+  for (Index f = 0; f < numFaces; ++f)
+  {
+    for (Index c = topo.GetFaceOffset(f); c < topo.GetFaceOffset(f + 1); ++c)
+    {
+      child.FaceIsHole[c] = parent.FaceIsHole[f];
+      child.FaceOrigin[c] = parent.FaceOrigin[f];
+    }
+  }
+  const Index numChildVertices = numFaces + numEdges + numVertices;
+  if (depth == ChildTopology::FacesOnly)
+  {
+    child.Topology = MeshTopology::BuildFacesOnly(
+      numChildVertices, std::move(childOffsets), std::move(childVertices));
+    return child;
+  }
+  child.Topology =
+    MeshTopology::Build(numChildVertices, std::move(childOffsets), std::move(childVertices));
   const MeshTopology& childTopo = child.Topology;
 
   child.EdgeSharpness.assign(static_cast<size_t>(childTopo.GetNumEdges()), SharpnessSmooth);
@@ -59,17 +76,6 @@ Level SplitQuads(const Level& parent)
   for (Index v = 0; v < numVertices; ++v)
   {
     child.VertexSharpness[number.VertexPoint(v)] = DecaySharpness(parent.VertexSharpness[v]);
-  }
-
-  child.FaceIsHole.resize(static_cast<size_t>(numCorners));
-  child.FaceOrigin.resize(static_cast<size_t>(numCorners));
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    for (Index c = topo.GetFaceOffset(f); c < topo.GetFaceOffset(f + 1); ++c)
-    {
-      child.FaceIsHole[c] = parent.FaceIsHole[f];
-      child.FaceOrigin[c] = parent.FaceOrigin[f];
-    }
   }
   return child;
 }

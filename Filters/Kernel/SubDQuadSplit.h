@@ -18,7 +18,7 @@
 
 namespace subd
 {
-SUBDKERNEL_EXPORT Level SplitQuads(const Level& parent);
+SUBDKERNEL_EXPORT Level SplitQuads(const Level& parent, ChildTopology depth);
 
 /// Child point numbering of the quad split (see above).
 struct QuadSplitNumbering

@@ -25,7 +25,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
       out.Finest = std::move(current);
       return false;
     }
-    current = scheme.Split(current);
+    current = scheme.Split(current, l + 1 < levels ? ChildTopology::Full : ChildTopology::FacesOnly);
     if (progress && !progress(static_cast<double>(l + 1) / levels))
     {
       out.Finest = std::move(current);

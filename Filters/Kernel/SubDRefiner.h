@@ -27,7 +27,7 @@ struct SUBDKERNEL_EXPORT Hierarchy
 {
   Index NumBasePoints = 0;
   std::vector<StencilTable> Stencils; ///< one per level, level 0 -> 1 first
-  Level Finest;                       ///< topology and tags of the last level
+  Level Finest; ///< the last level: its faces, holes and origins (no edges unless levels == 0)
 
   int GetNumLevels() const { return static_cast<int>(Stencils.size()); }
   Index GetNumFinestPoints() const { return Finest.Topology.GetNumVertices(); }

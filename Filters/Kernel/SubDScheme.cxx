@@ -4,9 +4,9 @@
 
 namespace subd
 {
-Level CatmullClarkScheme::Split(const Level& parent) const
+Level CatmullClarkScheme::Split(const Level& parent, ChildTopology depth) const
 {
-  return SplitQuads(parent);
+  return SplitQuads(parent, depth);
 }
 
 StencilTable CatmullClarkScheme::BuildStencils(const Level& parent) const

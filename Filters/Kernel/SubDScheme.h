@@ -22,8 +22,8 @@ class SUBDKERNEL_EXPORT Scheme
 public:
   virtual ~Scheme() = default;
   virtual const char* GetName() const = 0;
-  /// The next level's topology and tags.
-  virtual Level Split(const Level& parent) const = 0;
+  /// The next level's topology and tags (with FacesOnly: faces, holes and origins only).
+  virtual Level Split(const Level& parent, ChildTopology depth) const = 0;
   /// The stencils of the next level's points, rows numbered like Split's child points.
   virtual StencilTable BuildStencils(const Level& parent) const = 0;
   /// The counts of the next level of a mesh with the given counts (for size guards).
@@ -35,7 +35,7 @@ class SUBDKERNEL_EXPORT CatmullClarkScheme : public Scheme
 {
 public:
   const char* GetName() const override { return "catmull-clark"; }
-  Level Split(const Level& parent) const override;
+  Level Split(const Level& parent, ChildTopology depth) const override;
   StencilTable BuildStencils(const Level& parent) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
 };

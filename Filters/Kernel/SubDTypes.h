@@ -43,6 +43,15 @@ enum class BoundaryRule : int
 };
 
 SUBDKERNEL_EXPORT const char* ToString(BoundaryRule rule);
+
+/// How much of a child level's topology a split builds. The last level of a refinement only
+/// needs its faces (to be output); its edges and incidence relations, the costliest part of a
+/// level at four times the size of the one before, are only built when another level follows.
+enum class ChildTopology : int
+{
+  Full = 0,
+  FacesOnly = 1
+};
 }
 
 #endif

@@ -325,6 +325,32 @@ TEST(CatmullClarkFilter, BoundaryRuleNoneDropsBoundaryFacesAndTheirPoints)
   EXPECT_EQ(out->GetNumberOfPoints(), 5 * 5); // a 4x4 quad patch, no unused points
 }
 
+TEST(CatmullClarkFilter, UnusedInputPointsAreNotOutput)
+{
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  cube->GetPoints()->InsertNextPoint(5, 5, 5); // used by no face
+  vtkNew<vtkIntArray> index;
+  index->SetName("Index");
+  for (int i = 0; i < 9; ++i)
+    index->InsertNextValue(i);
+  cube->GetPointData()->AddArray(index);
+  vtkSmartPointer<vtkPolyData> out = Subdivide(cube, 2);
+  EXPECT_EQ(out->GetNumberOfPolys(), 96);
+  EXPECT_EQ(out->GetNumberOfPoints(), 98);
+  ASSERT_EQ(out->GetPointData()->GetArray("Index")->GetNumberOfTuples(), 98);
+  double bounds[6];
+  out->GetBounds(bounds);
+  EXPECT_LT(bounds[1], 1.0);
+  // Every output point is used by a face.
+  std::vector<int> used(98, 0);
+  vtkIdType n;
+  const vtkIdType* pts;
+  for (out->GetPolys()->InitTraversal(); out->GetPolys()->GetNextCell(n, pts);)
+    for (vtkIdType k = 0; k < n; ++k)
+      used[pts[k]] = 1;
+  EXPECT_EQ(std::count(used.begin(), used.end(), 1), 98);
+}
+
 TEST(CatmullClarkFilter, NonManifoldEdgeIsSubdividedWithOneWarning)
 {
   vtkSmartPointer<vtkPolyData> fin = MakeMesh({ 0, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, -1, 0, 0, -1, 1, 0, 0, 0, 1, 0, 1, 1 },

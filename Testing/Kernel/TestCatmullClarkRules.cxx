@@ -73,7 +73,7 @@ TEST(QuadSplit, CountsAndEulerCharacteristic)
       const subd::MeshTopology& p = level.Topology;
       const Index V = p.GetNumVertices(), E = p.GetNumEdges(), F = p.GetNumFaces();
       const Index H = p.GetNumFaceCorners();
-      subd::Level child = scheme.Split(level);
+      subd::Level child = scheme.Split(level, subd::ChildTopology::Full);
       const subd::MeshTopology& c = child.Topology;
       EXPECT_EQ(c.GetNumVertices(), V + E + F) << mesh.Name;
       EXPECT_EQ(c.GetNumFaces(), H) << mesh.Name;

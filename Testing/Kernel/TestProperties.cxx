@@ -126,7 +126,7 @@ TEST(Properties, RegularGridReproducesBicubicBSpline)
     for (Index v = 0; v < t.GetNumVertices(); ++v)
       for (int k = 0; k < 2; ++k)
         childParam[2 * number.VertexPoint(v) + k] = param[2 * v + k];
-    level = scheme.Split(level);
+    level = scheme.Split(level, subd::ChildTopology::Full);
     points.swap(child);
     param.swap(childParam);
 

@@ -194,7 +194,7 @@ TEST_P(CatmullClarkOracle, MatchesOpenSubdivLevels1To3)
     subd::StencilTable stencils = scheme.BuildStencils(level);
     std::vector<double> mineChild(static_cast<size_t>(stencils.GetNumRows()) * 3);
     stencils.Apply(mine.data(), mineChild.data(), 3);
-    level = scheme.Split(level);
+    level = scheme.Split(level, subd::ChildTopology::Full);
 
     double worst = 0.0;
     Index worstVertex = -1;
