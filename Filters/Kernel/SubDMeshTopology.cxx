@@ -18,25 +18,6 @@ void CountsToOffsets(std::vector<Index>& offsets)
 }
 }
 
-MeshTopology MeshTopology::Build(
-  Index numVertices, std::vector<Index> faceOffsets, std::vector<Index> faceVertices)
-{
-  MeshTopology topology;
-  topology.NumVertices = numVertices;
-  topology.FaceOffsets = std::move(faceOffsets);
-  topology.FaceVertices = std::move(faceVertices);
-  if (topology.FaceOffsets.empty())
-  {
-    topology.FaceOffsets.push_back(0);
-  }
-  topology.BuildEdges();
-  topology.BuildEdgeFaces();
-  topology.BuildVertexRelations();
-  topology.TagEdges();
-  topology.TagVertices();
-  return topology;
-}
-
 MeshTopology MeshTopology::BuildFacesOnly(
   Index numVertices, std::vector<Index> faceOffsets, std::vector<Index> faceVertices)
 {
@@ -48,6 +29,18 @@ MeshTopology MeshTopology::BuildFacesOnly(
   {
     topology.FaceOffsets.push_back(0);
   }
+  return topology;
+}
+
+MeshTopology MeshTopology::Build(
+  Index numVertices, std::vector<Index> faceOffsets, std::vector<Index> faceVertices)
+{
+  MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), std::move(faceVertices));
+  topology.BuildEdges();
+  topology.BuildEdgeFaces();
+  topology.BuildVertexRelations();
+  topology.TagEdges();
+  topology.TagVertices();
   return topology;
 }
 

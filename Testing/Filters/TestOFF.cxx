@@ -29,6 +29,17 @@ void WriteText(const std::string& path, const std::string& text)
   std::ofstream(path) << text;
 }
 
+// Appends the error messages of `object` to `errors`.
+void CollectErrors(vtkObject* object, std::string& errors)
+{
+  vtkNew<vtkCallbackCommand> cb;
+  cb->SetClientData(&errors);
+  cb->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
+    *static_cast<std::string*>(client) += static_cast<const char*>(data);
+  });
+  object->AddObserver(vtkCommand::ErrorEvent, cb);
+}
+
 // Reads `text` as an OFF file; returns the collected error text ("" if none).
 std::string ReadErrors(const std::string& text, vtkPolyData* result = nullptr)
 {
@@ -36,12 +47,7 @@ std::string ReadErrors(const std::string& text, vtkPolyData* result = nullptr)
   WriteText(path, text);
   vtkNew<vtkSubDOFFReader> reader;
   std::string errors;
-  vtkNew<vtkCallbackCommand> cb;
-  cb->SetClientData(&errors);
-  cb->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
-    *static_cast<std::string*>(client) += static_cast<const char*>(data);
-  });
-  reader->AddObserver(vtkCommand::ErrorEvent, cb);
+  CollectErrors(reader, errors);
   reader->SetFileName(path.c_str());
   reader->Update();
   if (result)
@@ -142,12 +148,7 @@ TEST(OFF, MissingFileIsAnError)
 {
   vtkNew<vtkSubDOFFReader> reader;
   std::string errors;
-  vtkNew<vtkCallbackCommand> cb;
-  cb->SetClientData(&errors);
-  cb->SetCallback([](vtkObject*, unsigned long, void* client, void* data) {
-    *static_cast<std::string*>(client) += static_cast<const char*>(data);
-  });
-  reader->AddObserver(vtkCommand::ErrorEvent, cb);
+  CollectErrors(reader, errors);
   reader->SetFileName("/nonexistent/dir/mesh.off");
   reader->Update();
   EXPECT_NE(errors.find("Cannot open"), std::string::npos);
