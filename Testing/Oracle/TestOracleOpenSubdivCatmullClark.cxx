@@ -17,6 +17,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <ostream>
 #include <map>
 #include <memory>
 #include <numeric>
@@ -120,6 +122,11 @@ std::vector<OracleCase> Cases()
   return cases;
 }
 
+void PrintTo(const OracleCase& c, std::ostream* os)
+{
+  *os << c.Mesh.Name << " " << subd::ToString(c.Rule);
+}
+
 class CatmullClarkOracle : public ::testing::TestWithParam<OracleCase>
 {
 };
@@ -209,6 +216,8 @@ TEST_P(CatmullClarkOracle, MatchesOpenSubdivLevels1To3)
         worstVertex = static_cast<Index>(i);
       }
     }
+    std::printf("%s %s level %d: largest difference %.3g of the bounding-box diagonal\n",
+      c.Mesh.Name.c_str(), subd::ToString(c.Rule), l, worst / (tolerance * 1e9));
     EXPECT_LE(worst, tolerance) << c.Mesh.Name << " " << subd::ToString(c.Rule) << " level " << l
                                 << ": worst OpenSubdiv vertex " << worstVertex;
 
