@@ -1,6 +1,7 @@
 #include "SubDSchemeRegistry.h"
 
 #include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDLoopFilter.h"
 
 namespace subdapp
 {
@@ -21,6 +22,8 @@ const std::vector<SchemeEntry>& Schemes()
   static const std::vector<SchemeEntry> schemes = {
     { "catmull-clark", "Catmull-Clark: quads from any polygons (approximating, C2 where regular)",
       &MakeSurfaceFilter<vtkSubDCatmullClarkFilter> },
+    { "loop", "Loop: triangles (polygons are fan-triangulated first; approximating, C2 where regular)",
+      &MakeSurfaceFilter<vtkSubDLoopFilter> },
   };
   return schemes;
 }

@@ -119,6 +119,40 @@ void SMPFor(subd::Index begin, subd::Index end, const subd::RangeTask& task)
     [&task](vtkIdType b, vtkIdType e) { task(static_cast<subd::Index>(b), static_cast<subd::Index>(e)); });
 }
 
+// Splits every face of more than three corners into the fan (v0, vk, vk+1); a triangle keeps
+// the input cell of its polygon. Returns how many faces were split.
+subd::Index FanTriangulate(subd::FaceScreening& faces)
+{
+  const size_t numFaces = faces.KeptFaces.size();
+  subd::Index split = 0;
+  for (size_t f = 0; f < numFaces && split == 0; ++f)
+  {
+    split += faces.Offsets[f + 1] - faces.Offsets[f] > 3;
+  }
+  if (split == 0)
+  {
+    return 0;
+  }
+  split = 0;
+  std::vector<subd::Index> offsets{ 0 }, vertices, kept;
+  for (size_t f = 0; f < numFaces; ++f)
+  {
+    const subd::Index* corners = faces.Vertices.data() + faces.Offsets[f];
+    const subd::Index n = faces.Offsets[f + 1] - faces.Offsets[f];
+    split += n > 3;
+    for (subd::Index k = 1; k + 1 < n; ++k)
+    {
+      vertices.insert(vertices.end(), { corners[0], corners[k], corners[k + 1] });
+      offsets.push_back(static_cast<subd::Index>(vertices.size()));
+      kept.push_back(faces.KeptFaces[f]);
+    }
+  }
+  faces.Offsets.swap(offsets);
+  faces.Vertices.swap(vertices);
+  faces.KeptFaces.swap(kept);
+  return split;
+}
+
 vtkIdType FirstNonFinitePoint(vtkPoints* points)
 {
   const vtkIdType n = points->GetNumberOfPoints();
@@ -294,6 +328,15 @@ int vtkSubDSurfaceFilter::RequestData(
                     << " degenerate polygon(s) (fewer than 3 distinct points, or a point repeated); "
                     << "the first is cell " << faces.CellIdOf(screened.FirstDroppedFace, numPolys)
                     << ".");
+  }
+  if (this->RequiresTriangles())
+  {
+    const subd::Index split = FanTriangulate(screened);
+    if (split > 0)
+    {
+      vtkWarningMacro(<< split << " polygon(s) with more than 3 corners were split into triangle "
+                      << "fans: this scheme is defined on triangles only.");
+    }
   }
   if (screened.KeptFaces.empty())
   {

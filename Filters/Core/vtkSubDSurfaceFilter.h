@@ -8,7 +8,8 @@
  *
  * - reads the input's polygons (any size; triangle strips are split into triangles) straight
  *   from its offsets/connectivity arrays, screens them (faces with fewer than three distinct
- *   corners are dropped with one warning; out-of-range point ids are an error),
+ *   corners are dropped with one warning; out-of-range point ids are an error), and for
+ *   triangle-only schemes splits larger polygons into triangle fans (one warning),
  * - builds the kernel topology, tagging non-manifold edges and vertices, which are then
  *   subdivided as infinitely sharp (OpenSubdiv's behaviour) after one warning,
  * - refines NumberOfSubdivisions levels, or reuses the stencils of the previous execution when
@@ -118,6 +119,10 @@ protected:
 
   /// The subclass's scheme; called when the stencils must be (re)built.
   virtual subd::Scheme* NewScheme() = 0;
+
+  /// True for schemes defined on triangles only; polygons are then fan-triangulated first,
+  /// with one warning, instead of being refused.
+  virtual bool RequiresTriangles() { return false; }
 
   int NumberOfSubdivisions = 1;
   int BoundaryRule = BOUNDARY_EDGE_ONLY;

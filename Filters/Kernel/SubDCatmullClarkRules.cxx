@@ -6,43 +6,7 @@ namespace subd
 {
 namespace
 {
-// The vertex rule of every parent vertex, and the two crease neighbours where it is a crease.
-struct VertexMaskPlan
-{
-  VertexRule Rule;
-  Index CreaseEnds[2];
-};
-
-VertexMaskPlan PlanVertexMask(const Level& level, Index v)
-{
-  const MeshTopology& topo = level.Topology;
-  VertexMaskPlan plan{ VertexRule::Corner, { InvalidIndex, InvalidIndex } };
-  const IndexSpan edges = topo.GetVertexEdges(v);
-  const IndexSpan faces = topo.GetVertexFaces(v);
-  Index sharpCount = 0;
-  for (Index e : edges)
-  {
-    if (IsSharp(level.EdgeSharpness[e]))
-    {
-      if (sharpCount < 2)
-      {
-        plan.CreaseEnds[sharpCount] = topo.GetOtherEndpoint(e, v);
-      }
-      ++sharpCount;
-    }
-  }
-  plan.Rule = ClassifyVertex(level.VertexSharpness[v], sharpCount);
-  // The smooth mask needs a closed manifold fan (as many edges as faces); an isolated vertex
-  // or a fan that is not closed can only be interpolated.
-  if ((plan.Rule == VertexRule::Smooth || plan.Rule == VertexRule::Dart) &&
-    (faces.size() == 0 || faces.size() != edges.size()))
-  {
-    plan.Rule = VertexRule::Corner;
-  }
-  return plan;
-}
-
-Index VertexRowSize(const VertexMaskPlan& plan, Index valence)
+Index VertexRowSize(const VertexRulePlan& plan, Index valence)
 {
   switch (plan.Rule)
   {
@@ -67,10 +31,10 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
   const Index numParents = numVertices;
   auto childSource = [numParents](Index childPoint) { return numParents + childPoint; };
 
-  std::vector<VertexMaskPlan> plans(static_cast<size_t>(numVertices));
+  std::vector<VertexRulePlan> plans(static_cast<size_t>(numVertices));
   for (Index v = 0; v < numVertices; ++v)
   {
-    plans[v] = PlanVertexMask(parent, v);
+    plans[v] = PlanVertexRule(parent, v);
   }
   auto edgeIsSmooth = [&](Index e) {
     return !IsSharp(parent.EdgeSharpness[e]) && topo.GetEdgeFaces(e).size() == 2;
@@ -128,7 +92,7 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
 
   for (Index v = 0; v < numVertices; ++v)
   {
-    const VertexMaskPlan& plan = plans[v];
+    const VertexRulePlan& plan = plans[v];
     Index* src = table.GetMutableSources(number.VertexPoint(v));
     double* wts = table.GetMutableWeights(number.VertexPoint(v));
     src[0] = v;

@@ -22,6 +22,60 @@ bool Level::HasHoles() const
     this->FaceIsHole.begin(), this->FaceIsHole.end(), [](std::uint8_t h) { return h != 0; });
 }
 
+VertexRulePlan PlanVertexRule(const Level& level, Index v)
+{
+  const MeshTopology& topo = level.Topology;
+  VertexRulePlan plan{ VertexRule::Corner, { InvalidIndex, InvalidIndex } };
+  const IndexSpan edges = topo.GetVertexEdges(v);
+  const IndexSpan faces = topo.GetVertexFaces(v);
+  Index sharpCount = 0;
+  for (Index e : edges)
+  {
+    if (IsSharp(level.EdgeSharpness[e]))
+    {
+      if (sharpCount < 2)
+      {
+        plan.CreaseEnds[sharpCount] = topo.GetOtherEndpoint(e, v);
+      }
+      ++sharpCount;
+    }
+  }
+  plan.Rule = ClassifyVertex(level.VertexSharpness[v], sharpCount);
+  if ((plan.Rule == VertexRule::Smooth || plan.Rule == VertexRule::Dart) &&
+    (faces.size() == 0 || faces.size() != edges.size()))
+  {
+    plan.Rule = VertexRule::Corner;
+  }
+  return plan;
+}
+
+void InheritPrimalSharpness(const Level& parent, Level& child, Index firstEdgePoint, Index firstVertexPoint)
+{
+  const MeshTopology& topo = parent.Topology;
+  const MeshTopology& childTopo = child.Topology;
+  child.EdgeSharpness.assign(static_cast<size_t>(childTopo.GetNumEdges()), SharpnessSmooth);
+  for (Index e = 0; e < topo.GetNumEdges(); ++e)
+  {
+    const float sharpness = parent.EdgeSharpness[e];
+    if (!IsSharp(sharpness))
+    {
+      continue;
+    }
+    const float decayed = DecaySharpness(sharpness);
+    const Index* ev = topo.GetEdgeVertices(e);
+    for (int k = 0; k < 2; ++k)
+    {
+      const Index half = childTopo.FindEdge(firstEdgePoint + e, firstVertexPoint + ev[k]);
+      child.EdgeSharpness[half] = decayed;
+    }
+  }
+  child.VertexSharpness.assign(static_cast<size_t>(childTopo.GetNumVertices()), SharpnessSmooth);
+  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+  {
+    child.VertexSharpness[firstVertexPoint + v] = DecaySharpness(parent.VertexSharpness[v]);
+  }
+}
+
 Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule rule)
 {
   Level level;

@@ -3,6 +3,7 @@
 #ifndef SubDLevel_h
 #define SubDLevel_h
 
+#include "SubDCrease.h"
 #include "SubDMeshTopology.h"
 #include <vector>
 
@@ -19,6 +20,43 @@ struct SUBDKERNEL_EXPORT Level
   Index GetNumSharpEdges(Index v) const;
   bool HasHoles() const;
 };
+
+/// The rule of a vertex and, for a crease, the far ends of its two sharp edges.
+struct VertexRulePlan
+{
+  VertexRule Rule;
+  Index CreaseEnds[2];
+};
+
+/// Classifies vertex v of `level` (SubDCrease.h). A smooth or dart vertex whose faces do not
+/// form a closed fan (isolated, or as many edges as faces not met) can only be interpolated,
+/// so it is planned as a corner.
+SUBDKERNEL_EXPORT VertexRulePlan PlanVertexRule(const Level& level, Index v);
+
+/// Gives the child faces of each parent face f, [firstChild(f), firstChild(f + 1)), the hole
+/// flag and origin of f. Shared by every split.
+template <typename FirstChild>
+void InheritFaceTags(const Level& parent, Level& child, FirstChild firstChild)
+{
+  const Index numFaces = parent.Topology.GetNumFaces();
+  const Index numChildFaces = firstChild(numFaces);
+  child.FaceIsHole.resize(static_cast<size_t>(numChildFaces));
+  child.FaceOrigin.resize(static_cast<size_t>(numChildFaces));
+  for (Index f = 0; f < numFaces; ++f)
+  {
+    for (Index c = firstChild(f); c < firstChild(f + 1); ++c)
+    {
+      child.FaceIsHole[c] = parent.FaceIsHole[f];
+      child.FaceOrigin[c] = parent.FaceOrigin[f];
+    }
+  }
+}
+
+/// For primal splits (each edge gets an edge point, each vertex a vertex point): the two
+/// halves of a sharp edge inherit its sharpness decayed by one level, a vertex point its
+/// vertex's decayed sharpness; everything new is smooth. `child.Topology` must be complete.
+SUBDKERNEL_EXPORT void InheritPrimalSharpness(const Level& parent, Level& child,
+  Index firstEdgePoint, Index firstVertexPoint);
 
 /// Tags supplied with the base mesh. Empty vectors mean "none".
 struct BaseTags

@@ -34,16 +34,7 @@ Level SplitQuads(const Level& parent, ChildTopology depth)
   }
 
   Level child;
-  child.FaceIsHole.resize(static_cast<size_t>(numCorners));
-  child.FaceOrigin.resize(static_cast<size_t>(numCorners));
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    for (Index c = topo.GetFaceOffset(f); c < topo.GetFaceOffset(f + 1); ++c)
-    {
-      child.FaceIsHole[c] = parent.FaceIsHole[f];
-      child.FaceOrigin[c] = parent.FaceOrigin[f];
-    }
-  }
+  InheritFaceTags(parent, child, [&topo](Index f) { return topo.GetFaceOffset(f); });
   const Index numChildVertices = numFaces + numEdges + numVertices;
   if (depth == ChildTopology::FacesOnly)
   {
@@ -53,30 +44,7 @@ Level SplitQuads(const Level& parent, ChildTopology depth)
   }
   child.Topology =
     MeshTopology::Build(numChildVertices, std::move(childOffsets), std::move(childVertices));
-  const MeshTopology& childTopo = child.Topology;
-
-  child.EdgeSharpness.assign(static_cast<size_t>(childTopo.GetNumEdges()), SharpnessSmooth);
-  for (Index e = 0; e < numEdges; ++e)
-  {
-    const float sharpness = parent.EdgeSharpness[e];
-    if (!IsSharp(sharpness))
-    {
-      continue;
-    }
-    const float decayed = DecaySharpness(sharpness);
-    const Index* ev = topo.GetEdgeVertices(e);
-    for (int k = 0; k < 2; ++k)
-    {
-      const Index half = childTopo.FindEdge(number.EdgePoint(e), number.VertexPoint(ev[k]));
-      child.EdgeSharpness[half] = decayed;
-    }
-  }
-
-  child.VertexSharpness.assign(static_cast<size_t>(childTopo.GetNumVertices()), SharpnessSmooth);
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    child.VertexSharpness[number.VertexPoint(v)] = DecaySharpness(parent.VertexSharpness[v]);
-  }
+  InheritPrimalSharpness(parent, child, number.EdgePoint(0), number.VertexPoint(0));
   return child;
 }
 }

@@ -1,6 +1,8 @@
 #include "SubDScheme.h"
 #include "SubDCatmullClarkRules.h"
+#include "SubDLoopRules.h"
 #include "SubDQuadSplit.h"
+#include "SubDTriangleSplit.h"
 
 namespace subd
 {
@@ -21,6 +23,27 @@ MeshCounts CatmullClarkScheme::PredictChildCounts(const MeshCounts& parent) cons
   child.Faces = parent.Corners;
   child.Edges = 2.0 * parent.Edges + parent.Corners;
   child.Vertices = parent.Faces + parent.Edges + parent.Vertices;
+  child.Corners = 4.0 * parent.Corners;
+  return child;
+}
+
+Level LoopScheme::Split(const Level& parent, ChildTopology depth) const
+{
+  return SplitTriangles(parent, depth);
+}
+
+StencilTable LoopScheme::BuildStencils(const Level& parent) const
+{
+  return BuildLoopStencils(parent);
+}
+
+MeshCounts LoopScheme::PredictChildCounts(const MeshCounts& parent) const
+{
+  // Each triangle becomes four; each edge splits in two and each triangle adds three inside.
+  MeshCounts child;
+  child.Faces = 4.0 * parent.Faces;
+  child.Edges = 2.0 * parent.Edges + 3.0 * parent.Faces;
+  child.Vertices = parent.Vertices + parent.Edges;
   child.Corners = 4.0 * parent.Corners;
   return child;
 }

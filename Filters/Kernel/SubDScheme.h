@@ -39,6 +39,16 @@ public:
   StencilTable BuildStencils(const Level& parent) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
 };
+
+/// Loop: the triangle split with the rules of SubDLoopRules.h. Triangles only.
+class SUBDKERNEL_EXPORT LoopScheme : public Scheme
+{
+public:
+  const char* GetName() const override { return "loop"; }
+  Level Split(const Level& parent, ChildTopology depth) const override;
+  StencilTable BuildStencils(const Level& parent) const override;
+  MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
+};
 }
 
 #endif

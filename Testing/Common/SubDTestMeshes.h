@@ -33,6 +33,21 @@ struct TestMesh
     Vertices.insert(Vertices.end(), f.begin(), f.end());
     Offsets.push_back(static_cast<subd::Index>(Vertices.size()));
   }
+  /// The same surface with every face split into the fan (v0, vk, vk+1).
+  TestMesh Triangulated() const
+  {
+    TestMesh t;
+    t.Name = Name + "-tri";
+    t.Points = Points;
+    for (subd::Index f = 0; f < NumFaces(); ++f)
+    {
+      for (subd::Index k = Offsets[f] + 1; k + 1 < Offsets[f + 1]; ++k)
+      {
+        t.AddFace({ Vertices[Offsets[f]], Vertices[k], Vertices[k + 1] });
+      }
+    }
+    return t;
+  }
   /// Moves every point by a small deterministic pseudo-random offset.
   TestMesh& Jitter(double amount)
   {
@@ -205,6 +220,31 @@ inline TestMesh PinchedCubes()
   return m;
 }
 
+/// An n-sided bipyramid: two apexes of valence n, an equator of valence 4 (all triangles).
+inline TestMesh Bipyramid(int n)
+{
+  TestMesh m;
+  m.Name = "bipyramid" + std::to_string(n);
+  const double pi = 3.14159265358979323846;
+  for (int k = 0; k < n; ++k)
+  {
+    m.AddPoint(std::cos(2 * pi * k / n), std::sin(2 * pi * k / n), 0.0);
+  }
+  m.AddPoint(0, 0, 1.2);
+  m.AddPoint(0, 0, -0.8);
+  for (int k = 0; k < n; ++k)
+  {
+    const int k1 = (k + 1) % n;
+    m.AddFace({ k, k1, n });
+    m.AddFace({ k1, k, n + 1 });
+  }
+  return m;
+}
+
+/// The triangle fixtures (for Loop and other triangle schemes): the standard set
+/// triangulated, plus bipyramids for valences 3..12.
+inline std::vector<TestMesh> TriangleMeshes();
+
 /// The oracle and property fixture set.
 inline std::vector<TestMesh> StandardMeshes()
 {
@@ -220,6 +260,20 @@ inline std::vector<TestMesh> StandardMeshes()
   }
   meshes.push_back(NonManifold().Jitter(0.05));
   meshes.push_back(PinchedCubes().Jitter(0.05));
+  return meshes;
+}
+
+inline std::vector<TestMesh> TriangleMeshes()
+{
+  std::vector<TestMesh> meshes;
+  for (const TestMesh& m : StandardMeshes())
+  {
+    meshes.push_back(m.Triangulated());
+  }
+  for (int n : { 3, 4, 5, 7, 8, 12 })
+  {
+    meshes.push_back(Bipyramid(n).Jitter(0.1));
+  }
   return meshes;
 }
 }

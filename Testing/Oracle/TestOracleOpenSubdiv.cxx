@@ -1,4 +1,4 @@
-// Oracle test: SubD's Catmull-Clark against OpenSubdiv's Far::TopologyRefiner and
+// Oracle test: SubD's Catmull-Clark and Loop against OpenSubdiv's Far::TopologyRefiner and
 // PrimvarRefinerReal<double> (Debian's libosd-dev), an independent implementation.
 //
 // Both refine the same fixtures for each boundary rule, levels 1..3. Child points are
@@ -10,6 +10,7 @@
 #include "SubDQuadSplit.h"
 #include "SubDScheme.h"
 #include "SubDTestMeshes.h"
+#include "SubDTriangleSplit.h"
 
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
@@ -54,8 +55,21 @@ Sdc::Options::VtxBoundaryInterpolation ToOsd(subd::BoundaryRule rule)
   }
 }
 
+enum class SchemeKind
+{
+  CatmullClark,
+  Loop
+};
+
+std::unique_ptr<subd::Scheme> MakeScheme(SchemeKind kind)
+{
+  if (kind == SchemeKind::Loop)
+    return std::make_unique<subd::LoopScheme>();
+  return std::make_unique<subd::CatmullClarkScheme>();
+}
+
 std::unique_ptr<Far::TopologyRefiner> MakeOsdRefiner(
-  const subdtest::TestMesh& mesh, subd::BoundaryRule rule, int levels)
+  const subdtest::TestMesh& mesh, subd::BoundaryRule rule, int levels, SchemeKind kind)
 {
   std::vector<int> sizes(static_cast<size_t>(mesh.NumFaces()));
   for (Index f = 0; f < mesh.NumFaces(); ++f)
@@ -71,7 +85,8 @@ std::unique_ptr<Far::TopologyRefiner> MakeOsdRefiner(
   options.SetVtxBoundaryInterpolation(ToOsd(rule));
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
-    Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, options)));
+    Factory::Create(desc,
+      Factory::Options(kind == SchemeKind::Loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, options)));
   Far::TopologyRefiner::UniformOptions uniform(levels);
   uniform.orderVerticesFromFacesFirst = true;
   uniform.fullTopologyInLastLevel = true;
@@ -106,40 +121,43 @@ struct OracleCase
 {
   subdtest::TestMesh Mesh;
   subd::BoundaryRule Rule;
+  SchemeKind Kind;
 };
 
 std::vector<OracleCase> Cases()
 {
   std::vector<OracleCase> cases;
+  const auto rules = { subd::BoundaryRule::None, subd::BoundaryRule::EdgeOnly,
+    subd::BoundaryRule::EdgeAndCorner };
   for (const subdtest::TestMesh& mesh : subdtest::StandardMeshes())
-  {
-    for (auto rule : { subd::BoundaryRule::None, subd::BoundaryRule::EdgeOnly,
-           subd::BoundaryRule::EdgeAndCorner })
-    {
-      cases.push_back({ mesh, rule });
-    }
-  }
+    for (auto rule : rules)
+      cases.push_back({ mesh, rule, SchemeKind::CatmullClark });
+  for (const subdtest::TestMesh& mesh : subdtest::TriangleMeshes())
+    for (auto rule : rules)
+      cases.push_back({ mesh, rule, SchemeKind::Loop });
   return cases;
 }
 
 void PrintTo(const OracleCase& c, std::ostream* os)
 {
-  *os << c.Mesh.Name << " " << subd::ToString(c.Rule);
+  *os << (c.Kind == SchemeKind::Loop ? "loop " : "catmull-clark ") << c.Mesh.Name << " "
+      << subd::ToString(c.Rule);
 }
 
-class CatmullClarkOracle : public ::testing::TestWithParam<OracleCase>
+class SchemeOracle : public ::testing::TestWithParam<OracleCase>
 {
 };
 
-TEST_P(CatmullClarkOracle, MatchesOpenSubdivLevels1To3)
+TEST_P(SchemeOracle, MatchesOpenSubdivLevels1To3)
 {
   const OracleCase& c = GetParam();
   const int maxLevel = 3;
-  auto refiner = MakeOsdRefiner(c.Mesh, c.Rule, maxLevel);
+  auto refiner = MakeOsdRefiner(c.Mesh, c.Rule, maxLevel, c.Kind);
   ASSERT_TRUE(refiner);
   Far::PrimvarRefinerReal<double> primvar(*refiner);
 
-  subd::CatmullClarkScheme scheme;
+  const std::unique_ptr<subd::Scheme> schemePointer = MakeScheme(c.Kind);
+  const subd::Scheme& scheme = *schemePointer;
   subd::Level level = subd::MakeBaseLevel(
     subd::MeshTopology::Build(c.Mesh.NumVertices(), c.Mesh.Offsets, c.Mesh.Vertices), {}, c.Rule);
   std::vector<double> mine = c.Mesh.Points;
@@ -172,13 +190,21 @@ TEST_P(CatmullClarkOracle, MatchesOpenSubdivLevels1To3)
     }
     const Index numFacesOsd = parentOsd.GetNumFaces(), numEdgesOsd = parentOsd.GetNumEdges();
     std::vector<Index> childMap(static_cast<size_t>(refiner->GetLevel(l).GetNumVertices()));
-    const subd::QuadSplitNumbering mineNumber{ parentMine.GetNumFaces(), parentMine.GetNumEdges() };
+    // Child point numbering: OpenSubdiv (faces first) puts face points, edge points, then
+    // vertex points; Loop has no face points.
+    const bool loop = c.Kind == SchemeKind::Loop;
+    const subd::QuadSplitNumbering quadNumber{ parentMine.GetNumFaces(), parentMine.GetNumEdges() };
+    const subd::TriangleSplitNumbering triNumber{ parentMine.GetNumEdges() };
+    auto myEdgePoint = [&](Index e) { return loop ? triNumber.EdgePoint(e) : quadNumber.EdgePoint(e); };
+    auto myVertexPoint = [&](Index v) { return loop ? triNumber.VertexPoint(v) : quadNumber.VertexPoint(v); };
+    const Index osdFacePoints = loop ? 0 : numFacesOsd;
     for (Index f = 0; f < numFacesOsd; ++f)
     {
       Far::ConstIndexArray fv = parentOsd.GetFaceVertices(f);
       auto it = myFaceByCorners.find(SortedCorners(&fv[0], fv.size(), osdToMine));
       ASSERT_NE(it, myFaceByCorners.end()) << "level " << l - 1 << " face " << f << " unmatched";
-      childMap[f] = mineNumber.FacePoint(it->second);
+      if (!loop)
+        childMap[f] = quadNumber.FacePoint(it->second);
       EXPECT_EQ(parentOsd.IsFaceHole(f), level.FaceIsHole[it->second] != 0) << "face " << f;
     }
     for (Index e = 0; e < numEdgesOsd; ++e)
@@ -186,11 +212,11 @@ TEST_P(CatmullClarkOracle, MatchesOpenSubdivLevels1To3)
       Far::ConstIndexArray ev = parentOsd.GetEdgeVertices(e);
       const Index mineEdge = parentMine.FindEdge(osdToMine[ev[0]], osdToMine[ev[1]]);
       ASSERT_NE(mineEdge, subd::InvalidIndex) << "level " << l - 1 << " edge " << e << " unmatched";
-      childMap[numFacesOsd + e] = mineNumber.EdgePoint(mineEdge);
+      childMap[osdFacePoints + e] = myEdgePoint(mineEdge);
     }
     for (Index v = 0; v < parentOsd.GetNumVertices(); ++v)
     {
-      childMap[numFacesOsd + numEdgesOsd + v] = mineNumber.VertexPoint(osdToMine[v]);
+      childMap[osdFacePoints + numEdgesOsd + v] = myVertexPoint(osdToMine[v]);
     }
 
     // Refine both.
@@ -216,8 +242,8 @@ TEST_P(CatmullClarkOracle, MatchesOpenSubdivLevels1To3)
         worstVertex = static_cast<Index>(i);
       }
     }
-    std::printf("%s %s level %d: largest difference %.3g of the bounding-box diagonal\n",
-      c.Mesh.Name.c_str(), subd::ToString(c.Rule), l, worst / (tolerance * 1e9));
+    std::printf("%s %s %s level %d: largest difference %.3g of the bounding-box diagonal\n",
+      scheme.GetName(), c.Mesh.Name.c_str(), subd::ToString(c.Rule), l, worst / (tolerance * 1e9));
     EXPECT_LE(worst, tolerance) << c.Mesh.Name << " " << subd::ToString(c.Rule) << " level " << l
                                 << ": worst OpenSubdiv vertex " << worstVertex;
 
@@ -253,10 +279,11 @@ TEST_P(CatmullClarkOracle, MatchesOpenSubdivLevels1To3)
 
 std::string CaseName(const ::testing::TestParamInfo<OracleCase>& info)
 {
-  std::string name = info.param.Mesh.Name + "_" + subd::ToString(info.param.Rule);
+  std::string name = std::string(info.param.Kind == SchemeKind::Loop ? "loop_" : "cc_") +
+    info.param.Mesh.Name + "_" + subd::ToString(info.param.Rule);
   std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
   return name;
 }
 
-INSTANTIATE_TEST_SUITE_P(Fixtures, CatmullClarkOracle, ::testing::ValuesIn(Cases()), CaseName);
+INSTANTIATE_TEST_SUITE_P(Fixtures, SchemeOracle, ::testing::ValuesIn(Cases()), CaseName);
 }

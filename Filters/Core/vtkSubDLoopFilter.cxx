@@ -1,0 +1,16 @@
+#include "vtkSubDLoopFilter.h"
+
+#include "SubDScheme.h"
+#include "vtkObjectFactory.h"
+
+vtkStandardNewMacro(vtkSubDLoopFilter);
+
+subd::Scheme* vtkSubDLoopFilter::NewScheme()
+{
+  return new subd::LoopScheme;
+}
+
+void vtkSubDLoopFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}

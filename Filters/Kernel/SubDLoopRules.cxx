@@ -1,0 +1,116 @@
+#include "SubDLoopRules.h"
+#include "SubDTriangleSplit.h"
+
+#include <cmath>
+
+namespace subd
+{
+double LoopBeta(Index n)
+{
+  const double pi = 3.14159265358979323846;
+  const double c = 0.375 + 0.25 * std::cos(2.0 * pi / n);
+  return (0.625 - c * c) / n;
+}
+
+namespace
+{
+// The vertex of triangle f that is not on edge e.
+Index OppositeVertex(const MeshTopology& topo, Index f, Index e)
+{
+  const IndexSpan fe = topo.GetFaceEdges(f);
+  const IndexSpan fv = topo.GetFaceVertices(f);
+  for (Index j = 0; j < 3; ++j)
+  {
+    if (fe[j] == e)
+    {
+      return fv[(j + 2) % 3]; // edge j joins corners j and j+1
+    }
+  }
+  return InvalidIndex;
+}
+}
+
+StencilTable BuildLoopStencils(const Level& parent)
+{
+  const MeshTopology& topo = parent.Topology;
+  const Index numEdges = topo.GetNumEdges();
+  const Index numVertices = topo.GetNumVertices();
+  const TriangleSplitNumbering number{ numEdges };
+
+  std::vector<VertexRulePlan> plans(static_cast<size_t>(numVertices));
+  for (Index v = 0; v < numVertices; ++v)
+  {
+    plans[v] = PlanVertexRule(parent, v);
+  }
+  auto edgeIsSmooth = [&](Index e) {
+    return !IsSharp(parent.EdgeSharpness[e]) && topo.GetEdgeFaces(e).size() == 2;
+  };
+
+  StencilTable table(numVertices);
+  table.ReserveRows(numEdges + numVertices);
+  for (Index e = 0; e < numEdges; ++e)
+  {
+    table.SetRowSize(number.EdgePoint(e), edgeIsSmooth(e) ? 4 : 2);
+  }
+  for (Index v = 0; v < numVertices; ++v)
+  {
+    const VertexRule rule = plans[v].Rule;
+    table.SetRowSize(number.VertexPoint(v),
+      rule == VertexRule::Corner ? 1 : (rule == VertexRule::Crease ? 3 : 1 + topo.GetVertexEdges(v).size()));
+  }
+  table.FinalizeSizes();
+
+  for (Index e = 0; e < numEdges; ++e)
+  {
+    const Index* ev = topo.GetEdgeVertices(e);
+    Index* src = table.GetMutableSources(number.EdgePoint(e));
+    double* wts = table.GetMutableWeights(number.EdgePoint(e));
+    src[0] = ev[0];
+    src[1] = ev[1];
+    if (edgeIsSmooth(e))
+    {
+      const IndexSpan ef = topo.GetEdgeFaces(e);
+      src[2] = OppositeVertex(topo, ef[0], e);
+      src[3] = OppositeVertex(topo, ef[1], e);
+      wts[0] = wts[1] = 0.375;
+      wts[2] = wts[3] = 0.125;
+    }
+    else
+    {
+      wts[0] = wts[1] = 0.5;
+    }
+  }
+  for (Index v = 0; v < numVertices; ++v)
+  {
+    const VertexRulePlan& plan = plans[v];
+    Index* src = table.GetMutableSources(number.VertexPoint(v));
+    double* wts = table.GetMutableWeights(number.VertexPoint(v));
+    src[0] = v;
+    if (plan.Rule == VertexRule::Corner)
+    {
+      wts[0] = 1.0;
+    }
+    else if (plan.Rule == VertexRule::Crease)
+    {
+      wts[0] = 0.75;
+      src[1] = plan.CreaseEnds[0];
+      src[2] = plan.CreaseEnds[1];
+      wts[1] = wts[2] = 0.125;
+    }
+    else
+    {
+      const IndexSpan edges = topo.GetVertexEdges(v);
+      const Index n = edges.size();
+      const double beta = n == 6 ? 0.0625 : LoopBeta(n);
+      wts[0] = 1.0 - n * beta;
+      for (Index i = 0; i < n; ++i)
+      {
+        src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
+        wts[1 + i] = beta;
+      }
+    }
+  }
+  table.EndBlock(numEdges + numVertices);
+  return table;
+}
+}

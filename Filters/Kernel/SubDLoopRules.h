@@ -1,0 +1,31 @@
+// SubD kernel: Loop masks for one level of triangle subdivision (C. Loop, "Smooth
+// Subdivision Surfaces Based on Triangles", M.S. thesis, University of Utah, 1987), with the
+// boundary and crease rules of Hoppe et al. (SIGGRAPH 1994) in the form OpenSubdiv uses:
+//
+//   edge point   e  = 3/8 (v0 + v1) + 1/8 (a + b)     smooth edge, a and b the vertices
+//                                                      opposite the edge in its two triangles
+//                e  = (v0 + v1) / 2                   sharp, boundary, non-manifold
+//   vertex point v' = (1 - n beta) v + beta sum(v_i)   Smooth or Dart rule, n neighbours, with
+//                     beta(n) = (1/n) (5/8 - (3/8 + 1/4 cos(2 pi / n))^2)
+//                     (beta = 1/16 for n = 6; beta = 3/16 for n = 3)
+//                v' = 3/4 v + 1/8 (a + b)            Crease rule
+//                v' = v                              Corner rule
+//
+// Rows are numbered like the child points of the triangle split (SubDTriangleSplit.h) and
+// only read parent points (one block).
+#ifndef SubDLoopRules_h
+#define SubDLoopRules_h
+
+#include "SubDLevel.h"
+#include "SubDStencilTable.h"
+
+namespace subd
+{
+/// Loop's weight per neighbour of a smooth vertex of valence n.
+SUBDKERNEL_EXPORT double LoopBeta(Index n);
+
+/// Requires every face of `parent` to be a triangle.
+SUBDKERNEL_EXPORT StencilTable BuildLoopStencils(const Level& parent);
+}
+
+#endif
