@@ -10,6 +10,7 @@ from vtkmodules.vtkFiltersSources import vtkSphereSource
 def main():
     assert "vtkSubDCatmullClarkFilter" in subd.__all__, subd.__all__
     assert "vtkSubDOFFReader" in subd.__all__
+    assert "vtkSubDLoopFilter" in subd.__all__
 
     sphere = vtkSphereSource()
     sphere.SetThetaResolution(16)
