@@ -1,6 +1,7 @@
 #include "SubDSchemeRegistry.h"
 
 #include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
 
 namespace subdapp
@@ -24,6 +25,8 @@ const std::vector<SchemeEntry>& Schemes()
       &MakeSurfaceFilter<vtkSubDCatmullClarkFilter> },
     { "loop", "Loop: triangles (polygons are fan-triangulated first; approximating, C2 where regular)",
       &MakeSurfaceFilter<vtkSubDLoopFilter> },
+    { "linear", "linear: more resolution, same shape (triangles split in four, other polygons into quads)",
+      &MakeSurfaceFilter<vtkSubDLinearFilter> },
   };
   return schemes;
 }

@@ -5,7 +5,7 @@
 
 vtkStandardNewMacro(vtkSubDCatmullClarkFilter);
 
-subd::Scheme* vtkSubDCatmullClarkFilter::NewScheme()
+subd::Scheme* vtkSubDCatmullClarkFilter::NewScheme(bool)
 {
   return new subd::CatmullClarkScheme;
 }

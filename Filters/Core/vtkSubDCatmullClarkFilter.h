@@ -40,7 +40,7 @@ protected:
   vtkSubDCatmullClarkFilter() = default;
   ~vtkSubDCatmullClarkFilter() override = default;
 
-  subd::Scheme* NewScheme() override;
+  subd::Scheme* NewScheme(bool allTriangles) override;
 
 private:
   vtkSubDCatmullClarkFilter(const vtkSubDCatmullClarkFilter&) = delete;

@@ -5,7 +5,7 @@
 
 vtkStandardNewMacro(vtkSubDLoopFilter);
 
-subd::Scheme* vtkSubDLoopFilter::NewScheme()
+subd::Scheme* vtkSubDLoopFilter::NewScheme(bool)
 {
   return new subd::LoopScheme;
 }

@@ -37,7 +37,7 @@ protected:
   vtkSubDLoopFilter() = default;
   ~vtkSubDLoopFilter() override = default;
 
-  subd::Scheme* NewScheme() override;
+  subd::Scheme* NewScheme(bool allTriangles) override;
   bool RequiresTriangles() override { return true; }
 
 private:

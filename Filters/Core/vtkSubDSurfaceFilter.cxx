@@ -355,7 +355,12 @@ int vtkSubDSurfaceFilter::RequestData(
   if (!reuse)
   {
     cache.Valid = false;
-    std::unique_ptr<subd::Scheme> scheme(this->NewScheme());
+    bool allTriangles = true;
+    for (size_t f = 0; f + 1 < screened.Offsets.size() && allTriangles; ++f)
+    {
+      allTriangles = screened.Offsets[f + 1] - screened.Offsets[f] == 3;
+    }
+    std::unique_ptr<subd::Scheme> scheme(this->NewScheme(allTriangles));
     subd::MeshTopology topology =
       subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices);
     if (topology.GetNumNonManifoldEdges() > 0 || topology.GetNumNonManifoldVertices() > 0)
@@ -403,8 +408,8 @@ int vtkSubDSurfaceFilter::RequestData(
     {
       someBaseVertexUnused = topology.GetVertexFaces(v).empty();
     }
-    subd::Level base = subd::MakeBaseLevel(
-      std::move(topology), subd::BaseTags{}, static_cast<subd::BoundaryRule>(this->BoundaryRule));
+    subd::Level base = subd::MakeBaseLevel(std::move(topology), subd::BaseTags{},
+      scheme->EffectiveBoundaryRule(static_cast<subd::BoundaryRule>(this->BoundaryRule)));
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy,
           refineProgress))
     {

@@ -117,8 +117,9 @@ protected:
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  /// The subclass's scheme; called when the stencils must be (re)built.
-  virtual subd::Scheme* NewScheme() = 0;
+  /// The subclass's scheme; called when the stencils must be (re)built. `allTriangles` tells
+  /// whether every (screened) input face is a triangle.
+  virtual subd::Scheme* NewScheme(bool allTriangles) = 0;
 
   /// True for schemes defined on triangles only; polygons are then fan-triangulated first,
   /// with one warning, instead of being refused.

@@ -1,12 +1,13 @@
 #include "SubDScheme.h"
 #include "SubDCatmullClarkRules.h"
+#include "SubDLinearRules.h"
 #include "SubDLoopRules.h"
 #include "SubDQuadSplit.h"
 #include "SubDTriangleSplit.h"
 
 namespace subd
 {
-Level CatmullClarkScheme::Split(const Level& parent, ChildTopology depth) const
+Level QuadSplitScheme::Split(const Level& parent, ChildTopology depth) const
 {
   return SplitQuads(parent, depth);
 }
@@ -16,7 +17,7 @@ StencilTable CatmullClarkScheme::BuildStencils(const Level& parent) const
   return BuildCatmullClarkStencils(parent);
 }
 
-MeshCounts CatmullClarkScheme::PredictChildCounts(const MeshCounts& parent) const
+MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const
 {
   // Each corner becomes a quad; each edge splits in two and each corner adds an inner edge.
   MeshCounts child;
@@ -27,7 +28,7 @@ MeshCounts CatmullClarkScheme::PredictChildCounts(const MeshCounts& parent) cons
   return child;
 }
 
-Level LoopScheme::Split(const Level& parent, ChildTopology depth) const
+Level TriangleSplitScheme::Split(const Level& parent, ChildTopology depth) const
 {
   return SplitTriangles(parent, depth);
 }
@@ -37,7 +38,7 @@ StencilTable LoopScheme::BuildStencils(const Level& parent) const
   return BuildLoopStencils(parent);
 }
 
-MeshCounts LoopScheme::PredictChildCounts(const MeshCounts& parent) const
+MeshCounts TriangleSplitScheme::PredictChildCounts(const MeshCounts& parent) const
 {
   // Each triangle becomes four; each edge splits in two and each triangle adds three inside.
   MeshCounts child;
@@ -46,5 +47,15 @@ MeshCounts LoopScheme::PredictChildCounts(const MeshCounts& parent) const
   child.Vertices = parent.Vertices + parent.Edges;
   child.Corners = 4.0 * parent.Corners;
   return child;
+}
+
+StencilTable BilinearScheme::BuildStencils(const Level& parent) const
+{
+  return BuildBilinearStencils(parent);
+}
+
+StencilTable LinearTriangleScheme::BuildStencils(const Level& parent) const
+{
+  return BuildLinearTriangleStencils(parent);
 }
 }

@@ -28,26 +28,65 @@ public:
   virtual StencilTable BuildStencils(const Level& parent) const = 0;
   /// The counts of the next level of a mesh with the given counts (for size guards).
   virtual MeshCounts PredictChildCounts(const MeshCounts& parent) const = 0;
+  /// False for schemes whose points only interpolate within a face (linear, bilinear): the
+  /// boundary rule cannot change them, so BoundaryRule::None makes no holes (as in
+  /// OpenSubdiv, where it only applies to schemes with a neighbourhood).
+  virtual bool UsesBoundaryRule() const { return true; }
+  /// The rule to prepare the base level with for a requested one.
+  BoundaryRule EffectiveBoundaryRule(BoundaryRule requested) const
+  {
+    return this->UsesBoundaryRule() ? requested : BoundaryRule::EdgeOnly;
+  }
 };
 
-/// Catmull-Clark: the quad split with the rules of SubDCatmullClarkRules.h.
-class SUBDKERNEL_EXPORT CatmullClarkScheme : public Scheme
+/// Schemes on the quad split (SubDQuadSplit.h): any polygons in, quads out.
+class SUBDKERNEL_EXPORT QuadSplitScheme : public Scheme
+{
+public:
+  Level Split(const Level& parent, ChildTopology depth) const override;
+  MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
+};
+
+/// Schemes on the triangle split (SubDTriangleSplit.h): triangles in, triangles out.
+class SUBDKERNEL_EXPORT TriangleSplitScheme : public Scheme
+{
+public:
+  Level Split(const Level& parent, ChildTopology depth) const override;
+  MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
+};
+
+/// Catmull-Clark (SubDCatmullClarkRules.h).
+class SUBDKERNEL_EXPORT CatmullClarkScheme : public QuadSplitScheme
 {
 public:
   const char* GetName() const override { return "catmull-clark"; }
-  Level Split(const Level& parent, ChildTopology depth) const override;
   StencilTable BuildStencils(const Level& parent) const override;
-  MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
 };
 
-/// Loop: the triangle split with the rules of SubDLoopRules.h. Triangles only.
-class SUBDKERNEL_EXPORT LoopScheme : public Scheme
+/// Bilinear: centroids, midpoints and fixed vertices (SubDLinearRules.h).
+class SUBDKERNEL_EXPORT BilinearScheme : public QuadSplitScheme
+{
+public:
+  const char* GetName() const override { return "bilinear"; }
+  StencilTable BuildStencils(const Level& parent) const override;
+  bool UsesBoundaryRule() const override { return false; }
+};
+
+/// Loop (SubDLoopRules.h).
+class SUBDKERNEL_EXPORT LoopScheme : public TriangleSplitScheme
 {
 public:
   const char* GetName() const override { return "loop"; }
-  Level Split(const Level& parent, ChildTopology depth) const override;
   StencilTable BuildStencils(const Level& parent) const override;
-  MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
+};
+
+/// Linear triangles: midpoints and fixed vertices (SubDLinearRules.h).
+class SUBDKERNEL_EXPORT LinearTriangleScheme : public TriangleSplitScheme
+{
+public:
+  const char* GetName() const override { return "linear-triangles"; }
+  StencilTable BuildStencils(const Level& parent) const override;
+  bool UsesBoundaryRule() const override { return false; }
 };
 }
 

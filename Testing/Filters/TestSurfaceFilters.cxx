@@ -1,6 +1,7 @@
 // Filter tests: every surface filter (typed tests) and vtkSubDCatmullClarkFilter in pipelines, attributes, caching, threads, and
 // every error path (clear message, empty output, error code, no crash).
 #include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
 
 #include "vtkCallbackCommand.h"
@@ -115,7 +116,8 @@ template <typename Filter>
 class AnySurfaceFilter : public ::testing::Test
 {
 };
-using SurfaceFilters = ::testing::Types<vtkSubDCatmullClarkFilter, vtkSubDLoopFilter>;
+using SurfaceFilters =
+  ::testing::Types<vtkSubDCatmullClarkFilter, vtkSubDLoopFilter, vtkSubDLinearFilter>;
 TYPED_TEST_SUITE(AnySurfaceFilter, SurfaceFilters);
 
 TEST(CatmullClarkFilter, CubeCountsAndClosedSurface)

@@ -58,13 +58,16 @@ Sdc::Options::VtxBoundaryInterpolation ToOsd(subd::BoundaryRule rule)
 enum class SchemeKind
 {
   CatmullClark,
-  Loop
+  Loop,
+  Bilinear
 };
 
 std::unique_ptr<subd::Scheme> MakeScheme(SchemeKind kind)
 {
   if (kind == SchemeKind::Loop)
     return std::make_unique<subd::LoopScheme>();
+  if (kind == SchemeKind::Bilinear)
+    return std::make_unique<subd::BilinearScheme>();
   return std::make_unique<subd::CatmullClarkScheme>();
 }
 
@@ -86,7 +89,10 @@ std::unique_ptr<Far::TopologyRefiner> MakeOsdRefiner(
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
     Factory::Create(desc,
-      Factory::Options(kind == SchemeKind::Loop ? Sdc::SCHEME_LOOP : Sdc::SCHEME_CATMARK, options)));
+      Factory::Options(kind == SchemeKind::Loop
+          ? Sdc::SCHEME_LOOP
+          : (kind == SchemeKind::Bilinear ? Sdc::SCHEME_BILINEAR : Sdc::SCHEME_CATMARK),
+        options)));
   Far::TopologyRefiner::UniformOptions uniform(levels);
   uniform.orderVerticesFromFacesFirst = true;
   uniform.fullTopologyInLastLevel = true;
@@ -135,13 +141,15 @@ std::vector<OracleCase> Cases()
   for (const subdtest::TestMesh& mesh : subdtest::TriangleMeshes())
     for (auto rule : rules)
       cases.push_back({ mesh, rule, SchemeKind::Loop });
+  for (const subdtest::TestMesh& mesh : subdtest::StandardMeshes())
+    for (auto rule : rules)
+      cases.push_back({ mesh, rule, SchemeKind::Bilinear });
   return cases;
 }
 
 void PrintTo(const OracleCase& c, std::ostream* os)
 {
-  *os << (c.Kind == SchemeKind::Loop ? "loop " : "catmull-clark ") << c.Mesh.Name << " "
-      << subd::ToString(c.Rule);
+  *os << MakeScheme(c.Kind)->GetName() << " " << c.Mesh.Name << " " << subd::ToString(c.Rule);
 }
 
 class SchemeOracle : public ::testing::TestWithParam<OracleCase>
@@ -159,7 +167,8 @@ TEST_P(SchemeOracle, MatchesOpenSubdivLevels1To3)
   const std::unique_ptr<subd::Scheme> schemePointer = MakeScheme(c.Kind);
   const subd::Scheme& scheme = *schemePointer;
   subd::Level level = subd::MakeBaseLevel(
-    subd::MeshTopology::Build(c.Mesh.NumVertices(), c.Mesh.Offsets, c.Mesh.Vertices), {}, c.Rule);
+    subd::MeshTopology::Build(c.Mesh.NumVertices(), c.Mesh.Offsets, c.Mesh.Vertices), {},
+    scheme.EffectiveBoundaryRule(c.Rule));
   std::vector<double> mine = c.Mesh.Points;
   std::vector<Point3> osd(static_cast<size_t>(c.Mesh.NumVertices()));
   for (Index v = 0; v < c.Mesh.NumVertices(); ++v)
@@ -279,7 +288,7 @@ TEST_P(SchemeOracle, MatchesOpenSubdivLevels1To3)
 
 std::string CaseName(const ::testing::TestParamInfo<OracleCase>& info)
 {
-  std::string name = std::string(info.param.Kind == SchemeKind::Loop ? "loop_" : "cc_") +
+  std::string name = std::string(MakeScheme(info.param.Kind)->GetName()) + "_" +
     info.param.Mesh.Name + "_" + subd::ToString(info.param.Rule);
   std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
   return name;
