@@ -11,6 +11,13 @@ def main():
     assert "vtkSubDCatmullClarkFilter" in subd.__all__, subd.__all__
     assert "vtkSubDOFFReader" in subd.__all__
     assert "vtkSubDLoopFilter" in subd.__all__
+    assert "vtkSubDLinearFilter" in subd.__all__
+
+    for name in ("vtkSubDLoopFilter", "vtkSubDLinearFilter"):
+        f = getattr(subd, name)()
+        f.SetInputConnection(vtkSphereSource().GetOutputPort())
+        f.Update()
+        assert f.GetOutput().GetNumberOfPolys() > 0, name
 
     sphere = vtkSphereSource()
     sphere.SetThetaResolution(16)
