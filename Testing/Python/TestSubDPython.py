@@ -13,9 +13,10 @@ def main():
     assert "vtkSubDLoopFilter" in subd.__all__
     assert "vtkSubDLinearFilter" in subd.__all__
 
+    source = vtkSphereSource()  # kept alive: a pipeline does not own its upstream algorithm
     for name in ("vtkSubDLoopFilter", "vtkSubDLinearFilter"):
         f = getattr(subd, name)()
-        f.SetInputConnection(vtkSphereSource().GetOutputPort())
+        f.SetInputConnection(source.GetOutputPort())
         f.Update()
         assert f.GetOutput().GetNumberOfPolys() > 0, name
 
