@@ -23,7 +23,7 @@ const std::vector<SchemeEntry>& Schemes()
   static const std::vector<SchemeEntry> schemes = {
     { "catmull-clark", "Catmull-Clark: quads from any polygons (approximating, C2 where regular)",
       &MakeSurfaceFilter<vtkSubDCatmullClarkFilter> },
-    { "loop", "Loop: triangles (polygons are fan-triangulated first; approximating, C2 where regular)",
+    { "loop", "Loop: triangles (other polygons are triangulated first; approximating, C2 where regular)",
       &MakeSurfaceFilter<vtkSubDLoopFilter> },
     { "linear", "linear: more resolution, same shape (triangles split in four, other polygons into quads)",
       &MakeSurfaceFilter<vtkSubDLinearFilter> },

@@ -13,7 +13,7 @@
  *
  * Split (default SPLIT_AUTO) picks the triangle split when every input face is a triangle and
  * the quad split otherwise; SPLIT_QUADS and SPLIT_TRIANGLES force one (polygons are then
- * split into triangle fans first, with a warning). BoundaryRule has no effect here: with no
+ * triangulated first (ear clipping), with a warning). BoundaryRule has no effect here: with no
  * smoothing there is nothing to interpolate differently at a boundary.
  *
  * Attributes, cell data, errors, progress and stencil caching: see vtkSubDSurfaceFilter.

@@ -16,7 +16,7 @@
  * non-manifold handling and vertex classification follow OpenSubdiv, and the output matches
  * OpenSubdiv's Far with Sdc::SCHEME_LOOP to round-off. Unlike VTK's vtkLoopSubdivisionFilter
  * and OpenSubdiv, polygons with more than three corners are accepted: they are split into
- * triangle fans first, with a warning.
+ * triangles first (ear clipping, correct for concave polygons), with a warning.
  *
  * Attributes, cell data, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
  */

@@ -1,6 +1,7 @@
 #include "vtkSubDSurfaceFilter.h"
 
 #include "SubDMeshValidation.h"
+#include "SubDPolygonTriangulation.h"
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
 #include "vtkSubDPointDataInterpolation.h"
@@ -119,9 +120,10 @@ void SMPFor(subd::Index begin, subd::Index end, const subd::RangeTask& task)
     [&task](vtkIdType b, vtkIdType e) { task(static_cast<subd::Index>(b), static_cast<subd::Index>(e)); });
 }
 
-// Splits every face of more than three corners into the fan (v0, vk, vk+1); a triangle keeps
-// the input cell of its polygon. Returns how many faces were split.
-subd::Index FanTriangulate(subd::FaceScreening& faces)
+// Splits every face of more than three corners into triangles (ear clipping, so concave
+// polygons come out right; SubDPolygonTriangulation.h); each triangle keeps the input cell
+// of its polygon. Returns how many faces were split.
+subd::Index TriangulateFaces(subd::FaceScreening& faces, vtkPoints* points)
 {
   const size_t numFaces = faces.KeptFaces.size();
   subd::Index split = 0;
@@ -134,15 +136,23 @@ subd::Index FanTriangulate(subd::FaceScreening& faces)
     return 0;
   }
   split = 0;
-  std::vector<subd::Index> offsets{ 0 }, vertices, kept;
+  std::vector<subd::Index> offsets{ 0 }, vertices, kept, local;
+  std::vector<double> xyz;
   for (size_t f = 0; f < numFaces; ++f)
   {
     const subd::Index* corners = faces.Vertices.data() + faces.Offsets[f];
     const subd::Index n = faces.Offsets[f + 1] - faces.Offsets[f];
     split += n > 3;
-    for (subd::Index k = 1; k + 1 < n; ++k)
+    xyz.resize(3 * static_cast<size_t>(n));
+    for (subd::Index k = 0; k < n; ++k)
     {
-      vertices.insert(vertices.end(), { corners[0], corners[k], corners[k + 1] });
+      points->GetPoint(corners[k], &xyz[3 * k]);
+    }
+    local.clear();
+    subd::TriangulatePolygon(xyz.data(), n, local);
+    for (size_t t = 0; t < local.size(); t += 3)
+    {
+      vertices.insert(vertices.end(), { corners[local[t]], corners[local[t + 1]], corners[local[t + 2]] });
       offsets.push_back(static_cast<subd::Index>(vertices.size()));
       kept.push_back(faces.KeptFaces[f]);
     }
@@ -331,11 +341,11 @@ int vtkSubDSurfaceFilter::RequestData(
   }
   if (this->RequiresTriangles())
   {
-    const subd::Index split = FanTriangulate(screened);
+    const subd::Index split = TriangulateFaces(screened, input->GetPoints());
     if (split > 0)
     {
-      vtkWarningMacro(<< split << " polygon(s) with more than 3 corners were split into triangle "
-                      << "fans: this scheme is defined on triangles only.");
+      vtkWarningMacro(<< split << " polygon(s) with more than 3 corners were split into "
+                      << "triangles: this scheme is defined on triangles only.");
     }
   }
   if (screened.KeptFaces.empty())

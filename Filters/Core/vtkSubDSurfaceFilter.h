@@ -9,7 +9,8 @@
  * - reads the input's polygons (any size; triangle strips are split into triangles) straight
  *   from its offsets/connectivity arrays, screens them (faces with fewer than three distinct
  *   corners are dropped with one warning; out-of-range point ids are an error), and for
- *   triangle-only schemes splits larger polygons into triangle fans (one warning),
+ *   triangle-only schemes splits larger polygons into triangles by ear clipping, which is
+ *   correct for concave polygons too (one warning),
  * - builds the kernel topology, tagging non-manifold edges and vertices, which are then
  *   subdivided as infinitely sharp (OpenSubdiv's behaviour) after one warning,
  * - refines NumberOfSubdivisions levels, or reuses the stencils of the previous execution when
@@ -121,8 +122,8 @@ protected:
   /// whether every (screened) input face is a triangle.
   virtual subd::Scheme* NewScheme(bool allTriangles) = 0;
 
-  /// True for schemes defined on triangles only; polygons are then fan-triangulated first,
-  /// with one warning, instead of being refused.
+  /// True for schemes defined on triangles only; polygons are then triangulated first (ear
+  /// clipping, correct for concave polygons), with one warning, instead of being refused.
   virtual bool RequiresTriangles() { return false; }
 
   int NumberOfSubdivisions = 1;

@@ -1,4 +1,4 @@
-// vtkSubDLoopFilter specifics: triangle counts, polygons split into fans with a warning.
+// vtkSubDLoopFilter specifics: triangle counts, polygons triangulated with a warning.
 #include "vtkSubDLoopFilter.h"
 
 #include "vtkCallbackCommand.h"
