@@ -1,6 +1,7 @@
 #include "SubDSchemeRegistry.h"
 
 #include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDDooSabinFilter.h"
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
 
@@ -25,6 +26,8 @@ const std::vector<SchemeEntry>& Schemes()
       &MakeSurfaceFilter<vtkSubDCatmullClarkFilter> },
     { "loop", "Loop: triangles (other polygons are triangulated first; approximating, C2 where regular)",
       &MakeSurfaceFilter<vtkSubDLoopFilter> },
+    { "doo-sabin", "Doo-Sabin: corner cutting of any polygons (approximating, C1; biquadratic where regular)",
+      &MakeSurfaceFilter<vtkSubDDooSabinFilter> },
     { "linear", "linear: more resolution, same shape (triangles split in four, other polygons into quads)",
       &MakeSurfaceFilter<vtkSubDLinearFilter> },
   };

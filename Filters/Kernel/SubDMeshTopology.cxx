@@ -156,6 +156,7 @@ void MeshTopology::BuildVertexRelations()
   }
   CountsToOffsets(this->VertexFaceOffsets);
   this->VertexFaces.resize(this->FaceVertices.size());
+  this->VertexFaceCorners.resize(this->FaceVertices.size());
   {
     std::vector<Index> fill(this->VertexFaceOffsets.begin(), this->VertexFaceOffsets.end() - 1);
     const Index numFaces = this->GetNumFaces();
@@ -163,7 +164,9 @@ void MeshTopology::BuildVertexRelations()
     {
       for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
       {
-        this->VertexFaces[fill[this->FaceVertices[h]]++] = f;
+        const Index slot = fill[this->FaceVertices[h]]++;
+        this->VertexFaces[slot] = f;
+        this->VertexFaceCorners[slot] = h - this->FaceOffsets[f];
       }
     }
   }
@@ -271,6 +274,62 @@ void MeshTopology::TagVertices()
     }
     this->NumNonManifoldVertices += tag.NonManifold;
   }
+}
+
+Index MeshTopology::FindCorner(Index v, Index f) const
+{
+  const IndexSpan faces = this->GetVertexFaces(v);
+  const Index* it = std::lower_bound(faces.begin(), faces.end(), f);
+  if (it == faces.end() || *it != f)
+  {
+    return InvalidIndex;
+  }
+  return this->GetVertexFaceCorners(v)[static_cast<Index>(it - faces.begin())];
+}
+
+bool MeshTopology::GetOrderedVertexFaces(
+  Index v, std::vector<Index>& faces, std::vector<Index>& corners) const
+{
+  faces.clear();
+  corners.clear();
+  const IndexSpan vf = this->GetVertexFaces(v);
+  if (vf.empty() || this->VertexTags[v].NonManifold)
+  {
+    return false;
+  }
+  // Start: any face for an interior vertex; for a boundary vertex, the face whose edge
+  // leaving v (edge at v's corner) is a boundary edge, so the walk covers the whole fan.
+  Index face = vf[0];
+  Index corner = this->GetVertexFaceCorners(v)[0];
+  if (this->VertexTags[v].Boundary)
+  {
+    for (Index i = 0; i < vf.size(); ++i)
+    {
+      const Index c = this->GetVertexFaceCorners(v)[i];
+      if (this->EdgeTags[this->GetFaceEdges(vf[i])[c]].Boundary)
+      {
+        face = vf[i];
+        corner = c;
+        break;
+      }
+    }
+  }
+  for (Index step = 0; step < vf.size(); ++step)
+  {
+    faces.push_back(face);
+    corners.push_back(corner);
+    // Cross the edge entering v in this face (edge at the previous corner).
+    const Index n = this->GetFaceSize(face);
+    const Index entering = this->GetFaceEdges(face)[corner == 0 ? n - 1 : corner - 1];
+    const IndexSpan ef = this->GetEdgeFaces(entering);
+    if (ef.size() != 2)
+    {
+      break; // reached the boundary
+    }
+    face = ef[0] == face ? ef[1] : ef[0];
+    corner = this->FindCorner(v, face);
+  }
+  return static_cast<Index>(faces.size()) == vf.size();
 }
 
 Index MeshTopology::FindEdge(Index a, Index b) const

@@ -59,6 +59,17 @@ public:
   IndexSpan GetEdgeFaces(Index e) const { return Span(EdgeFaces, EdgeFaceOffsets, e); }
 
   IndexSpan GetVertexFaces(Index v) const { return Span(VertexFaces, VertexFaceOffsets, v); }
+  /// For each face of GetVertexFaces(v), the corner (0..size-1) at which v sits in it.
+  IndexSpan GetVertexFaceCorners(Index v) const { return Span(VertexFaceCorners, VertexFaceOffsets, v); }
+  /// The corner of face f at vertex v, or InvalidIndex (faces of v are sorted: binary search).
+  Index FindCorner(Index v, Index f) const;
+
+  /// The faces around a manifold vertex in counter-clockwise order seen from outside (each
+  /// next face lies across the edge entering v in the previous one), each with v's corner in
+  /// it. A boundary vertex's list starts at the face with the boundary edge leaving v and
+  /// ends at the one with the boundary edge entering it. Returns false (and clears the
+  /// lists) for non-manifold or isolated vertices.
+  bool GetOrderedVertexFaces(Index v, std::vector<Index>& faces, std::vector<Index>& corners) const;
   IndexSpan GetVertexEdges(Index v) const { return Span(VertexEdges, VertexEdgeOffsets, v); }
 
   /// The vertex at the other end of edge `e` from `v`.
@@ -110,6 +121,7 @@ private:
   std::vector<Index> EdgeFaces;
   std::vector<Index> VertexFaceOffsets{ 0 };
   std::vector<Index> VertexFaces;
+  std::vector<Index> VertexFaceCorners;
   std::vector<Index> VertexEdgeOffsets{ 0 };
   std::vector<Index> VertexEdges;
   std::vector<EdgeTag> EdgeTags;

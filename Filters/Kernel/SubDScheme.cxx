@@ -1,5 +1,7 @@
 #include "SubDScheme.h"
 #include "SubDCatmullClarkRules.h"
+#include "SubDDooSabinRules.h"
+#include "SubDDualSplit.h"
 #include "SubDLinearRules.h"
 #include "SubDLoopRules.h"
 #include "SubDQuadSplit.h"
@@ -57,5 +59,27 @@ StencilTable BilinearScheme::BuildStencils(const Level& parent) const
 StencilTable LinearTriangleScheme::BuildStencils(const Level& parent) const
 {
   return BuildLinearTriangleStencils(parent);
+}
+
+Level DooSabinScheme::Split(const Level& parent, ChildTopology depth) const
+{
+  return SplitDual(parent, depth);
+}
+
+StencilTable DooSabinScheme::BuildStencils(const Level& parent) const
+{
+  return BuildDooSabinStencils(parent);
+}
+
+MeshCounts DooSabinScheme::PredictChildCounts(const MeshCounts& parent) const
+{
+  // Upper bounds (a closed mesh): a point per corner; F-, E- and V-faces; the corners of
+  // F-faces (H), E-faces (4E) and V-faces (H); edges: those of the F- and V-faces (H each).
+  MeshCounts child;
+  child.Vertices = parent.Corners;
+  child.Faces = parent.Faces + parent.Edges + parent.Vertices;
+  child.Corners = 2.0 * parent.Corners + 4.0 * parent.Edges;
+  child.Edges = 2.0 * parent.Corners;
+  return child;
 }
 }

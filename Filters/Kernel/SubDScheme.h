@@ -88,6 +88,17 @@ public:
   StencilTable BuildStencils(const Level& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
 };
+
+/// Doo-Sabin: the dual split with the masks of SubDDooSabinRules.h. Any polygons.
+class SUBDKERNEL_EXPORT DooSabinScheme : public Scheme
+{
+public:
+  const char* GetName() const override { return "doo-sabin"; }
+  bool UsesBoundaryRule() const override { return false; }
+  Level Split(const Level& parent, ChildTopology depth) const override;
+  StencilTable BuildStencils(const Level& parent) const override;
+  MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
+};
 }
 
 #endif

@@ -1,0 +1,46 @@
+/**
+ * @class   vtkSubDDooSabinFilter
+ * @brief   Doo-Sabin subdivision (corner cutting) of polygon meshes of any face sizes
+ *
+ * Each level cuts every corner of every face: the point of corner i of an n-sided face is
+ * sum_k alpha_ik v_k with alpha_ii = (n+5)/(4n) and alpha_ik = (3 + 2cos(2 pi (i-k)/n))/(4n)
+ * (D. Doo and M. Sabin, "Behaviour of recursive division surfaces near extraordinary
+ * points", Computer-Aided Design 10(6), 1978). The new faces are an F-face inside each face,
+ * a quad E-face across each edge and a V-face around each vertex. On a regular quad mesh the
+ * limit surface is the uniform biquadratic B-spline (C1), and the refined net is its
+ * knot-inserted net.
+ *
+ * Open meshes: boundary edges and vertices get no E- or V-faces, so the surface shrinks back
+ * from the boundary, as in CGAL's implementation (a boundary rule that follows the quadratic
+ * B-spline of the boundary polygon is planned). Non-manifold edges and vertices are treated
+ * like boundaries. Point data are carried by the same weights (each output point belongs to
+ * one input face corner); cell data: F-faces inherit their face's, E- and V-faces those of an
+ * adjacent face. BoundaryRule has no effect.
+ *
+ * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
+ */
+#ifndef vtkSubDDooSabinFilter_h
+#define vtkSubDDooSabinFilter_h
+
+#include "SubDFiltersModule.h" // for export macro
+#include "vtkSubDSurfaceFilter.h"
+
+class SUBDFILTERS_EXPORT vtkSubDDooSabinFilter : public vtkSubDSurfaceFilter
+{
+public:
+  static vtkSubDDooSabinFilter* New();
+  vtkTypeMacro(vtkSubDDooSabinFilter, vtkSubDSurfaceFilter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+protected:
+  vtkSubDDooSabinFilter() = default;
+  ~vtkSubDDooSabinFilter() override = default;
+
+  subd::Scheme* NewScheme(bool allTriangles) override;
+
+private:
+  vtkSubDDooSabinFilter(const vtkSubDDooSabinFilter&) = delete;
+  void operator=(const vtkSubDDooSabinFilter&) = delete;
+};
+
+#endif

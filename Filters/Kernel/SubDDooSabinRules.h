@@ -1,0 +1,22 @@
+// SubD kernel: Doo-Sabin masks (D. Doo, M. Sabin, "Behaviour of recursive division surfaces
+// near extraordinary points", Computer-Aided Design 10(6), 1978).
+//
+// The new point of corner i of an n-sided face with vertices v_0..v_{n-1} is
+//   sum_k alpha_ik v_k,  alpha_ii = (n + 5) / (4n),
+//                        alpha_ik = (3 + 2 cos(2 pi (i - k) / n)) / (4n)  (k != i),
+// which for quads is 9/16, 3/16, 1/16, 3/16: the knot insertion of the biquadratic B-spline.
+// Rows are numbered like the corners (SubDDualSplit.h) and read parent points only.
+#ifndef SubDDooSabinRules_h
+#define SubDDooSabinRules_h
+
+#include "SubDLevel.h"
+#include "SubDStencilTable.h"
+
+namespace subd
+{
+/// alpha_ik for an n-gon, with d = i - k.
+SUBDKERNEL_EXPORT double DooSabinWeight(Index n, Index d);
+SUBDKERNEL_EXPORT StencilTable BuildDooSabinStencils(const Level& parent);
+}
+
+#endif
