@@ -1,0 +1,128 @@
+// Oracle test against CGAL 5.5's Subdivision_method_3 (Debian's libcgal-dev), an independent
+// implementation: Doo-Sabin on closed meshes (CGAL has no boundary rule), levels 1..3.
+//
+// CGAL numbers its points its own way, so each CGAL point is matched to the nearest of ours
+// (it must be within 1e-9 of the bounding-box diagonal, and the match must be one-to-one),
+// and every CGAL face, mapped through that matching, must be one of our faces with the same
+// cyclic order.
+#include "SubDRefiner.h"
+#include "SubDScheme.h"
+#include "SubDTestMeshes.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+namespace
+{
+using Kernel = CGAL::Simple_cartesian<double>;
+using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using subd::Index;
+
+Mesh ToCgal(const subdtest::TestMesh& m)
+{
+  Mesh mesh;
+  std::vector<Mesh::Vertex_index> vertices;
+  for (Index v = 0; v < m.NumVertices(); ++v)
+    vertices.push_back(mesh.add_vertex(Kernel::Point_3(m.Points[3 * v], m.Points[3 * v + 1], m.Points[3 * v + 2])));
+  for (Index f = 0; f < m.NumFaces(); ++f)
+  {
+    std::vector<Mesh::Vertex_index> face;
+    for (Index k = m.Offsets[f]; k < m.Offsets[f + 1]; ++k)
+      face.push_back(vertices[m.Vertices[k]]);
+    EXPECT_NE(mesh.add_face(face), Mesh::null_face()) << m.Name << " face " << f;
+  }
+  return mesh;
+}
+
+// Faces as rotations starting at their smallest vertex, for order-aware comparison.
+std::vector<Index> Canonical(std::vector<Index> face)
+{
+  std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
+  return face;
+}
+
+void CompareDooSabin(const subdtest::TestMesh& input, int levels)
+{
+  // Ours.
+  subd::DooSabinScheme scheme;
+  subd::Hierarchy h;
+  subd::Refine(scheme,
+    subd::MakeBaseLevel(subd::MeshTopology::Build(input.NumVertices(), input.Offsets, input.Vertices), {},
+      subd::BoundaryRule::EdgeOnly),
+    levels, h);
+  std::vector<double> ours(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
+  h.Evaluate(input.Points.data(), 3, ours.data());
+  const subd::MeshTopology& topo = h.Finest.Topology;
+
+  // CGAL's.
+  Mesh mesh = ToCgal(input);
+  CGAL::Subdivision_method_3::DooSabin_subdivision(mesh, CGAL::parameters::number_of_iterations(levels));
+  ASSERT_EQ(static_cast<Index>(mesh.number_of_vertices()), h.GetNumFinestPoints()) << input.Name;
+  ASSERT_EQ(static_cast<Index>(mesh.number_of_faces()), topo.GetNumFaces()) << input.Name;
+
+  double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
+  for (size_t i = 0; i < input.Points.size(); ++i)
+  {
+    lo[i % 3] = std::min(lo[i % 3], input.Points[i]);
+    hi[i % 3] = std::max(hi[i % 3], input.Points[i]);
+  }
+  const double tolerance =
+    1e-9 * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+
+  std::map<Mesh::Vertex_index, Index> match;
+  std::vector<int> taken(static_cast<size_t>(h.GetNumFinestPoints()), 0);
+  double worst = 0;
+  for (Mesh::Vertex_index v : mesh.vertices())
+  {
+    const Kernel::Point_3& p = mesh.point(v);
+    Index best = -1;
+    double bestDistance = 1e300;
+    for (Index i = 0; i < h.GetNumFinestPoints(); ++i)
+    {
+      const double d = std::max({ std::abs(p.x() - ours[3 * i]), std::abs(p.y() - ours[3 * i + 1]),
+        std::abs(p.z() - ours[3 * i + 2]) });
+      if (d < bestDistance)
+      {
+        bestDistance = d;
+        best = i;
+      }
+    }
+    worst = std::max(worst, bestDistance);
+    match[v] = best;
+    ++taken[best];
+  }
+  EXPECT_LE(worst, tolerance) << input.Name << " level " << levels;
+  EXPECT_EQ(std::count(taken.begin(), taken.end(), 1), h.GetNumFinestPoints()) << "one-to-one";
+  std::printf("doo-sabin %s level %d: largest difference to CGAL %.3g of the diagonal\n", input.Name.c_str(),
+    levels, worst / (tolerance * 1e9));
+
+  std::map<std::vector<Index>, int> ourFaces;
+  for (Index f = 0; f < topo.GetNumFaces(); ++f)
+    ++ourFaces[Canonical(std::vector<Index>(topo.GetFaceVertices(f).begin(), topo.GetFaceVertices(f).end()))];
+  for (Mesh::Face_index f : mesh.faces())
+  {
+    std::vector<Index> face;
+    for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      face.push_back(match[v]);
+    EXPECT_EQ(ourFaces.count(Canonical(face)), 1u) << input.Name << ": a CGAL face is not ours";
+  }
+}
+}
+
+TEST(OracleCGAL, DooSabinClosedMeshesLevels1To3)
+{
+  std::vector<subdtest::TestMesh> meshes{ subdtest::Cube().Jitter(0.1), subdtest::Grid(6, 5, true, true).Jitter(0.05),
+    subdtest::House(false).Jitter(0.1) };
+  for (int n = 3; n <= 8; ++n)
+    meshes.push_back(subdtest::Star(n).Jitter(0.1));
+  meshes.push_back(subdtest::Bipyramid(5).Jitter(0.1));
+  for (const subdtest::TestMesh& mesh : meshes)
+    for (int levels = 1; levels <= 3; ++levels)
+      CompareDooSabin(mesh, levels);
+}
