@@ -4,6 +4,7 @@
 #include "vtkSubDDooSabinFilter.h"
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
+#include "vtkSubDMidpointFilter.h"
 
 namespace subdapp
 {
@@ -28,6 +29,8 @@ const std::vector<SchemeEntry>& Schemes()
       &MakeSurfaceFilter<vtkSubDLoopFilter> },
     { "doo-sabin", "Doo-Sabin: corner cutting of any polygons (approximating, C1; biquadratic where regular)",
       &MakeSurfaceFilter<vtkSubDDooSabinFilter> },
+    { "midpoint", "midpoint (Peters-Reif simplest scheme): edge midpoints, boundaries kept (C1)",
+      &MakeSurfaceFilter<vtkSubDMidpointFilter> },
     { "linear", "linear: more resolution, same shape (triangles split in four, other polygons into quads)",
       &MakeSurfaceFilter<vtkSubDLinearFilter> },
   };

@@ -19,13 +19,10 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   Level current = std::move(base);
   for (int l = 0; l < levels; ++l)
   {
-    out.Stencils.push_back(scheme.BuildStencils(current));
-    if (progress && !progress((l + 0.5) / levels))
-    {
-      out.Finest = std::move(current);
-      return false;
-    }
-    current = scheme.Split(current, l + 1 < levels ? ChildTopology::Full : ChildTopology::FacesOnly);
+    LevelRefinement refinement =
+      scheme.RefineLevel(current, l + 1 < levels ? ChildTopology::Full : ChildTopology::FacesOnly);
+    out.Stencils.push_back(std::move(refinement.Stencils));
+    current = std::move(refinement.Child);
     if (progress && !progress(static_cast<double>(l + 1) / levels))
     {
       out.Finest = std::move(current);

@@ -4,6 +4,7 @@
 #include "SubDDualSplit.h"
 #include "SubDLinearRules.h"
 #include "SubDLoopRules.h"
+#include "SubDMidpointSplit.h"
 #include "SubDQuadSplit.h"
 #include "SubDTriangleSplit.h"
 
@@ -80,6 +81,34 @@ MeshCounts DooSabinScheme::PredictChildCounts(const MeshCounts& parent) const
   child.Faces = parent.Faces + parent.Edges + parent.Vertices;
   child.Corners = 2.0 * parent.Corners + 4.0 * parent.Edges;
   child.Edges = 2.0 * parent.Corners;
+  return child;
+}
+
+Level MidpointScheme::Split(const Level& parent, ChildTopology depth) const
+{
+  return RefineMidpoint(parent, depth).Child;
+}
+
+StencilTable MidpointScheme::BuildStencils(const Level& parent) const
+{
+  return RefineMidpoint(parent, ChildTopology::FacesOnly).Stencils;
+}
+
+LevelRefinement MidpointScheme::RefineLevel(const Level& parent, ChildTopology depth) const
+{
+  MidpointRefinement r = RefineMidpoint(parent, depth);
+  return LevelRefinement{ std::move(r.Stencils), std::move(r.Child) };
+}
+
+MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
+{
+  // Upper bounds (plus kept boundary vertices, at most V): a point per edge; F- and
+  // V-faces; each face corner gives one corner to an F-face and one to a V-face.
+  MeshCounts child;
+  child.Vertices = parent.Edges + parent.Vertices;
+  child.Faces = parent.Faces + parent.Vertices;
+  child.Corners = 2.0 * parent.Corners + 3.0 * parent.Vertices;
+  child.Edges = parent.Corners + 2.0 * parent.Vertices;
   return child;
 }
 }

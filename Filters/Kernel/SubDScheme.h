@@ -17,6 +17,13 @@ struct MeshCounts
   double Faces = 0, Edges = 0, Vertices = 0, Corners = 0;
 };
 
+/// One level's refinement: the stencils of the child points and the child level.
+struct LevelRefinement
+{
+  StencilTable Stencils;
+  Level Child;
+};
+
 class SUBDKERNEL_EXPORT Scheme
 {
 public:
@@ -26,6 +33,14 @@ public:
   virtual Level Split(const Level& parent, ChildTopology depth) const = 0;
   /// The stencils of the next level's points, rows numbered like Split's child points.
   virtual StencilTable BuildStencils(const Level& parent) const = 0;
+  /// Both at once (schemes whose split and stencils share work override it).
+  virtual LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const
+  {
+    LevelRefinement r;
+    r.Stencils = this->BuildStencils(parent);
+    r.Child = this->Split(parent, depth);
+    return r;
+  }
   /// The counts of the next level of a mesh with the given counts (for size guards).
   virtual MeshCounts PredictChildCounts(const MeshCounts& parent) const = 0;
   /// False for schemes whose points only interpolate within a face (linear, bilinear): the
@@ -98,6 +113,18 @@ public:
   Level Split(const Level& parent, ChildTopology depth) const override;
   StencilTable BuildStencils(const Level& parent) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
+};
+
+/// Peters-Reif midpoint ("simplest") subdivision, boundaries kept (SubDMidpointSplit.h).
+class SUBDKERNEL_EXPORT MidpointScheme : public Scheme
+{
+public:
+  const char* GetName() const override { return "midpoint"; }
+  Level Split(const Level& parent, ChildTopology depth) const override;
+  StencilTable BuildStencils(const Level& parent) const override;
+  LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
+  MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
+  bool UsesBoundaryRule() const override { return false; }
 };
 }
 

@@ -4,6 +4,7 @@
 #include "vtkSubDDooSabinFilter.h"
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
+#include "vtkSubDMidpointFilter.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -119,7 +120,12 @@ class AnySurfaceFilter : public ::testing::Test
 {
 };
 using SurfaceFilters = ::testing::Types<vtkSubDCatmullClarkFilter, vtkSubDLoopFilter,
-  vtkSubDLinearFilter, vtkSubDDooSabinFilter>;
+  vtkSubDLinearFilter, vtkSubDDooSabinFilter, vtkSubDMidpointFilter>;
+
+// Primal schemes keep a point at every old vertex and refine sharp edges in place.
+template <typename Filter>
+constexpr bool IsPrimal = !std::is_same<Filter, vtkSubDDooSabinFilter>::value &&
+  !std::is_same<Filter, vtkSubDMidpointFilter>::value;
 TYPED_TEST_SUITE(AnySurfaceFilter, SurfaceFilters);
 
 TEST(CatmullClarkFilter, CubeCountsAndClosedSurface)
@@ -270,9 +276,9 @@ TYPED_TEST(AnySurfaceFilter, CellDataInheritedAndParentIds)
   for (int f = 0; f < 6; ++f)
   {
     EXPECT_GT(perParent[f], 0);
-    // Primal splits: the cube is symmetric, so every face has as many descendants. (Doo-Sabin
-    // gives each E- and V-face to one of its adjacent faces.)
-    if constexpr (!std::is_same<TypeParam, vtkSubDDooSabinFilter>::value)
+    // Primal splits: the cube is symmetric, so every face has as many descendants. (Dual
+    // schemes give each E- and V-face to one of its adjacent faces.)
+    if constexpr (IsPrimal<TypeParam>)
       EXPECT_EQ(perParent[f], out->GetNumberOfPolys() / 6);
   }
 }
@@ -385,8 +391,8 @@ TYPED_TEST(AnySurfaceFilter, NonManifoldEdgeIsSubdividedWithOneWarning)
   EXPECT_EQ(messages.Warnings.find("Input is non-manifold", first + 1), std::string::npos) << "one warning";
   EXPECT_GT(out->GetNumberOfPolys(), 0);
   // Primal schemes: the shared edge is infinitely sharp, its points stay on the segment
-  // x = z = 0. (Doo-Sabin cuts corners and keeps no point on an edge.)
-  if constexpr (!std::is_same<TypeParam, vtkSubDDooSabinFilter>::value)
+  // x = z = 0. (Dual schemes cut corners and keep no point on an edge.)
+  if constexpr (IsPrimal<TypeParam>)
   {
     vtkIdType onEdge = 0;
     for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
