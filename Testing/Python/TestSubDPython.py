@@ -14,7 +14,7 @@ def main():
     assert "vtkSubDLinearFilter" in subd.__all__
 
     source = vtkSphereSource()  # kept alive: a pipeline does not own its upstream algorithm
-    for name in ("vtkSubDLoopFilter", "vtkSubDLinearFilter", "vtkSubDDooSabinFilter"):
+    for name in ("vtkSubDLoopFilter", "vtkSubDLinearFilter", "vtkSubDDooSabinFilter", "vtkSubDMidpointFilter"):
         f = getattr(subd, name)()
         f.SetInputConnection(source.GetOutputPort())
         f.Update()
