@@ -2,6 +2,7 @@
 #include "SubDBuiltinCages.h"
 #include "SubDMeshIO.h"
 
+#include <cmath>
 #include <cstdlib>
 #include <sstream>
 
@@ -18,6 +19,18 @@ bool ParseInt(const std::string& text, int& value)
     return false;
   }
   value = static_cast<int>(v);
+  return true;
+}
+
+bool ParseDouble(const std::string& text, double& value)
+{
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v))
+  {
+    return false;
+  }
+  value = v;
   return true;
 }
 
@@ -46,7 +59,8 @@ bool ParseBoundary(const std::string& text, int& rule)
 std::string UsageText()
 {
   std::ostringstream out;
-  out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--output FILE]\n"
+  out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
+         "            [--output FILE]\n"
          "\n"
          "Subdivides the polygon mesh INPUT (" << SupportedExtensions() << ") and writes the\n"
          "result; the formats are chosen by the file extensions. Without INPUT, a built-in\n"
@@ -63,6 +77,7 @@ std::string UsageText()
          "                       none: faces at the boundary become holes (shape, not output)\n"
          "                       edge-only: boundary edges are sharp creases\n"
          "                       edge-and-corner: also pin vertices that have a single face\n"
+         "  --tension W        butterfly tension in [-0.0625, 0.0625] (default 0: 8-point butterfly)\n"
          "  --builtin NAME     built-in cage when there is no INPUT:";
   for (const std::string& name : BuiltinCageNames())
   {
@@ -146,6 +161,20 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
         return false;
       }
     }
+    else if (arg == "--tension")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      if (!ParseDouble(text, cmd.Options.Tension) || cmd.Options.Tension < -0.0625 ||
+        cmd.Options.Tension > 0.0625)
+      {
+        error = "--tension wants a number in [-0.0625, 0.0625], not '" + text + "'";
+        return false;
+      }
+      cmd.TensionGiven = true;
+    }
     else if (arg == "--builtin")
     {
       if (!value(cmd.Builtin))
@@ -179,6 +208,11 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
       error = "more than one input file ('" + cmd.Input + "', '" + arg + "')";
       return false;
     }
+  }
+  if (cmd.TensionGiven && cmd.Scheme != "butterfly")
+  {
+    error = "--tension applies to the butterfly scheme only";
+    return false;
   }
   if (!cmd.Input.empty() && !cmd.Builtin.empty())
   {

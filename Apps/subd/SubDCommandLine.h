@@ -14,6 +14,7 @@ struct CommandLine
   std::string Output;  ///< empty: derived from input and scheme
   std::string Scheme = "catmull-clark";
   SchemeOptions Options;
+  bool TensionGiven = false;
   bool Quiet = false;
   bool Help = false;
   bool Version = false;

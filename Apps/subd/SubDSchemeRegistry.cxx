@@ -1,5 +1,6 @@
 #include "SubDSchemeRegistry.h"
 
+#include "vtkSubDButterflyFilter.h"
 #include "vtkSubDCatmullClarkFilter.h"
 #include "vtkSubDDooSabinFilter.h"
 #include "vtkSubDLinearFilter.h"
@@ -18,6 +19,15 @@ vtkSmartPointer<vtkPolyDataAlgorithm> MakeSurfaceFilter(const SchemeOptions& opt
   filter->SetBoundaryRule(options.BoundaryRule);
   return filter;
 }
+
+vtkSmartPointer<vtkPolyDataAlgorithm> MakeButterfly(const SchemeOptions& options)
+{
+  auto filter = vtkSmartPointer<vtkSubDButterflyFilter>::New();
+  filter->SetNumberOfSubdivisions(options.Levels);
+  filter->SetBoundaryRule(options.BoundaryRule);
+  filter->SetTension(options.Tension);
+  return filter;
+}
 }
 
 const std::vector<SchemeEntry>& Schemes()
@@ -27,6 +37,8 @@ const std::vector<SchemeEntry>& Schemes()
       &MakeSurfaceFilter<vtkSubDCatmullClarkFilter> },
     { "loop", "Loop: triangles (other polygons are triangulated first; approximating, C2 where regular)",
       &MakeSurfaceFilter<vtkSubDLoopFilter> },
+    { "butterfly", "modified butterfly: interpolating, triangles (other polygons are triangulated), --tension W",
+      &MakeButterfly },
     { "doo-sabin", "Doo-Sabin: corner cutting of any polygons (approximating, C1; biquadratic where regular)",
       &MakeSurfaceFilter<vtkSubDDooSabinFilter> },
     { "midpoint", "midpoint (Peters-Reif simplest scheme): edge midpoints, boundaries kept (C1)",

@@ -14,6 +14,7 @@ struct SchemeOptions
 {
   int Levels = 2;
   int BoundaryRule = 1; // vtkSubDSurfaceFilter::BOUNDARY_EDGE_ONLY
+  double Tension = 0.0; // butterfly only
 };
 
 struct SchemeEntry

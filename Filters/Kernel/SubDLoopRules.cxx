@@ -12,24 +12,6 @@ double LoopBeta(Index n)
   return (0.625 - c * c) / n;
 }
 
-namespace
-{
-// The vertex of triangle f that is not on edge e.
-Index OppositeVertex(const MeshTopology& topo, Index f, Index e)
-{
-  const IndexSpan fe = topo.GetFaceEdges(f);
-  const IndexSpan fv = topo.GetFaceVertices(f);
-  for (Index j = 0; j < 3; ++j)
-  {
-    if (fe[j] == e)
-    {
-      return fv[(j + 2) % 3]; // edge j joins corners j and j+1
-    }
-  }
-  return InvalidIndex;
-}
-}
-
 StencilTable BuildLoopStencils(const Level& parent)
 {
   const MeshTopology& topo = parent.Topology;
@@ -70,8 +52,8 @@ StencilTable BuildLoopStencils(const Level& parent)
     if (edgeIsSmooth(e))
     {
       const IndexSpan ef = topo.GetEdgeFaces(e);
-      src[2] = OppositeVertex(topo, ef[0], e);
-      src[3] = OppositeVertex(topo, ef[1], e);
+      src[2] = topo.GetTriangleOppositeVertex(ef[0], e);
+      src[3] = topo.GetTriangleOppositeVertex(ef[1], e);
       wts[0] = wts[1] = 0.375;
       wts[2] = wts[3] = 0.125;
     }

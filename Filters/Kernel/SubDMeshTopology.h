@@ -98,6 +98,9 @@ public:
     std::vector<Index> faceVertices);
   bool HasEdges() const { return !FaceEdges.empty() || FaceVertices.empty(); }
 
+  /// For a triangle f and one of its edges e: the vertex of f not on e.
+  Index GetTriangleOppositeVertex(Index f, Index e) const;
+
   /// Returns the edge joining a and b, or InvalidIndex.
   Index FindEdge(Index a, Index b) const;
 

@@ -1,5 +1,6 @@
 #include "SubDScheme.h"
 #include "SubDCatmullClarkRules.h"
+#include "SubDButterflyRules.h"
 #include "SubDDooSabinRules.h"
 #include "SubDDualSplit.h"
 #include "SubDLinearRules.h"
@@ -110,5 +111,10 @@ MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
   child.Corners = 2.0 * parent.Corners + 3.0 * parent.Vertices;
   child.Edges = parent.Corners + 2.0 * parent.Vertices;
   return child;
+}
+
+StencilTable ButterflyScheme::BuildStencils(const Level& parent) const
+{
+  return BuildButterflyStencils(parent, this->Tension);
 }
 }

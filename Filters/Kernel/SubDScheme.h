@@ -115,6 +115,22 @@ public:
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
 };
 
+/// Modified butterfly with tension (SubDButterflyRules.h). Triangles only; interpolating.
+class SUBDKERNEL_EXPORT ButterflyScheme : public TriangleSplitScheme
+{
+public:
+  explicit ButterflyScheme(double tension = 0.0)
+    : Tension(tension)
+  {
+  }
+  const char* GetName() const override { return "butterfly"; }
+  StencilTable BuildStencils(const Level& parent) const override;
+  bool UsesBoundaryRule() const override { return false; }
+
+private:
+  double Tension;
+};
+
 /// Peters-Reif midpoint ("simplest") subdivision, boundaries kept (SubDMidpointSplit.h).
 class SUBDKERNEL_EXPORT MidpointScheme : public Scheme
 {

@@ -1,6 +1,7 @@
 // Property tests over every scheme x its fixtures, two levels: every stencil row sums to one,
 // refinement commutes with affine maps, planar input stays planar, and the refined mesh of a
 // closed manifold is a closed manifold with the same Euler characteristic.
+#include "SubDButterflyRules.h"
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
 #include "SubDTestMeshes.h"
@@ -31,6 +32,8 @@ std::vector<SchemeCase> SchemeCases()
     { "midpoint", [] { return std::make_unique<subd::MidpointScheme>(); }, false },
     { "loop", [] { return std::make_unique<subd::LoopScheme>(); }, true },
     { "linear-triangles", [] { return std::make_unique<subd::LinearTriangleScheme>(); }, true },
+    { "butterfly", [] { return std::make_unique<subd::ButterflyScheme>(0.0); }, true },
+    { "butterfly-tension", [] { return std::make_unique<subd::ButterflyScheme>(1.0 / 16.0); }, true },
   };
 }
 
@@ -180,4 +183,72 @@ TEST(MidpointScheme, OpenBoundaryKeepsItsShape)
     }
   }
   EXPECT_EQ(boundaryPoints, finest.GetNumBoundaryEdges()); // a closed boundary loop
+}
+
+TEST(ButterflyScheme, ExtraordinaryWeightsAndInterpolation)
+{
+  EXPECT_DOUBLE_EQ(subd::ButterflyExtraordinaryWeight(3, 0), 5.0 / 12.0);
+  EXPECT_DOUBLE_EQ(subd::ButterflyExtraordinaryWeight(3, 2), -1.0 / 12.0);
+  EXPECT_DOUBLE_EQ(subd::ButterflyExtraordinaryWeight(4, 0), 3.0 / 8.0);
+  EXPECT_DOUBLE_EQ(subd::ButterflyExtraordinaryWeight(4, 1), 0.0);
+  EXPECT_DOUBLE_EQ(subd::ButterflyExtraordinaryWeight(4, 2), -1.0 / 8.0);
+  for (Index K = 3; K <= 64; ++K)
+  {
+    double sum = 0;
+    for (Index j = 0; j < K; ++j)
+      sum += subd::ButterflyExtraordinaryWeight(K, j);
+    EXPECT_NEAR(sum, 0.25, 1e-14) << "K = " << K; // the vertex itself takes 3/4
+  }
+  // Valence 6 in the K >= 5 formula gives the regular one-ring weights 7/24, 1/12, -1/12, -1/24.
+  EXPECT_NEAR(subd::ButterflyExtraordinaryWeight(6, 0), 7.0 / 24.0, 1e-15);
+  EXPECT_NEAR(subd::ButterflyExtraordinaryWeight(6, 3), -1.0 / 24.0, 1e-15);
+
+  // Interpolating: every input point is an output point, bit for bit, at every level.
+  for (const subdtest::TestMesh& mesh : subdtest::TriangleMeshes())
+  {
+    for (double w : { 0.0, 0.05 })
+    {
+      subd::ButterflyScheme scheme(w);
+      subd::Hierarchy h;
+      subd::Refine(scheme,
+        subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {},
+          subd::BoundaryRule::EdgeOnly),
+        3, h);
+      std::vector<double> out(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
+      h.Evaluate(mesh.Points.data(), 3, out.data());
+      // Vertex points are numbered last at each level: the input points end the array.
+      const size_t first = out.size() - mesh.Points.size();
+      for (size_t i = 0; i < mesh.Points.size(); ++i)
+        ASSERT_EQ(out[first + i], mesh.Points[i]) << mesh.Name;
+    }
+  }
+}
+
+TEST(ButterflyScheme, RegularTenPointStencilWithTension)
+{
+  // A torus triangulated with all diagonals the same way: every vertex has valence 6.
+  subdtest::TestMesh torus = subdtest::Grid(8, 8, true, true).Triangulated();
+  const subd::MeshTopology t = subd::MeshTopology::Build(torus.NumVertices(), torus.Offsets, torus.Vertices);
+  for (Index v = 0; v < t.GetNumVertices(); ++v)
+    ASSERT_EQ(t.GetVertexEdges(v).size(), 6);
+  const double w = 0.04;
+  const subd::Level base = subd::MakeBaseLevel(t, {}, subd::BoundaryRule::EdgeOnly);
+  const subd::StencilTable table = subd::ButterflyScheme(w).BuildStencils(base);
+  for (Index e = 0; e < t.GetNumEdges(); ++e)
+  {
+    // 10 distinct points; weights 1/2-w (x2), 1/8+2w (x2), -1/16-w (x4), w (x2).
+    const subd::IndexSpan src = table.GetSources(e);
+    ASSERT_EQ(src.size(), 10);
+    std::vector<double> weights(table.GetWeights(e), table.GetWeights(e) + 10);
+    std::sort(weights.begin(), weights.end());
+    const std::vector<double> expected{ -0.0625 - w, -0.0625 - w, -0.0625 - w, -0.0625 - w, w, w, 0.125 + 2 * w,
+      0.125 + 2 * w, 0.5 - w, 0.5 - w };
+    for (int k = 0; k < 10; ++k)
+      EXPECT_NEAR(weights[k], expected[k], 1e-15) << "edge " << e;
+    // The edge ends carry 1/2 - w.
+    const Index* ev = t.GetEdgeVertices(e);
+    for (Index k = 0; k < 10; ++k)
+      if (src[k] == ev[0] || src[k] == ev[1])
+        EXPECT_NEAR(table.GetWeights(e)[k], 0.5 - w, 1e-15);
+  }
 }

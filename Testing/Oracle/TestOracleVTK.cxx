@@ -1,5 +1,6 @@
 // Oracle test against VTK's own triangle subdivision filters (Debian's libvtk9):
-// vtkLinearSubdivisionFilter and vtkLoopSubdivisionFilter, on closed triangle meshes.
+// vtkLinearSubdivisionFilter, vtkButterflySubdivisionFilter (tension 0, agrees fully) and
+// vtkLoopSubdivisionFilter, on closed triangle meshes.
 //
 // VTK numbers its output points differently, so the outputs are compared as point sets
 // (each of ours must have a point of VTK's within 1e-9 of the bounding-box diagonal, and the
@@ -13,12 +14,14 @@
 // VTK's filters write single-precision points whatever the input's precision, so the
 // tolerance follows the type of VTK's output points: 1e-9 of the diagonal for double,
 // 1e-6 (a few float ulps) for float.
+#include "vtkSubDButterflyFilter.h"
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
 
 #include "SubDTestMeshes.h"
 
 #include "vtkCellArray.h"
+#include "vtkButterflySubdivisionFilter.h"
 #include "vtkLinearSubdivisionFilter.h"
 #include "vtkLoopSubdivisionFilter.h"
 #include "vtkNew.h"
@@ -134,5 +137,30 @@ TEST(OracleVTK, LoopEdgePointsMatchVtkLoopSubdivision)
     EXPECT_LE(WorstDistance(ours->GetOutput(), theirs->GetOutput(), 0, numEdges),
       Tolerance(theirs->GetOutput(), input))
       << mesh.Name;
+  }
+}
+
+TEST(OracleVTK, ButterflyMatchesVtkButterflySubdivision)
+{
+  for (const subdtest::TestMesh& mesh : ClosedTriangleMeshes())
+  {
+    vtkSmartPointer<vtkPolyData> input = ToPolyData(mesh);
+    for (int levels = 1; levels <= 2; ++levels)
+    {
+      vtkNew<vtkSubDButterflyFilter> ours;
+      ours->SetInputData(input);
+      ours->SetNumberOfSubdivisions(levels);
+      ours->Update();
+      vtkNew<vtkButterflySubdivisionFilter> theirs;
+      theirs->SetInputData(input);
+      theirs->SetNumberOfSubdivisions(levels);
+      theirs->Update();
+      ASSERT_EQ(ours->GetOutput()->GetNumberOfPoints(), theirs->GetOutput()->GetNumberOfPoints()) << mesh.Name;
+      const double tolerance = Tolerance(theirs->GetOutput(), input);
+      const double worst = WorstDistance(ours->GetOutput(), theirs->GetOutput());
+      std::printf("butterfly %s level %d: largest distance to VTK %.3g of the diagonal\n", mesh.Name.c_str(), levels,
+        worst / input->GetLength());
+      EXPECT_LE(worst, tolerance) << mesh.Name << " level " << levels;
+    }
   }
 }

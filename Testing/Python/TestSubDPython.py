@@ -14,7 +14,8 @@ def main():
     assert "vtkSubDLinearFilter" in subd.__all__
 
     source = vtkSphereSource()  # kept alive: a pipeline does not own its upstream algorithm
-    for name in ("vtkSubDLoopFilter", "vtkSubDLinearFilter", "vtkSubDDooSabinFilter", "vtkSubDMidpointFilter"):
+    for name in ("vtkSubDLoopFilter", "vtkSubDLinearFilter", "vtkSubDDooSabinFilter", "vtkSubDMidpointFilter",
+                 "vtkSubDButterflyFilter"):
         f = getattr(subd, name)()
         f.SetInputConnection(source.GetOutputPort())
         f.Update()

@@ -1,0 +1,63 @@
+/**
+ * @class   vtkSubDButterflyFilter
+ * @brief   modified butterfly subdivision (interpolating) of triangle meshes, with tension
+ *
+ * An interpolating scheme: the input points stay where they are and every edge gets a new
+ * point (D. Zorin, P. Schroeder, W. Sweldens, "Interpolating Subdivision for Meshes with
+ * Arbitrary Topology", SIGGRAPH 1996; N. Dyn, D. Levin, J. Gregory, "A butterfly
+ * subdivision scheme for surface interpolation with tension control", ACM TOG 9(2), 1990):
+ *
+ * - between regular vertices (valence 6), the 10-point stencil with tension w: 1/2 - w on the
+ *   edge ends, 1/8 + 2w on the two opposite vertices, -1/16 - w on the four wings, w on the
+ *   two tips straight across from the edge. w = 0 (default) is the 8-point butterfly of VTK
+ *   and OpenMesh; small positive w gives a tighter surface.
+ * - next to an extraordinary interior vertex of valence K: 3/4 on it and
+ *   s_j = (1/4 + cos(2 pi j/K) + 1/2 cos(4 pi j/K))/K on its neighbours (K = 3: 5/12,
+ *   -1/12, -1/12; K = 4: 3/8, 0, -1/8, 0), averaged when both ends are extraordinary;
+ * - on the boundary, the 4-point rule -1/16, 9/16, 9/16, -1/16, so boundaries interpolate
+ *   their polygon; near a boundary, missing wings are replaced by their parallelogram
+ *   reflection (as OpenMesh does). Non-manifold edges get their midpoint.
+ *
+ * The limit surface is C1 (for small |w|). It matches OpenMesh's ModifiedButterflyT for
+ * w = 0 to round-off. Polygons are triangulated first (ear clipping), with a warning.
+ * BoundaryRule has no effect.
+ *
+ * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
+ */
+#ifndef vtkSubDButterflyFilter_h
+#define vtkSubDButterflyFilter_h
+
+#include "SubDFiltersModule.h" // for export macro
+#include "vtkSubDSurfaceFilter.h"
+
+class SUBDFILTERS_EXPORT vtkSubDButterflyFilter : public vtkSubDSurfaceFilter
+{
+public:
+  static vtkSubDButterflyFilter* New();
+  vtkTypeMacro(vtkSubDButterflyFilter, vtkSubDSurfaceFilter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /**
+   * Tension w of the regular 10-point stencil (default 0, the 8-point butterfly), clamped to
+   * [-0.0625, 0.0625]; the scheme is C1 for small |w|.
+   */
+  vtkSetClampMacro(Tension, double, -0.0625, 0.0625);
+  vtkGetMacro(Tension, double);
+  ///@}
+
+protected:
+  vtkSubDButterflyFilter() = default;
+  ~vtkSubDButterflyFilter() override = default;
+
+  subd::Scheme* NewScheme(bool allTriangles) override;
+  bool RequiresTriangles() override { return true; }
+
+  double Tension = 0.0;
+
+private:
+  vtkSubDButterflyFilter(const vtkSubDButterflyFilter&) = delete;
+  void operator=(const vtkSubDButterflyFilter&) = delete;
+};
+
+#endif
