@@ -6,6 +6,7 @@
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
 #include "vtkSubDMidpointFilter.h"
+#include "vtkSubDSqrt3Filter.h"
 
 namespace subdapp
 {
@@ -43,6 +44,8 @@ const std::vector<SchemeEntry>& Schemes()
       &MakeSurfaceFilter<vtkSubDDooSabinFilter> },
     { "midpoint", "midpoint (Peters-Reif simplest scheme): edge midpoints, boundaries kept (C1)",
       &MakeSurfaceFilter<vtkSubDMidpointFilter> },
+    { "sqrt3", "Kobbelt's sqrt(3): triangles, 3x faces per step (approximating, C2 where regular)",
+      &MakeSurfaceFilter<vtkSubDSqrt3Filter> },
     { "linear", "linear: more resolution, same shape (triangles split in four, other polygons into quads)",
       &MakeSurfaceFilter<vtkSubDLinearFilter> },
   };

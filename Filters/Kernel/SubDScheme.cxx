@@ -7,6 +7,7 @@
 #include "SubDLoopRules.h"
 #include "SubDMidpointSplit.h"
 #include "SubDQuadSplit.h"
+#include "SubDSqrt3Rules.h"
 #include "SubDTriangleSplit.h"
 
 namespace subd
@@ -116,5 +117,27 @@ MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
 StencilTable ButterflyScheme::BuildStencils(const Level& parent) const
 {
   return BuildButterflyStencils(parent, this->Tension);
+}
+
+Level Sqrt3Scheme::Split(const Level& parent, ChildTopology depth) const
+{
+  return SplitSqrt3(parent, depth);
+}
+
+StencilTable Sqrt3Scheme::BuildStencils(const Level& parent) const
+{
+  return BuildSqrt3Stencils(parent);
+}
+
+MeshCounts Sqrt3Scheme::PredictChildCounts(const MeshCounts& parent) const
+{
+  // Three triangles per triangle (closed meshes; fewer at boundaries): each face adds a
+  // point and three edges.
+  MeshCounts child;
+  child.Faces = 3.0 * parent.Faces;
+  child.Vertices = parent.Vertices + parent.Faces;
+  child.Edges = parent.Edges + 3.0 * parent.Faces;
+  child.Corners = 3.0 * parent.Corners;
+  return child;
 }
 }

@@ -131,6 +131,17 @@ private:
   double Tension;
 };
 
+/// Kobbelt's sqrt(3) subdivision (SubDSqrt3Rules.h). Triangles only.
+class SUBDKERNEL_EXPORT Sqrt3Scheme : public Scheme
+{
+public:
+  const char* GetName() const override { return "sqrt3"; }
+  Level Split(const Level& parent, ChildTopology depth) const override;
+  StencilTable BuildStencils(const Level& parent) const override;
+  MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
+  bool UsesBoundaryRule() const override { return false; }
+};
+
 /// Peters-Reif midpoint ("simplest") subdivision, boundaries kept (SubDMidpointSplit.h).
 class SUBDKERNEL_EXPORT MidpointScheme : public Scheme
 {

@@ -6,6 +6,7 @@
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
 #include "vtkSubDMidpointFilter.h"
+#include "vtkSubDSqrt3Filter.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -121,17 +122,18 @@ class AnySurfaceFilter : public ::testing::Test
 {
 };
 using SurfaceFilters = ::testing::Types<vtkSubDCatmullClarkFilter, vtkSubDLoopFilter,
-  vtkSubDButterflyFilter, vtkSubDLinearFilter, vtkSubDDooSabinFilter, vtkSubDMidpointFilter>;
+  vtkSubDButterflyFilter, vtkSubDLinearFilter, vtkSubDDooSabinFilter, vtkSubDMidpointFilter,
+  vtkSubDSqrt3Filter>;
 
 // Schemes with non-negative weights keep every point in the convex hull of its sources
 // (the interpolating butterfly has negative weights and overshoots).
 template <typename Filter>
 constexpr bool HasConvexHullProperty = !std::is_same<Filter, vtkSubDButterflyFilter>::value;
 
-// Primal schemes keep a point at every old vertex and refine sharp edges in place.
+// Primal splits keep a point at every old vertex and put new points on sharp edges.
 template <typename Filter>
 constexpr bool IsPrimal = !std::is_same<Filter, vtkSubDDooSabinFilter>::value &&
-  !std::is_same<Filter, vtkSubDMidpointFilter>::value;
+  !std::is_same<Filter, vtkSubDMidpointFilter>::value && !std::is_same<Filter, vtkSubDSqrt3Filter>::value;
 TYPED_TEST_SUITE(AnySurfaceFilter, SurfaceFilters);
 
 TEST(CatmullClarkFilter, CubeCountsAndClosedSurface)

@@ -32,6 +32,7 @@ std::vector<SchemeCase> SchemeCases()
     { "midpoint", [] { return std::make_unique<subd::MidpointScheme>(); }, false },
     { "loop", [] { return std::make_unique<subd::LoopScheme>(); }, true },
     { "linear-triangles", [] { return std::make_unique<subd::LinearTriangleScheme>(); }, true },
+    { "sqrt3", [] { return std::make_unique<subd::Sqrt3Scheme>(); }, true },
     { "butterfly", [] { return std::make_unique<subd::ButterflyScheme>(0.0); }, true },
     { "butterfly-tension", [] { return std::make_unique<subd::ButterflyScheme>(1.0 / 16.0); }, true },
   };

@@ -1,5 +1,6 @@
 // Oracle test against CGAL 5.5's Subdivision_method_3 (Debian's libcgal-dev), an independent
-// implementation: Doo-Sabin on closed meshes (CGAL has no boundary rule), levels 1..3.
+// implementation: Doo-Sabin and sqrt(3) on closed meshes (CGAL has no Doo-Sabin boundary
+// rule; SubD's sqrt(3) boundary rule is not Kobbelt's yet), levels 1..3.
 //
 // CGAL numbers its points its own way, so each CGAL point is matched to the nearest of ours
 // (it must be within 1e-9 of the bounding-box diagonal, and the match must be one-to-one),
@@ -17,6 +18,7 @@
 
 #include <algorithm>
 #include <map>
+#include <memory>
 
 namespace
 {
@@ -47,10 +49,21 @@ std::vector<Index> Canonical(std::vector<Index> face)
   return face;
 }
 
-void CompareDooSabin(const subdtest::TestMesh& input, int levels)
+enum class Method
+{
+  DooSabin,
+  Sqrt3
+};
+
+void CompareWithCgal(Method method, const subdtest::TestMesh& input, int levels)
 {
   // Ours.
-  subd::DooSabinScheme scheme;
+  std::unique_ptr<subd::Scheme> schemePointer;
+  if (method == Method::DooSabin)
+    schemePointer = std::make_unique<subd::DooSabinScheme>();
+  else
+    schemePointer = std::make_unique<subd::Sqrt3Scheme>();
+  const subd::Scheme& scheme = *schemePointer;
   subd::Hierarchy h;
   subd::Refine(scheme,
     subd::MakeBaseLevel(subd::MeshTopology::Build(input.NumVertices(), input.Offsets, input.Vertices), {},
@@ -62,7 +75,10 @@ void CompareDooSabin(const subdtest::TestMesh& input, int levels)
 
   // CGAL's.
   Mesh mesh = ToCgal(input);
-  CGAL::Subdivision_method_3::DooSabin_subdivision(mesh, CGAL::parameters::number_of_iterations(levels));
+  if (method == Method::DooSabin)
+    CGAL::Subdivision_method_3::DooSabin_subdivision(mesh, CGAL::parameters::number_of_iterations(levels));
+  else
+    CGAL::Subdivision_method_3::Sqrt3_subdivision(mesh, CGAL::parameters::number_of_iterations(levels));
   ASSERT_EQ(static_cast<Index>(mesh.number_of_vertices()), h.GetNumFinestPoints()) << input.Name;
   ASSERT_EQ(static_cast<Index>(mesh.number_of_faces()), topo.GetNumFaces()) << input.Name;
 
@@ -99,8 +115,8 @@ void CompareDooSabin(const subdtest::TestMesh& input, int levels)
   }
   EXPECT_LE(worst, tolerance) << input.Name << " level " << levels;
   EXPECT_EQ(std::count(taken.begin(), taken.end(), 1), h.GetNumFinestPoints()) << "one-to-one";
-  std::printf("doo-sabin %s level %d: largest difference to CGAL %.3g of the diagonal\n", input.Name.c_str(),
-    levels, worst / (tolerance * 1e9));
+  std::printf("%s %s level %d: largest difference to CGAL %.3g of the diagonal\n", scheme.GetName(),
+    input.Name.c_str(), levels, worst / (tolerance * 1e9));
 
   std::map<std::vector<Index>, int> ourFaces;
   for (Index f = 0; f < topo.GetNumFaces(); ++f)
@@ -124,5 +140,16 @@ TEST(OracleCGAL, DooSabinClosedMeshesLevels1To3)
   meshes.push_back(subdtest::Bipyramid(5).Jitter(0.1));
   for (const subdtest::TestMesh& mesh : meshes)
     for (int levels = 1; levels <= 3; ++levels)
-      CompareDooSabin(mesh, levels);
+      CompareWithCgal(Method::DooSabin, mesh, levels);
+}
+
+TEST(OracleCGAL, Sqrt3ClosedTriangleMeshesLevels1To3)
+{
+  std::vector<subdtest::TestMesh> meshes{ subdtest::Cube().Jitter(0.1).Triangulated(),
+    subdtest::Grid(6, 5, true, true).Jitter(0.05).Triangulated(), subdtest::House(false).Jitter(0.1).Triangulated() };
+  for (int n : { 3, 4, 5, 7, 8, 12 })
+    meshes.push_back(subdtest::Bipyramid(n).Jitter(0.1));
+  for (const subdtest::TestMesh& mesh : meshes)
+    for (int levels = 1; levels <= 3; ++levels)
+      CompareWithCgal(Method::Sqrt3, mesh, levels);
 }

@@ -1,5 +1,6 @@
 // Oracle test against OpenMesh 9 (Debian's libopenmesh-dev), an independent implementation:
-// the modified butterfly (tension 0) on closed and open triangle meshes, levels 1..3.
+// the modified butterfly (tension 0) on closed and open triangle meshes, and sqrt(3) on
+// closed ones, levels 1..3.
 //
 // OpenMesh numbers its points its own way: each OpenMesh point is matched to the nearest of
 // ours (within 1e-9 of the bounding-box diagonal, one-to-one) and every OpenMesh face,
@@ -10,6 +11,7 @@
 
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 
 #include <gtest/gtest.h>
 
@@ -146,6 +148,31 @@ TEST(OracleOpenMesh, ModifiedButterflyLevels1To3)
       butterfly(static_cast<size_t>(levels));
       butterfly.detach();
       Compare("butterfly", input, levels, h, ours, mesh);
+    }
+  }
+}
+
+TEST(OracleOpenMesh, Sqrt3ClosedMeshesLevels1To3)
+{
+  for (const subdtest::TestMesh& input : ManifoldTriangleMeshes(true))
+  {
+    for (int levels = 1; levels <= 3; ++levels)
+    {
+      subd::Sqrt3Scheme scheme;
+      subd::Hierarchy h;
+      subd::Refine(scheme,
+        subd::MakeBaseLevel(subd::MeshTopology::Build(input.NumVertices(), input.Offsets, input.Vertices), {},
+          subd::BoundaryRule::EdgeOnly),
+        levels, h);
+      std::vector<double> ours(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
+      h.Evaluate(input.Points.data(), 3, ours.data());
+
+      TriMesh mesh = ToOpenMesh(input);
+      OpenMesh::Subdivider::Uniform::Sqrt3T<TriMesh> sqrt3;
+      sqrt3.attach(mesh);
+      sqrt3(static_cast<size_t>(levels));
+      sqrt3.detach();
+      Compare("sqrt3", input, levels, h, ours, mesh);
     }
   }
 }

@@ -15,7 +15,7 @@ def main():
 
     source = vtkSphereSource()  # kept alive: a pipeline does not own its upstream algorithm
     for name in ("vtkSubDLoopFilter", "vtkSubDLinearFilter", "vtkSubDDooSabinFilter", "vtkSubDMidpointFilter",
-                 "vtkSubDButterflyFilter"):
+                 "vtkSubDButterflyFilter", "vtkSubDSqrt3Filter"):
         f = getattr(subd, name)()
         f.SetInputConnection(source.GetOutputPort())
         f.Update()
