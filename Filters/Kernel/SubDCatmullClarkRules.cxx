@@ -4,22 +4,6 @@
 
 namespace subd
 {
-namespace
-{
-Index VertexRowSize(const VertexRulePlan& plan, Index valence)
-{
-  switch (plan.Rule)
-  {
-    case VertexRule::Corner:
-      return 1;
-    case VertexRule::Crease:
-      return 3;
-    default:
-      return 1 + 2 * valence;
-  }
-}
-}
-
 StencilTable BuildCatmullClarkStencils(const Level& parent)
 {
   const MeshTopology& topo = parent.Topology;
@@ -52,7 +36,7 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
   }
   for (Index v = 0; v < numVertices; ++v)
   {
-    table.SetRowSize(number.VertexPoint(v), VertexRowSize(plans[v], topo.GetVertexFaces(v).size()));
+    table.SetRowSize(number.VertexPoint(v), PrimalVertexRowSize(plans[v], 1 + 2 * topo.GetVertexFaces(v).size()));
   }
   table.FinalizeSizes();
 
@@ -95,19 +79,7 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
     const VertexRulePlan& plan = plans[v];
     Index* src = table.GetMutableSources(number.VertexPoint(v));
     double* wts = table.GetMutableWeights(number.VertexPoint(v));
-    src[0] = v;
-    if (plan.Rule == VertexRule::Corner)
-    {
-      wts[0] = 1.0;
-    }
-    else if (plan.Rule == VertexRule::Crease)
-    {
-      wts[0] = 0.75;
-      src[1] = plan.CreaseEnds[0];
-      src[2] = plan.CreaseEnds[1];
-      wts[1] = wts[2] = 0.125;
-    }
-    else
+    if (!WriteSharpVertexRow(plan, v, src, wts))
     {
       const IndexSpan edges = topo.GetVertexEdges(v);
       const IndexSpan faces = topo.GetVertexFaces(v);

@@ -69,14 +69,7 @@ Level SplitDual(const Level& parent, ChildTopology depth)
 
   child.FaceOrigin.assign(origins.begin(), origins.end());
   child.FaceIsHole.assign(holes.begin(), holes.end());
-  if (depth == ChildTopology::FacesOnly)
-  {
-    child.Topology = MeshTopology::BuildFacesOnly(numCorners, std::move(offsets), std::move(vertices));
-    return child;
-  }
-  child.Topology = MeshTopology::Build(numCorners, std::move(offsets), std::move(vertices));
-  child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), 0.0f);
-  child.VertexSharpness.assign(static_cast<size_t>(numCorners), 0.0f);
+  SetChildTopology(child, numCorners, std::move(offsets), std::move(vertices), depth);
   return child;
 }
 }

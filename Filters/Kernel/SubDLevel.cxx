@@ -49,6 +49,19 @@ VertexRulePlan PlanVertexRule(const Level& level, Index v)
   return plan;
 }
 
+void SetChildTopology(Level& child, Index numPoints, std::vector<Index> offsets,
+  std::vector<Index> vertices, ChildTopology depth)
+{
+  if (depth == ChildTopology::FacesOnly)
+  {
+    child.Topology = MeshTopology::BuildFacesOnly(numPoints, std::move(offsets), std::move(vertices));
+    return;
+  }
+  child.Topology = MeshTopology::Build(numPoints, std::move(offsets), std::move(vertices));
+  child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), SharpnessSmooth);
+  child.VertexSharpness.assign(static_cast<size_t>(numPoints), SharpnessSmooth);
+}
+
 void InheritPrimalSharpness(const Level& parent, Level& child, Index firstEdgePoint, Index firstVertexPoint)
 {
   const MeshTopology& topo = parent.Topology;

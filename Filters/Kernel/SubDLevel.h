@@ -33,6 +33,40 @@ struct VertexRulePlan
 /// so it is planned as a corner.
 SUBDKERNEL_EXPORT VertexRulePlan PlanVertexRule(const Level& level, Index v);
 
+/// The size of a vertex row of a primal scheme (Catmull-Clark, Loop): 1 for a corner, 3 for a
+/// crease, `smoothSize` otherwise.
+inline Index PrimalVertexRowSize(const VertexRulePlan& plan, Index smoothSize)
+{
+  return plan.Rule == VertexRule::Corner ? 1 : (plan.Rule == VertexRule::Crease ? 3 : smoothSize);
+}
+
+/// Writes the corner (v' = v) or crease (3/4 v + 1/8 (a + b), the cubic B-spline curve rule)
+/// row of vertex v, shared by Catmull-Clark and Loop. Returns false for smooth and dart
+/// vertices, whose row the scheme writes itself.
+inline bool WriteSharpVertexRow(const VertexRulePlan& plan, Index v, Index* src, double* wts)
+{
+  src[0] = v;
+  if (plan.Rule == VertexRule::Corner)
+  {
+    wts[0] = 1.0;
+    return true;
+  }
+  if (plan.Rule == VertexRule::Crease)
+  {
+    wts[0] = 0.75;
+    src[1] = plan.CreaseEnds[0];
+    src[2] = plan.CreaseEnds[1];
+    wts[1] = wts[2] = 0.125;
+    return true;
+  }
+  return false;
+}
+
+/// Sets the child's topology from its faces: faces only, or the full topology with smooth
+/// edge and vertex tags (primal splits then inherit sharpness, InheritPrimalSharpness).
+SUBDKERNEL_EXPORT void SetChildTopology(Level& child, Index numPoints, std::vector<Index> offsets,
+  std::vector<Index> vertices, ChildTopology depth);
+
 /// Gives the child faces of each parent face f, [firstChild(f), firstChild(f + 1)), the hole
 /// flag and origin of f. Shared by every split.
 template <typename FirstChild>

@@ -36,9 +36,7 @@ StencilTable BuildLoopStencils(const Level& parent)
   }
   for (Index v = 0; v < numVertices; ++v)
   {
-    const VertexRule rule = plans[v].Rule;
-    table.SetRowSize(number.VertexPoint(v),
-      rule == VertexRule::Corner ? 1 : (rule == VertexRule::Crease ? 3 : 1 + topo.GetVertexEdges(v).size()));
+    table.SetRowSize(number.VertexPoint(v), PrimalVertexRowSize(plans[v], 1 + topo.GetVertexEdges(v).size()));
   }
   table.FinalizeSizes();
 
@@ -67,19 +65,7 @@ StencilTable BuildLoopStencils(const Level& parent)
     const VertexRulePlan& plan = plans[v];
     Index* src = table.GetMutableSources(number.VertexPoint(v));
     double* wts = table.GetMutableWeights(number.VertexPoint(v));
-    src[0] = v;
-    if (plan.Rule == VertexRule::Corner)
-    {
-      wts[0] = 1.0;
-    }
-    else if (plan.Rule == VertexRule::Crease)
-    {
-      wts[0] = 0.75;
-      src[1] = plan.CreaseEnds[0];
-      src[2] = plan.CreaseEnds[1];
-      wts[1] = wts[2] = 0.125;
-    }
-    else
+    if (!WriteSharpVertexRow(plan, v, src, wts))
     {
       const IndexSpan edges = topo.GetVertexEdges(v);
       const Index n = edges.size();

@@ -102,14 +102,7 @@ MidpointRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
     endFace(parent.FaceOrigin[fan[0]], allHoles);
   }
 
-  if (depth == ChildTopology::FacesOnly)
-  {
-    child.Topology = MeshTopology::BuildFacesOnly(numChildPoints, std::move(offsets), std::move(vertices));
-    return result;
-  }
-  child.Topology = MeshTopology::Build(numChildPoints, std::move(offsets), std::move(vertices));
-  child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), 0.0f);
-  child.VertexSharpness.assign(static_cast<size_t>(numChildPoints), 0.0f);
+  SetChildTopology(child, numChildPoints, std::move(offsets), std::move(vertices), depth);
   return result;
 }
 }

@@ -36,15 +36,11 @@ Level SplitQuads(const Level& parent, ChildTopology depth)
   Level child;
   InheritFaceTags(parent, child, [&topo](Index f) { return topo.GetFaceOffset(f); });
   const Index numChildVertices = numFaces + numEdges + numVertices;
-  if (depth == ChildTopology::FacesOnly)
+  SetChildTopology(child, numChildVertices, std::move(childOffsets), std::move(childVertices), depth);
+  if (depth == ChildTopology::Full)
   {
-    child.Topology = MeshTopology::BuildFacesOnly(
-      numChildVertices, std::move(childOffsets), std::move(childVertices));
-    return child;
+    InheritPrimalSharpness(parent, child, number.EdgePoint(0), number.VertexPoint(0));
   }
-  child.Topology =
-    MeshTopology::Build(numChildVertices, std::move(childOffsets), std::move(childVertices));
-  InheritPrimalSharpness(parent, child, number.EdgePoint(0), number.VertexPoint(0));
   return child;
 }
 }

@@ -117,14 +117,7 @@ Level SplitSqrt3(const Level& parent, ChildTopology depth)
     }
   }
   const Index numChildPoints = numFaces + topo.GetNumVertices();
-  if (depth == ChildTopology::FacesOnly)
-  {
-    child.Topology = MeshTopology::BuildFacesOnly(numChildPoints, std::move(offsets), std::move(vertices));
-    return child;
-  }
-  child.Topology = MeshTopology::Build(numChildPoints, std::move(offsets), std::move(vertices));
-  child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), 0.0f);
-  child.VertexSharpness.assign(static_cast<size_t>(numChildPoints), 0.0f);
+  SetChildTopology(child, numChildPoints, std::move(offsets), std::move(vertices), depth);
   return child;
 }
 }
