@@ -1,6 +1,6 @@
-// Property tests over the fixtures: affine invariance, and on a regular grid the refined net
-// is the knot-inserted net of the uniform bicubic B-spline (both nets evaluate to the same
-// surface).
+// Catmull-Clark properties: on a regular grid the refined net is the knot-inserted net of the
+// uniform bicubic B-spline (both nets evaluate to the same surface). Properties shared by every
+// scheme (affine invariance, ...) are in TestAllSchemes.cxx.
 #include "SubDQuadSplit.h"
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
@@ -37,33 +37,6 @@ double CubicBSpline(double t)
     return (2 - t) * (2 - t) * (2 - t) / 6;
   return 0;
 }
-}
-
-TEST(Properties, AffineInvariance)
-{
-  // x -> A x + b with a non-orthogonal A.
-  const double A[3][3] = { { 1.3, 0.2, -0.4 }, { 0.1, 0.9, 0.3 }, { -0.5, 0.25, 1.1 } };
-  const double b[3] = { 3.0, -2.0, 0.5 };
-  auto apply = [&](std::vector<double> p) {
-    for (size_t i = 0; i < p.size(); i += 3)
-    {
-      const double x = p[i], y = p[i + 1], z = p[i + 2];
-      for (int r = 0; r < 3; ++r)
-        p[i + r] = A[r][0] * x + A[r][1] * y + A[r][2] * z + b[r];
-    }
-    return p;
-  };
-  for (const subdtest::TestMesh& mesh : subdtest::StandardMeshes())
-  {
-    for (auto rule : { subd::BoundaryRule::None, subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::EdgeAndCorner })
-    {
-      const std::vector<double> a = apply(RefinePoints(mesh, mesh.Points, 2, rule));
-      const std::vector<double> c = RefinePoints(mesh, apply(mesh.Points), 2, rule);
-      ASSERT_EQ(a.size(), c.size());
-      for (size_t i = 0; i < a.size(); ++i)
-        EXPECT_NEAR(a[i], c[i], 1e-12) << mesh.Name;
-    }
-  }
 }
 
 TEST(Properties, RegularGridReproducesBicubicBSpline)

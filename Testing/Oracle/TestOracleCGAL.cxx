@@ -8,6 +8,7 @@
 // cyclic order.
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
+#include "SubDOracleSupport.h"
 #include "SubDTestMeshes.h"
 
 #include <CGAL/Simple_cartesian.h>
@@ -40,13 +41,6 @@ Mesh ToCgal(const subdtest::TestMesh& m)
     EXPECT_NE(mesh.add_face(face), Mesh::null_face()) << m.Name << " face " << f;
   }
   return mesh;
-}
-
-// Faces as rotations starting at their smallest vertex, for order-aware comparison.
-std::vector<Index> Canonical(std::vector<Index> face)
-{
-  std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());
-  return face;
 }
 
 enum class Method
@@ -82,33 +76,16 @@ void CompareWithCgal(Method method, const subdtest::TestMesh& input, int levels)
   ASSERT_EQ(static_cast<Index>(mesh.number_of_vertices()), h.GetNumFinestPoints()) << input.Name;
   ASSERT_EQ(static_cast<Index>(mesh.number_of_faces()), topo.GetNumFaces()) << input.Name;
 
-  double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
-  for (size_t i = 0; i < input.Points.size(); ++i)
-  {
-    lo[i % 3] = std::min(lo[i % 3], input.Points[i]);
-    hi[i % 3] = std::max(hi[i % 3], input.Points[i]);
-  }
-  const double tolerance =
-    1e-9 * std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) + (hi[2] - lo[2]) * (hi[2] - lo[2]));
+  const double tolerance = 1e-9 * subdtest::Diagonal(input.Points);
 
   std::map<Mesh::Vertex_index, Index> match;
   std::vector<int> taken(static_cast<size_t>(h.GetNumFinestPoints()), 0);
   double worst = 0;
   for (Mesh::Vertex_index v : mesh.vertices())
   {
-    const Kernel::Point_3& p = mesh.point(v);
-    Index best = -1;
-    double bestDistance = 1e300;
-    for (Index i = 0; i < h.GetNumFinestPoints(); ++i)
-    {
-      const double d = std::max({ std::abs(p.x() - ours[3 * i]), std::abs(p.y() - ours[3 * i + 1]),
-        std::abs(p.z() - ours[3 * i + 2]) });
-      if (d < bestDistance)
-      {
-        bestDistance = d;
-        best = i;
-      }
-    }
+    const double p[3] = { mesh.point(v).x(), mesh.point(v).y(), mesh.point(v).z() };
+    double bestDistance = 0;
+    const Index best = subdtest::NearestPoint(ours, p, bestDistance);
     worst = std::max(worst, bestDistance);
     match[v] = best;
     ++taken[best];
@@ -120,13 +97,13 @@ void CompareWithCgal(Method method, const subdtest::TestMesh& input, int levels)
 
   std::map<std::vector<Index>, int> ourFaces;
   for (Index f = 0; f < topo.GetNumFaces(); ++f)
-    ++ourFaces[Canonical(std::vector<Index>(topo.GetFaceVertices(f).begin(), topo.GetFaceVertices(f).end()))];
+    ++ourFaces[subdtest::Canonical(std::vector<Index>(topo.GetFaceVertices(f).begin(), topo.GetFaceVertices(f).end()))];
   for (Mesh::Face_index f : mesh.faces())
   {
     std::vector<Index> face;
     for (Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
       face.push_back(match[v]);
-    EXPECT_EQ(ourFaces.count(Canonical(face)), 1u) << input.Name << ": a CGAL face is not ours";
+    EXPECT_EQ(ourFaces.count(subdtest::Canonical(face)), 1u) << input.Name << ": a CGAL face is not ours";
   }
 }
 }
