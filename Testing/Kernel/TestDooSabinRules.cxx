@@ -1,5 +1,6 @@
 // Kernel unit tests: Doo-Sabin weights, the dual split's counts and orientation, and on a
 // regular grid the refined net is the knot-inserted net of the biquadratic B-spline.
+#include "SubDBSplineNets.h"
 #include "SubDDooSabinRules.h"
 #include "SubDDualSplit.h"
 #include "SubDRefiner.h"
@@ -78,20 +79,6 @@ TEST(DualSplit, OpenMeshesShrinkFromTheBoundary)
   EXPECT_EQ(child.Topology.GetNumNonManifoldEdges(), 0);
 }
 
-namespace
-{
-// Uniform quadratic B-spline basis centred at 0 (support [-1.5, 1.5]).
-double QuadraticBSpline(double t)
-{
-  t = std::abs(t);
-  if (t < 0.5)
-    return 0.75 - t * t;
-  if (t < 1.5)
-    return 0.5 * (t - 1.5) * (t - 1.5);
-  return 0;
-}
-}
-
 TEST(DooSabinProperties, RegularGridReproducesBiquadraticBSpline)
 {
   const int n = 10;
@@ -99,21 +86,7 @@ TEST(DooSabinProperties, RegularGridReproducesBiquadraticBSpline)
   for (int j = 0; j <= n; ++j)
     for (int i = 0; i <= n; ++i)
       mesh.Points[3 * (j * (n + 1) + i) + 2] = std::sin(0.6 * i) * std::cos(0.5 * j) + 0.02 * i * j;
-  auto surface = [](const std::vector<double>& net, const std::vector<double>& param, double scale, double u,
-                   double v) {
-    std::array<double, 3> s{ 0, 0, 0 };
-    for (size_t k = 0; k < param.size() / 2; ++k)
-    {
-      const double w = QuadraticBSpline(scale * (u - param[2 * k])) * QuadraticBSpline(scale * (v - param[2 * k + 1]));
-      for (int c = 0; c < 3; ++c)
-        s[c] += w * net[3 * k + c];
-    }
-    return s;
-  };
-  std::vector<double> param;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i)
-      param.insert(param.end(), { double(i), double(j) });
+  std::vector<double> param = subdtest::GridParameters(n);
   const std::vector<double> level0Param = param;
 
   subd::DooSabinScheme scheme;
@@ -142,16 +115,8 @@ TEST(DooSabinProperties, RegularGridReproducesBiquadraticBSpline)
     level = scheme.Split(level, subd::ChildTopology::Full);
     points.swap(child);
     param.swap(childParam);
-    const double scale = double(1 << l);
-    double worst = 0;
-    for (double u = 3.0; u <= n - 3.0; u += 0.37)
-      for (double v = 3.0; v <= n - 3.0; v += 0.41)
-      {
-        const auto a = surface(mesh.Points, level0Param, 1.0, u, v);
-        const auto b = surface(points, param, scale, u, v);
-        for (int c = 0; c < 3; ++c)
-          worst = std::max(worst, std::abs(a[c] - b[c]));
-      }
+    const double worst = subdtest::MaxSurfaceDifference(
+      subdtest::QuadraticBSpline, mesh.Points, level0Param, points, param, l, 3.0, n - 3.0);
     EXPECT_LT(worst, 1e-12) << "level " << l;
   }
 }

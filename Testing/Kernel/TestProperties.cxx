@@ -1,6 +1,7 @@
 // Catmull-Clark properties: on a regular grid the refined net is the knot-inserted net of the
 // uniform bicubic B-spline (both nets evaluate to the same surface). Properties shared by every
 // scheme (affine invariance, ...) are in TestAllSchemes.cxx.
+#include "SubDBSplineNets.h"
 #include "SubDQuadSplit.h"
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
@@ -26,17 +27,6 @@ std::vector<double> RefinePoints(const subdtest::TestMesh& mesh, const std::vect
     *out = std::move(h);
   return finest;
 }
-
-// Uniform cubic B-spline basis centred at 0 (support [-2, 2]).
-double CubicBSpline(double t)
-{
-  t = std::abs(t);
-  if (t < 1)
-    return (4 - 6 * t * t + 3 * t * t * t) / 6;
-  if (t < 2)
-    return (2 - t) * (2 - t) * (2 - t) / 6;
-  return 0;
-}
 }
 
 TEST(Properties, RegularGridReproducesBicubicBSpline)
@@ -48,25 +38,10 @@ TEST(Properties, RegularGridReproducesBicubicBSpline)
     for (int i = 0; i <= n; ++i)
       mesh.Points[3 * (j * (n + 1) + i) + 2] = std::sin(0.7 * i) * std::cos(0.45 * j) + 0.03 * i * j;
 
-  auto surface = [](const std::vector<double>& net, const std::vector<double>& param, double scale,
-                   double u, double v) {
-    // Sum over control points of N(scale*u - a) N(scale*v - b) P, a, b the point's parameters.
-    double s[3] = { 0, 0, 0 };
-    for (size_t k = 0; k < param.size() / 2; ++k)
-    {
-      const double w = CubicBSpline(scale * (u - param[2 * k])) * CubicBSpline(scale * (v - param[2 * k + 1]));
-      for (int c = 0; c < 3; ++c)
-        s[c] += w * net[3 * k + c];
-    }
-    return std::array<double, 3>{ s[0], s[1], s[2] };
-  };
 
   // Parameters of the level-0 points, then propagated through the same split numbering
   // (vertex points keep theirs, edge and face points sit at the centres).
-  std::vector<double> param;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i)
-      param.insert(param.end(), { double(i), double(j) });
+  std::vector<double> param = subdtest::GridParameters(n);
   const std::vector<double> level0Param = param;
 
   subd::CatmullClarkScheme scheme;
@@ -105,16 +80,8 @@ TEST(Properties, RegularGridReproducesBicubicBSpline)
 
     // Away from the boundary (whose rules differ from the infinite grid's), both nets give
     // the same surface.
-    const double scale = double(1 << l);
-    double worst = 0;
-    for (double u = 3.0; u <= n - 3.0; u += 0.37)
-      for (double v = 3.0; v <= n - 3.0; v += 0.41)
-      {
-        const auto a = surface(mesh.Points, level0Param, 1.0, u, v);
-        const auto b = surface(points, param, scale, u, v);
-        for (int c = 0; c < 3; ++c)
-          worst = std::max(worst, std::abs(a[c] - b[c]));
-      }
+    const double worst = subdtest::MaxSurfaceDifference(
+      subdtest::CubicBSpline, mesh.Points, level0Param, points, param, l, 3.0, n - 3.0);
     EXPECT_LT(worst, 1e-12) << "level " << l;
   }
 }
