@@ -15,6 +15,8 @@
 #include "vtkSMPTools.h"
 #include "vtkCellArray.h"
 
+#include "SubDBenchSupport.h"
+
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 
@@ -31,7 +33,9 @@
 
 namespace
 {
-using Clock = std::chrono::steady_clock;
+using subdbench::Clock;
+using subdbench::Measure;
+using subdbench::Result;
 using namespace OpenSubdiv;
 
 struct Mesh
@@ -54,56 +58,6 @@ struct Point3
     P[2] += w * s.P[2];
   }
 };
-
-struct Result
-{
-  double Seconds = 0;
-  double Faces = 0;
-  double PeakMiB = 0;
-};
-
-// Runs `work` (returning seconds and output faces) in a child process `repeats` times and
-// keeps the fastest; the peak RSS is the child's own.
-Result Measure(const std::function<std::pair<double, double>()>& work, int repeats)
-{
-  Result best;
-  best.Seconds = 1e300;
-  for (int r = 0; r < repeats; ++r)
-  {
-    int pipeFd[2];
-    if (pipe(pipeFd) != 0)
-      std::abort();
-    const pid_t pid = fork();
-    if (pid == 0)
-    {
-      close(pipeFd[0]);
-      const auto [seconds, faces] = work();
-      const double message[2] = { seconds, faces };
-      if (write(pipeFd[1], message, sizeof(message)) != sizeof(message))
-        _exit(1);
-      _exit(0);
-    }
-    close(pipeFd[1]);
-    double message[2] = { 0, 0 };
-    const bool ok = read(pipeFd[0], message, sizeof(message)) == sizeof(message);
-    close(pipeFd[0]);
-    int status = 0;
-    struct rusage usage;
-    wait4(pid, &status, 0, &usage);
-    if (!ok || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    {
-      std::fprintf(stderr, "bench: a measurement failed\n");
-      std::exit(1);
-    }
-    if (message[0] < best.Seconds)
-    {
-      best.Seconds = message[0];
-      best.Faces = message[1];
-      best.PeakMiB = usage.ru_maxrss / 1024.0;
-    }
-  }
-  return best;
-}
 
 std::pair<double, double> RunOpenSubdiv(const Mesh& mesh, int level)
 {

@@ -1,0 +1,274 @@
+// Benchmark (a program, not a test): every SubD surface scheme against every peer from
+// Debian that implements it, measured in the same run on the same mesh:
+//   OpenSubdiv Far (Loop), CGAL 5.5 (Loop, Doo-Sabin, sqrt(3)), OpenMesh 9 (Loop, modified
+//   butterfly, sqrt(3), midpoint) and VTK 9.1 (Loop, butterfly, linear).
+// Each timing starts from the mesh as flat arrays and includes building the implementation's
+// own mesh structure, refinement and point computation (what a user waits for); each runs in
+// a forked child (own peak RSS), best of `repeats`. Prints seconds, output faces per second,
+// peak RSS and, per scheme, the ratio fastest peer time / SubD time (2 threads).
+//
+//   usage: BenchSchemes mesh.off [maxLevel=3] [repeats=3]
+#include "SubDBenchSupport.h"
+
+#include "vtkSubDButterflyFilter.h"
+#include "vtkSubDDooSabinFilter.h"
+#include "vtkSubDLinearFilter.h"
+#include "vtkSubDLoopFilter.h"
+#include "vtkSubDMidpointFilter.h"
+#include "vtkSubDOFFReader.h"
+#include "vtkSubDSqrt3Filter.h"
+
+#include "vtkButterflySubdivisionFilter.h"
+#include "vtkCellArray.h"
+#include "vtkLinearSubdivisionFilter.h"
+#include "vtkLoopSubdivisionFilter.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSMPTools.h"
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/subdivision_method_3.h>
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/LoopT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/MidpointT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
+
+#include <opensubdiv/far/primvarRefiner.h>
+#include <opensubdiv/far/topologyDescriptor.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace
+{
+using subdbench::Clock;
+using subdbench::Measure;
+using subdbench::Result;
+using subdbench::SecondsSince;
+using Work = std::pair<double, double>;
+
+struct Mesh
+{
+  std::vector<double> Points;
+  std::vector<int> Sizes, Corners;
+  vtkSmartPointer<vtkPolyData> PolyData;
+  int NumVertices() const { return static_cast<int>(Points.size() / 3); }
+};
+
+template <typename Filter>
+Work RunSubD(const Mesh& mesh, int level, int threads)
+{
+  vtkSMPTools::Initialize(threads);
+  const Clock::time_point start = Clock::now();
+  vtkNew<Filter> filter;
+  filter->SetInputData(mesh.PolyData);
+  filter->SetNumberOfSubdivisions(level);
+  filter->Update();
+  return { SecondsSince(start), double(filter->GetOutput()->GetNumberOfPolys()) };
+}
+
+template <typename Filter>
+Work RunVtk(const Mesh& mesh, int level)
+{
+  const Clock::time_point start = Clock::now();
+  vtkNew<Filter> filter;
+  filter->SetInputData(mesh.PolyData);
+  filter->SetNumberOfSubdivisions(level);
+  filter->Update();
+  return { SecondsSince(start), double(filter->GetOutput()->GetNumberOfPolys()) };
+}
+
+using CgalMesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
+template <typename Subdivide>
+Work RunCgal(const Mesh& mesh, int level, Subdivide subdivide)
+{
+  const Clock::time_point start = Clock::now();
+  CgalMesh m;
+  std::vector<CgalMesh::Vertex_index> vertices;
+  for (int v = 0; v < mesh.NumVertices(); ++v)
+    vertices.push_back(m.add_vertex({ mesh.Points[3 * v], mesh.Points[3 * v + 1], mesh.Points[3 * v + 2] }));
+  std::vector<CgalMesh::Vertex_index> face;
+  for (size_t f = 0, k = 0; f < mesh.Sizes.size(); ++f)
+  {
+    face.clear();
+    for (int j = 0; j < mesh.Sizes[f]; ++j)
+      face.push_back(vertices[mesh.Corners[k++]]);
+    m.add_face(face);
+  }
+  subdivide(m, CGAL::parameters::number_of_iterations(level));
+  return { SecondsSince(start), double(m.number_of_faces()) };
+}
+
+struct OMTraits : OpenMesh::DefaultTraits
+{
+  using Point = OpenMesh::Vec3d;
+};
+template <typename OMMesh, typename Subdivider>
+Work RunOpenMesh(const Mesh& mesh, int level)
+{
+  const Clock::time_point start = Clock::now();
+  OMMesh m;
+  std::vector<typename OMMesh::VertexHandle> vertices;
+  for (int v = 0; v < mesh.NumVertices(); ++v)
+    vertices.push_back(m.add_vertex({ mesh.Points[3 * v], mesh.Points[3 * v + 1], mesh.Points[3 * v + 2] }));
+  std::vector<typename OMMesh::VertexHandle> face;
+  for (size_t f = 0, k = 0; f < mesh.Sizes.size(); ++f)
+  {
+    face.clear();
+    for (int j = 0; j < mesh.Sizes[f]; ++j)
+      face.push_back(vertices[mesh.Corners[k++]]);
+    m.add_face(face);
+  }
+  Subdivider subdivider;
+  subdivider.attach(m);
+  subdivider(static_cast<size_t>(level));
+  subdivider.detach();
+  return { SecondsSince(start), double(m.n_faces()) };
+}
+using OMTri = OpenMesh::TriMesh_ArrayKernelT<OMTraits>;
+using OMPoly = OpenMesh::PolyMesh_ArrayKernelT<OMTraits>;
+
+struct Point3
+{
+  double P[3];
+  void Clear() { P[0] = P[1] = P[2] = 0; }
+  void AddWithWeight(const Point3& s, double w)
+  {
+    for (int c = 0; c < 3; ++c)
+      P[c] += w * s.P[c];
+  }
+};
+
+Work RunOpenSubdivLoop(const Mesh& mesh, int level)
+{
+  using namespace OpenSubdiv;
+  const Clock::time_point start = Clock::now();
+  Far::TopologyDescriptor desc;
+  desc.numVertices = mesh.NumVertices();
+  desc.numFaces = static_cast<int>(mesh.Sizes.size());
+  desc.numVertsPerFace = mesh.Sizes.data();
+  desc.vertIndicesPerFace = mesh.Corners.data();
+  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
+  std::unique_ptr<Far::TopologyRefiner> refiner(
+    Factory::Create(desc, Factory::Options(Sdc::SCHEME_LOOP, Sdc::Options())));
+  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
+  std::vector<Point3> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
+  for (int v = 0; v < mesh.NumVertices(); ++v)
+    for (int c = 0; c < 3; ++c)
+      buffer[v].P[c] = mesh.Points[3 * v + c];
+  Far::PrimvarRefinerReal<double> primvar(*refiner);
+  Point3* src = buffer.data();
+  for (int l = 1; l <= level; ++l)
+  {
+    Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
+    primvar.Interpolate(l, src, dst);
+    src = dst;
+  }
+  return { SecondsSince(start), double(refiner->GetLevel(level).GetNumFaces()) };
+}
+
+struct Peer
+{
+  std::string Name;
+  std::function<Work(const Mesh&, int)> Run;
+};
+
+struct SchemeBench
+{
+  std::string Name;
+  std::function<Work(const Mesh&, int, int)> SubD;
+  std::vector<Peer> Peers;
+};
+}
+
+int main(int argc, char* argv[])
+{
+  if (argc < 2)
+  {
+    std::fprintf(stderr, "usage: %s mesh.off [maxLevel=3] [repeats=3]\n", argv[0]);
+    return 2;
+  }
+  const int maxLevel = argc > 2 ? std::atoi(argv[2]) : 3;
+  const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
+  vtkNew<vtkSubDOFFReader> reader;
+  reader->SetFileName(argv[1]);
+  reader->Update();
+  Mesh mesh;
+  mesh.PolyData = reader->GetOutput();
+  if (mesh.PolyData->GetNumberOfPoints() == 0)
+  {
+    std::fprintf(stderr, "bench: cannot read %s\n", argv[1]);
+    return 1;
+  }
+  for (vtkIdType i = 0; i < mesh.PolyData->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh.PolyData->GetPoint(i, p);
+    mesh.Points.insert(mesh.Points.end(), p, p + 3);
+  }
+  vtkIdType n;
+  const vtkIdType* pts;
+  for (mesh.PolyData->GetPolys()->InitTraversal(); mesh.PolyData->GetPolys()->GetNextCell(n, pts);)
+  {
+    mesh.Sizes.push_back(static_cast<int>(n));
+    mesh.Corners.insert(mesh.Corners.end(), pts, pts + n);
+  }
+
+  const std::vector<SchemeBench> schemes = {
+    { "loop", RunSubD<vtkSubDLoopFilter>,
+      { { "OpenSubdiv Far", RunOpenSubdivLoop },
+        { "CGAL", [](const Mesh& m, int l) { return RunCgal(m, l, [](CgalMesh& x, auto p) { CGAL::Subdivision_method_3::Loop_subdivision(x, p); }); } },
+        { "OpenMesh", RunOpenMesh<OMTri, OpenMesh::Subdivider::Uniform::LoopT<OMTri>> },
+        { "VTK", RunVtk<vtkLoopSubdivisionFilter> } } },
+    { "butterfly", RunSubD<vtkSubDButterflyFilter>,
+      { { "OpenMesh", RunOpenMesh<OMTri, OpenMesh::Subdivider::Uniform::ModifiedButterflyT<OMTri>> },
+        { "VTK", RunVtk<vtkButterflySubdivisionFilter> } } },
+    { "sqrt3", RunSubD<vtkSubDSqrt3Filter>,
+      { { "CGAL", [](const Mesh& m, int l) { return RunCgal(m, l, [](CgalMesh& x, auto p) { CGAL::Subdivision_method_3::Sqrt3_subdivision(x, p); }); } },
+        { "OpenMesh", RunOpenMesh<OMTri, OpenMesh::Subdivider::Uniform::Sqrt3T<OMTri>> } } },
+    { "doo-sabin", RunSubD<vtkSubDDooSabinFilter>,
+      { { "CGAL", [](const Mesh& m, int l) { return RunCgal(m, l, [](CgalMesh& x, auto p) { CGAL::Subdivision_method_3::DooSabin_subdivision(x, p); }); } } } },
+    { "midpoint", RunSubD<vtkSubDMidpointFilter>,
+      { { "OpenMesh", RunOpenMesh<OMPoly, OpenMesh::Subdivider::Uniform::MidpointT<OMPoly>> } } },
+    { "linear", RunSubD<vtkSubDLinearFilter>, { { "VTK", RunVtk<vtkLinearSubdivisionFilter> } } },
+  };
+
+  std::printf("Surface schemes on %s: %d points, %zu faces; best of %d runs each\n", argv[1], mesh.NumVertices(),
+    mesh.Sizes.size(), repeats);
+  std::printf("%-10s %-5s %-22s %10s %12s %10s\n", "scheme", "level", "implementation", "seconds", "faces/s", "peak MiB");
+  for (const SchemeBench& scheme : schemes)
+  {
+    for (int level = 1; level <= maxLevel; ++level)
+    {
+      auto row = [&](const std::string& name, const Result& r) {
+        std::printf("%-10s %-5d %-22s %10.4f %12.3g %10.1f\n", scheme.Name.c_str(), level, name.c_str(), r.Seconds,
+          r.Faces / r.Seconds, r.PeakMiB);
+      };
+      const Result one = Measure([&] { return scheme.SubD(mesh, level, 1); }, repeats);
+      const Result two = Measure([&] { return scheme.SubD(mesh, level, 2); }, repeats);
+      row("SubD (1 thread)", one);
+      row("SubD (2 threads)", two);
+      double fastestPeer = 1e300;
+      std::string fastestName;
+      for (const Peer& peer : scheme.Peers)
+      {
+        const Result r = Measure([&] { return peer.Run(mesh, level); }, repeats);
+        row(peer.Name, r);
+        if (r.Seconds < fastestPeer)
+        {
+          fastestPeer = r.Seconds;
+          fastestName = peer.Name;
+        }
+      }
+      std::printf("%-10s %-5d ratio fastest peer (%s) / SubD 2 threads: %.2f, / SubD 1 thread: %.2f\n",
+        scheme.Name.c_str(), level, fastestName.c_str(), fastestPeer / two.Seconds, fastestPeer / one.Seconds);
+    }
+  }
+  return 0;
+}

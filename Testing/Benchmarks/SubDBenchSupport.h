@@ -1,0 +1,76 @@
+// Benchmark support: run a measurement in a forked child (so its peak RSS is its own), keep
+// the fastest of several runs, and read meshes.
+#ifndef SubDBenchSupport_h
+#define SubDBenchSupport_h
+
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+#include <utility>
+
+namespace subdbench
+{
+using Clock = std::chrono::steady_clock;
+
+inline double SecondsSince(Clock::time_point start)
+{
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+struct Result
+{
+  double Seconds = 0;
+  double Faces = 0;
+  double PeakMiB = 0;
+};
+
+// Runs `work` (returning seconds and output faces) in a child process `repeats` times and
+// keeps the fastest; the peak RSS is the child's own.
+inline Result Measure(const std::function<std::pair<double, double>()>& work, int repeats)
+{
+  Result best;
+  best.Seconds = 1e300;
+  for (int r = 0; r < repeats; ++r)
+  {
+    int pipeFd[2];
+    if (pipe(pipeFd) != 0)
+      std::abort();
+    const pid_t pid = fork();
+    if (pid == 0)
+    {
+      close(pipeFd[0]);
+      const auto [seconds, faces] = work();
+      const double message[2] = { seconds, faces };
+      if (write(pipeFd[1], message, sizeof(message)) != sizeof(message))
+        _exit(1);
+      _exit(0);
+    }
+    close(pipeFd[1]);
+    double message[2] = { 0, 0 };
+    const bool ok = read(pipeFd[0], message, sizeof(message)) == sizeof(message);
+    close(pipeFd[0]);
+    int status = 0;
+    struct rusage usage;
+    wait4(pid, &status, 0, &usage);
+    if (!ok || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    {
+      std::fprintf(stderr, "bench: a measurement failed\n");
+      std::exit(1);
+    }
+    if (message[0] < best.Seconds)
+    {
+      best.Seconds = message[0];
+      best.Faces = message[1];
+      best.PeakMiB = usage.ru_maxrss / 1024.0;
+    }
+  }
+  return best;
+}
+
+}
+
+#endif
