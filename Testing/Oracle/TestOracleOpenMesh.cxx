@@ -1,6 +1,6 @@
 // Oracle test against OpenMesh 9 (Debian's libopenmesh-dev), an independent implementation:
-// the modified butterfly (tension 0) on closed and open triangle meshes, and sqrt(3) on
-// closed ones, levels 1..3.
+// the modified butterfly (tension 0) on closed and open triangle meshes, sqrt(3) and the
+// midpoint scheme on closed ones, levels 1..3.
 //
 // OpenMesh numbers its points its own way: each OpenMesh point is matched to the nearest of
 // ours (within 1e-9 of the bounding-box diagonal, one-to-one) and every OpenMesh face,
@@ -10,7 +10,9 @@
 #include "SubDOracleSupport.h"
 #include "SubDTestMeshes.h"
 
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 #include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Tools/Subdivider/Uniform/MidpointT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 
@@ -29,16 +31,18 @@ struct DoubleTraits : OpenMesh::DefaultTraits
   using Point = OpenMesh::Vec3d;
 };
 using TriMesh = OpenMesh::TriMesh_ArrayKernelT<DoubleTraits>;
+using PolyMesh = OpenMesh::PolyMesh_ArrayKernelT<DoubleTraits>;
 
-TriMesh ToOpenMesh(const subdtest::TestMesh& m)
+template <typename OMMesh>
+OMMesh ToOpenMesh(const subdtest::TestMesh& m)
 {
-  TriMesh mesh;
-  std::vector<TriMesh::VertexHandle> vertices;
+  OMMesh mesh;
+  std::vector<typename OMMesh::VertexHandle> vertices;
   for (Index v = 0; v < m.NumVertices(); ++v)
-    vertices.push_back(mesh.add_vertex(TriMesh::Point(m.Points[3 * v], m.Points[3 * v + 1], m.Points[3 * v + 2])));
+    vertices.push_back(mesh.add_vertex(typename OMMesh::Point(m.Points[3 * v], m.Points[3 * v + 1], m.Points[3 * v + 2])));
   for (Index f = 0; f < m.NumFaces(); ++f)
   {
-    std::vector<TriMesh::VertexHandle> face;
+    std::vector<typename OMMesh::VertexHandle> face;
     for (Index k = m.Offsets[f]; k < m.Offsets[f + 1]; ++k)
       face.push_back(vertices[m.Vertices[k]]);
     mesh.add_face(face);
@@ -47,8 +51,9 @@ TriMesh ToOpenMesh(const subdtest::TestMesh& m)
 }
 
 // Compares our refinement of `input` with OpenMesh's `mesh` (already refined).
+template <typename OMMesh>
 void Compare(const char* scheme, const subdtest::TestMesh& input, int levels, const subd::Hierarchy& h,
-  const std::vector<double>& ours, TriMesh& mesh)
+  const std::vector<double>& ours, OMMesh& mesh)
 {
   const subd::MeshTopology& topo = h.Finest.Topology;
   ASSERT_EQ(static_cast<Index>(mesh.n_vertices()), h.GetNumFinestPoints()) << input.Name;
@@ -98,7 +103,7 @@ std::vector<subdtest::TestMesh> ManifoldTriangleMeshes(bool closedOnly)
 }
 
 // Refines `input` with our `scheme` and with OpenMesh's subdivider, and compares.
-template <typename Subdivider>
+template <typename OMMesh, typename Subdivider>
 void RefineAndCompare(const subd::Scheme& scheme, const subdtest::TestMesh& input, int levels)
 {
   subd::Hierarchy h;
@@ -108,7 +113,7 @@ void RefineAndCompare(const subd::Scheme& scheme, const subdtest::TestMesh& inpu
     levels, h);
   std::vector<double> ours(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
   h.Evaluate(input.Points.data(), 3, ours.data());
-  TriMesh mesh = ToOpenMesh(input);
+  OMMesh mesh = ToOpenMesh<OMMesh>(input);
   Subdivider subdivider;
   subdivider.attach(mesh);
   subdivider(static_cast<size_t>(levels));
@@ -124,7 +129,7 @@ TEST(OracleOpenMesh, ModifiedButterflyLevels1To3)
   ASSERT_GE(meshes.size(), ManifoldTriangleMeshes(true).size() + 2);
   for (const subdtest::TestMesh& input : meshes)
     for (int levels = 1; levels <= 3; ++levels)
-      RefineAndCompare<OpenMesh::Subdivider::Uniform::ModifiedButterflyT<TriMesh>>(
+      RefineAndCompare<TriMesh, OpenMesh::Subdivider::Uniform::ModifiedButterflyT<TriMesh>>(
         subd::ButterflyScheme(0.0), input, levels);
 }
 
@@ -132,5 +137,16 @@ TEST(OracleOpenMesh, Sqrt3ClosedMeshesLevels1To3)
 {
   for (const subdtest::TestMesh& input : ManifoldTriangleMeshes(true))
     for (int levels = 1; levels <= 3; ++levels)
-      RefineAndCompare<OpenMesh::Subdivider::Uniform::Sqrt3T<TriMesh>>(subd::Sqrt3Scheme(), input, levels);
+      RefineAndCompare<TriMesh, OpenMesh::Subdivider::Uniform::Sqrt3T<TriMesh>>(subd::Sqrt3Scheme(), input, levels);
+}
+
+TEST(OracleOpenMesh, MidpointClosedMeshesLevels1To3)
+{
+  std::vector<subdtest::TestMesh> meshes{ subdtest::Cube().Jitter(0.1), subdtest::Grid(6, 5, true, true).Jitter(0.05),
+    subdtest::House(false).Jitter(0.1) };
+  for (int n = 3; n <= 8; ++n)
+    meshes.push_back(subdtest::Star(n).Jitter(0.1));
+  for (const subdtest::TestMesh& input : meshes)
+    for (int levels = 1; levels <= 3; ++levels)
+      RefineAndCompare<PolyMesh, OpenMesh::Subdivider::Uniform::MidpointT<PolyMesh>>(subd::MidpointScheme(), input, levels);
 }
