@@ -253,3 +253,106 @@ TEST(ButterflyScheme, RegularTenPointStencilWithTension)
         EXPECT_NEAR(table.GetWeights(e)[k], 0.5 - w, 1e-15);
   }
 }
+
+namespace
+{
+// Distance from p to triangle (a, b, c) (Ericson, Real-Time Collision Detection, 5.1.5).
+double PointTriangleDistance(const double* p, const double* a, const double* b, const double* c)
+{
+  auto sub = [](const double* x, const double* y, double* r) { r[0] = x[0] - y[0]; r[1] = x[1] - y[1]; r[2] = x[2] - y[2]; };
+  auto dot = [](const double* x, const double* y) { return x[0] * y[0] + x[1] * y[1] + x[2] * y[2]; };
+  double ab[3], ac[3], ap[3], bp[3], cp[3], q[3];
+  sub(b, a, ab);
+  sub(c, a, ac);
+  sub(p, a, ap);
+  auto at = [&](double u, double v) { // a + u ab + v ac
+    for (int k = 0; k < 3; ++k)
+      q[k] = a[k] + u * ab[k] + v * ac[k];
+    double d[3];
+    sub(p, q, d);
+    return std::sqrt(dot(d, d));
+  };
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0)
+    return at(0, 0);
+  sub(p, b, bp);
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3)
+    return at(1, 0);
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0)
+    return at(d1 / (d1 - d3), 0);
+  sub(p, c, cp);
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6)
+    return at(0, 1);
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0)
+    return at(0, d2 / (d2 - d6));
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0)
+  {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return at(1 - w, w);
+  }
+  const double denom = 1.0 / (va + vb + vc);
+  return at(vb * denom, vc * denom);
+}
+
+// One-sided Hausdorff distance from the points `fine` to the surface of the polygons of
+// `coarse` (fan-triangulated).
+double DistanceToSurface(const std::vector<double>& fine, const subd::MeshTopology& coarse,
+  const std::vector<double>& coarsePoints)
+{
+  double worst = 0;
+  for (size_t i = 0; i < fine.size() / 3; ++i)
+  {
+    double best = 1e300;
+    for (Index f = 0; f < coarse.GetNumFaces() && best > 0; ++f)
+    {
+      const subd::IndexSpan fv = coarse.GetFaceVertices(f);
+      for (Index k = 1; k + 1 < fv.size(); ++k)
+        best = std::min(best, PointTriangleDistance(&fine[3 * i], &coarsePoints[3 * fv[0]], &coarsePoints[3 * fv[k]],
+                                &coarsePoints[3 * fv[k + 1]]));
+    }
+    worst = std::max(worst, best);
+  }
+  return worst;
+}
+}
+
+// Successive levels converge: the (vertex-sampled, symmetric) Hausdorff distance between the
+// polygon surfaces of levels k and k+1 shrinks by a steady factor, as each scheme converges
+// to its limit surface. Linear subdivision of triangles does not move off the surface at all.
+TEST_P(AllSchemes, SuccessiveLevelsConverge)
+{
+  const bool linear = GetParam().Name == "linear-triangles";
+  const subdtest::TestMesh mesh =
+    GetParam().TrianglesOnly ? subdtest::Bipyramid(5).Jitter(0.1) : subdtest::Star(5).Jitter(0.1);
+  const auto scheme = GetParam().Make();
+  subd::Level level = subd::MakeBaseLevel(
+    subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, subd::BoundaryRule::EdgeOnly);
+  std::vector<double> points = mesh.Points;
+  std::vector<double> distances;
+  for (int l = 1; l <= 4; ++l)
+  {
+    subd::LevelRefinement r = scheme->RefineLevel(level, subd::ChildTopology::Full);
+    std::vector<double> child(static_cast<size_t>(r.Stencils.GetNumRows()) * 3);
+    r.Stencils.Apply(points.data(), child.data(), 3);
+    distances.push_back(std::max(DistanceToSurface(child, level.Topology, points),
+      DistanceToSurface(points, r.Child.Topology, child)));
+    level = std::move(r.Child);
+    points.swap(child);
+  }
+  std::printf("%s: distance of level k+1 to level k:", GetParam().Name.c_str());
+  for (double d : distances)
+    std::printf(" %.3g", d);
+  std::printf("\n");
+  for (size_t k = 0; k + 1 < distances.size(); ++k)
+  {
+    if (linear)
+      EXPECT_LT(distances[k + 1], 1e-12);
+    else
+      EXPECT_LT(distances[k + 1], 0.6 * distances[k]) << "level " << k + 2;
+  }
+}
