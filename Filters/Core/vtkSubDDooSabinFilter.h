@@ -10,10 +10,12 @@
  * limit surface is the uniform biquadratic B-spline (C1), and the refined net is its
  * knot-inserted net.
  *
- * Open meshes: boundary edges and vertices get no E- or V-faces, so the surface shrinks back
- * from the boundary, as in CGAL's implementation (a boundary rule that follows the quadratic
- * B-spline of the boundary polygon is planned). Non-manifold edges and vertices are treated
- * like boundaries. Point data are carried by the same weights (each output point belongs to
+ * Open meshes (a boundary rule no peer has): the corners of faces next to a boundary edge
+ * (v, w) are cut with Chaikin's 3/4, 1/4 along that edge, so the refined boundary is the
+ * Chaikin refinement of the boundary polygon and converges to its quadratic B-spline;
+ * vertices with a single face (corners of the mesh) are interpolated and the sides between
+ * them follow the clamped quadratic B-spline. CGAL, without a boundary rule, lets the surface
+ * shrink back from the boundary instead. Non-manifold edges are treated like boundaries. Point data are carried by the same weights (each output point belongs to
  * one input face corner); cell data: F-faces inherit their face's, E- and V-faces those of an
  * adjacent face. BoundaryRule has no effect.
  *

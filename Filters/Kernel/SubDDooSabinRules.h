@@ -5,6 +5,14 @@
 //   sum_k alpha_ik v_k,  alpha_ii = (n + 5) / (4n),
 //                        alpha_ik = (3 + 2 cos(2 pi (i - k) / n)) / (4n)  (k != i),
 // which for quads is 9/16, 3/16, 1/16, 3/16: the knot insertion of the biquadratic B-spline.
+//
+// Boundary rule (no peer has one): the corner of a face at a boundary vertex v, next to a
+// boundary edge (v, w) of that face, gets 3/4 v + 1/4 w, Chaikin's rule, so the refined
+// boundary is the Chaikin refinement of the boundary polygon and converges to its uniform
+// quadratic B-spline. Corners of the mesh (vertices with a single face) are interpolated,
+// and next to one the weights are 1/2, 1/2, so each side of the boundary between corners is
+// the clamped (end-interpolating) quadratic B-spline of its polygon. Non-manifold edges are
+// treated like boundary edges.
 // Rows are numbered like the corners (SubDDualSplit.h) and read parent points only.
 #ifndef SubDDooSabinRules_h
 #define SubDDooSabinRules_h

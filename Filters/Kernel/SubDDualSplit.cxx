@@ -50,11 +50,12 @@ Level SplitDual(const Level& parent, ChildTopology depth)
                                       cornerPoint(f1, topo.FindCorner(b, f1)) });
     addFace(parent.FaceOrigin[f0], parent.FaceIsHole[f0] && parent.FaceIsHole[f1]);
   }
-  // V-faces around interior manifold vertices.
+  // V-faces around manifold vertices with at least three faces (with two, the E-face between
+  // them already joins their corner points; with one there is nothing to join).
   std::vector<Index> fan, fanCorners;
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
-    if (topo.GetVertexTag(v).Boundary || !topo.GetOrderedVertexFaces(v, fan, fanCorners))
+    if (!topo.GetOrderedVertexFaces(v, fan, fanCorners) || (topo.GetVertexTag(v).Boundary && fan.size() < 3))
     {
       continue;
     }

@@ -67,10 +67,10 @@ TEST(DualSplit, CountsOrientationAndEulerOnClosedMeshes)
   }
 }
 
-TEST(DualSplit, OpenMeshesShrinkFromTheBoundary)
+TEST(DualSplit, OpenGridFaces)
 {
   // A 3x3 grid: 9 F-faces, E-faces only for the 12 interior edges, V-faces for the 4
-  // interior vertices.
+  // interior vertices (boundary vertices have at most two faces).
   const subdtest::TestMesh grid = subdtest::Grid(3, 3, false, false);
   const subd::Level base = subd::MakeBaseLevel(
     subd::MeshTopology::Build(grid.NumVertices(), grid.Offsets, grid.Vertices), {}, subd::BoundaryRule::EdgeOnly);
@@ -118,5 +118,113 @@ TEST(DooSabinProperties, RegularGridReproducesBiquadraticBSpline)
     const double worst = subdtest::MaxSurfaceDifference(
       subdtest::QuadraticBSpline, mesh.Points, level0Param, points, param, l, 3.0, n - 3.0);
     EXPECT_LT(worst, 1e-12) << "level " << l;
+  }
+}
+
+namespace
+{
+// Clamped Chaikin refinement of an open polygon (end points kept): the uniform quadratic
+// B-spline with end interpolation, refined once. Written independently of the kernel.
+std::vector<std::array<double, 3>> ClampedChaikin(const std::vector<std::array<double, 3>>& p)
+{
+  const size_t n = p.size() - 1; // edges
+  auto mix = [](const std::array<double, 3>& a, const std::array<double, 3>& b, double t) {
+    return std::array<double, 3>{ (1 - t) * a[0] + t * b[0], (1 - t) * a[1] + t * b[1], (1 - t) * a[2] + t * b[2] };
+  };
+  std::vector<std::array<double, 3>> q;
+  // First edge -> its midpoint, middle edges -> their 1/4 and 3/4 points, last edge -> its
+  // midpoint; a single edge stays as it is.
+  q.assign(1, p[0]);
+  for (size_t i = 0; i < n; ++i)
+  {
+    if (n == 1)
+      break;
+    if (i == 0)
+      q.push_back(mix(p[0], p[1], 0.5));
+    else if (i + 1 == n)
+      q.push_back(mix(p[i], p[i + 1], 0.5));
+    else
+    {
+      q.push_back(mix(p[i], p[i + 1], 0.25));
+      q.push_back(mix(p[i], p[i + 1], 0.75));
+    }
+  }
+  q.push_back(p[n]);
+  return q;
+}
+}
+
+TEST(DooSabinProperties, OpenBoundaryFollowsTheClampedQuadraticBSpline)
+{
+  // A 4x3 grid with heights: four sides between four corners.
+  const int nx = 4, ny = 3;
+  subdtest::TestMesh mesh = subdtest::Grid(nx, ny, false, false).Jitter(0.2);
+  auto point = [&](int i, int j) {
+    const Index v = j * (nx + 1) + i;
+    return std::array<double, 3>{ mesh.Points[3 * v], mesh.Points[3 * v + 1], mesh.Points[3 * v + 2] };
+  };
+  std::vector<std::vector<std::array<double, 3>>> sides(4);
+  for (int i = 0; i <= nx; ++i)
+  {
+    sides[0].push_back(point(i, 0));
+    sides[1].push_back(point(i, ny));
+  }
+  for (int j = 0; j <= ny; ++j)
+  {
+    sides[2].push_back(point(0, j));
+    sides[3].push_back(point(nx, j));
+  }
+  const int levels = 3;
+  for (auto& side : sides)
+    for (int l = 0; l < levels; ++l)
+      side = ClampedChaikin(side);
+
+  subd::DooSabinScheme scheme;
+  subd::Hierarchy h;
+  subd::Refine(scheme,
+    subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {},
+      subd::BoundaryRule::EdgeOnly),
+    levels, h);
+  std::vector<double> out(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
+  h.Evaluate(mesh.Points.data(), 3, out.data());
+  const subd::MeshTopology finest = subd::MeshTopology::Build(
+    h.GetNumFinestPoints(), h.Finest.Topology.GetFaceOffsetArray(), h.Finest.Topology.GetFaceVertexArray());
+  EXPECT_EQ(finest.GetNumNonManifoldEdges(), 0) << "consistently oriented";
+  EXPECT_EQ(finest.GetNumNonManifoldVertices(), 0);
+
+  // Every refined boundary point is a point of the independently refined sides, and the
+  // counts agree (the four corners are shared by two sides each).
+  size_t expected = 0;
+  for (const auto& side : sides)
+    expected += side.size();
+  expected -= 4;
+  Index boundaryPoints = 0;
+  for (Index v = 0; v < finest.GetNumVertices(); ++v)
+  {
+    if (!finest.GetVertexTag(v).Boundary)
+      continue;
+    ++boundaryPoints;
+    double best = 1e300;
+    for (const auto& side : sides)
+      for (const auto& q : side)
+        best = std::min(best, std::max({ std::abs(q[0] - out[3 * v]), std::abs(q[1] - out[3 * v + 1]),
+                                std::abs(q[2] - out[3 * v + 2]) }));
+    EXPECT_LT(best, 1e-12) << "boundary point " << v;
+  }
+  EXPECT_EQ(static_cast<size_t>(boundaryPoints), expected);
+}
+
+TEST(DualSplit, OpenMeshWithBoundaryFansStaysConsistentlyOriented)
+{
+  // The open house: boundary vertices with three faces get V-faces closed along the boundary.
+  const subdtest::TestMesh mesh = subdtest::House(true);
+  subd::DooSabinScheme scheme;
+  subd::Level level = subd::MakeBaseLevel(
+    subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, subd::BoundaryRule::EdgeOnly);
+  for (int l = 1; l <= 3; ++l)
+  {
+    level = scheme.Split(level, subd::ChildTopology::Full);
+    EXPECT_EQ(level.Topology.GetNumNonManifoldEdges(), 0) << "level " << l;
+    EXPECT_EQ(level.Topology.GetNumNonManifoldVertices(), 0) << "level " << l;
   }
 }
