@@ -9,10 +9,12 @@
  * four-fold split of Loop); two steps refine every edge into three. The limit surface is
  * C2 except at extraordinary vertices (C1).
  *
- * Boundaries (for now): boundary and non-manifold edges are not flipped and their vertices
- * keep their position, so an open boundary is kept but not refined; Kobbelt's boundary rule
- * (refining the boundary every second step) is planned. On closed meshes the output matches
- * CGAL's and OpenMesh's sqrt(3) to round-off. Polygons are triangulated first (ear clipping),
+ * Boundaries follow Kobbelt's rule: every second step the boundary edges are trisected with
+ * the masks (1, 16, 10)/27 and (10, 16, 1)/27 and boundary vertices move by (4, 19, 4)/27 (in
+ * between they stay), so the boundary converges to the cubic B-spline of the boundary
+ * polygon. The parity counts from the filter's input: one filter with N levels is not the
+ * same as N chained one-level filters on an open mesh. The output matches CGAL's sqrt(3) to
+ * round-off on closed and open meshes, and OpenMesh's on closed ones. Polygons are triangulated first (ear clipping),
  * with a warning. BoundaryRule has no effect.
  *
  * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.

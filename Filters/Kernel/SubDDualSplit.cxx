@@ -70,7 +70,7 @@ Level SplitDual(const Level& parent, ChildTopology depth)
 
   child.FaceOrigin.assign(origins.begin(), origins.end());
   child.FaceIsHole.assign(holes.begin(), holes.end());
-  SetChildTopology(child, numCorners, std::move(offsets), std::move(vertices), depth);
+  SetChildTopology(parent, child, numCorners, std::move(offsets), std::move(vertices), depth);
   return child;
 }
 }

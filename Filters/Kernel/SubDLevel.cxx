@@ -49,9 +49,10 @@ VertexRulePlan PlanVertexRule(const Level& level, Index v)
   return plan;
 }
 
-void SetChildTopology(Level& child, Index numPoints, std::vector<Index> offsets,
+void SetChildTopology(const Level& parent, Level& child, Index numPoints, std::vector<Index> offsets,
   std::vector<Index> vertices, ChildTopology depth)
 {
+  child.Depth = parent.Depth + 1;
   if (depth == ChildTopology::FacesOnly)
   {
     child.Topology = MeshTopology::BuildFacesOnly(numPoints, std::move(offsets), std::move(vertices));

@@ -16,6 +16,7 @@ struct SUBDKERNEL_EXPORT Level
   std::vector<float> VertexSharpness;    ///< one per vertex
   std::vector<std::uint8_t> FaceIsHole;  ///< one per face; holes shape neighbours, aren't emitted
   std::vector<Index> FaceOrigin;         ///< one per face: the base-level face it comes from
+  int Depth = 0;                         ///< 0 for the base level, then 1, 2, ...
 
   Index GetNumSharpEdges(Index v) const;
   bool HasHoles() const;
@@ -63,9 +64,10 @@ inline bool WriteSharpVertexRow(const VertexRulePlan& plan, Index v, Index* src,
 }
 
 /// Sets the child's topology from its faces: faces only, or the full topology with smooth
-/// edge and vertex tags (primal splits then inherit sharpness, InheritPrimalSharpness).
-SUBDKERNEL_EXPORT void SetChildTopology(Level& child, Index numPoints, std::vector<Index> offsets,
-  std::vector<Index> vertices, ChildTopology depth);
+/// edge and vertex tags (primal splits then inherit sharpness, InheritPrimalSharpness); and
+/// its depth, one more than the parent's.
+SUBDKERNEL_EXPORT void SetChildTopology(const Level& parent, Level& child, Index numPoints,
+  std::vector<Index> offsets, std::vector<Index> vertices, ChildTopology depth);
 
 /// Gives the child faces of each parent face f, [firstChild(f), firstChild(f + 1)), the hole
 /// flag and origin of f. Shared by every split.

@@ -102,7 +102,7 @@ MidpointRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
     endFace(parent.FaceOrigin[fan[0]], allHoles);
   }
 
-  SetChildTopology(child, numChildPoints, std::move(offsets), std::move(vertices), depth);
+  SetChildTopology(parent, child, numChildPoints, std::move(offsets), std::move(vertices), depth);
   return result;
 }
 }

@@ -36,7 +36,7 @@ Level SplitQuads(const Level& parent, ChildTopology depth)
   Level child;
   InheritFaceTags(parent, child, [&topo](Index f) { return topo.GetFaceOffset(f); });
   const Index numChildVertices = numFaces + numEdges + numVertices;
-  SetChildTopology(child, numChildVertices, std::move(childOffsets), std::move(childVertices), depth);
+  SetChildTopology(parent, child, numChildVertices, std::move(childOffsets), std::move(childVertices), depth);
   if (depth == ChildTopology::Full)
   {
     InheritPrimalSharpness(parent, child, number.EdgePoint(0), number.VertexPoint(0));

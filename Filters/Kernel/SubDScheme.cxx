@@ -121,12 +121,18 @@ StencilTable ButterflyScheme::BuildStencils(const Level& parent) const
 
 Level Sqrt3Scheme::Split(const Level& parent, ChildTopology depth) const
 {
-  return SplitSqrt3(parent, depth);
+  return RefineSqrt3(parent, depth).Child;
 }
 
 StencilTable Sqrt3Scheme::BuildStencils(const Level& parent) const
 {
-  return BuildSqrt3Stencils(parent);
+  return RefineSqrt3(parent, ChildTopology::FacesOnly).Stencils;
+}
+
+LevelRefinement Sqrt3Scheme::RefineLevel(const Level& parent, ChildTopology depth) const
+{
+  Sqrt3Refinement r = RefineSqrt3(parent, depth);
+  return LevelRefinement{ std::move(r.Stencils), std::move(r.Child) };
 }
 
 MeshCounts Sqrt3Scheme::PredictChildCounts(const MeshCounts& parent) const

@@ -138,6 +138,7 @@ public:
   const char* GetName() const override { return "sqrt3"; }
   Level Split(const Level& parent, ChildTopology depth) const override;
   StencilTable BuildStencils(const Level& parent) const override;
+  LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
 };

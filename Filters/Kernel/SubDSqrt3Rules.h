@@ -8,12 +8,24 @@
 //      (m1, m2) with the triangles (a, m2, m1) and (b, m1, m2).
 // Two steps are a triadic refinement (each edge in three); the face count triples per step.
 //
-// Child points: centroid of face f -> f, then old vertex v -> F + v.
+// Boundaries follow Kobbelt's rule, which refines them every second step:
+// - odd steps (1st, 3rd, ... from the base level): boundary edges are not flipped (their
+//   triangle (a, b, m) stays) and boundary vertices keep their position;
+// - even steps: the triangle (a, b, m) of each boundary edge gets no centroid; the edge is
+//   trisected instead, with the points (p + 16 a + 10 b) / 27 and (10 a + 16 b + q) / 27
+//   (p, q the boundary neighbours before a and after b) joined to m, and boundary vertices
+//   move to (4 p + 19 a + 4 b) / 27; every old interior edge is still flipped, a trisected
+//   triangle offering the trisection point next to the edge instead of a centroid (the
+//   connectivity of Kobbelt's paper and of CGAL).
+// Two steps therefore refine the boundary polygon ternarily with the masks of the uniform
+// cubic B-spline, so the boundary converges to the cubic B-spline of the boundary polygon.
+// Non-manifold edges are treated like boundary edges that are never trisected, and
+// non-manifold vertices stay in place.
 //
-// Boundaries (for now): boundary and non-manifold edges are not flipped (their triangle
-// (a, b, m) stays) and boundary and non-manifold vertices keep their position. Kobbelt's
-// boundary rule (trisecting boundary edges every second step with the masks 1/27 (10, 16, 1)
-// and vertices 1/27 (4, 19, 4)) is not implemented yet.
+// Child points: the centroids (of every face in odd steps, of the faces without a boundary
+// edge in even steps), then the old vertices, then two points per trisected boundary edge.
+// The parity comes from Level::Depth, so a hierarchy refined in one go is consistent; one
+// level at a time from a refined mesh restarts at an odd step.
 #ifndef SubDSqrt3Rules_h
 #define SubDSqrt3Rules_h
 
@@ -25,9 +37,13 @@ namespace subd
 /// Kobbelt's alpha_n.
 SUBDKERNEL_EXPORT double Sqrt3Alpha(Index n);
 
-/// Requires every face of `parent` to be a triangle.
-SUBDKERNEL_EXPORT StencilTable BuildSqrt3Stencils(const Level& parent);
-SUBDKERNEL_EXPORT Level SplitSqrt3(const Level& parent, ChildTopology depth);
+struct Sqrt3Refinement
+{
+  StencilTable Stencils;
+  Level Child;
+};
+/// One step; every face of `parent` must be a triangle.
+SUBDKERNEL_EXPORT Sqrt3Refinement RefineSqrt3(const Level& parent, ChildTopology depth);
 }
 
 #endif

@@ -34,7 +34,7 @@ Level SplitTriangles(const Level& parent, ChildTopology depth)
   Level child;
   InheritFaceTags(parent, child, [](Index f) { return 4 * f; });
   const Index numChildVertices = numEdges + topo.GetNumVertices();
-  SetChildTopology(child, numChildVertices, std::move(childOffsets), std::move(childVertices), depth);
+  SetChildTopology(parent, child, numChildVertices, std::move(childOffsets), std::move(childVertices), depth);
   if (depth == ChildTopology::Full)
   {
     InheritPrimalSharpness(parent, child, number.EdgePoint(0), number.VertexPoint(0));

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <memory>
 
@@ -354,5 +355,93 @@ TEST_P(AllSchemes, SuccessiveLevelsConverge)
       EXPECT_LT(distances[k + 1], 1e-12);
     else
       EXPECT_LT(distances[k + 1], 0.6 * distances[k]) << "level " << k + 2;
+  }
+}
+
+namespace
+{
+// One ternary refinement of a closed polygon with the uniform cubic B-spline masks
+// (4, 19, 4)/27 for old points and (1, 16, 10)/27, (10, 16, 1)/27 for the two new points of
+// each edge. Written independently of the kernel.
+std::vector<std::array<double, 3>> TernaryCubic(const std::vector<std::array<double, 3>>& p)
+{
+  const size_t n = p.size();
+  std::vector<std::array<double, 3>> q;
+  auto combine = [](double wa, const std::array<double, 3>& a, double wb, const std::array<double, 3>& b, double wc,
+                   const std::array<double, 3>& c) {
+    std::array<double, 3> r;
+    for (int k = 0; k < 3; ++k)
+      r[k] = (wa * a[k] + wb * b[k] + wc * c[k]) / 27.0;
+    return r;
+  };
+  for (size_t i = 0; i < n; ++i)
+  {
+    const auto& prev = p[(i + n - 1) % n];
+    const auto& cur = p[i];
+    const auto& next = p[(i + 1) % n];
+    const auto& after = p[(i + 2) % n];
+    q.push_back(combine(4, prev, 19, cur, 4, next));
+    q.push_back(combine(1, prev, 16, cur, 10, next));
+    q.push_back(combine(10, cur, 16, next, 1, after));
+  }
+  return q;
+}
+}
+
+TEST(Sqrt3Scheme, KobbeltBoundaryIsTheTernaryCubicBSplineEveryTwoSteps)
+{
+  // A 4x3 grid: its boundary is a closed polygon of 14 points, in order around the grid.
+  const int nx = 4, ny = 3;
+  const subdtest::TestMesh mesh = subdtest::Grid(nx, ny, false, false).Jitter(0.2).Triangulated();
+  std::vector<std::array<double, 3>> loop;
+  auto add = [&](int i, int j) {
+    const Index v = j * (nx + 1) + i;
+    loop.push_back({ mesh.Points[3 * v], mesh.Points[3 * v + 1], mesh.Points[3 * v + 2] });
+  };
+  for (int i = 0; i < nx; ++i)
+    add(i, 0);
+  for (int j = 0; j < ny; ++j)
+    add(nx, j);
+  for (int i = nx; i > 0; --i)
+    add(i, ny);
+  for (int j = ny; j > 0; --j)
+    add(0, j);
+
+  subd::Sqrt3Scheme scheme;
+  for (int levels : { 1, 2, 4 })
+  {
+    subd::Hierarchy h;
+    subd::Refine(scheme,
+      subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {},
+        subd::BoundaryRule::EdgeOnly),
+      levels, h);
+    std::vector<double> out(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
+    h.Evaluate(mesh.Points.data(), 3, out.data());
+    const subd::MeshTopology finest = subd::MeshTopology::Build(
+      h.GetNumFinestPoints(), h.Finest.Topology.GetFaceOffsetArray(), h.Finest.Topology.GetFaceVertexArray());
+    EXPECT_EQ(finest.GetNumNonManifoldEdges(), 0) << "level " << levels;
+    EXPECT_EQ(finest.GetNumNonManifoldVertices(), 0) << "level " << levels;
+    // Every used point is used (no orphan centroids).
+    std::vector<int> used(static_cast<size_t>(finest.GetNumVertices()), 0);
+    for (Index v : finest.GetFaceVertexArray())
+      used[v] = 1;
+    EXPECT_EQ(std::count(used.begin(), used.end(), 0), 0) << "level " << levels;
+
+    std::vector<std::array<double, 3>> expected = loop;
+    for (int step = 2; step <= levels; step += 2)
+      expected = TernaryCubic(expected);
+    Index boundaryPoints = 0;
+    for (Index v = 0; v < finest.GetNumVertices(); ++v)
+    {
+      if (!finest.GetVertexTag(v).Boundary)
+        continue;
+      ++boundaryPoints;
+      double best = 1e300;
+      for (const auto& q : expected)
+        best = std::min(best, std::max({ std::abs(q[0] - out[3 * v]), std::abs(q[1] - out[3 * v + 1]),
+                                std::abs(q[2] - out[3 * v + 2]) }));
+      EXPECT_LT(best, 1e-12) << "level " << levels << " boundary point " << v;
+    }
+    EXPECT_EQ(static_cast<size_t>(boundaryPoints), expected.size()) << "level " << levels;
   }
 }

@@ -1,6 +1,6 @@
 // Oracle test against CGAL 5.5's Subdivision_method_3 (Debian's libcgal-dev), an independent
-// implementation: Doo-Sabin and sqrt(3) on closed meshes (CGAL has no Doo-Sabin boundary
-// rule; SubD's sqrt(3) boundary rule is not Kobbelt's yet), levels 1..3.
+// implementation: Doo-Sabin on closed meshes (CGAL has no Doo-Sabin boundary rule), and
+// sqrt(3) on closed and open meshes (both follow Kobbelt's boundary rule).
 //
 // CGAL numbers its points its own way, so each CGAL point is matched to the nearest of ours
 // (it must be within 1e-9 of the bounding-box diagonal, and the match must be one-to-one),
@@ -128,5 +128,16 @@ TEST(OracleCGAL, Sqrt3ClosedTriangleMeshesLevels1To3)
     meshes.push_back(subdtest::Bipyramid(n).Jitter(0.1));
   for (const subdtest::TestMesh& mesh : meshes)
     for (int levels = 1; levels <= 3; ++levels)
+      CompareWithCgal(Method::Sqrt3, mesh, levels);
+}
+
+// CGAL refines the border every second step, as Kobbelt's paper does: open meshes must agree
+// too, through two boundary refinements (level 4).
+TEST(OracleCGAL, Sqrt3OpenTriangleMeshesLevels1To4)
+{
+  const std::vector<subdtest::TestMesh> meshes{ subdtest::Grid(4, 3, false, false).Jitter(0.1).Triangulated(),
+    subdtest::House(true).Jitter(0.1).Triangulated() };
+  for (const subdtest::TestMesh& mesh : meshes)
+    for (int levels = 1; levels <= 4; ++levels)
       CompareWithCgal(Method::Sqrt3, mesh, levels);
 }
