@@ -445,3 +445,38 @@ TEST(Sqrt3Scheme, KobbeltBoundaryIsTheTernaryCubicBSplineEveryTwoSteps)
     EXPECT_EQ(static_cast<size_t>(boundaryPoints), expected.size()) << "level " << levels;
   }
 }
+
+TEST(Sqrt3Scheme, CentroidAndRelaxationMasksForValences3To64)
+{
+  for (int n = 3; n <= 64; ++n)
+  {
+    // The apexes of a bipyramid have valence n; its equator vertices valence 4.
+    const subdtest::TestMesh mesh = subdtest::Bipyramid(n).Jitter(0.2);
+    const subd::Level base = subd::MakeBaseLevel(
+      subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, subd::BoundaryRule::EdgeOnly);
+    const subd::LevelRefinement r = subd::Sqrt3Scheme().RefineLevel(base, subd::ChildTopology::Full);
+    std::vector<double> child(static_cast<size_t>(r.Stencils.GetNumRows()) * 3);
+    r.Stencils.Apply(mesh.Points.data(), child.data(), 3);
+    const Index numFaces = base.Topology.GetNumFaces();
+    auto P = [&](Index v, int k) { return mesh.Points[3 * v + k]; };
+    // Centroids first (closed mesh: one per face), then the old vertices.
+    for (Index f = 0; f < numFaces; ++f)
+      for (int k = 0; k < 3; ++k)
+      {
+        double c = 0;
+        for (Index v : base.Topology.GetFaceVertices(f))
+          c += P(v, k) / 3.0;
+        EXPECT_NEAR(child[3 * f + k], c, 1e-15);
+      }
+    // Apex: (1 - a) v + a/n sum, a = (4 - 2 cos(2 pi / n)) / 9 (Kobbelt 2000).
+    const Index apex = n;
+    const double a = (4.0 - 2.0 * std::cos(2.0 * 3.14159265358979323846 / n)) / 9.0;
+    for (int k = 0; k < 3; ++k)
+    {
+      double ring = 0;
+      for (int i = 0; i < n; ++i)
+        ring += P(i, k);
+      EXPECT_NEAR(child[3 * (numFaces + apex) + k], (1 - a) * P(apex, k) + a / n * ring, 1e-14) << "n = " << n;
+    }
+  }
+}

@@ -109,9 +109,9 @@ TEST(CatmullClarkRules, RowsSumToOne)
   }
 }
 
-TEST(CatmullClarkRules, InteriorVertexMatchesPublishedRuleForValences3To12)
+TEST(CatmullClarkRules, InteriorVertexMatchesPublishedRuleForValences3To64)
 {
-  for (int n = 3; n <= 12; ++n)
+  for (int n = 3; n <= 64; ++n)
   {
     const subdtest::TestMesh mesh = subdtest::Star(n).Jitter(0.2);
     const Refined r = RefineOnce(mesh, subd::BoundaryRule::EdgeOnly);
