@@ -38,14 +38,7 @@ using subdbench::Measure;
 using subdbench::Result;
 using namespace OpenSubdiv;
 
-struct Mesh
-{
-  int NumVertices = 0;
-  std::vector<int> Sizes;
-  std::vector<int> Corners;
-  std::vector<double> Points;
-  vtkSmartPointer<vtkPolyData> PolyData;
-};
+using Mesh = subdbench::BenchMesh;
 
 struct Point3
 {
@@ -63,7 +56,7 @@ std::pair<double, double> RunOpenSubdiv(const Mesh& mesh, int level)
 {
   const Clock::time_point start = Clock::now();
   Far::TopologyDescriptor desc;
-  desc.numVertices = mesh.NumVertices;
+  desc.numVertices = mesh.NumVertices();
   desc.numFaces = static_cast<int>(mesh.Sizes.size());
   desc.numVertsPerFace = mesh.Sizes.data();
   desc.vertIndicesPerFace = mesh.Corners.data();
@@ -74,7 +67,7 @@ std::pair<double, double> RunOpenSubdiv(const Mesh& mesh, int level)
     Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, options)));
   refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
   std::vector<Point3> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
-  for (int v = 0; v < mesh.NumVertices; ++v)
+  for (int v = 0; v < mesh.NumVertices(); ++v)
     for (int c = 0; c < 3; ++c)
       buffer[v].P[c] = mesh.Points[3 * v + c];
   Far::PrimvarRefinerReal<double> primvar(*refiner);
@@ -98,7 +91,7 @@ std::pair<double, double> RunKernel(const Mesh& mesh, int level)
   subd::CatmullClarkScheme scheme;
   subd::Hierarchy h;
   subd::Refine(scheme,
-    subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices, std::move(offsets),
+    subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), std::move(offsets),
                           std::vector<subd::Index>(mesh.Corners.begin(), mesh.Corners.end())),
       {}, subd::BoundaryRule::EdgeOnly),
     level, h);
@@ -130,32 +123,13 @@ int main(int argc, char* argv[])
   }
   const int maxLevel = argc > 2 ? std::atoi(argv[2]) : 4;
   const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
-  vtkNew<vtkSubDOFFReader> reader;
-  reader->SetFileName(argv[1]);
-  reader->Update();
   Mesh mesh;
-  mesh.PolyData = reader->GetOutput();
-  mesh.NumVertices = static_cast<int>(mesh.PolyData->GetNumberOfPoints());
-  if (mesh.NumVertices == 0)
+  if (!subdbench::ReadBenchMesh(argv[1], mesh))
   {
-    std::fprintf(stderr, "bench: cannot read %s\n", argv[1]);
     return 1;
   }
-  for (vtkIdType i = 0; i < mesh.NumVertices; ++i)
-  {
-    double p[3];
-    mesh.PolyData->GetPoint(i, p);
-    mesh.Points.insert(mesh.Points.end(), p, p + 3);
-  }
-  vtkIdType n;
-  const vtkIdType* pts;
-  for (mesh.PolyData->GetPolys()->InitTraversal(); mesh.PolyData->GetPolys()->GetNextCell(n, pts);)
-  {
-    mesh.Sizes.push_back(static_cast<int>(n));
-    mesh.Corners.insert(mesh.Corners.end(), pts, pts + n);
-  }
   std::printf("Catmull-Clark on %s: %d points, %zu faces; best of %d runs each\n", argv[1],
-    mesh.NumVertices, mesh.Sizes.size(), repeats);
+    mesh.NumVertices(), mesh.Sizes.size(), repeats);
   std::printf("%-5s %-28s %10s %12s %10s %9s\n", "level", "implementation", "seconds", "faces/s",
     "peak MiB", "OSD/this");
   for (int level = 1; level <= maxLevel; ++level)

@@ -53,13 +53,7 @@ using subdbench::Result;
 using subdbench::SecondsSince;
 using Work = std::pair<double, double>;
 
-struct Mesh
-{
-  std::vector<double> Points;
-  std::vector<int> Sizes, Corners;
-  vtkSmartPointer<vtkPolyData> PolyData;
-  int NumVertices() const { return static_cast<int>(Points.size() / 3); }
-};
+using Mesh = subdbench::BenchMesh;
 
 template <typename Filter>
 Work RunSubD(const Mesh& mesh, int level, int threads)
@@ -196,28 +190,10 @@ int main(int argc, char* argv[])
   }
   const int maxLevel = argc > 2 ? std::atoi(argv[2]) : 3;
   const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
-  vtkNew<vtkSubDOFFReader> reader;
-  reader->SetFileName(argv[1]);
-  reader->Update();
   Mesh mesh;
-  mesh.PolyData = reader->GetOutput();
-  if (mesh.PolyData->GetNumberOfPoints() == 0)
+  if (!subdbench::ReadBenchMesh(argv[1], mesh))
   {
-    std::fprintf(stderr, "bench: cannot read %s\n", argv[1]);
     return 1;
-  }
-  for (vtkIdType i = 0; i < mesh.PolyData->GetNumberOfPoints(); ++i)
-  {
-    double p[3];
-    mesh.PolyData->GetPoint(i, p);
-    mesh.Points.insert(mesh.Points.end(), p, p + 3);
-  }
-  vtkIdType n;
-  const vtkIdType* pts;
-  for (mesh.PolyData->GetPolys()->InitTraversal(); mesh.PolyData->GetPolys()->GetNextCell(n, pts);)
-  {
-    mesh.Sizes.push_back(static_cast<int>(n));
-    mesh.Corners.insert(mesh.Corners.end(), pts, pts + n);
   }
 
   const std::vector<SchemeBench> schemes = {

@@ -3,6 +3,12 @@
 #ifndef SubDBenchSupport_h
 #define SubDBenchSupport_h
 
+#include "vtkCellArray.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkSubDOFFReader.h"
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -11,6 +17,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 #include <utility>
+#include <vector>
 
 namespace subdbench
 {
@@ -71,6 +78,43 @@ inline Result Measure(const std::function<std::pair<double, double>()>& work, in
   return best;
 }
 
+
+/// A benchmark mesh as flat arrays (for the peers) and as vtkPolyData (for the filters).
+struct BenchMesh
+{
+  std::vector<double> Points;
+  std::vector<int> Sizes, Corners;
+  vtkSmartPointer<vtkPolyData> PolyData;
+  int NumVertices() const { return static_cast<int>(Points.size() / 3); }
+};
+
+/// Reads an OFF file; false (with a message) if it holds no points.
+inline bool ReadBenchMesh(const char* path, BenchMesh& mesh)
+{
+  vtkNew<vtkSubDOFFReader> reader;
+  reader->SetFileName(path);
+  reader->Update();
+  mesh.PolyData = reader->GetOutput();
+  if (mesh.PolyData->GetNumberOfPoints() == 0)
+  {
+    std::fprintf(stderr, "bench: cannot read %s\n", path);
+    return false;
+  }
+  for (vtkIdType i = 0; i < mesh.PolyData->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh.PolyData->GetPoint(i, p);
+    mesh.Points.insert(mesh.Points.end(), p, p + 3);
+  }
+  vtkIdType n;
+  const vtkIdType* pts;
+  for (mesh.PolyData->GetPolys()->InitTraversal(); mesh.PolyData->GetPolys()->GetNextCell(n, pts);)
+  {
+    mesh.Sizes.push_back(static_cast<int>(n));
+    mesh.Corners.insert(mesh.Corners.end(), pts, pts + n);
+  }
+  return true;
+}
 }
 
 #endif
