@@ -5,6 +5,7 @@
 
 #include "SubDCrease.h"
 #include "SubDMeshTopology.h"
+#include "SubDStencilTable.h"
 #include <vector>
 
 namespace subd
@@ -93,6 +94,13 @@ void InheritFaceTags(const Level& parent, Level& child, FirstChild firstChild)
 /// vertex's decayed sharpness; everything new is smooth. `child.Topology` must be complete.
 SUBDKERNEL_EXPORT void InheritPrimalSharpness(const Level& parent, Level& child,
   Index firstEdgePoint, Index firstVertexPoint);
+
+/// One level's refinement: the stencils of the child points and the child level.
+struct LevelRefinement
+{
+  StencilTable Stencils;
+  Level Child;
+};
 
 /// Tags supplied with the base mesh. Empty vectors mean "none".
 struct BaseTags

@@ -11,7 +11,7 @@ bool KeepsBoundaryVertex(const MeshTopology& topo, Index v)
 }
 }
 
-MidpointRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
+LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
 {
   const MeshTopology& topo = parent.Topology;
   const Index numEdges = topo.GetNumEdges();
@@ -27,7 +27,7 @@ MidpointRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
     }
   }
 
-  MidpointRefinement result;
+  LevelRefinement result;
   StencilTable& table = result.Stencils;
   table = StencilTable(topo.GetNumVertices());
   table.ReserveRows(numChildPoints);

@@ -20,12 +20,7 @@
 namespace subd
 {
 /// The split and its stencils together: both depend on which boundary vertices are kept.
-struct MidpointRefinement
-{
-  Level Child;
-  StencilTable Stencils;
-};
-SUBDKERNEL_EXPORT MidpointRefinement RefineMidpoint(const Level& parent, ChildTopology depth);
+SUBDKERNEL_EXPORT LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth);
 }
 
 #endif

@@ -86,20 +86,9 @@ MeshCounts DooSabinScheme::PredictChildCounts(const MeshCounts& parent) const
   return child;
 }
 
-Level MidpointScheme::Split(const Level& parent, ChildTopology depth) const
-{
-  return RefineMidpoint(parent, depth).Child;
-}
-
-StencilTable MidpointScheme::BuildStencils(const Level& parent) const
-{
-  return RefineMidpoint(parent, ChildTopology::FacesOnly).Stencils;
-}
-
 LevelRefinement MidpointScheme::RefineLevel(const Level& parent, ChildTopology depth) const
 {
-  MidpointRefinement r = RefineMidpoint(parent, depth);
-  return LevelRefinement{ std::move(r.Stencils), std::move(r.Child) };
+  return RefineMidpoint(parent, depth);
 }
 
 MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
@@ -119,20 +108,9 @@ StencilTable ButterflyScheme::BuildStencils(const Level& parent) const
   return BuildButterflyStencils(parent, this->Tension);
 }
 
-Level Sqrt3Scheme::Split(const Level& parent, ChildTopology depth) const
-{
-  return RefineSqrt3(parent, depth).Child;
-}
-
-StencilTable Sqrt3Scheme::BuildStencils(const Level& parent) const
-{
-  return RefineSqrt3(parent, ChildTopology::FacesOnly).Stencils;
-}
-
 LevelRefinement Sqrt3Scheme::RefineLevel(const Level& parent, ChildTopology depth) const
 {
-  Sqrt3Refinement r = RefineSqrt3(parent, depth);
-  return LevelRefinement{ std::move(r.Stencils), std::move(r.Child) };
+  return RefineSqrt3(parent, depth);
 }
 
 MeshCounts Sqrt3Scheme::PredictChildCounts(const MeshCounts& parent) const

@@ -17,13 +17,6 @@ struct MeshCounts
   double Faces = 0, Edges = 0, Vertices = 0, Corners = 0;
 };
 
-/// One level's refinement: the stencils of the child points and the child level.
-struct LevelRefinement
-{
-  StencilTable Stencils;
-  Level Child;
-};
-
 class SUBDKERNEL_EXPORT Scheme
 {
 public:
@@ -131,25 +124,38 @@ private:
   double Tension;
 };
 
+/// Schemes whose split and stencils are built together because they share a point
+/// numbering that depends on the mesh (kept boundary vertices, trisected edges): they
+/// implement RefineLevel only.
+class SUBDKERNEL_EXPORT JointRefinementScheme : public Scheme
+{
+public:
+  Level Split(const Level& parent, ChildTopology depth) const override
+  {
+    return this->RefineLevel(parent, depth).Child;
+  }
+  StencilTable BuildStencils(const Level& parent) const override
+  {
+    return this->RefineLevel(parent, ChildTopology::FacesOnly).Stencils;
+  }
+  LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override = 0;
+};
+
 /// Kobbelt's sqrt(3) subdivision (SubDSqrt3Rules.h). Triangles only.
-class SUBDKERNEL_EXPORT Sqrt3Scheme : public Scheme
+class SUBDKERNEL_EXPORT Sqrt3Scheme : public JointRefinementScheme
 {
 public:
   const char* GetName() const override { return "sqrt3"; }
-  Level Split(const Level& parent, ChildTopology depth) const override;
-  StencilTable BuildStencils(const Level& parent) const override;
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
 };
 
 /// Peters-Reif midpoint ("simplest") subdivision, boundaries kept (SubDMidpointSplit.h).
-class SUBDKERNEL_EXPORT MidpointScheme : public Scheme
+class SUBDKERNEL_EXPORT MidpointScheme : public JointRefinementScheme
 {
 public:
   const char* GetName() const override { return "midpoint"; }
-  Level Split(const Level& parent, ChildTopology depth) const override;
-  StencilTable BuildStencils(const Level& parent) const override;
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }

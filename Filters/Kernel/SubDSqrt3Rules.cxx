@@ -42,7 +42,7 @@ Index BoundaryNeighbour(const MeshTopology& topo, Index v, Index other)
 }
 }
 
-Sqrt3Refinement RefineSqrt3(const Level& parent, ChildTopology depth)
+LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
 {
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
@@ -87,7 +87,7 @@ Sqrt3Refinement RefineSqrt3(const Level& parent, ChildTopology depth)
     }
   }
 
-  Sqrt3Refinement result;
+  LevelRefinement result;
   StencilTable& table = result.Stencils;
   table = StencilTable(numVertices);
   table.ReserveRows(numChildPoints);

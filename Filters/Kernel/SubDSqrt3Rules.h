@@ -37,13 +37,9 @@ namespace subd
 /// Kobbelt's alpha_n.
 SUBDKERNEL_EXPORT double Sqrt3Alpha(Index n);
 
-struct Sqrt3Refinement
-{
-  StencilTable Stencils;
-  Level Child;
-};
-/// One step; every face of `parent` must be a triangle.
-SUBDKERNEL_EXPORT Sqrt3Refinement RefineSqrt3(const Level& parent, ChildTopology depth);
+/// One step (split and stencils share the point numbering); every face of `parent` must be a
+/// triangle.
+SUBDKERNEL_EXPORT LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth);
 }
 
 #endif
