@@ -15,14 +15,8 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
   const Index numParents = numVertices;
   auto childSource = [numParents](Index childPoint) { return numParents + childPoint; };
 
-  std::vector<VertexRulePlan> plans(static_cast<size_t>(numVertices));
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    plans[v] = PlanVertexRule(parent, v);
-  }
-  auto edgeIsSmooth = [&](Index e) {
-    return !IsSharp(parent.EdgeSharpness[e]) && topo.GetEdgeFaces(e).size() == 2;
-  };
+  const std::vector<VertexRulePlan> plans = PlanVertexRules(parent);
+  auto edgeIsSmooth = [&parent](Index e) { return IsSmoothEdge(parent, e); };
 
   StencilTable table(numParents);
   table.ReserveRows(numFaces + numEdges + numVertices);

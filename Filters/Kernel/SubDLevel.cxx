@@ -49,6 +49,16 @@ VertexRulePlan PlanVertexRule(const Level& level, Index v)
   return plan;
 }
 
+std::vector<VertexRulePlan> PlanVertexRules(const Level& level)
+{
+  std::vector<VertexRulePlan> plans(static_cast<size_t>(level.Topology.GetNumVertices()));
+  for (Index v = 0; v < level.Topology.GetNumVertices(); ++v)
+  {
+    plans[v] = PlanVertexRule(level, v);
+  }
+  return plans;
+}
+
 void SetChildTopology(const Level& parent, Level& child, Index numPoints, std::vector<Index> offsets,
   std::vector<Index> vertices, ChildTopology depth)
 {

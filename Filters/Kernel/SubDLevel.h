@@ -35,6 +35,15 @@ struct VertexRulePlan
 /// so it is planned as a corner.
 SUBDKERNEL_EXPORT VertexRulePlan PlanVertexRule(const Level& level, Index v);
 
+/// The plans of every vertex of `level`.
+SUBDKERNEL_EXPORT std::vector<VertexRulePlan> PlanVertexRules(const Level& level);
+
+/// True for an edge that takes a primal scheme's smooth edge rule: not sharp, two faces.
+inline bool IsSmoothEdge(const Level& level, Index e)
+{
+  return !IsSharp(level.EdgeSharpness[e]) && level.Topology.GetEdgeFaces(e).size() == 2;
+}
+
 /// The size of a vertex row of a primal scheme (Catmull-Clark, Loop): 1 for a corner, 3 for a
 /// crease, `smoothSize` otherwise.
 inline Index PrimalVertexRowSize(const VertexRulePlan& plan, Index smoothSize)

@@ -19,14 +19,8 @@ StencilTable BuildLoopStencils(const Level& parent)
   const Index numVertices = topo.GetNumVertices();
   const TriangleSplitNumbering number{ numEdges };
 
-  std::vector<VertexRulePlan> plans(static_cast<size_t>(numVertices));
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    plans[v] = PlanVertexRule(parent, v);
-  }
-  auto edgeIsSmooth = [&](Index e) {
-    return !IsSharp(parent.EdgeSharpness[e]) && topo.GetEdgeFaces(e).size() == 2;
-  };
+  const std::vector<VertexRulePlan> plans = PlanVertexRules(parent);
+  auto edgeIsSmooth = [&parent](Index e) { return IsSmoothEdge(parent, e); };
 
   StencilTable table(numVertices);
   table.ReserveRows(numEdges + numVertices);
