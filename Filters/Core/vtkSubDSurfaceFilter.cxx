@@ -384,7 +384,8 @@ int vtkSubDSurfaceFilter::RequestData(
     // Size guard: predict the finest level before allocating it.
     subd::MeshCounts counts{ static_cast<double>(topology.GetNumFaces()),
       static_cast<double>(topology.GetNumEdges()), static_cast<double>(numPoints),
-      static_cast<double>(topology.GetNumFaceCorners()) };
+      static_cast<double>(topology.GetNumFaceCorners()),
+      static_cast<double>(topology.GetNumBoundaryEdges() + topology.GetNumNonManifoldEdges()) };
     for (int l = 0; l < this->NumberOfSubdivisions; ++l)
     {
       counts = scheme->PredictChildCounts(counts);

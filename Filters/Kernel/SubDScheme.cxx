@@ -30,6 +30,7 @@ MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const
   child.Edges = 2.0 * parent.Edges + parent.Corners;
   child.Vertices = parent.Faces + parent.Edges + parent.Vertices;
   child.Corners = 4.0 * parent.Corners;
+  child.BoundaryEdges = 2.0 * parent.BoundaryEdges;
   return child;
 }
 
@@ -51,6 +52,7 @@ MeshCounts TriangleSplitScheme::PredictChildCounts(const MeshCounts& parent) con
   child.Edges = 2.0 * parent.Edges + 3.0 * parent.Faces;
   child.Vertices = parent.Vertices + parent.Edges;
   child.Corners = 4.0 * parent.Corners;
+  child.BoundaryEdges = 2.0 * parent.BoundaryEdges;
   return child;
 }
 
@@ -83,6 +85,7 @@ MeshCounts DooSabinScheme::PredictChildCounts(const MeshCounts& parent) const
   child.Faces = parent.Faces + parent.Edges + parent.Vertices;
   child.Corners = 2.0 * parent.Corners + 4.0 * parent.Edges;
   child.Edges = 2.0 * parent.Corners;
+  child.BoundaryEdges = 2.0 * parent.BoundaryEdges;
   return child;
 }
 
@@ -100,6 +103,7 @@ MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
   child.Faces = parent.Faces + parent.Vertices;
   child.Corners = 2.0 * parent.Corners + 3.0 * parent.Vertices;
   child.Edges = parent.Corners + 2.0 * parent.Vertices;
+  child.BoundaryEdges = 2.0 * parent.BoundaryEdges;
   return child;
 }
 
@@ -115,13 +119,16 @@ LevelRefinement Sqrt3Scheme::RefineLevel(const Level& parent, ChildTopology dept
 
 MeshCounts Sqrt3Scheme::PredictChildCounts(const MeshCounts& parent) const
 {
-  // Three triangles per triangle (closed meshes; fewer at boundaries): each face adds a
-  // point and three edges.
+  // Three triangles per triangle. Each face adds a point and three edges; in the steps that
+  // trisect the boundary (every second one; the prediction does not know which, so it
+  // bounds both) each boundary triangle trades its centroid for two edge points (+1 point)
+  // and adds one edge, and the boundary triples.
   MeshCounts child;
   child.Faces = 3.0 * parent.Faces;
-  child.Vertices = parent.Vertices + parent.Faces;
-  child.Edges = parent.Edges + 3.0 * parent.Faces;
+  child.Vertices = parent.Vertices + parent.Faces + parent.BoundaryEdges;
+  child.Edges = parent.Edges + 3.0 * parent.Faces + parent.BoundaryEdges;
   child.Corners = 3.0 * parent.Corners;
+  child.BoundaryEdges = 3.0 * parent.BoundaryEdges;
   return child;
 }
 }

@@ -15,6 +15,7 @@ namespace subd
 struct MeshCounts
 {
   double Faces = 0, Edges = 0, Vertices = 0, Corners = 0;
+  double BoundaryEdges = 0; ///< edges with one face, plus non-manifold ones
 };
 
 class SUBDKERNEL_EXPORT Scheme

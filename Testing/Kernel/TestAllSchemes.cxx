@@ -99,6 +99,40 @@ TEST_P(AllSchemes, AffineInvariance)
   }
 }
 
+// The size guard relies on PredictChildCounts: never below the real counts, and exact on
+// closed manifolds (except the midpoint scheme, whose prediction counts the boundary
+// vertices an open mesh may keep).
+TEST_P(AllSchemes, PredictedCountsBoundTheRealOnes)
+{
+  const auto scheme = GetParam().Make();
+  for (const subdtest::TestMesh& mesh : Fixtures())
+  {
+    subd::Level level = subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices),
+      {}, scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly));
+    for (int l = 1; l <= 2; ++l)
+    {
+      const subd::MeshTopology& p = level.Topology;
+      const bool closed = p.GetNumBoundaryEdges() == 0 && p.GetNumNonManifoldEdges() == 0 &&
+        p.GetNumNonManifoldVertices() == 0;
+      const subd::MeshCounts predicted = scheme->PredictChildCounts({ double(p.GetNumFaces()),
+        double(p.GetNumEdges()), double(p.GetNumVertices()), double(p.GetNumFaceCorners()),
+        double(p.GetNumBoundaryEdges() + p.GetNumNonManifoldEdges()) });
+      subd::Level child = scheme->Split(level, subd::ChildTopology::Full);
+      const subd::MeshTopology& c = child.Topology;
+      const double actual[4] = { double(c.GetNumFaces()), double(c.GetNumEdges()), double(c.GetNumVertices()),
+        double(c.GetNumFaceCorners()) };
+      const double guess[4] = { predicted.Faces, predicted.Edges, predicted.Vertices, predicted.Corners };
+      for (int k = 0; k < 4; ++k)
+      {
+        EXPECT_GE(guess[k], actual[k]) << mesh.Name << " level " << l << " count " << k;
+        if (closed && GetParam().Name != "midpoint")
+          EXPECT_EQ(guess[k], actual[k]) << mesh.Name << " level " << l << " count " << k;
+      }
+      level = std::move(child);
+    }
+  }
+}
+
 TEST_P(AllSchemes, PlanarInPlanarOut)
 {
   for (const subdtest::TestMesh& mesh : Fixtures())
