@@ -16,7 +16,7 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
   auto childSource = [numParents](Index childPoint) { return numParents + childPoint; };
 
   const std::vector<VertexRulePlan> plans = PlanVertexRules(parent);
-  auto edgeIsSmooth = [&parent](Index e) { return IsSmoothEdge(parent, e); };
+  const std::vector<float> creaseWeights = EdgeCreaseWeights(parent);
 
   StencilTable table(numParents);
   table.ReserveRows(numFaces + numEdges + numVertices);
@@ -26,7 +26,7 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
   }
   for (Index e = 0; e < numEdges; ++e)
   {
-    table.SetRowSize(number.EdgePoint(e), edgeIsSmooth(e) ? 4 : 2);
+    table.SetRowSize(number.EdgePoint(e), creaseWeights[e] == 1.0f ? 2 : 4);
   }
   for (Index v = 0; v < numVertices; ++v)
   {
@@ -55,28 +55,31 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
     double* wts = table.GetMutableWeights(number.EdgePoint(e));
     src[0] = ev[0];
     src[1] = ev[1];
-    if (edgeIsSmooth(e))
+    if (creaseWeights[e] == 1.0f)
     {
-      const IndexSpan ef = topo.GetEdgeFaces(e);
-      src[2] = childSource(number.FacePoint(ef[0]));
-      src[3] = childSource(number.FacePoint(ef[1]));
-      wts[0] = wts[1] = wts[2] = wts[3] = 0.25;
+      wts[0] = wts[1] = 0.5;
     }
     else
     {
-      wts[0] = wts[1] = 0.5;
+      // The smooth rule, blended with the midpoint where a semi-sharp edge vanishes.
+      const double crease = creaseWeights[e];
+      const double smooth = 1.0 - crease;
+      const IndexSpan ef = topo.GetEdgeFaces(e);
+      src[2] = childSource(number.FacePoint(ef[0]));
+      src[3] = childSource(number.FacePoint(ef[1]));
+      wts[0] = wts[1] = crease * 0.5 + smooth * 0.25;
+      wts[2] = wts[3] = smooth * 0.25;
     }
   }
 
   for (Index v = 0; v < numVertices; ++v)
   {
-    const VertexRulePlan& plan = plans[v];
     Index* src = table.GetMutableSources(number.VertexPoint(v));
     double* wts = table.GetMutableWeights(number.VertexPoint(v));
-    if (!WriteSharpVertexRow(plan, v, src, wts))
-    {
-      const IndexSpan edges = topo.GetVertexEdges(v);
-      const IndexSpan faces = topo.GetVertexFaces(v);
+    const IndexSpan edges = topo.GetVertexEdges(v);
+    const IndexSpan faces = topo.GetVertexFaces(v);
+    WritePrimalVertexRow(topo, plans[v], v, 1 + 2 * faces.size(), src, wts, [&](Index* src, double* wts) {
+      src[0] = v;
       const double n = faces.size();
       const double ringWeight = 1.0 / (n * n);
       wts[0] = (n - 2.0) / n;
@@ -90,7 +93,7 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
         src[1 + edges.size() + i] = childSource(number.FacePoint(faces[i]));
         wts[1 + edges.size() + i] = ringWeight;
       }
-    }
+    });
   }
   table.EndBlock(numFaces + numEdges + numVertices);
   return table;

@@ -17,4 +17,62 @@ const char* ToString(VertexRule rule)
   }
   return "Unknown";
 }
+
+const char* ToString(CreaseMethod method)
+{
+  return method == CreaseMethod::Chaikin ? "Chaikin" : "Uniform";
+}
+
+float SubdivideEdgeSharpnessAtVertex(
+  float edgeSharpness, CreaseMethod method, const float* sharpnessAtVertex, Index count)
+{
+  if (method == CreaseMethod::Uniform || !IsSemiSharp(edgeSharpness) || count < 2)
+  {
+    return DecaySharpness(edgeSharpness);
+  }
+  float semiSharpSum = 0.0f;
+  Index semiSharpCount = 0;
+  for (Index i = 0; i < count; ++i)
+  {
+    if (IsSemiSharp(sharpnessAtVertex[i]))
+    {
+      semiSharpSum += sharpnessAtVertex[i];
+      ++semiSharpCount;
+    }
+  }
+  float averaged = edgeSharpness;
+  if (semiSharpCount > 1)
+  {
+    const float othersMean = (semiSharpSum - edgeSharpness) / static_cast<float>(semiSharpCount - 1);
+    averaged = 0.75f * edgeSharpness + 0.25f * othersMean;
+  }
+  averaged -= 1.0f;
+  return IsSharp(averaged) ? averaged : SharpnessSmooth;
+}
+
+float TransitionWeightAtVertex(float parentVertexSharpness, float childVertexSharpness,
+  const float* parentEdgeSharpness, const float* childEdgeSharpness, Index count)
+{
+  Index transitions = 0;
+  float sum = 0.0f;
+  if (IsSharp(parentVertexSharpness) && !IsSharp(childVertexSharpness))
+  {
+    transitions = 1;
+    sum = parentVertexSharpness;
+  }
+  for (Index i = 0; i < count; ++i)
+  {
+    if (IsSharp(parentEdgeSharpness[i]) && !IsSharp(childEdgeSharpness[i]))
+    {
+      sum += parentEdgeSharpness[i];
+      ++transitions;
+    }
+  }
+  if (transitions == 0)
+  {
+    return 0.0f;
+  }
+  const float weight = sum / static_cast<float>(transitions);
+  return weight > 1.0f ? 1.0f : weight;
+}
 }

@@ -1,7 +1,10 @@
 // SubD kernel: crease sharpness and the classification of vertices by their creases.
 //
 // Sharpness follows OpenSubdiv's scale (Sdc::Crease): 0 is smooth, values >= 10 are
-// infinitely sharp, and values in between are semi-sharp (they lose one unit per level).
+// infinitely sharp, and values in between are semi-sharp: they lose one unit per level
+// (CreaseMethod::Uniform), or, with CreaseMethod::Chaikin, each half of an edge first takes
+// 3/4 of its own sharpness plus 1/4 of the mean of the other semi-sharp edges at its end
+// vertex, so sharpness varies smoothly along a crease (DeRose et al. 1998, section 3).
 // A vertex is classified from its own sharpness and the number of sharp edges it touches
 // (DeRose, Kass, Truong, "Subdivision Surfaces in Character Animation", SIGGRAPH 1998;
 // Hoppe et al., "Piecewise Smooth Surface Reconstruction", SIGGRAPH 1994):
@@ -27,6 +30,18 @@ inline bool IsInfinitelySharp(float sharpness)
 {
   return sharpness >= SharpnessInfinite;
 }
+inline bool IsSemiSharp(float sharpness)
+{
+  return IsSharp(sharpness) && !IsInfinitelySharp(sharpness);
+}
+
+/// How semi-sharp edges lose sharpness from one level to the next.
+enum class CreaseMethod : std::uint8_t
+{
+  Uniform = 0, ///< every semi-sharp value loses one unit
+  Chaikin = 1  ///< each half is first averaged with the other creases at its end vertex
+};
+SUBDKERNEL_EXPORT const char* ToString(CreaseMethod method);
 /// Sharpness of an edge or vertex child one level down: infinite stays infinite, the rest
 /// loses one unit, never below zero (OpenSubdiv's uniform decay).
 inline float DecaySharpness(float sharpness)
@@ -57,6 +72,22 @@ inline VertexRule ClassifyVertex(float vertexSharpness, Index sharpEdgeCount)
 }
 
 SUBDKERNEL_EXPORT const char* ToString(VertexRule rule);
+
+/// Sharpness of the half of an edge that ends at vertex v, from the edge's sharpness and
+/// the sharpness of all `count` edges at v (the edge included). Computed in float, as
+/// OpenSubdiv does (Sdc::Crease::SubdivideEdgeSharpnessAtVertex), so transitions happen
+/// at the same level in both.
+SUBDKERNEL_EXPORT float SubdivideEdgeSharpnessAtVertex(
+  float edgeSharpness, CreaseMethod method, const float* sharpnessAtVertex, Index count);
+
+/// The weight of the parent's mask when a vertex's rule changes from one level to the next
+/// (a semi-sharp feature decays to smooth): the mean sharpness of the vertex and of the
+/// edges that were sharp in the parent and are smooth in the child, clamped to 1 — a
+/// sharpness of 0.3 contributes 30% of the sharp rule at the level where it vanishes
+/// (OpenSubdiv's Sdc::Crease::ComputeFractionalWeightAtVertex). In float, as there.
+SUBDKERNEL_EXPORT float TransitionWeightAtVertex(float parentVertexSharpness,
+  float childVertexSharpness, const float* parentEdgeSharpness, const float* childEdgeSharpness,
+  Index count);
 }
 
 #endif

@@ -22,31 +22,117 @@ bool Level::HasHoles() const
     this->FaceIsHole.begin(), this->FaceIsHole.end(), [](std::uint8_t h) { return h != 0; });
 }
 
-VertexRulePlan PlanVertexRule(const Level& level, Index v)
+float ChildEdgeSharpness(const Level& level, Index e, int end)
 {
-  const MeshTopology& topo = level.Topology;
-  VertexRulePlan plan{ VertexRule::Corner, { InvalidIndex, InvalidIndex } };
-  const IndexSpan edges = topo.GetVertexEdges(v);
-  const IndexSpan faces = topo.GetVertexFaces(v);
-  Index sharpCount = 0;
-  for (Index e : edges)
+  const float sharpness = level.EdgeSharpness[e];
+  if (level.Creasing == CreaseMethod::Uniform || !IsSemiSharp(sharpness))
   {
-    if (IsSharp(level.EdgeSharpness[e]))
+    return DecaySharpness(sharpness);
+  }
+  const MeshTopology& topo = level.Topology;
+  const IndexSpan edges = topo.GetVertexEdges(topo.GetEdgeVertices(e)[end]);
+  std::vector<float> around(static_cast<size_t>(edges.size()));
+  for (Index i = 0; i < edges.size(); ++i)
+  {
+    around[i] = level.EdgeSharpness[edges[i]];
+  }
+  return SubdivideEdgeSharpnessAtVertex(sharpness, level.Creasing, around.data(), edges.size());
+}
+
+namespace
+{
+/// The rule of a vertex with the given sharpness and the sharpness of its edges; the first
+/// two sharp edges' positions go to creaseEdges.
+VertexRule ClassifyAround(const MeshTopology& topo, Index v, float vertexSharpness,
+  const float* edgeSharpness, Index creaseEdges[2])
+{
+  const IndexSpan edges = topo.GetVertexEdges(v);
+  Index sharpCount = 0;
+  for (Index i = 0; i < edges.size(); ++i)
+  {
+    if (IsSharp(edgeSharpness[i]))
     {
       if (sharpCount < 2)
       {
-        plan.CreaseEnds[sharpCount] = topo.GetOtherEndpoint(e, v);
+        creaseEdges[sharpCount] = i;
       }
       ++sharpCount;
     }
   }
-  plan.Rule = ClassifyVertex(level.VertexSharpness[v], sharpCount);
-  if ((plan.Rule == VertexRule::Smooth || plan.Rule == VertexRule::Dart) &&
-    (faces.size() == 0 || faces.size() != edges.size()))
+  const VertexRule rule = ClassifyVertex(vertexSharpness, sharpCount);
+  const bool closedFan = topo.GetVertexFaces(v).size() > 0 && topo.GetVertexFaces(v).size() == edges.size();
+  return (rule == VertexRule::Smooth || rule == VertexRule::Dart) && !closedFan ? VertexRule::Corner : rule;
+}
+}
+
+VertexRulePlan PlanVertexRule(const Level& level, Index v)
+{
+  const MeshTopology& topo = level.Topology;
+  VertexRulePlan plan{ VertexRule::Corner, VertexRule::Corner, { 0, 0 }, { 0, 0 }, 1.0f };
+  const IndexSpan edges = topo.GetVertexEdges(v);
+  // Small valences use the stack; a pole of any valence still works.
+  constexpr Index stackSize = 32;
+  float stackBuffer[2 * stackSize];
+  std::vector<float> heapBuffer;
+  float* parentSharpness = stackBuffer;
+  if (edges.size() > stackSize)
   {
-    plan.Rule = VertexRule::Corner;
+    heapBuffer.resize(2 * static_cast<size_t>(edges.size()));
+    parentSharpness = heapBuffer.data();
+  }
+  float* childSharpness = parentSharpness + std::max(edges.size(), stackSize);
+  bool semiSharp = IsSemiSharp(level.VertexSharpness[v]);
+  for (Index i = 0; i < edges.size(); ++i)
+  {
+    parentSharpness[i] = level.EdgeSharpness[edges[i]];
+    semiSharp = semiSharp || IsSemiSharp(parentSharpness[i]);
+  }
+  plan.Rule = ClassifyAround(topo, v, level.VertexSharpness[v], parentSharpness, plan.CreaseEdges);
+  plan.ChildRule = plan.Rule;
+  std::copy(plan.CreaseEdges, plan.CreaseEdges + 2, plan.ChildCreaseEdges);
+  if (!semiSharp || plan.Rule == VertexRule::Smooth || plan.Rule == VertexRule::Dart)
+  {
+    return plan; // nothing decays, or the smooth rule applies whatever the child does
+  }
+  for (Index i = 0; i < edges.size(); ++i)
+  {
+    childSharpness[i] = level.Creasing == CreaseMethod::Uniform
+      ? DecaySharpness(parentSharpness[i])
+      : SubdivideEdgeSharpnessAtVertex(parentSharpness[i], level.Creasing, parentSharpness, edges.size());
+  }
+  const float childVertexSharpness = DecaySharpness(level.VertexSharpness[v]);
+  plan.ChildRule = ClassifyAround(topo, v, childVertexSharpness, childSharpness, plan.ChildCreaseEdges);
+  if (plan.ChildRule != plan.Rule)
+  {
+    plan.ParentWeight = TransitionWeightAtVertex(
+      level.VertexSharpness[v], childVertexSharpness, parentSharpness, childSharpness, edges.size());
   }
   return plan;
+}
+
+float EdgeCreaseWeight(const Level& level, Index e)
+{
+  const float sharpness = level.EdgeSharpness[e];
+  if (!IsSharp(sharpness))
+  {
+    return 0.0f;
+  }
+  if (level.Topology.GetEdgeFaces(e).size() != 2 ||
+    (IsSharp(ChildEdgeSharpness(level, e, 0)) && IsSharp(ChildEdgeSharpness(level, e, 1))))
+  {
+    return 1.0f;
+  }
+  return sharpness;
+}
+
+std::vector<float> EdgeCreaseWeights(const Level& level)
+{
+  std::vector<float> weights(static_cast<size_t>(level.Topology.GetNumEdges()));
+  for (Index e = 0; e < level.Topology.GetNumEdges(); ++e)
+  {
+    weights[e] = EdgeCreaseWeight(level, e);
+  }
+  return weights;
 }
 
 std::vector<VertexRulePlan> PlanVertexRules(const Level& level)
@@ -63,6 +149,7 @@ void SetChildTopology(const Level& parent, Level& child, Index numPoints, std::v
   std::vector<Index> vertices, ChildTopology depth)
 {
   child.Depth = parent.Depth + 1;
+  child.Creasing = parent.Creasing;
   if (depth == ChildTopology::FacesOnly)
   {
     child.Topology = MeshTopology::BuildFacesOnly(numPoints, std::move(offsets), std::move(vertices));
@@ -85,12 +172,11 @@ void InheritPrimalSharpness(const Level& parent, Level& child, Index firstEdgePo
     {
       continue;
     }
-    const float decayed = DecaySharpness(sharpness);
     const Index* ev = topo.GetEdgeVertices(e);
     for (int k = 0; k < 2; ++k)
     {
       const Index half = childTopo.FindEdge(firstEdgePoint + e, firstVertexPoint + ev[k]);
-      child.EdgeSharpness[half] = decayed;
+      child.EdgeSharpness[half] = ChildEdgeSharpness(parent, e, k);
     }
   }
   child.VertexSharpness.assign(static_cast<size_t>(childTopo.GetNumVertices()), SharpnessSmooth);
@@ -115,6 +201,7 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
   level.VertexSharpness.resize(static_cast<size_t>(numVertices), SharpnessSmooth);
   level.FaceIsHole = tags.FaceIsHole;
   level.FaceIsHole.resize(static_cast<size_t>(numFaces), 0);
+  level.Creasing = tags.Creasing;
   level.FaceOrigin.resize(static_cast<size_t>(numFaces));
   std::iota(level.FaceOrigin.begin(), level.FaceOrigin.end(), 0);
 

@@ -6,6 +6,7 @@
 #include "SubDCrease.h"
 #include "SubDMeshTopology.h"
 #include "SubDStencilTable.h"
+#include <algorithm>
 #include <vector>
 
 namespace subd
@@ -18,59 +19,124 @@ struct SUBDKERNEL_EXPORT Level
   std::vector<std::uint8_t> FaceIsHole;  ///< one per face; holes shape neighbours, aren't emitted
   std::vector<Index> FaceOrigin;         ///< one per face: the base-level face it comes from
   int Depth = 0;                         ///< 0 for the base level, then 1, 2, ...
+  CreaseMethod Creasing = CreaseMethod::Uniform; ///< how semi-sharp edges decay
 
   Index GetNumSharpEdges(Index v) const;
   bool HasHoles() const;
 };
 
-/// The rule of a vertex and, for a crease, the far ends of its two sharp edges.
+/// Sharpness of the half of edge e that ends at its end vertex `end` (0 or 1), one level
+/// down, by the level's crease method (SubdivideEdgeSharpnessAtVertex).
+SUBDKERNEL_EXPORT float ChildEdgeSharpness(const Level& level, Index e, int end);
+
+/// The rule of a vertex at this level and of its child point at the next level, and how
+/// the two masks mix when they differ (a semi-sharp feature decays to smooth at this level,
+/// OpenSubdiv's "transitional" rule).
 struct VertexRulePlan
 {
-  VertexRule Rule;
-  Index CreaseEnds[2];
+  VertexRule Rule;           ///< at this level
+  VertexRule ChildRule;      ///< of the vertex's child point, after the sharpness decays
+  Index CreaseEdges[2];      ///< Rule == Crease: positions in GetVertexEdges(v) of the sharp edges
+  Index ChildCreaseEdges[2]; ///< the same for ChildRule == Crease
+  float ParentWeight;        ///< weight of the Rule's mask when ChildRule differs, else 1
 };
 
-/// Classifies vertex v of `level` (SubDCrease.h). A smooth or dart vertex whose faces do not
-/// form a closed fan (isolated, or as many edges as faces not met) can only be interpolated,
-/// so it is planned as a corner.
+/// Classifies vertex v of `level` and its child point (SubDCrease.h). A smooth or dart
+/// vertex whose faces do not form a closed fan (isolated, or as many edges as faces not
+/// met) can only be interpolated, so it is planned as a corner.
 SUBDKERNEL_EXPORT VertexRulePlan PlanVertexRule(const Level& level, Index v);
 
 /// The plans of every vertex of `level`.
 SUBDKERNEL_EXPORT std::vector<VertexRulePlan> PlanVertexRules(const Level& level);
 
-/// True for an edge that takes a primal scheme's smooth edge rule: not sharp, two faces.
-inline bool IsSmoothEdge(const Level& level, Index e)
-{
-  return !IsSharp(level.EdgeSharpness[e]) && level.Topology.GetEdgeFaces(e).size() == 2;
-}
+/// The weight of the crease rule (the midpoint) in the edge point of e, against the scheme's
+/// smooth edge rule (OpenSubdiv's edge-vertex rule): 0 for a smooth edge, 1 when the edge
+/// is sharp and both its halves stay sharp (or it cannot be smooth: not two faces), and the
+/// edge's sharpness when a semi-sharp edge becomes smooth at this level. As in OpenSubdiv
+/// the sharpness is not clamped: with Chaikin creasing a half can vanish under an edge of
+/// sharpness above 1, which then extrapolates past the crease rule.
+SUBDKERNEL_EXPORT float EdgeCreaseWeight(const Level& level, Index e);
 
-/// The size of a vertex row of a primal scheme (Catmull-Clark, Loop): 1 for a corner, 3 for a
-/// crease, `smoothSize` otherwise.
+/// The crease weight of every edge of `level`.
+SUBDKERNEL_EXPORT std::vector<float> EdgeCreaseWeights(const Level& level);
+
+/// The size of a vertex row of a primal scheme (Catmull-Clark, Loop): `smoothSize` if the
+/// vertex or its child takes the smooth rule, else 3 for a crease and 1 for a corner.
 inline Index PrimalVertexRowSize(const VertexRulePlan& plan, Index smoothSize)
 {
-  return plan.Rule == VertexRule::Corner ? 1 : (plan.Rule == VertexRule::Crease ? 3 : smoothSize);
+  auto size = [smoothSize](VertexRule rule) {
+    return rule == VertexRule::Corner ? 1 : (rule == VertexRule::Crease ? 3 : smoothSize);
+  };
+  return std::max(size(plan.Rule), size(plan.ChildRule));
 }
 
-/// Writes the corner (v' = v) or crease (3/4 v + 1/8 (a + b), the cubic B-spline curve rule)
-/// row of vertex v, shared by Catmull-Clark and Loop. Returns false for smooth and dart
-/// vertices, whose row the scheme writes itself.
-inline bool WriteSharpVertexRow(const VertexRulePlan& plan, Index v, Index* src, double* wts)
+/// Writes the vertex row of a primal scheme, of PrimalVertexRowSize(plan, smoothSize)
+/// entries: the scheme's smooth row (writeSmooth(src, wts) writes smoothSize entries with v
+/// in slot 0 and the far end of GetVertexEdges(v)[i] in slot 1 + i), the crease row
+/// 3/4 v + 1/8 (a + b) (the cubic B-spline curve rule, a and b the far ends of the two sharp
+/// edges), the corner row v' = v, or a transition: ParentWeight times the vertex's mask plus
+/// the rest times its child's (OpenSubdiv's Sdc::Scheme::ComputeVertexVertexMask).
+template <typename WriteSmooth>
+void WritePrimalVertexRow(const MeshTopology& topo, const VertexRulePlan& plan, Index v,
+  Index smoothSize, Index* src, double* wts, WriteSmooth&& writeSmooth)
 {
-  src[0] = v;
+  auto isSmooth = [](VertexRule rule) { return rule == VertexRule::Smooth || rule == VertexRule::Dart; };
+  if (isSmooth(plan.Rule))
+  {
+    writeSmooth(src, wts);
+    return;
+  }
+  const bool transition = plan.ChildRule != plan.Rule;
+  const double parentWeight = transition ? static_cast<double>(plan.ParentWeight) : 1.0;
+  const double childWeight = 1.0 - parentWeight;
+  const IndexSpan edges = topo.GetVertexEdges(v);
+
+  // Lay out the least sharp mask (the child's when they differ): the parent's sources are
+  // among its slots, so the parent's weights add into them.
+  const VertexRule layout = transition ? plan.ChildRule : plan.Rule;
+  Index creaseSlots[2];
+  if (isSmooth(layout))
+  {
+    writeSmooth(src, wts);
+    for (Index i = 0; i < smoothSize; ++i)
+    {
+      wts[i] *= childWeight;
+    }
+    creaseSlots[0] = 1 + plan.CreaseEdges[0];
+    creaseSlots[1] = 1 + plan.CreaseEdges[1];
+  }
+  else if (layout == VertexRule::Crease)
+  {
+    const Index* ends = transition ? plan.ChildCreaseEdges : plan.CreaseEdges;
+    const double scale = transition ? childWeight : 1.0;
+    src[0] = v;
+    src[1] = topo.GetOtherEndpoint(edges[ends[0]], v);
+    src[2] = topo.GetOtherEndpoint(edges[ends[1]], v);
+    wts[0] = scale * 0.75;
+    wts[1] = wts[2] = scale * 0.125;
+    creaseSlots[0] = 1;
+    creaseSlots[1] = 2;
+  }
+  else
+  {
+    src[0] = v;
+    wts[0] = 1.0;
+    return;
+  }
+  if (!transition)
+  {
+    return;
+  }
   if (plan.Rule == VertexRule::Corner)
   {
-    wts[0] = 1.0;
-    return true;
+    wts[0] += parentWeight;
   }
-  if (plan.Rule == VertexRule::Crease)
+  else
   {
-    wts[0] = 0.75;
-    src[1] = plan.CreaseEnds[0];
-    src[2] = plan.CreaseEnds[1];
-    wts[1] = wts[2] = 0.125;
-    return true;
+    wts[0] += parentWeight * 0.75;
+    wts[creaseSlots[0]] += parentWeight * 0.125;
+    wts[creaseSlots[1]] += parentWeight * 0.125;
   }
-  return false;
 }
 
 /// Sets the child's topology from its faces: faces only, or the full topology with smooth
@@ -117,6 +183,7 @@ struct BaseTags
   std::vector<float> EdgeSharpness;   ///< per edge of the base topology
   std::vector<float> VertexSharpness; ///< per vertex
   std::vector<std::uint8_t> FaceIsHole;
+  CreaseMethod Creasing = CreaseMethod::Uniform;
 };
 
 /// Makes the base level: applies the explicit tags, then the boundary rule and the treatment

@@ -20,13 +20,13 @@ StencilTable BuildLoopStencils(const Level& parent)
   const TriangleSplitNumbering number{ numEdges };
 
   const std::vector<VertexRulePlan> plans = PlanVertexRules(parent);
-  auto edgeIsSmooth = [&parent](Index e) { return IsSmoothEdge(parent, e); };
+  const std::vector<float> creaseWeights = EdgeCreaseWeights(parent);
 
   StencilTable table(numVertices);
   table.ReserveRows(numEdges + numVertices);
   for (Index e = 0; e < numEdges; ++e)
   {
-    table.SetRowSize(number.EdgePoint(e), edgeIsSmooth(e) ? 4 : 2);
+    table.SetRowSize(number.EdgePoint(e), creaseWeights[e] == 1.0f ? 2 : 4);
   }
   for (Index v = 0; v < numVertices; ++v)
   {
@@ -41,28 +41,30 @@ StencilTable BuildLoopStencils(const Level& parent)
     double* wts = table.GetMutableWeights(number.EdgePoint(e));
     src[0] = ev[0];
     src[1] = ev[1];
-    if (edgeIsSmooth(e))
+    if (creaseWeights[e] == 1.0f)
     {
-      const IndexSpan ef = topo.GetEdgeFaces(e);
-      src[2] = topo.GetTriangleOppositeVertex(ef[0], e);
-      src[3] = topo.GetTriangleOppositeVertex(ef[1], e);
-      wts[0] = wts[1] = 0.375;
-      wts[2] = wts[3] = 0.125;
+      wts[0] = wts[1] = 0.5;
     }
     else
     {
-      wts[0] = wts[1] = 0.5;
+      // The smooth rule, blended with the midpoint where a semi-sharp edge vanishes.
+      const double crease = creaseWeights[e];
+      const double smooth = 1.0 - crease;
+      const IndexSpan ef = topo.GetEdgeFaces(e);
+      src[2] = topo.GetTriangleOppositeVertex(ef[0], e);
+      src[3] = topo.GetTriangleOppositeVertex(ef[1], e);
+      wts[0] = wts[1] = crease * 0.5 + smooth * 0.375;
+      wts[2] = wts[3] = smooth * 0.125;
     }
   }
   for (Index v = 0; v < numVertices; ++v)
   {
-    const VertexRulePlan& plan = plans[v];
     Index* src = table.GetMutableSources(number.VertexPoint(v));
     double* wts = table.GetMutableWeights(number.VertexPoint(v));
-    if (!WriteSharpVertexRow(plan, v, src, wts))
-    {
-      const IndexSpan edges = topo.GetVertexEdges(v);
+    const IndexSpan edges = topo.GetVertexEdges(v);
+    WritePrimalVertexRow(topo, plans[v], v, 1 + edges.size(), src, wts, [&](Index* src, double* wts) {
       const Index n = edges.size();
+      src[0] = v;
       const double beta = n == 6 ? 0.0625 : LoopBeta(n);
       wts[0] = 1.0 - n * beta;
       for (Index i = 0; i < n; ++i)
@@ -70,7 +72,7 @@ StencilTable BuildLoopStencils(const Level& parent)
         src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
         wts[1 + i] = beta;
       }
-    }
+    });
   }
   table.EndBlock(numEdges + numVertices);
   return table;

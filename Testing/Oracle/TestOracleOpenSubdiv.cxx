@@ -1,7 +1,9 @@
 // Oracle test: SubD's Catmull-Clark and Loop against OpenSubdiv's Far::TopologyRefiner and
 // PrimvarRefinerReal<double> (Debian's libosd-dev), an independent implementation.
 //
-// Both refine the same fixtures for each boundary rule, levels 1..3. Child points are
+// Both refine the same fixtures for each boundary rule, levels 1..3, and a corpus of sharp
+// features (creases, semi-sharp with fractional sharpness, darts, corners, holes, Chaikin
+// and Uniform crease methods, poles of valence 8 and 64), levels 1..4. Child points are
 // matched through the parent they come from (OpenSubdiv orders child points from faces
 // first, then edges, then vertices; faces are matched by their vertex sets, edges by their
 // end points), never by assuming equal numbering. Positions must agree to 1e-9 of the
@@ -71,8 +73,21 @@ std::unique_ptr<subd::Scheme> MakeScheme(SchemeKind kind)
   return std::make_unique<subd::CatmullClarkScheme>();
 }
 
-std::unique_ptr<Far::TopologyRefiner> MakeOsdRefiner(
-  const subdtest::TestMesh& mesh, subd::BoundaryRule rule, int levels, SchemeKind kind)
+/// Sharp features given with a fixture: crease edges as vertex pairs, corner vertices,
+/// hole faces, and the crease method.
+struct SharpTags
+{
+  std::string Label;
+  std::vector<int> CreasePairs;
+  std::vector<float> CreaseSharpness;
+  std::vector<int> Corners;
+  std::vector<float> CornerSharpness;
+  std::vector<int> Holes;
+  subd::CreaseMethod Method = subd::CreaseMethod::Uniform;
+};
+
+std::unique_ptr<Far::TopologyRefiner> MakeOsdRefiner(const subdtest::TestMesh& mesh,
+  subd::BoundaryRule rule, int levels, SchemeKind kind, const SharpTags& tags)
 {
   std::vector<int> sizes(static_cast<size_t>(mesh.NumFaces()));
   for (Index f = 0; f < mesh.NumFaces(); ++f)
@@ -84,8 +99,18 @@ std::unique_ptr<Far::TopologyRefiner> MakeOsdRefiner(
   desc.numFaces = mesh.NumFaces();
   desc.numVertsPerFace = sizes.data();
   desc.vertIndicesPerFace = mesh.Vertices.data();
+  desc.numCreases = static_cast<int>(tags.CreaseSharpness.size());
+  desc.creaseVertexIndexPairs = tags.CreasePairs.data();
+  desc.creaseWeights = tags.CreaseSharpness.data();
+  desc.numCorners = static_cast<int>(tags.Corners.size());
+  desc.cornerVertexIndices = tags.Corners.data();
+  desc.cornerWeights = tags.CornerSharpness.data();
+  desc.numHoles = static_cast<int>(tags.Holes.size());
+  desc.holeIndices = tags.Holes.data();
   Sdc::Options options;
   options.SetVtxBoundaryInterpolation(ToOsd(rule));
+  options.SetCreasingMethod(
+    tags.Method == subd::CreaseMethod::Chaikin ? Sdc::Options::CREASE_CHAIKIN : Sdc::Options::CREASE_UNIFORM);
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
     Factory::Create(desc,
@@ -123,11 +148,39 @@ double Diagonal(const std::vector<double>& p)
     (hi[2] - lo[2]) * (hi[2] - lo[2]));
 }
 
+/// The same tags in SubD's form, for the base level of `topology`.
+subd::BaseTags ToBaseTags(const SharpTags& tags, const subd::MeshTopology& topology)
+{
+  subd::BaseTags base;
+  base.Creasing = tags.Method;
+  base.EdgeSharpness.assign(static_cast<size_t>(topology.GetNumEdges()), 0.0f);
+  for (size_t i = 0; i < tags.CreaseSharpness.size(); ++i)
+  {
+    const Index e = topology.FindEdge(tags.CreasePairs[2 * i], tags.CreasePairs[2 * i + 1]);
+    EXPECT_NE(e, subd::InvalidIndex) << "crease " << i << " is not an edge";
+    if (e != subd::InvalidIndex)
+      base.EdgeSharpness[e] = tags.CreaseSharpness[i];
+  }
+  base.VertexSharpness.assign(static_cast<size_t>(topology.GetNumVertices()), 0.0f);
+  for (size_t i = 0; i < tags.Corners.size(); ++i)
+  {
+    base.VertexSharpness[tags.Corners[i]] = tags.CornerSharpness[i];
+  }
+  base.FaceIsHole.assign(static_cast<size_t>(topology.GetNumFaces()), 0);
+  for (int f : tags.Holes)
+  {
+    base.FaceIsHole[f] = 1;
+  }
+  return base;
+}
+
 struct OracleCase
 {
   subdtest::TestMesh Mesh;
   subd::BoundaryRule Rule;
   SchemeKind Kind;
+  SharpTags Tags = {};
+  int Levels = 3;
 };
 
 std::vector<OracleCase> Cases()
@@ -149,26 +202,29 @@ std::vector<OracleCase> Cases()
 
 void PrintTo(const OracleCase& c, std::ostream* os)
 {
-  *os << MakeScheme(c.Kind)->GetName() << " " << c.Mesh.Name << " " << subd::ToString(c.Rule);
+  *os << MakeScheme(c.Kind)->GetName() << " " << c.Mesh.Name << c.Tags.Label << " "
+      << subd::ToString(c.Rule);
 }
 
 class SchemeOracle : public ::testing::TestWithParam<OracleCase>
 {
 };
 
-TEST_P(SchemeOracle, MatchesOpenSubdivLevels1To3)
+TEST_P(SchemeOracle, MatchesOpenSubdiv)
 {
   const OracleCase& c = GetParam();
-  const int maxLevel = 3;
-  auto refiner = MakeOsdRefiner(c.Mesh, c.Rule, maxLevel, c.Kind);
+  const int maxLevel = c.Levels;
+  auto refiner = MakeOsdRefiner(c.Mesh, c.Rule, maxLevel, c.Kind, c.Tags);
   ASSERT_TRUE(refiner);
   Far::PrimvarRefinerReal<double> primvar(*refiner);
 
   const std::unique_ptr<subd::Scheme> schemePointer = MakeScheme(c.Kind);
   const subd::Scheme& scheme = *schemePointer;
-  subd::Level level = subd::MakeBaseLevel(
-    subd::MeshTopology::Build(c.Mesh.NumVertices(), c.Mesh.Offsets, c.Mesh.Vertices), {},
-    scheme.EffectiveBoundaryRule(c.Rule));
+  subd::MeshTopology baseTopology =
+    subd::MeshTopology::Build(c.Mesh.NumVertices(), c.Mesh.Offsets, c.Mesh.Vertices);
+  const subd::BaseTags baseTags = ToBaseTags(c.Tags, baseTopology);
+  subd::Level level =
+    subd::MakeBaseLevel(std::move(baseTopology), baseTags, scheme.EffectiveBoundaryRule(c.Rule));
   std::vector<double> mine = c.Mesh.Points;
   std::vector<Point3> osd(static_cast<size_t>(c.Mesh.NumVertices()));
   for (Index v = 0; v < c.Mesh.NumVertices(); ++v)
@@ -251,8 +307,8 @@ TEST_P(SchemeOracle, MatchesOpenSubdivLevels1To3)
         worstVertex = static_cast<Index>(i);
       }
     }
-    std::printf("%s %s %s level %d: largest difference %.3g of the bounding-box diagonal\n",
-      scheme.GetName(), c.Mesh.Name.c_str(), subd::ToString(c.Rule), l, worst / (tolerance * 1e9));
+    std::printf("%s %s%s %s level %d: largest difference %.3g of the bounding-box diagonal\n",
+      scheme.GetName(), c.Mesh.Name.c_str(), c.Tags.Label.c_str(), subd::ToString(c.Rule), l, worst / (tolerance * 1e9));
     EXPECT_LE(worst, tolerance) << c.Mesh.Name << " " << subd::ToString(c.Rule) << " level " << l
                                 << ": worst OpenSubdiv vertex " << worstVertex;
 
@@ -289,10 +345,143 @@ TEST_P(SchemeOracle, MatchesOpenSubdivLevels1To3)
 std::string CaseName(const ::testing::TestParamInfo<OracleCase>& info)
 {
   std::string name = std::string(MakeScheme(info.param.Kind)->GetName()) + "_" +
-    info.param.Mesh.Name + "_" + subd::ToString(info.param.Rule);
+    info.param.Mesh.Name + info.param.Tags.Label + "_" + subd::ToString(info.param.Rule);
   std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
   return name;
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, SchemeOracle, ::testing::ValuesIn(Cases()), CaseName);
+
+// The sharp-feature corpus. Each entry is refined by Catmull-Clark on the quad mesh and by
+// Loop on its triangulation (which keeps every quad edge, so the same creases apply).
+struct SharpFixture
+{
+  subdtest::TestMesh Mesh;
+  SharpTags Tags;
+  int LoopHole = -1; // a hole face of the triangulation, if the fixture has holes
+};
+
+SharpTags Creases(std::string label, std::vector<int> pairs, std::vector<float> sharpness,
+  subd::CreaseMethod method = subd::CreaseMethod::Uniform)
+{
+  SharpTags t;
+  t.Label = "-" + label;
+  t.CreasePairs = std::move(pairs);
+  t.CreaseSharpness = std::move(sharpness);
+  t.Method = method;
+  return t;
+}
+
+std::vector<SharpFixture> SharpCorpus()
+{
+  std::vector<SharpFixture> corpus;
+  const subdtest::TestMesh cube = subdtest::Cube().Jitter(0.1);
+  // One closed crease loop: the four edges around one face (vertices 0..3 of the cube's
+  // first face).
+  {
+    std::vector<int> pairs;
+    const subd::IndexSpan fv{ &cube.Vertices[cube.Offsets[0]], cube.Offsets[1] - cube.Offsets[0] };
+    for (Index k = 0; k < fv.size(); ++k)
+      pairs.insert(pairs.end(), { fv[k], fv[(k + 1) % fv.size()] });
+    corpus.push_back({ cube, Creases("loop2.5", pairs, std::vector<float>(pairs.size() / 2, 2.5f)) });
+  }
+  // Every edge at one sharpness.
+  {
+    const subd::MeshTopology topo = subd::MeshTopology::Build(cube.NumVertices(), cube.Offsets, cube.Vertices);
+    std::vector<int> pairs;
+    for (Index e = 0; e < topo.GetNumEdges(); ++e)
+      pairs.insert(pairs.end(), { topo.GetEdgeVertices(e)[0], topo.GetEdgeVertices(e)[1] });
+    for (float s : { 0.5f, 1.0f, 2.5f, 10.0f })
+    {
+      std::string label = "all" + std::to_string(s).substr(0, 4);
+      corpus.push_back({ cube, Creases(label, pairs, std::vector<float>(pairs.size() / 2, s)) });
+    }
+  }
+  // A torus (6 x 5 quads, all valence 4): vertex (i, j) is i + 6 j.
+  const subdtest::TestMesh torus = subdtest::Grid(6, 5, true, true).Jitter(0.05);
+  auto tv = [](int i, int j) { return (i % 6) + 6 * (j % 5); };
+  corpus.push_back({ torus, Creases("dart", { tv(1, 1), tv(2, 1) }, { 10.0f }) });
+  corpus.push_back({ torus, Creases("end-inside", { tv(1, 2), tv(2, 2), tv(2, 2), tv(3, 2), tv(3, 2), tv(4, 2) },
+                              { 3.3f, 3.3f, 3.3f }) });
+  for (auto method : { subd::CreaseMethod::Uniform, subd::CreaseMethod::Chaikin })
+  {
+    // A crease whose sharpness varies along it, and a closed loop around the torus.
+    std::vector<int> pairs;
+    std::vector<float> sharpness;
+    const float along[] = { 0.5f, 1.5f, 2.5f, 3.7f };
+    for (int i = 0; i < 4; ++i)
+    {
+      pairs.insert(pairs.end(), { tv(i, 1), tv(i + 1, 1) });
+      sharpness.push_back(along[i]);
+    }
+    const float loop[] = { 0.3f, 1.2f, 2.7f, 0.8f, 4.1f, 1.9f };
+    for (int i = 0; i < 6; ++i)
+    {
+      pairs.insert(pairs.end(), { tv(i, 3), tv(i + 1, 3) });
+      sharpness.push_back(loop[i]);
+    }
+    // A branch (three semi-sharp edges meet: a semi-sharp corner).
+    pairs.insert(pairs.end(), { tv(2, 3), tv(2, 4) });
+    sharpness.push_back(1.4f);
+    corpus.push_back({ torus, Creases(std::string("varying-") + subd::ToString(method), pairs, sharpness, method) });
+  }
+  // Corner sharpness on boundary and interior vertices of an open grid (vertex (i, j) is
+  // i + 5 j on the 4 x 3 grid), with a semi-sharp crease ending at a boundary.
+  {
+    SharpTags t = Creases("corners", { 6, 7, 7, 8 }, { 1.6f, 0.4f });
+    t.Corners = { 1, 2, 4, 7, 15 };
+    t.CornerSharpness = { 0.5f, 3.0f, 10.0f, 1.7f, 0.25f };
+    corpus.push_back({ subdtest::Grid(4, 3, false, false).Jitter(0.1), t });
+  }
+  // Holes: in the torus and at the boundary of the open grid.
+  {
+    SharpTags t = Creases("hole", { tv(1, 1), tv(2, 1) }, { 2.0f });
+    t.Holes = { 7, 8 };
+    corpus.push_back({ torus, t, 14 });
+    SharpTags g;
+    g.Label = "-hole";
+    g.Holes = { 0 };
+    corpus.push_back({ subdtest::Grid(4, 3, false, false).Jitter(0.1), g, 0 });
+  }
+  // A semi-sharp crease touching a non-manifold edge (vertices 0 and 1 are its ends).
+  corpus.push_back({ subdtest::NonManifold().Jitter(0.05), Creases("crease", { 0, 2, 2, 3 }, { 1.5f, 0.7f }) });
+  // Poles of valence 8 and 64 (the apex 2n of the star): a semi-sharp crease through the
+  // pole, a semi-sharp pole, and (with Chaikin) semi-sharp edges all around it.
+  for (int n : { 8, 64 })
+  {
+    const subdtest::TestMesh star = subdtest::Star(n).Jitter(0.1);
+    SharpTags t = Creases("pole", { 1, 2 * n, 2 * n, n + 1 }, { 1.5f, 2.25f });
+    t.Corners = { 2 * n };
+    t.CornerSharpness = { 0.7f };
+    corpus.push_back({ star, t });
+    std::vector<int> pairs;
+    std::vector<float> sharpness;
+    for (int k = 0; k < n; ++k)
+    {
+      pairs.insert(pairs.end(), { 2 * k + 1, 2 * n });
+      sharpness.push_back(0.2f + 2.5f * k / n);
+    }
+    corpus.push_back({ star, Creases("spokes", pairs, sharpness, subd::CreaseMethod::Chaikin) });
+  }
+  return corpus;
+}
+
+std::vector<OracleCase> SharpCases()
+{
+  std::vector<OracleCase> cases;
+  for (const SharpFixture& fixture : SharpCorpus())
+  {
+    for (auto rule : { subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::EdgeAndCorner })
+    {
+      cases.push_back({ fixture.Mesh, rule, SchemeKind::CatmullClark, fixture.Tags, 4 });
+      OracleCase loop{ fixture.Mesh.Triangulated(), rule, SchemeKind::Loop, fixture.Tags, 4 };
+      if (!loop.Tags.Holes.empty())
+        loop.Tags.Holes = { fixture.LoopHole };
+      cases.push_back(loop);
+    }
+  }
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(SharpFeatures, SchemeOracle, ::testing::ValuesIn(SharpCases()), CaseName);
 }
