@@ -5,6 +5,7 @@
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
 #include "vtkSubDPointDataInterpolation.h"
+#include "vtkSubDSharpFeatures.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -189,6 +190,8 @@ public:
   vtkIdType NumInputPoints = 0;
   std::vector<subd::Index> Offsets, Vertices;
   std::vector<subd::Index> KeptFaces;
+  vtkSubDSharpFeatures Features;
+  std::vector<subd::Index> UnmatchedSegments; // crease segments that are not surface edges
   subd::Hierarchy Hierarchy;
   // Which finest faces and points are output. In the common case (no holes, no isolated
   // input points) all are, and no maps are stored.
@@ -266,6 +269,11 @@ vtkSubDSurfaceFilter::~vtkSubDSurfaceFilter()
 const char* vtkSubDSurfaceFilter::GetBoundaryRuleAsString()
 {
   return subd::ToString(static_cast<subd::BoundaryRule>(this->BoundaryRule));
+}
+
+const char* vtkSubDSurfaceFilter::GetCreaseMethodAsString()
+{
+  return subd::ToString(static_cast<subd::CreaseMethod>(this->CreaseMethod));
 }
 
 int vtkSubDSurfaceFilter::RequestData(
@@ -354,10 +362,23 @@ int vtkSubDSurfaceFilter::RequestData(
     return fail();
   }
 
+  std::vector<vtkIdType> faceCells(screened.KeptFaces.size());
+  for (size_t f = 0; f < faceCells.size(); ++f)
+  {
+    faceCells[f] = faces.CellIdOf(screened.KeptFaces[f], numPolys);
+  }
+  vtkSubDSharpFeatures features;
+  std::string featureError;
+  if (!features.Read(input, faceCells, featureError))
+  {
+    vtkErrorMacro(<< featureError);
+    return fail();
+  }
+
   vtkInternals& cache = *this->Internals;
   const bool reuse = cache.Valid && cache.FilterMTime == this->GetMTime() &&
     cache.NumInputPoints == numPoints && cache.Offsets == screened.Offsets &&
-    cache.Vertices == screened.Vertices;
+    cache.Vertices == screened.Vertices && cache.Features == features && !this->AutomaticCreases;
   auto refineProgress = [this](double fraction) {
     this->UpdateProgress(0.5 * fraction);
     return !this->GetAbortExecute();
@@ -419,10 +440,22 @@ int vtkSubDSurfaceFilter::RequestData(
     {
       someBaseVertexUnused = topology.GetVertexFaces(v).empty();
     }
-    subd::Level base = subd::MakeBaseLevel(std::move(topology), subd::BaseTags{},
+    const subd::BaseTags tags = features.ToBaseTags(topology, input->GetPoints(),
+      this->AutomaticCreases ? this->FeatureAngle : 0.0,
+      static_cast<subd::CreaseMethod>(this->CreaseMethod), cache.UnmatchedSegments);
+    if (!cache.UnmatchedSegments.empty())
+    {
+      const subd::Index first = cache.UnmatchedSegments[0];
+      vtkWarningMacro(<< cache.UnmatchedSegments.size() << " crease line segment(s) are not edges of "
+                      << "the surface and are passed through unchanged; the first is ("
+                      << features.SegmentPoints[2 * first] << ", " << features.SegmentPoints[2 * first + 1]
+                      << ") in line cell " << features.SegmentCell[first] << ".");
+    }
+    const bool sharpFeatures = features.Any() || this->AutomaticCreases;
+    subd::Level base = subd::MakeBaseLevel(std::move(topology), tags,
       scheme->EffectiveBoundaryRule(static_cast<subd::BoundaryRule>(this->BoundaryRule)));
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy,
-          refineProgress))
+          refineProgress, sharpFeatures ? subd::ChildTopology::Full : subd::ChildTopology::FacesOnly))
     {
       return aborted();
     }
@@ -433,6 +466,7 @@ int vtkSubDSurfaceFilter::RequestData(
     cache.Offsets = std::move(screened.Offsets);
     cache.Vertices = std::move(screened.Vertices);
     cache.KeptFaces = std::move(screened.KeptFaces);
+    cache.Features = std::move(features);
     cache.FilterMTime = this->GetMTime();
     cache.Valid = true;
   }
@@ -480,6 +514,7 @@ int vtkSubDSurfaceFilter::RequestData(
   // Point data: every array, with the same stencils.
   vtkPointData* inPD = input->GetPointData();
   vtkPointData* outPD = output->GetPointData();
+  std::vector<std::pair<vtkDataArray*, vtkDataArray*>> interpolated;
   for (int a = 0; a < numArrays; ++a)
   {
     vtkAbstractArray* abstractArray = inPD->GetAbstractArray(a);
@@ -489,6 +524,10 @@ int vtkSubDSurfaceFilter::RequestData(
       vtkWarningMacro(<< "Point-data array '" << (abstractArray->GetName() ? abstractArray->GetName() : "")
                       << "' is not numeric and cannot be interpolated; it is not passed on.");
       continue;
+    }
+    if (array->GetName() && std::string(array->GetName()) == "CornerSharpness")
+    {
+      continue; // not interpolated: decayed on the vertices it belongs to (below)
     }
     if (array->GetNumberOfTuples() != numPoints)
     {
@@ -505,11 +544,22 @@ int vtkSubDSurfaceFilter::RequestData(
       return aborted();
     }
     outPD->AddArray(out);
+    interpolated.emplace_back(array, out);
     if (attribute >= 0)
     {
       outPD->SetActiveAttribute(outPD->GetNumberOfArrays() - 1, attribute);
     }
   }
+
+  // Sharp features out: decayed corner sharpness, crease lines (before the faces in VTK's
+  // cell order) and the line segments passed through.
+  vtkSubDOutputPointMap pointMap{ [&cache](subd::Index v) { return cache.OutputPoint(v); },
+    [&cache](vtkIdType o) {
+      return cache.CompactPoints ? cache.FinestPointOfOutput[o] : static_cast<subd::Index>(o);
+    } };
+  const std::vector<float> lineSharpness = vtkSubDWriteSharpFeatures(
+    cache.Features, cache.UnmatchedSegments, finest, pointMap, input, interpolated, output);
+  const vtkIdType numLines = static_cast<vtkIdType>(lineSharpness.size());
 
   // Faces, straight into offsets/connectivity.
   const subd::MeshTopology& topo = finest.Topology;
@@ -539,8 +589,8 @@ int vtkSubDSurfaceFilter::RequestData(
   polys->SetData(offsets, connectivity);
   output->SetPolys(polys);
 
-  // Cell data: inherited from the input cell each face descends from.
-  if (input->GetCellData()->GetNumberOfArrays() == 0 && !this->GenerateParentCellIds)
+  // Cell data: each face inherits its input cell's; lines get zeros, and their sharpness.
+  if (input->GetCellData()->GetNumberOfArrays() == 0 && !this->GenerateParentCellIds && numLines == 0)
   {
     this->UpdateProgress(1.0);
     return 1;
@@ -552,17 +602,38 @@ int vtkSubDSurfaceFilter::RequestData(
   {
     const subd::Index baseFace = finest.FaceOrigin[cache.FinestFace(c)];
     sourceCells->SetId(c, faces.CellIdOf(cache.KeptFaces[baseFace], numPolys));
-    targetCells->SetId(c, c);
+    targetCells->SetId(c, numLines + c);
   }
+  vtkCellData* inCD = input->GetCellData();
   vtkCellData* outCD = output->GetCellData();
-  outCD->CopyAllocate(input->GetCellData(), numOut);
-  outCD->CopyData(input->GetCellData(), sourceCells, targetCells);
+  outCD->CopyAllocate(inCD, numLines + numOut);
+  for (vtkIdType c = 0; c < numLines; ++c)
+  {
+    outCD->NullData(c);
+  }
+  outCD->CopyData(inCD, sourceCells, targetCells);
+  if (numLines > 0)
+  {
+    vtkNew<vtkFloatArray> sharpness;
+    sharpness->SetName("Sharpness");
+    sharpness->SetNumberOfTuples(numLines + numOut);
+    std::copy(lineSharpness.begin(), lineSharpness.end(), sharpness->GetPointer(0));
+    vtkDataArray* inputSharpness = inCD->GetArray("Sharpness");
+    for (vtkIdType c = 0; c < numOut; ++c)
+    {
+      sharpness->SetValue(numLines + c,
+        inputSharpness ? static_cast<float>(inputSharpness->GetComponent(sourceCells->GetId(c), 0)) : 0.0f);
+    }
+    outCD->RemoveArray("Sharpness");
+    outCD->AddArray(sharpness);
+  }
   if (this->GenerateParentCellIds)
   {
     vtkNew<vtkIdTypeArray> parents;
     parents->SetName("ParentCellId");
-    parents->SetNumberOfTuples(numOut);
-    std::copy(sourceCells->GetPointer(0), sourceCells->GetPointer(0) + numOut, parents->GetPointer(0));
+    parents->SetNumberOfTuples(numLines + numOut);
+    std::fill_n(parents->GetPointer(0), numLines, -1);
+    std::copy(sourceCells->GetPointer(0), sourceCells->GetPointer(0) + numOut, parents->GetPointer(numLines));
     outCD->AddArray(parents);
   }
   this->UpdateProgress(1.0);
@@ -574,6 +645,9 @@ void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "NumberOfSubdivisions: " << this->NumberOfSubdivisions << "\n";
   os << indent << "BoundaryRule: " << this->GetBoundaryRuleAsString() << "\n";
+  os << indent << "CreaseMethod: " << this->GetCreaseMethodAsString() << "\n";
+  os << indent << "AutomaticCreases: " << (this->AutomaticCreases ? "On" : "Off") << "\n";
+  os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "GenerateParentCellIds: " << (this->GenerateParentCellIds ? "On" : "Off") << "\n";
   os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";

@@ -28,6 +28,31 @@
  * an empty output. A request whose predicted output exceeds MaximumMemory (MiB) is refused
  * with a message before anything large is allocated.
  *
+ * Sharp features (DeRose, Kass, Truong, "Subdivision Surfaces in Character Animation",
+ * SIGGRAPH 1998), read from the input:
+ *
+ * - crease edges: the segments of the input's Lines (lines or polylines) that are edges of
+ *   the surface, with their sharpness in the cell-data array "Sharpness" on OpenSubdiv's
+ *   scale (0 smooth, 10 or more infinitely sharp, fractional values allowed; lines without
+ *   the array are infinitely sharp). Segments that are not surface edges are passed through
+ *   unchanged (with a warning); sharpness on a boundary edge changes nothing, since
+ *   boundary edges are infinitely sharp already. A negative or NaN sharpness is an error
+ *   naming the cell;
+ * - vertex sharpness: the point-data array "CornerSharpness" (a sharp vertex is a corner);
+ * - holes: faces whose cell-data array "Hole" is non-zero shape their neighbours but are
+ *   not output (as in OpenSubdiv);
+ * - AutomaticCreases: edges whose faces meet at more than FeatureAngle become infinitely
+ *   sharp.
+ *
+ * Semi-sharp values lose one unit per level (CreaseMethod Uniform), or are first averaged
+ * along the crease (Chaikin); where one reaches zero the rules blend (OpenSubdiv's
+ * transitional rules). Catmull-Clark and Loop follow OpenSubdiv exactly; see each scheme's
+ * filter for what the other schemes do with creases. The output carries the refined
+ * crease edges as 2-point lines (with "Sharpness" decayed by the levels applied) and the
+ * decayed "CornerSharpness", so running a filter N times with one level gives the same
+ * surface as running it once with N levels. Output line cells come before the faces (VTK's
+ * cell order); their other cell-data values are zero.
+ *
  * BoundaryRule has OpenSubdiv's meanings (Sdc::Options::VtxBoundaryInterpolation):
  * None (faces at the boundary become holes that shape the surface but are not output),
  * EdgeOnly (default: boundary edges are sharp creases) and EdgeAndCorner (also pins corners,
@@ -79,6 +104,38 @@ public:
   const char* GetBoundaryRuleAsString();
   ///@}
 
+  enum CreaseMethods
+  {
+    CREASE_UNIFORM = 0,
+    CREASE_CHAIKIN = 1
+  };
+
+  ///@{
+  /**
+   * How semi-sharp creases decay from level to level (default CREASE_UNIFORM, one unit per
+   * level; CREASE_CHAIKIN first averages each half edge's sharpness with the crease's
+   * other edges at its end, OpenSubdiv's Chaikin creasing method).
+   */
+  vtkSetClampMacro(CreaseMethod, int, CREASE_UNIFORM, CREASE_CHAIKIN);
+  vtkGetMacro(CreaseMethod, int);
+  void SetCreaseMethodToUniform() { this->SetCreaseMethod(CREASE_UNIFORM); }
+  void SetCreaseMethodToChaikin() { this->SetCreaseMethod(CREASE_CHAIKIN); }
+  const char* GetCreaseMethodAsString();
+  ///@}
+
+  ///@{
+  /**
+   * Make every edge whose two faces meet at a dihedral angle above FeatureAngle (degrees,
+   * default 30) an infinitely sharp crease (default off). The creases then depend on the
+   * point positions, so cached stencils are not reused while it is on.
+   */
+  vtkSetMacro(AutomaticCreases, bool);
+  vtkGetMacro(AutomaticCreases, bool);
+  vtkBooleanMacro(AutomaticCreases, bool);
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
   ///@{
   /**
    * Precision of the output points: vtkAlgorithm::DEFAULT_PRECISION (that of the input
@@ -128,6 +185,9 @@ protected:
 
   int NumberOfSubdivisions = 1;
   int BoundaryRule = BOUNDARY_EDGE_ONLY;
+  int CreaseMethod = CREASE_UNIFORM;
+  bool AutomaticCreases = false;
+  double FeatureAngle = 30.0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
   bool GenerateParentCellIds = false;
   double MaximumMemory = 16384.0;

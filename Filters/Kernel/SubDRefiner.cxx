@@ -11,7 +11,7 @@ void SerialFor(Index begin, Index end, const RangeTask& task)
 }
 
 bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
-  const ProgressCallback& progress)
+  const ProgressCallback& progress, ChildTopology finest)
 {
   out.NumBasePoints = base.Topology.GetNumVertices();
   out.Stencils.clear();
@@ -20,7 +20,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   for (int l = 0; l < levels; ++l)
   {
     LevelRefinement refinement =
-      scheme.RefineLevel(current, l + 1 < levels ? ChildTopology::Full : ChildTopology::FacesOnly);
+      scheme.RefineLevel(current, l + 1 < levels ? ChildTopology::Full : finest);
     out.Stencils.push_back(std::move(refinement.Stencils));
     current = std::move(refinement.Child);
     if (progress && !progress(static_cast<double>(l + 1) / levels))

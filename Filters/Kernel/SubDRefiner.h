@@ -27,7 +27,7 @@ struct SUBDKERNEL_EXPORT Hierarchy
 {
   Index NumBasePoints = 0;
   std::vector<StencilTable> Stencils; ///< one per level, level 0 -> 1 first
-  Level Finest; ///< the last level: its faces, holes and origins (no edges unless levels == 0)
+  Level Finest; ///< the last level: its faces, holes and origins (edges: see Refine)
 
   int GetNumLevels() const { return static_cast<int>(Stencils.size()); }
   Index GetNumFinestPoints() const { return Finest.Topology.GetNumVertices(); }
@@ -40,10 +40,11 @@ struct SUBDKERNEL_EXPORT Hierarchy
     const ProgressCallback& progress = nullptr) const;
 };
 
-/// Refines `base` `levels` times. Returns false if progress asked to stop (out is then
-/// incomplete).
+/// Refines `base` `levels` times. The finest level has faces only unless `finest` asks
+/// for its full topology and tags (to read its sharp edges). Returns false if progress
+/// asked to stop (out is then incomplete).
 SUBDKERNEL_EXPORT bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
-  const ProgressCallback& progress = nullptr);
+  const ProgressCallback& progress = nullptr, ChildTopology finest = ChildTopology::FacesOnly);
 
 template <typename T>
 bool Hierarchy::Evaluate(const T* base, int components, T* finest, const ParallelFor& parallelFor,
