@@ -24,6 +24,8 @@
 #include "vtkSphereSource.h"
 #include "vtkUnsignedCharArray.h"
 
+#include "SubDFilterTestSupport.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,33 +37,7 @@
 
 namespace
 {
-// Records error and warning messages of an algorithm.
-struct Messages
-{
-  std::string Errors, Warnings;
-  int NumErrors = 0, NumWarnings = 0;
-  void Watch(vtkObject* object)
-  {
-    vtkNew<vtkCallbackCommand> cb;
-    cb->SetClientData(this);
-    cb->SetCallback([](vtkObject*, unsigned long event, void* client, void* data) {
-      auto* self = static_cast<Messages*>(client);
-      const std::string text = data ? static_cast<const char*>(data) : "";
-      if (event == vtkCommand::ErrorEvent)
-      {
-        self->Errors += text;
-        ++self->NumErrors;
-      }
-      else
-      {
-        self->Warnings += text;
-        ++self->NumWarnings;
-      }
-    });
-    object->AddObserver(vtkCommand::ErrorEvent, cb);
-    object->AddObserver(vtkCommand::WarningEvent, cb);
-  }
-};
+using subdtest::Messages;
 
 vtkSmartPointer<vtkPolyData> MakeMesh(const std::vector<double>& xyz, const std::vector<std::vector<vtkIdType>>& faces)
 {

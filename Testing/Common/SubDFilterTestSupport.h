@@ -1,0 +1,68 @@
+// Helpers shared by the filter tests: message capture and test meshes as vtkPolyData.
+#ifndef SubDFilterTestSupport_h
+#define SubDFilterTestSupport_h
+
+#include "SubDTestMeshes.h"
+
+#include "vtkCallbackCommand.h"
+#include "vtkCellArray.h"
+#include "vtkCommand.h"
+#include "vtkNew.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <string>
+
+namespace subdtest
+{
+// Records error and warning messages of an algorithm.
+struct Messages
+{
+  std::string Errors, Warnings;
+  int NumErrors = 0, NumWarnings = 0;
+  void Watch(vtkObject* object)
+  {
+    vtkNew<vtkCallbackCommand> cb;
+    cb->SetClientData(this);
+    cb->SetCallback([](vtkObject*, unsigned long event, void* client, void* data) {
+      auto* self = static_cast<Messages*>(client);
+      const std::string text = data ? static_cast<const char*>(data) : "";
+      if (event == vtkCommand::ErrorEvent)
+      {
+        self->Errors += text;
+        ++self->NumErrors;
+      }
+      else
+      {
+        self->Warnings += text;
+        ++self->NumWarnings;
+      }
+    });
+    object->AddObserver(vtkCommand::ErrorEvent, cb);
+    object->AddObserver(vtkCommand::WarningEvent, cb);
+  }
+};
+
+/// A fixture mesh as vtkPolyData (double points, one polygon per face).
+inline vtkSmartPointer<vtkPolyData> ToPolyData(const TestMesh& mesh)
+{
+  auto poly = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (subd::Index v = 0; v < mesh.NumVertices(); ++v)
+    points->InsertNextPoint(&mesh.Points[3 * v]);
+  vtkNew<vtkCellArray> polys;
+  for (subd::Index f = 0; f < mesh.NumFaces(); ++f)
+  {
+    polys->InsertNextCell(mesh.Offsets[f + 1] - mesh.Offsets[f]);
+    for (subd::Index k = mesh.Offsets[f]; k < mesh.Offsets[f + 1]; ++k)
+      polys->InsertCellPoint(mesh.Vertices[k]);
+  }
+  poly->SetPoints(points);
+  poly->SetPolys(polys);
+  return poly;
+}
+}
+
+#endif

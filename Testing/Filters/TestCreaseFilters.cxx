@@ -1,0 +1,453 @@
+// Filter tests of sharp features: crease lines with "Sharpness", "CornerSharpness",
+// "Hole", automatic creases; the refined crease lines in the output (chaining one-level
+// filters equals one N-level filter, sharpness decay per level); the closed form of an
+// infinitely sharp crease (the cubic B-spline of its polyline); bad input.
+#include "vtkSubDButterflyFilter.h"
+#include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDLinearFilter.h"
+#include "vtkSubDLoopFilter.h"
+
+#include "SubDFilterTestSupport.h"
+
+#include "vtkCellData.h"
+#include "vtkFloatArray.h"
+#include "vtkIntArray.h"
+#include "vtkPointData.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace
+{
+using subdtest::Messages;
+using subdtest::ToPolyData;
+
+// The 6 x 5 torus fixture: vertex (i, j) is (i mod 6) + 6 (j mod 5).
+vtkIdType TorusVertex(int i, int j)
+{
+  return (i % 6) + 6 * (j % 5);
+}
+
+subdtest::TestMesh Torus(bool triangles)
+{
+  subdtest::TestMesh torus = subdtest::Grid(6, 5, true, true).Jitter(0.05);
+  return triangles ? torus.Triangulated() : torus;
+}
+
+// Adds crease lines (one 2-point line per pair) with a "Sharpness" array (unless empty).
+void AddCreases(vtkPolyData* mesh, const std::vector<std::array<vtkIdType, 2>>& edges,
+  const std::vector<float>& sharpness)
+{
+  vtkNew<vtkCellArray> lines;
+  for (const auto& e : edges)
+    lines->InsertNextCell(2, e.data());
+  mesh->SetLines(lines);
+  if (!sharpness.empty())
+  {
+    vtkNew<vtkFloatArray> s;
+    s->SetName("Sharpness");
+    s->SetNumberOfTuples(mesh->GetNumberOfCells());
+    s->Fill(0.0);
+    for (size_t i = 0; i < sharpness.size(); ++i)
+      s->SetValue(static_cast<vtkIdType>(i), sharpness[i]); // lines come first in cell order
+    mesh->GetCellData()->AddArray(s);
+  }
+}
+
+void AddCornerSharpness(vtkPolyData* mesh, const std::map<vtkIdType, float>& corners)
+{
+  vtkNew<vtkFloatArray> s;
+  s->SetName("CornerSharpness");
+  s->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  s->Fill(0.0);
+  for (const auto& c : corners)
+    s->SetValue(c.first, c.second);
+  mesh->GetPointData()->AddArray(s);
+}
+
+// A torus with a crease of varying semi-sharp sharpness, a crease loop, a branch, and
+// semi-sharp corners.
+vtkSmartPointer<vtkPolyData> CreasedTorus(bool triangles)
+{
+  vtkSmartPointer<vtkPolyData> mesh = ToPolyData(Torus(triangles));
+  std::vector<std::array<vtkIdType, 2>> edges;
+  std::vector<float> sharpness;
+  const float along[] = { 0.5f, 1.5f, 2.5f, 3.7f };
+  for (int i = 0; i < 4; ++i)
+  {
+    edges.push_back({ TorusVertex(i, 1), TorusVertex(i + 1, 1) });
+    sharpness.push_back(along[i]);
+  }
+  const float loop[] = { 0.3f, 1.2f, 2.7f, 0.8f, 4.1f, 10.0f };
+  for (int i = 0; i < 6; ++i)
+  {
+    edges.push_back({ TorusVertex(i, 3), TorusVertex(i + 1, 3) });
+    sharpness.push_back(loop[i]);
+  }
+  edges.push_back({ TorusVertex(2, 3), TorusVertex(2, 4) });
+  sharpness.push_back(1.4f);
+  AddCreases(mesh, edges, sharpness);
+  AddCornerSharpness(mesh, { { TorusVertex(4, 0), 2.6f }, { TorusVertex(1, 1), 0.4f } });
+  return mesh;
+}
+
+template <typename Filter>
+vtkSmartPointer<vtkPolyData> Subdivide(vtkPolyData* input, int levels, int creaseMethod = 0, Messages* messages = nullptr)
+{
+  vtkNew<Filter> filter;
+  if (messages)
+    messages->Watch(filter);
+  filter->SetInputData(input);
+  filter->SetNumberOfSubdivisions(levels);
+  filter->SetCreaseMethod(creaseMethod);
+  filter->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(filter->GetOutput());
+  return out;
+}
+
+// The crease lines of a filter output as a map from sorted point pair to sharpness.
+std::map<std::pair<vtkIdType, vtkIdType>, float> CreaseLines(vtkPolyData* mesh)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, float> lines;
+  vtkDataArray* sharpness = mesh->GetCellData()->GetArray("Sharpness");
+  vtkCellArray* cells = mesh->GetLines();
+  if (!cells)
+    return lines;
+  vtkIdType n;
+  const vtkIdType* pts;
+  vtkIdType cell = mesh->GetNumberOfVerts();
+  for (cells->InitTraversal(); cells->GetNextCell(n, pts); ++cell)
+  {
+    EXPECT_EQ(n, 2);
+    EXPECT_NE(sharpness, nullptr);
+    lines[{ std::min(pts[0], pts[1]), std::max(pts[0], pts[1]) }] =
+      sharpness ? static_cast<float>(sharpness->GetComponent(cell, 0)) : -1.0f;
+  }
+  return lines;
+}
+
+template <typename Filter>
+class CreaseChaining : public ::testing::Test
+{
+};
+using PrimalFilters = ::testing::Types<vtkSubDCatmullClarkFilter, vtkSubDLoopFilter,
+  vtkSubDButterflyFilter, vtkSubDLinearFilter>;
+TYPED_TEST_SUITE(CreaseChaining, PrimalFilters);
+
+// Three filters of one level each give the same surface, crease lines and corner sharpness
+// as one filter of three levels, for both crease methods.
+TYPED_TEST(CreaseChaining, ThreeOneLevelFiltersEqualOneThreeLevelFilter)
+{
+  const bool triangles = !std::is_same<TypeParam, vtkSubDCatmullClarkFilter>::value;
+  for (int method : { 0, 1 })
+  {
+    vtkSmartPointer<vtkPolyData> input = CreasedTorus(triangles);
+    vtkSmartPointer<vtkPolyData> once = Subdivide<TypeParam>(input, 3, method);
+    vtkSmartPointer<vtkPolyData> chained = input;
+    for (int l = 0; l < 3; ++l)
+      chained = Subdivide<TypeParam>(chained, 1, method);
+
+    ASSERT_GT(once->GetNumberOfPolys(), 0);
+    ASSERT_EQ(once->GetNumberOfPoints(), chained->GetNumberOfPoints());
+    ASSERT_EQ(once->GetNumberOfPolys(), chained->GetNumberOfPolys());
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < once->GetNumberOfPoints(); ++i)
+    {
+      double a[3], b[3];
+      once->GetPoint(i, a);
+      chained->GetPoint(i, b);
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(a[c] - b[c]));
+    }
+    EXPECT_LE(worst, 1e-12) << "crease method " << method;
+    vtkIdType n1, n2;
+    const vtkIdType *p1, *p2;
+    once->GetPolys()->InitTraversal();
+    chained->GetPolys()->InitTraversal();
+    while (once->GetPolys()->GetNextCell(n1, p1))
+    {
+      ASSERT_TRUE(chained->GetPolys()->GetNextCell(n2, p2));
+      ASSERT_EQ(n1, n2);
+      EXPECT_TRUE(std::equal(p1, p1 + n1, p2));
+    }
+    const auto linesOnce = CreaseLines(once);
+    EXPECT_FALSE(linesOnce.empty());
+    EXPECT_EQ(linesOnce, CreaseLines(chained)) << "crease method " << method;
+    vtkDataArray* cornersOnce = once->GetPointData()->GetArray("CornerSharpness");
+    vtkDataArray* cornersChained = chained->GetPointData()->GetArray("CornerSharpness");
+    ASSERT_NE(cornersOnce, nullptr);
+    ASSERT_NE(cornersChained, nullptr);
+    for (vtkIdType i = 0; i < once->GetNumberOfPoints(); ++i)
+      EXPECT_EQ(cornersOnce->GetComponent(i, 0), cornersChained->GetComponent(i, 0));
+  }
+}
+
+// Uniform creasing: each level halves every crease edge and takes one unit of sharpness
+// off it, and off each corner; what reaches zero disappears.
+TEST(CreaseOutput, SharpnessDecaysOneUnitPerLevel)
+{
+  vtkSmartPointer<vtkPolyData> input = ToPolyData(subdtest::Cube());
+  AddCreases(input, { { 0, 1 } }, { 2.5f });
+  AddCornerSharpness(input, { { 5, 1.5f } });
+  const std::map<int, std::pair<size_t, float>> expected = { { 0, { 1, 2.5f } }, { 1, { 2, 1.5f } },
+    { 2, { 4, 0.5f } }, { 3, { 0, 0.0f } } };
+  for (const auto& level : expected)
+  {
+    vtkSmartPointer<vtkPolyData> out = Subdivide<vtkSubDCatmullClarkFilter>(input, level.first);
+    const auto lines = CreaseLines(out);
+    EXPECT_EQ(lines.size(), level.second.first) << "level " << level.first;
+    for (const auto& line : lines)
+      EXPECT_FLOAT_EQ(line.second, level.second.second) << "level " << level.first;
+    vtkDataArray* corners = out->GetPointData()->GetArray("CornerSharpness");
+    ASSERT_NE(corners, nullptr);
+    double largest = 0.0;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+      largest = std::max(largest, corners->GetComponent(i, 0));
+    EXPECT_FLOAT_EQ(largest, std::max(0.0, 1.5 - level.first)) << "level " << level.first;
+  }
+}
+
+// With AutomaticCreases a cube's 12 edges (90 degrees) are creases; a finer feature angle
+// than the dihedral angles of a smooth surface tags nothing.
+TEST(CreaseOutput, FeatureAngleTagsExactlyTheCubesEdges)
+{
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(ToPolyData(subdtest::Cube()));
+  filter->AutomaticCreasesOn();
+  filter->SetFeatureAngle(30.0);
+  filter->SetNumberOfSubdivisions(0);
+  filter->Update();
+  const auto lines = CreaseLines(filter->GetOutput());
+  EXPECT_EQ(lines.size(), 12u);
+  for (const auto& line : lines)
+    EXPECT_EQ(line.second, 10.0f);
+  filter->SetNumberOfSubdivisions(2);
+  filter->Update();
+  EXPECT_EQ(CreaseLines(filter->GetOutput()).size(), 48u);
+  // A sharp cube stays a cube: every output point lies on the cube's surface.
+  vtkPolyData* out = filter->GetOutput();
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    const double onFace = std::min({ std::abs(p[0]), std::abs(1 - p[0]), std::abs(p[1]), std::abs(1 - p[1]),
+      std::abs(p[2]), std::abs(1 - p[2]) });
+    EXPECT_LE(onFace, 1e-12) << "point " << i;
+  }
+  filter->SetFeatureAngle(91.0);
+  filter->Update();
+  EXPECT_TRUE(CreaseLines(filter->GetOutput()).empty());
+}
+
+// The uniform cubic B-spline of a closed control polygon at parameter t (unit knot spacing,
+// control point i at t = i).
+std::array<double, 3> ClosedCubicBSpline(const std::vector<std::array<double, 3>>& p, double t)
+{
+  const int n = static_cast<int>(p.size());
+  const int i = static_cast<int>(std::floor(t));
+  const double u = t - i;
+  const double b[4] = { (1 - u) * (1 - u) * (1 - u) / 6, (3 * u * u * u - 6 * u * u + 4) / 6,
+    (-3 * u * u * u + 3 * u * u + 3 * u + 1) / 6, u * u * u / 6 };
+  std::array<double, 3> c{ 0, 0, 0 };
+  for (int k = 0; k < 4; ++k)
+    for (int d = 0; d < 3; ++d)
+      c[d] += b[k] * p[((i - 1 + k) % n + n) % n][d];
+  return c;
+}
+
+template <typename Filter>
+void CheckCreaseFollowsCubicBSpline(bool triangles)
+{
+  const subdtest::TestMesh torus = Torus(triangles);
+  vtkSmartPointer<vtkPolyData> input = ToPolyData(torus);
+  std::vector<std::array<vtkIdType, 2>> ring;
+  std::vector<std::array<double, 3>> control;
+  for (int i = 0; i < 6; ++i)
+  {
+    ring.push_back({ TorusVertex(i, 2), TorusVertex(i + 1, 2) });
+    control.push_back({ torus.Points[3 * TorusVertex(i, 2)], torus.Points[3 * TorusVertex(i, 2) + 1],
+      torus.Points[3 * TorusVertex(i, 2) + 2] });
+  }
+  AddCreases(input, ring, {}); // no Sharpness array: infinitely sharp
+  const int levels = 3;
+  vtkSmartPointer<vtkPolyData> out = Subdivide<Filter>(input, levels);
+  // Walk the crease lines around the ring.
+  std::map<vtkIdType, std::vector<vtkIdType>> next;
+  for (const auto& line : CreaseLines(out))
+  {
+    next[line.first.first].push_back(line.first.second);
+    next[line.first.second].push_back(line.first.first);
+  }
+  const size_t count = 6u << levels;
+  ASSERT_EQ(next.size(), count);
+  std::vector<vtkIdType> order{ next.begin()->first };
+  while (order.size() < count)
+  {
+    const auto& around = next[order.back()];
+    ASSERT_EQ(around.size(), 2u);
+    order.push_back(order.size() > 1 && around[0] == order[order.size() - 2] ? around[1] : around[0]);
+  }
+  // The limit mask (1 4 1)/6 of the level-k polygon gives the curve at t = j / 2^k, up to
+  // where the walk started and its direction.
+  std::vector<std::array<double, 3>> limit(count);
+  for (size_t j = 0; j < count; ++j)
+  {
+    double a[3], b[3], c[3];
+    out->GetPoint(order[(j + count - 1) % count], a);
+    out->GetPoint(order[j], b);
+    out->GetPoint(order[(j + 1) % count], c);
+    for (int d = 0; d < 3; ++d)
+      limit[j][d] = (a[d] + 4 * b[d] + c[d]) / 6;
+  }
+  double best = std::numeric_limits<double>::max();
+  for (size_t start = 0; start < count; ++start)
+    for (int direction : { 1, -1 })
+    {
+      double worst = 0.0;
+      for (size_t j = 0; j < count; ++j)
+      {
+        const std::array<double, 3> curve = ClosedCubicBSpline(control, static_cast<double>(j) / (1 << levels));
+        const auto& mine = limit[(start + direction * static_cast<long>(j) + 2 * count) % count];
+        for (int d = 0; d < 3; ++d)
+          worst = std::max(worst, std::abs(curve[d] - mine[d]));
+      }
+      best = std::min(best, worst);
+    }
+  EXPECT_LE(best, 1e-12);
+}
+
+TEST(CreaseClosedForm, InfinitelySharpCreaseIsTheCubicBSplineOfItsPolylineCatmullClark)
+{
+  CheckCreaseFollowsCubicBSpline<vtkSubDCatmullClarkFilter>(false);
+}
+
+TEST(CreaseClosedForm, InfinitelySharpCreaseIsTheCubicBSplineOfItsPolylineLoop)
+{
+  CheckCreaseFollowsCubicBSpline<vtkSubDLoopFilter>(true);
+}
+
+TEST(CreaseInput, LineThatIsNotAnEdgeIsWarnedAndPassedThrough)
+{
+  vtkSmartPointer<vtkPolyData> input = ToPolyData(subdtest::Cube());
+  AddCreases(input, { { 0, 1 }, { 0, 6 } }, { 10.0f, 3.0f }); // 0-6 crosses the cube
+  Messages messages;
+  vtkSmartPointer<vtkPolyData> out = Subdivide<vtkSubDCatmullClarkFilter>(input, 1, 0, &messages);
+  EXPECT_EQ(messages.NumErrors, 0);
+  EXPECT_NE(messages.Warnings.find("not edges of the surface"), std::string::npos) << messages.Warnings;
+  EXPECT_NE(messages.Warnings.find("(0, 6)"), std::string::npos) << messages.Warnings;
+  const auto lines = CreaseLines(out);
+  ASSERT_EQ(lines.size(), 3u); // two halves of 0-1, and 0-6 unchanged
+  bool passedThrough = false;
+  for (const auto& line : lines)
+  {
+    double a[3], b[3], p0[3], p6[3];
+    out->GetPoint(line.first.first, a);
+    out->GetPoint(line.first.second, b);
+    input->GetPoint(0, p0);
+    input->GetPoint(6, p6);
+    if (line.second == 3.0f)
+    {
+      passedThrough = true;
+      EXPECT_TRUE((std::equal(a, a + 3, p0) && std::equal(b, b + 3, p6)) ||
+        (std::equal(a, a + 3, p6) && std::equal(b, b + 3, p0)));
+    }
+  }
+  EXPECT_TRUE(passedThrough);
+}
+
+TEST(CreaseInput, NegativeOrNaNSharpnessIsAnErrorNamingTheCell)
+{
+  for (float bad : { -1.0f, std::numeric_limits<float>::quiet_NaN() })
+  {
+    vtkSmartPointer<vtkPolyData> input = ToPolyData(subdtest::Cube());
+    AddCreases(input, { { 0, 1 }, { 1, 2 } }, { 1.0f, bad });
+    Messages messages;
+    vtkSmartPointer<vtkPolyData> out = Subdivide<vtkSubDCatmullClarkFilter>(input, 1, 0, &messages);
+    EXPECT_EQ(messages.NumErrors, 1);
+    EXPECT_NE(messages.Errors.find("Line cell 1"), std::string::npos) << messages.Errors;
+    EXPECT_EQ(out->GetNumberOfPoints(), 0);
+  }
+  vtkSmartPointer<vtkPolyData> input = ToPolyData(subdtest::Cube());
+  AddCornerSharpness(input, { { 3, -2.0f } });
+  Messages messages;
+  vtkSmartPointer<vtkPolyData> out = Subdivide<vtkSubDCatmullClarkFilter>(input, 1, 0, &messages);
+  EXPECT_NE(messages.Errors.find("Point 3"), std::string::npos) << messages.Errors;
+  EXPECT_EQ(out->GetNumberOfPoints(), 0);
+}
+
+// Boundary edges are infinitely sharp already: a crease on one changes nothing.
+TEST(CreaseInput, SharpnessOnABoundaryEdgeIsANoOp)
+{
+  vtkSmartPointer<vtkPolyData> plain = ToPolyData(subdtest::Grid(4, 3, false, false).Jitter(0.1));
+  vtkSmartPointer<vtkPolyData> tagged = ToPolyData(subdtest::Grid(4, 3, false, false).Jitter(0.1));
+  AddCreases(tagged, { { 0, 1 }, { 1, 2 } }, { 0.5f, 2.0f });
+  vtkSmartPointer<vtkPolyData> a = Subdivide<vtkSubDCatmullClarkFilter>(plain, 2);
+  vtkSmartPointer<vtkPolyData> b = Subdivide<vtkSubDCatmullClarkFilter>(tagged, 2);
+  ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    a->GetPoint(i, p);
+    b->GetPoint(i, q);
+    EXPECT_TRUE(std::equal(p, p + 3, q)) << "point " << i;
+  }
+  EXPECT_TRUE(CreaseLines(b).empty()); // boundary edges are not repeated as crease lines
+}
+
+// Hole faces are not output; their neighbours' points are unchanged (holes shape the
+// surface, as in OpenSubdiv).
+TEST(CreaseInput, HoleFacesAreNotOutput)
+{
+  vtkSmartPointer<vtkPolyData> plain = ToPolyData(Torus(false));
+  vtkSmartPointer<vtkPolyData> holed = ToPolyData(Torus(false));
+  vtkNew<vtkIntArray> hole;
+  hole->SetName("Hole");
+  hole->SetNumberOfTuples(holed->GetNumberOfCells());
+  hole->Fill(0);
+  hole->SetValue(7, 1);
+  holed->GetCellData()->AddArray(hole);
+  vtkSmartPointer<vtkPolyData> a = Subdivide<vtkSubDCatmullClarkFilter>(plain, 2);
+  vtkSmartPointer<vtkPolyData> b = Subdivide<vtkSubDCatmullClarkFilter>(holed, 2);
+  EXPECT_EQ(b->GetNumberOfPolys(), a->GetNumberOfPolys() - 16);
+  // Every point of the holed output is a point of the plain output.
+  std::set<std::array<double, 3>> plainPoints;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p;
+    a->GetPoint(i, p.data());
+    plainPoints.insert(p);
+  }
+  for (vtkIdType i = 0; i < b->GetNumberOfPoints(); ++i)
+  {
+    std::array<double, 3> p;
+    b->GetPoint(i, p.data());
+    EXPECT_EQ(plainPoints.count(p), 1u) << "point " << i;
+  }
+}
+
+// Stencils are reused while creases stay the same, rebuilt when a sharpness changes.
+TEST(CreaseInput, ChangedSharpnessRebuildsTheStencils)
+{
+  vtkSmartPointer<vtkPolyData> input = ToPolyData(subdtest::Cube());
+  AddCreases(input, { { 0, 1 } }, { 2.0f });
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(input);
+  filter->Update();
+  double before[3];
+  filter->GetOutput()->GetPoint(filter->GetOutput()->GetNumberOfPoints() - 1, before);
+  input->Modified();
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 1);
+  vtkFloatArray::SafeDownCast(input->GetCellData()->GetArray("Sharpness"))->SetValue(0, 0.0f);
+  input->Modified();
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 2);
+  EXPECT_TRUE(CreaseLines(filter->GetOutput()).empty());
+}
+}
