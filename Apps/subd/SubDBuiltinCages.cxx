@@ -1,6 +1,9 @@
 #include "SubDBuiltinCages.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkFloatArray.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
@@ -35,6 +38,30 @@ vtkSmartPointer<vtkPolyData> Cube()
 {
   return MakePolyData({ 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1 },
     { { 0, 3, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 }, { 3, 0, 4, 7 } });
+}
+
+// The cube with a semi-sharp crease loop around its top face (sharpness 2.5, so it
+// softens after a few levels) and an infinitely sharp corner at the bottom.
+vtkSmartPointer<vtkPolyData> CreasedCube()
+{
+  vtkSmartPointer<vtkPolyData> mesh = Cube();
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType top[] = { 4, 5, 6, 7, 4 };
+  lines->InsertNextCell(5, top);
+  mesh->SetLines(lines);
+  vtkNew<vtkFloatArray> sharpness;
+  sharpness->SetName("Sharpness");
+  sharpness->SetNumberOfTuples(mesh->GetNumberOfCells());
+  sharpness->Fill(0.0);
+  sharpness->SetValue(0, 2.5f); // the line is cell 0: lines come before polygons
+  mesh->GetCellData()->AddArray(sharpness);
+  vtkNew<vtkFloatArray> corners;
+  corners->SetName("CornerSharpness");
+  corners->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  corners->Fill(0.0);
+  corners->SetValue(0, 10.0f);
+  mesh->GetPointData()->AddArray(corners);
+  return mesh;
 }
 
 // A square pyramid: a quad base and four triangles, an apex of valence 4 and base vertices
@@ -73,7 +100,7 @@ vtkSmartPointer<vtkPolyData> OpenGrid()
 
 std::vector<std::string> BuiltinCageNames()
 {
-  return { "cube", "pyramid", "open-grid" };
+  return { "cube", "creased-cube", "pyramid", "open-grid" };
 }
 
 vtkSmartPointer<vtkPolyData> MakeBuiltinCage(const std::string& name)
@@ -81,6 +108,10 @@ vtkSmartPointer<vtkPolyData> MakeBuiltinCage(const std::string& name)
   if (name == "cube")
   {
     return Cube();
+  }
+  if (name == "creased-cube")
+  {
+    return CreasedCube();
   }
   if (name == "pyramid")
   {

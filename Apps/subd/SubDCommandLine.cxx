@@ -60,7 +60,7 @@ std::string UsageText()
 {
   std::ostringstream out;
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
-         "            [--output FILE]\n"
+         "            [--crease-method METHOD] [--feature-angle DEG] [--output FILE]\n"
          "\n"
          "Subdivides the polygon mesh INPUT (" << SupportedExtensions() << ") and writes the\n"
          "result; the formats are chosen by the file extensions. Without INPUT, a built-in\n"
@@ -78,6 +78,16 @@ std::string UsageText()
          "                       edge-only: boundary edges are sharp creases\n"
          "                       edge-and-corner: also pin vertices that have a single face\n"
          "  --tension W        butterfly tension in [-0.0625, 0.0625] (default 0: 8-point butterfly)\n"
+         "  --crease-method M  how semi-sharp creases decay (default uniform):\n"
+         "                       uniform: one unit of sharpness per level\n"
+         "                       chaikin: averaged along the crease first (OpenSubdiv's Chaikin)\n"
+         "  --feature-angle D  edges whose faces meet at more than D degrees become sharp creases\n"
+         "\n"
+         "Creases come with the input: in .vtp/.vtk as line cells with the cell array\n"
+         "\"Sharpness\" (0 smooth .. 10 infinitely sharp), \"CornerSharpness\" point data and\n"
+         "\"Hole\" cell data; in .obj as OpenSubdiv's tags (t crease, t corner, t hole). The\n"
+         "output carries the refined creases the same way (.obj, .vtp and .vtk keep them).\n"
+         "\n"
          "  --builtin NAME     built-in cage when there is no INPUT:";
   for (const std::string& name : BuiltinCageNames())
   {
@@ -174,6 +184,32 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
         return false;
       }
       cmd.TensionGiven = true;
+    }
+    else if (arg == "--crease-method")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      if (text != "uniform" && text != "chaikin")
+      {
+        error = "--crease-method wants uniform or chaikin, not '" + text + "'";
+        return false;
+      }
+      cmd.Options.CreaseMethod = text == "chaikin" ? 1 : 0;
+    }
+    else if (arg == "--feature-angle")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      if (!ParseDouble(text, cmd.Options.FeatureAngle) || cmd.Options.FeatureAngle <= 0.0 ||
+        cmd.Options.FeatureAngle > 180.0)
+      {
+        error = "--feature-angle wants degrees in (0, 180], not '" + text + "'";
+        return false;
+      }
     }
     else if (arg == "--builtin")
     {

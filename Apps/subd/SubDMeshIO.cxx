@@ -2,8 +2,6 @@
 
 #include "SubDMessageCollector.h"
 #include "vtkAlgorithm.h"
-#include "vtkOBJReader.h"
-#include "vtkOBJWriter.h"
 #include "vtkPLYReader.h"
 #include "vtkPLYWriter.h"
 #include "vtkPolyData.h"
@@ -11,6 +9,8 @@
 #include "vtkPolyDataWriter.h"
 #include "vtkSTLReader.h"
 #include "vtkSTLWriter.h"
+#include "vtkSubDOBJReader.h"
+#include "vtkSubDOBJWriter.h"
 #include "vtkSubDOFFReader.h"
 #include "vtkSubDOFFWriter.h"
 #include "vtkTriangleFilter.h"
@@ -100,7 +100,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& erro
   }
   if (ext == ".obj")
   {
-    return RunReader<vtkOBJReader>(path, error);
+    return RunReader<vtkSubDOBJReader>(path, error);
   }
   if (ext == ".ply")
   {
@@ -145,7 +145,7 @@ vtkSmartPointer<vtkAlgorithm> MakeWriter(const std::string& ext, const std::stri
   }
   if (ext == ".obj")
   {
-    return NewWriter<vtkOBJWriter>(fileName);
+    return NewWriter<vtkSubDOBJWriter>(fileName);
   }
   if (ext == ".ply")
   {

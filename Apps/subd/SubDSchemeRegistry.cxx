@@ -13,19 +13,29 @@ namespace subdapp
 namespace
 {
 template <typename Filter>
-vtkSmartPointer<vtkPolyDataAlgorithm> MakeSurfaceFilter(const SchemeOptions& options)
+vtkSmartPointer<Filter> NewSurfaceFilter(const SchemeOptions& options)
 {
   auto filter = vtkSmartPointer<Filter>::New();
   filter->SetNumberOfSubdivisions(options.Levels);
   filter->SetBoundaryRule(options.BoundaryRule);
+  filter->SetCreaseMethod(options.CreaseMethod);
+  filter->SetAutomaticCreases(options.FeatureAngle > 0.0);
+  if (options.FeatureAngle > 0.0)
+  {
+    filter->SetFeatureAngle(options.FeatureAngle);
+  }
   return filter;
+}
+
+template <typename Filter>
+vtkSmartPointer<vtkPolyDataAlgorithm> MakeSurfaceFilter(const SchemeOptions& options)
+{
+  return NewSurfaceFilter<Filter>(options);
 }
 
 vtkSmartPointer<vtkPolyDataAlgorithm> MakeButterfly(const SchemeOptions& options)
 {
-  auto filter = vtkSmartPointer<vtkSubDButterflyFilter>::New();
-  filter->SetNumberOfSubdivisions(options.Levels);
-  filter->SetBoundaryRule(options.BoundaryRule);
+  auto filter = NewSurfaceFilter<vtkSubDButterflyFilter>(options);
   filter->SetTension(options.Tension);
   return filter;
 }

@@ -15,6 +15,8 @@ struct SchemeOptions
   int Levels = 2;
   int BoundaryRule = 1; // vtkSubDSurfaceFilter::BOUNDARY_EDGE_ONLY
   double Tension = 0.0; // butterfly only
+  int CreaseMethod = 0;      // vtkSubDSurfaceFilter::CREASE_UNIFORM
+  double FeatureAngle = 0.0; // > 0: edges sharper than this (degrees) become creases
 };
 
 struct SchemeEntry

@@ -164,8 +164,12 @@ int main(int argc, char* argv[])
     std::cout << "subd: " << inputName << " (" << input->GetNumberOfPoints() << " points, "
               << input->GetNumberOfPolys() + input->GetNumberOfStrips() << " faces) -> " << cmd.Scheme
               << ", " << cmd.Options.Levels << " level(s) -> " << result->GetNumberOfPoints()
-              << " points, " << result->GetNumberOfPolys() << " faces in " << seconds << " s -> "
-              << output << "\n";
+              << " points, " << result->GetNumberOfPolys() << " faces";
+    if (result->GetNumberOfLines() > 0)
+    {
+      std::cout << ", " << result->GetNumberOfLines() << " crease edges";
+    }
+    std::cout << " in " << seconds << " s -> " << output << "\n";
   }
   return 0;
 }

@@ -5,6 +5,7 @@
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
+#include "vtkSubDStripTriangles.h"
 #include "vtksys/FStream.hxx"
 
 #include <iomanip>
@@ -50,14 +51,10 @@ void vtkSubDOFFWriter::WriteData()
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
     return;
   }
-  vtkIdType numTriangles = 0;
+  vtkCellArray* strips = input->GetStrips();
+  const vtkIdType numTriangles = vtkSubDCountStripTriangles(strips);
   vtkIdType n;
   const vtkIdType* pts;
-  vtkCellArray* strips = input->GetStrips();
-  for (strips->InitTraversal(); strips->GetNextCell(n, pts);)
-  {
-    numTriangles += n > 2 ? n - 2 : 0;
-  }
   const vtkIdType numPoints = input->GetNumberOfPoints();
   file << "OFF\n" << numPoints << ' ' << input->GetNumberOfPolys() + numTriangles << " 0\n";
   file << std::setprecision(17);
@@ -77,15 +74,9 @@ void vtkSubDOFFWriter::WriteData()
     }
     file << '\n';
   }
-  for (strips->InitTraversal(); strips->GetNextCell(n, pts);)
-  {
-    for (vtkIdType k = 0; k + 2 < n; ++k)
-    {
-      const bool even = (k % 2) == 0;
-      file << "3 " << (even ? pts[k] : pts[k + 1]) << ' ' << (even ? pts[k + 1] : pts[k]) << ' '
-           << pts[k + 2] << '\n';
-    }
-  }
+  vtkSubDForEachStripTriangle(strips, [&file](vtkIdType a, vtkIdType b, vtkIdType c) {
+    file << "3 " << a << ' ' << b << ' ' << c << '\n';
+  });
   file.flush();
   if (!file)
   {

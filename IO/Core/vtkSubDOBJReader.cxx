@@ -1,0 +1,376 @@
+#include "vtkSubDOBJReader.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkErrorCode.h"
+#include "vtkFloatArray.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtksys/FStream.hxx"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkSubDOBJReader);
+
+namespace
+{
+// The parsed file: everything is collected first, then checked and turned into VTK cells
+// (indices may refer to vertices defined later in the file).
+struct OBJContents
+{
+  std::vector<double> Points;
+  std::vector<std::vector<long>> Faces;         // 0-based
+  std::vector<std::vector<long>> Polylines;     // `l` elements, 0-based
+  std::vector<std::vector<long>> CreaseChains;  // from tags, 0-based
+  std::vector<float> ChainSharpness;
+  std::map<long, float> Corners;
+  std::set<long> Holes;
+  std::set<std::string> SkippedTags;
+};
+
+bool ParseLong(const std::string& token, long& value)
+{
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtol(token.c_str(), &end, 10);
+  return end != token.c_str() && errno != ERANGE;
+}
+
+bool ParseDouble(const std::string& token, double& value)
+{
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtod(token.c_str(), &end);
+  return end != token.c_str() && *end == '\0' && errno != ERANGE && std::isfinite(value);
+}
+
+bool ParseFloat(const std::string& token, float& value)
+{
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtof(token.c_str(), &end);
+  return end != token.c_str() && *end == '\0' && errno != ERANGE;
+}
+
+// An OBJ index (1-based, or negative: relative to the vertices read so far) to 0-based.
+bool ObjIndex(const std::string& token, long numPoints, long& index)
+{
+  long i;
+  if (!ParseLong(token, i) || i == 0)
+  {
+    return false;
+  }
+  index = i > 0 ? i - 1 : numPoints + i;
+  return true;
+}
+
+// Parses `t name nInts/nFloats/nStrings ints floats strings` into `contents`.
+std::string ParseTag(std::istringstream& in, OBJContents& contents)
+{
+  std::string name, counts;
+  in >> name >> counts;
+  long nInts = 0, nFloats = 0, nStrings = 0;
+  char s1 = 0, s2 = 0;
+  std::istringstream countStream(counts);
+  countStream >> nInts >> s1 >> nFloats >> s2 >> nStrings;
+  if (!countStream || s1 != '/' || s2 != '/' || nInts < 0 || nFloats < 0 || nStrings < 0)
+  {
+    return "tag '" + name + "' has counts '" + counts + "', expected nInts/nFloats/nStrings";
+  }
+  std::vector<long> ints(static_cast<size_t>(nInts));
+  std::vector<float> floats(static_cast<size_t>(nFloats));
+  std::string token;
+  for (long& v : ints)
+  {
+    if (!(in >> token) || !ParseLong(token, v))
+    {
+      return "tag '" + name + "' needs " + std::to_string(nInts) + " integer(s)";
+    }
+  }
+  for (float& v : floats)
+  {
+    if (!(in >> token) || !ParseFloat(token, v))
+    {
+      return "tag '" + name + "' needs " + std::to_string(nFloats) + " number(s)";
+    }
+  }
+  if (name == "crease")
+  {
+    if (nInts < 2 || (nFloats != 1 && nFloats != nInts - 1))
+    {
+      return "crease tag needs N >= 2 vertices and 1 or N-1 sharpness values, got " + counts;
+    }
+    if (nFloats == 1)
+    {
+      contents.CreaseChains.push_back(ints);
+      contents.ChainSharpness.push_back(floats[0]);
+    }
+    else
+    {
+      for (long k = 0; k + 1 < nInts; ++k)
+      {
+        contents.CreaseChains.push_back({ ints[k], ints[k + 1] });
+        contents.ChainSharpness.push_back(floats[k]);
+      }
+    }
+  }
+  else if (name == "corner")
+  {
+    if (nInts < 1 || (nFloats != 1 && nFloats != nInts))
+    {
+      return "corner tag needs N >= 1 vertices and 1 or N sharpness values, got " + counts;
+    }
+    for (long k = 0; k < nInts; ++k)
+    {
+      contents.Corners[ints[k]] = floats[nFloats == 1 ? 0 : k];
+    }
+  }
+  else if (name == "hole")
+  {
+    contents.Holes.insert(ints.begin(), ints.end());
+  }
+  else
+  {
+    contents.SkippedTags.insert(name);
+  }
+  return "";
+}
+}
+
+vtkSubDOBJReader::vtkSubDOBJReader()
+{
+  this->SetNumberOfInputPorts(0);
+}
+
+vtkSubDOBJReader::~vtkSubDOBJReader()
+{
+  this->SetFileName(nullptr);
+}
+
+int vtkSubDOBJReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  this->SetErrorCode(vtkErrorCode::NoError);
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No file name was set.");
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
+    return 0;
+  }
+  vtksys::ifstream file(this->FileName);
+  if (!file)
+  {
+    vtkErrorMacro("Cannot open '" << this->FileName << "'.");
+    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
+    return 0;
+  }
+  long lineNumber = 0;
+  auto fail = [&](const std::string& what) {
+    vtkErrorMacro("'" << this->FileName << "', line " << lineNumber << ": " << what);
+    output->Initialize();
+    this->SetErrorCode(vtkErrorCode::FileFormatError);
+    return 0;
+  };
+
+  OBJContents contents;
+  std::string line, keyword, token;
+  while (std::getline(file, line))
+  {
+    ++lineNumber;
+    const auto hash = line.find('#');
+    if (hash != std::string::npos)
+    {
+      line.erase(hash);
+    }
+    std::istringstream in(line);
+    if (!(in >> keyword))
+    {
+      continue;
+    }
+    if (keyword == "v")
+    {
+      double xyz[3];
+      for (double& c : xyz)
+      {
+        if (!(in >> token) || !ParseDouble(token, c))
+        {
+          return fail("a vertex needs 3 finite coordinates");
+        }
+      }
+      contents.Points.insert(contents.Points.end(), xyz, xyz + 3);
+    }
+    else if (keyword == "f" || keyword == "l")
+    {
+      std::vector<long> element;
+      const long numPoints = static_cast<long>(contents.Points.size() / 3);
+      while (in >> token)
+      {
+        long index;
+        if (!ObjIndex(token.substr(0, token.find('/')), numPoints, index))
+        {
+          return fail("'" + token + "' is not a vertex index");
+        }
+        element.push_back(index);
+      }
+      if (element.size() < (keyword == "f" ? 3u : 2u))
+      {
+        return fail(keyword == "f" ? "a face needs at least 3 vertices" : "a line needs at least 2 vertices");
+      }
+      (keyword == "f" ? contents.Faces : contents.Polylines).push_back(element);
+    }
+    else if (keyword == "t")
+    {
+      const std::string problem = ParseTag(in, contents);
+      if (!problem.empty())
+      {
+        return fail(problem);
+      }
+    }
+    // vt, vn, vp, g, o, s, usemtl, mtllib and the like carry nothing SubD uses.
+  }
+
+  // Check indices, then build the cells.
+  const long numPoints = static_cast<long>(contents.Points.size() / 3);
+  if (numPoints == 0)
+  {
+    lineNumber = 0;
+    return fail("no vertices");
+  }
+  auto checkAll = [numPoints](const std::vector<std::vector<long>>& cells, const char* what, std::string& error) {
+    for (size_t c = 0; c < cells.size(); ++c)
+    {
+      for (long v : cells[c])
+      {
+        if (v < 0 || v >= numPoints)
+        {
+          error = std::string(what) + " " + std::to_string(c) + " uses vertex " + std::to_string(v) +
+            " but the file has " + std::to_string(numPoints) + " vertices";
+          return false;
+        }
+      }
+    }
+    return true;
+  };
+  std::string error;
+  lineNumber = 0;
+  if (!checkAll(contents.Faces, "face", error) || !checkAll(contents.Polylines, "line", error) ||
+    !checkAll(contents.CreaseChains, "crease tag", error))
+  {
+    return fail(error);
+  }
+  for (const auto& corner : contents.Corners)
+  {
+    if (corner.first < 0 || corner.first >= numPoints)
+    {
+      return fail("corner tag names vertex " + std::to_string(corner.first) + " of " + std::to_string(numPoints));
+    }
+  }
+  for (long f : contents.Holes)
+  {
+    if (f < 0 || f >= static_cast<long>(contents.Faces.size()))
+    {
+      return fail("hole tag names face " + std::to_string(f) + " of " + std::to_string(contents.Faces.size()));
+    }
+  }
+
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numPoints);
+  for (long i = 0; i < numPoints; ++i)
+  {
+    points->SetPoint(i, &contents.Points[3 * i]);
+  }
+  auto toCells = [](const std::vector<std::vector<long>>& elements, vtkCellArray* cells) {
+    for (const auto& element : elements)
+    {
+      cells->InsertNextCell(static_cast<vtkIdType>(element.size()));
+      for (long v : element)
+      {
+        cells->InsertCellPoint(v);
+      }
+    }
+  };
+  vtkNew<vtkCellArray> polys, lines;
+  toCells(contents.Faces, polys);
+  toCells(contents.Polylines, lines);
+  toCells(contents.CreaseChains, lines);
+  output->SetPoints(points);
+  output->SetPolys(polys);
+  if (lines->GetNumberOfCells() > 0)
+  {
+    output->SetLines(lines);
+  }
+
+  // Cell order is lines (polylines, then crease tags), then faces.
+  const vtkIdType numLines = lines->GetNumberOfCells();
+  const vtkIdType numCells = numLines + polys->GetNumberOfCells();
+  if (!contents.CreaseChains.empty())
+  {
+    vtkNew<vtkFloatArray> sharpness;
+    sharpness->SetName("Sharpness");
+    sharpness->SetNumberOfTuples(numCells);
+    sharpness->Fill(0.0);
+    const vtkIdType numPolylines = static_cast<vtkIdType>(contents.Polylines.size());
+    for (vtkIdType c = 0; c < numPolylines; ++c)
+    {
+      sharpness->SetValue(c, 10.0f);
+    }
+    for (size_t c = 0; c < contents.ChainSharpness.size(); ++c)
+    {
+      sharpness->SetValue(numPolylines + static_cast<vtkIdType>(c), contents.ChainSharpness[c]);
+    }
+    output->GetCellData()->AddArray(sharpness);
+  }
+  if (!contents.Holes.empty())
+  {
+    vtkNew<vtkUnsignedCharArray> holes;
+    holes->SetName("Hole");
+    holes->SetNumberOfTuples(numCells);
+    holes->Fill(0);
+    for (long f : contents.Holes)
+    {
+      holes->SetValue(numLines + f, 1);
+    }
+    output->GetCellData()->AddArray(holes);
+  }
+  if (!contents.Corners.empty())
+  {
+    vtkNew<vtkFloatArray> corners;
+    corners->SetName("CornerSharpness");
+    corners->SetNumberOfTuples(numPoints);
+    corners->Fill(0.0);
+    for (const auto& corner : contents.Corners)
+    {
+      corners->SetValue(corner.first, corner.second);
+    }
+    output->GetPointData()->AddArray(corners);
+  }
+  if (!contents.SkippedTags.empty())
+  {
+    std::string names;
+    for (const std::string& name : contents.SkippedTags)
+    {
+      names += (names.empty() ? "" : ", ") + name;
+    }
+    vtkWarningMacro("'" << this->FileName << "': skipped tag(s) SubD does not use: " << names << ".");
+  }
+  return 1;
+}
+
+void vtkSubDOBJReader::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+}

@@ -1,0 +1,55 @@
+/**
+ * @class   vtkSubDOBJReader
+ * @brief   reads Wavefront OBJ polygon meshes with OpenSubdiv's sharp-feature tags
+ *
+ * Reads `v` (positions), `f` (polygons; `v`, `v/vt`, `v//vn` and `v/vt/vn` corners,
+ * 1-based or negative relative indices) and `l` (polylines) elements, and the tag lines
+ * OpenSubdiv's test shapes use for sharp features, `t name nInts/nFloats/nStrings args`
+ * with 0-based indices:
+ *
+ * - `t crease N/1/0 v0 ... vN-1 s`: a crease chain of N-1 edges of sharpness s (one polyline
+ *   line cell), or `t crease N/(N-1)/0 v0 ... vN-1 s0 ... sN-2`: one sharpness per edge (one
+ *   2-point line cell each);
+ * - `t corner N/1/0 v... s` or `t corner N/N/0 v... s...`: vertex sharpness;
+ * - `t hole N/0/0 f...`: faces that are holes.
+ *
+ * They become what SubD's surface filters read (vtkSubDSurfaceFilter): the crease lines in
+ * Lines with the float cell-data array "Sharpness" (`l` polylines are infinitely sharp,
+ * 10), the point-data array "CornerSharpness" and the cell-data array "Hole" (unsigned
+ * char). Each array exists only if the file tags something. Texture coordinates, normals,
+ * groups and materials are skipped; other tags are skipped with one warning naming them.
+ * Malformed lines and out-of-range indices are errors naming the line; the output is then
+ * empty and the error code set.
+ */
+#ifndef vtkSubDOBJReader_h
+#define vtkSubDOBJReader_h
+
+#include "SubDIOModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class SUBDIO_EXPORT vtkSubDOBJReader : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSubDOBJReader* New();
+  vtkTypeMacro(vtkSubDOBJReader, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Name of the file to read. */
+  vtkSetFilePathMacro(FileName);
+  vtkGetFilePathMacro(FileName);
+  ///@}
+
+protected:
+  vtkSubDOBJReader();
+  ~vtkSubDOBJReader() override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* FileName = nullptr;
+
+private:
+  vtkSubDOBJReader(const vtkSubDOBJReader&) = delete;
+  void operator=(const vtkSubDOBJReader&) = delete;
+};
+
+#endif

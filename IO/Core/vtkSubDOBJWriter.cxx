@@ -1,0 +1,149 @@
+#include "vtkSubDOBJWriter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkErrorCode.h"
+#include "vtkInformation.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSubDStripTriangles.h"
+#include "vtksys/FStream.hxx"
+
+#include <iomanip>
+#include <vector>
+
+vtkStandardNewMacro(vtkSubDOBJWriter);
+
+vtkSubDOBJWriter::vtkSubDOBJWriter() = default;
+
+vtkSubDOBJWriter::~vtkSubDOBJWriter()
+{
+  this->SetFileName(nullptr);
+}
+
+int vtkSubDOBJWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+void vtkSubDOBJWriter::WriteData()
+{
+  vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
+  if (!input)
+  {
+    vtkErrorMacro("No polydata to write.");
+    return;
+  }
+  if (!this->FileName || !*this->FileName)
+  {
+    vtkErrorMacro("No file name was set.");
+    this->SetErrorCode(vtkErrorCode::NoFileNameError);
+    return;
+  }
+  vtksys::ofstream file(this->FileName);
+  if (!file)
+  {
+    vtkErrorMacro("Cannot open '" << this->FileName << "' for writing.");
+    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
+    return;
+  }
+  file << "# written by SubD (sharp features as OpenSubdiv tags, 0-based)\n" << std::setprecision(17);
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  double p[3];
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    input->GetPoint(i, p);
+    file << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  }
+
+  // Faces: polygons then strip triangles; holes are numbered among them.
+  vtkDataArray* holes = input->GetCellData()->GetArray("Hole");
+  const vtkIdType firstPolyCell = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  std::vector<vtkIdType> holeFaces;
+  vtkIdType n;
+  const vtkIdType* pts;
+  vtkIdType face = 0;
+  vtkCellArray* polys = input->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts); ++face)
+  {
+    file << 'f';
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      file << ' ' << pts[k] + 1;
+    }
+    file << '\n';
+    if (holes && holes->GetComponent(firstPolyCell + face, 0) != 0.0)
+    {
+      holeFaces.push_back(face);
+    }
+  }
+  vtkSubDForEachStripTriangle(input->GetStrips(), [&file](vtkIdType a, vtkIdType b, vtkIdType c) {
+    file << "f " << a + 1 << ' ' << b + 1 << ' ' << c + 1 << '\n';
+  });
+
+  // Sharp features.
+  vtkDataArray* sharpness = input->GetCellData()->GetArray("Sharpness");
+  vtkIdType cell = input->GetNumberOfVerts();
+  vtkCellArray* lines = input->GetLines();
+  for (lines->InitTraversal(); lines->GetNextCell(n, pts); ++cell)
+  {
+    if (n < 2)
+    {
+      continue;
+    }
+    file << "t crease " << n << "/1/0";
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      file << ' ' << pts[k];
+    }
+    file << ' ' << (sharpness ? sharpness->GetComponent(cell, 0) : 10.0) << '\n';
+  }
+  if (vtkDataArray* corners = input->GetPointData()->GetArray("CornerSharpness"))
+  {
+    std::vector<vtkIdType> ids;
+    for (vtkIdType i = 0; i < numPoints; ++i)
+    {
+      if (corners->GetComponent(i, 0) != 0.0)
+      {
+        ids.push_back(i);
+      }
+    }
+    if (!ids.empty())
+    {
+      file << "t corner " << ids.size() << '/' << ids.size() << "/0";
+      for (vtkIdType i : ids)
+      {
+        file << ' ' << i;
+      }
+      for (vtkIdType i : ids)
+      {
+        file << ' ' << corners->GetComponent(i, 0);
+      }
+      file << '\n';
+    }
+  }
+  if (!holeFaces.empty())
+  {
+    file << "t hole " << holeFaces.size() << "/0/0";
+    for (vtkIdType f : holeFaces)
+    {
+      file << ' ' << f;
+    }
+    file << '\n';
+  }
+  file.flush();
+  if (!file)
+  {
+    vtkErrorMacro("Writing '" << this->FileName << "' failed (disk full?).");
+    this->SetErrorCode(vtkErrorCode::OutOfDiskSpaceError);
+  }
+}
+
+void vtkSubDOBJWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+}

@@ -1,0 +1,47 @@
+/**
+ * @class   vtkSubDOBJWriter
+ * @brief   writes polygon meshes as Wavefront OBJ with OpenSubdiv's sharp-feature tags
+ *
+ * Writes the points (`v`, full double precision) and polygons (`f`; triangle strips as
+ * triangles), and the sharp features SubD's filters use as the tags vtkSubDOBJReader
+ * reads (OpenSubdiv's convention, 0-based indices): each line cell as
+ * `t crease N/1/0 v0 ... vN-1 s` with its "Sharpness" (10, infinitely sharp, when the
+ * array is absent), non-zero "CornerSharpness" as one `t corner N/N/0` tag, and faces with a
+ * non-zero "Hole" as `t hole N/0/0`. Other attributes are not written (OBJ has no place
+ * for them). The file is written completely or an error is reported.
+ */
+#ifndef vtkSubDOBJWriter_h
+#define vtkSubDOBJWriter_h
+
+#include "SubDIOModule.h" // for export macro
+#include "vtkWriter.h"
+
+class vtkPolyData;
+
+class SUBDIO_EXPORT vtkSubDOBJWriter : public vtkWriter
+{
+public:
+  static vtkSubDOBJWriter* New();
+  vtkTypeMacro(vtkSubDOBJWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /** Name of the file to write. */
+  vtkSetFilePathMacro(FileName);
+  vtkGetFilePathMacro(FileName);
+  ///@}
+
+protected:
+  vtkSubDOBJWriter();
+  ~vtkSubDOBJWriter() override;
+  void WriteData() override;
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+
+  char* FileName = nullptr;
+
+private:
+  vtkSubDOBJWriter(const vtkSubDOBJWriter&) = delete;
+  void operator=(const vtkSubDOBJWriter&) = delete;
+};
+
+#endif
