@@ -1,6 +1,7 @@
 #include "SubDButterflyRules.h"
 #include "SubDTriangleSplit.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace subd
@@ -48,17 +49,21 @@ public:
   std::vector<std::pair<Index, double>> Entries;
 };
 
-// Rings of the interior manifold vertices: neighbours in counter-clockwise order.
+// Rings of the vertices that take the butterfly's interior rules: manifold, not on the
+// boundary, and on no crease (fewer than two sharp edges: a dart keeps its ring).
+// Neighbours in counter-clockwise order.
 class Rings
 {
 public:
-  explicit Rings(const MeshTopology& topo)
-    : Offsets(static_cast<size_t>(topo.GetNumVertices()) + 1, 0)
+  explicit Rings(const Level& level)
+    : Offsets(static_cast<size_t>(level.Topology.GetNumVertices()) + 1, 0)
   {
+    const MeshTopology& topo = level.Topology;
     std::vector<Index> faces, corners;
     for (Index v = 0; v < topo.GetNumVertices(); ++v)
     {
-      if (!topo.GetVertexTag(v).Boundary && topo.GetOrderedVertexFaces(v, faces, corners))
+      if (!topo.GetVertexTag(v).Boundary && level.GetNumSharpEdges(v) < 2 &&
+        topo.GetOrderedVertexFaces(v, faces, corners))
       {
         for (size_t i = 0; i < faces.size(); ++i)
         {
@@ -88,14 +93,16 @@ private:
   std::vector<Index> Neighbours;
 };
 
-// The boundary neighbour of boundary vertex v other than `other`, or InvalidIndex.
-Index OtherBoundaryNeighbour(const MeshTopology& topo, Index v, Index other)
+// The neighbour of v along its crease other than `other`, when v has exactly two sharp
+// edges (boundary edges are sharp), or InvalidIndex.
+Index OtherCreaseNeighbour(const Level& level, Index v, Index other)
 {
+  const MeshTopology& topo = level.Topology;
   Index found = InvalidIndex;
   Index count = 0;
   for (Index e : topo.GetVertexEdges(v))
   {
-    if (topo.GetEdgeTag(e).Boundary)
+    if (IsSharp(level.EdgeSharpness[e]))
     {
       ++count;
       const Index w = topo.GetOtherEndpoint(e, v);
@@ -109,12 +116,14 @@ Index OtherBoundaryNeighbour(const MeshTopology& topo, Index v, Index other)
 }
 
 // The vertex across edge (x, b) from the triangle (x, b, y), or its parallelogram
-// completion x + b - y when the edge has no second face.
-void AddWing(const MeshTopology& topo, Index x, Index b, Index y, double weight, RowBuilder& row)
+// completion x + b - y when the edge has no second face or is a crease (the other side of
+// a crease is as good as missing).
+void AddWing(const Level& level, Index x, Index b, Index y, double weight, RowBuilder& row)
 {
+  const MeshTopology& topo = level.Topology;
   const Index e = topo.FindEdge(x, b);
   const IndexSpan ef = topo.GetEdgeFaces(e);
-  if (ef.size() == 2 && !topo.GetEdgeTag(e).NonManifold)
+  if (ef.size() == 2 && !topo.GetEdgeTag(e).NonManifold && !IsSharp(level.EdgeSharpness[e]))
   {
     for (Index f : ef)
     {
@@ -145,61 +154,54 @@ void AddTip(const Rings& rings, Index x, Index y, double weight, RowBuilder& row
   row.Add(x, 2.0 * weight); // reflection of y through x
   row.Add(y, -weight);
 }
+
+// The crease rule of edge e: the 4-point rule along the crease (or boundary) when both
+// ends continue it, else the midpoint.
+void AddCreaseRule(const Level& level, Index e, double scale, RowBuilder& row)
+{
+  const Index a0 = level.Topology.GetEdgeVertices(e)[0], a1 = level.Topology.GetEdgeVertices(e)[1];
+  const Index p = OtherCreaseNeighbour(level, a0, a1), q = OtherCreaseNeighbour(level, a1, a0);
+  if (p != InvalidIndex && q != InvalidIndex)
+  {
+    row.Add(a0, scale * 9.0 / 16.0);
+    row.Add(a1, scale * 9.0 / 16.0);
+    row.Add(p, -scale / 16.0);
+    row.Add(q, -scale / 16.0);
+    return;
+  }
+  row.Add(a0, scale * 0.5);
+  row.Add(a1, scale * 0.5);
 }
 
-StencilTable BuildButterflyStencils(const Level& parent, double tension)
+// The smooth rule of an edge with two triangles: the (10-point) butterfly, or the
+// extraordinary-vertex stencils.
+void AddSmoothRule(const Level& level, const Rings& rings, Index e, double w, double scale, RowBuilder& row)
 {
-  const MeshTopology& topo = parent.Topology;
-  const Index numEdges = topo.GetNumEdges();
-  const Index numVertices = topo.GetNumVertices();
-  const TriangleSplitNumbering number{ numEdges };
-  const Rings rings(topo);
-  const double w = tension;
-
-  std::vector<RowBuilder> rows(static_cast<size_t>(numEdges));
-  for (Index e = 0; e < numEdges; ++e)
+  const MeshTopology& topo = level.Topology;
+  const Index a0 = topo.GetEdgeVertices(e)[0], a1 = topo.GetEdgeVertices(e)[1];
+  const IndexSpan ef = topo.GetEdgeFaces(e);
+  const bool ring0 = rings.Has(a0), ring1 = rings.Has(a1);
+  const bool regular0 = ring0 && rings.Valence(a0) == 6, regular1 = ring1 && rings.Valence(a1) == 6;
+  const bool butterfly = (regular0 && regular1) || (!ring0 && regular1) || (!ring1 && regular0) || (!ring0 && !ring1);
+  RowBuilder smooth;
+  if (butterfly)
   {
-    RowBuilder& row = rows[e];
-    const Index a0 = topo.GetEdgeVertices(e)[0], a1 = topo.GetEdgeVertices(e)[1];
-    const IndexSpan ef = topo.GetEdgeFaces(e);
-    if (topo.GetEdgeTag(e).Boundary)
+    const Index b0 = topo.GetTriangleOppositeVertex(ef[0], e);
+    const Index b1 = topo.GetTriangleOppositeVertex(ef[1], e);
+    smooth.Add(a0, 0.5 - w);
+    smooth.Add(a1, 0.5 - w);
+    smooth.Add(b0, 0.125 + 2.0 * w);
+    smooth.Add(b1, 0.125 + 2.0 * w);
+    for (Index b : { b0, b1 })
     {
-      const Index p = OtherBoundaryNeighbour(topo, a0, a1), q = OtherBoundaryNeighbour(topo, a1, a0);
-      if (p != InvalidIndex && q != InvalidIndex)
-      {
-        row.Add(a0, 9.0 / 16.0);
-        row.Add(a1, 9.0 / 16.0);
-        row.Add(p, -1.0 / 16.0);
-        row.Add(q, -1.0 / 16.0);
-        continue;
-      }
+      AddWing(level, a0, b, a1, -0.0625 - w, smooth);
+      AddWing(level, a1, b, a0, -0.0625 - w, smooth);
     }
-    if (ef.size() != 2 || topo.GetEdgeTag(e).NonManifold)
-    {
-      row.Add(a0, 0.5);
-      row.Add(a1, 0.5);
-      continue;
-    }
-    const bool ring0 = rings.Has(a0), ring1 = rings.Has(a1);
-    const bool regular0 = ring0 && rings.Valence(a0) == 6, regular1 = ring1 && rings.Valence(a1) == 6;
-    const bool butterfly = (regular0 && regular1) || (!ring0 && regular1) || (!ring1 && regular0) || (!ring0 && !ring1);
-    if (butterfly)
-    {
-      const Index b0 = topo.GetTriangleOppositeVertex(ef[0], e);
-      const Index b1 = topo.GetTriangleOppositeVertex(ef[1], e);
-      row.Add(a0, 0.5 - w);
-      row.Add(a1, 0.5 - w);
-      row.Add(b0, 0.125 + 2.0 * w);
-      row.Add(b1, 0.125 + 2.0 * w);
-      for (Index b : { b0, b1 })
-      {
-        AddWing(topo, a0, b, a1, -0.0625 - w, row);
-        AddWing(topo, a1, b, a0, -0.0625 - w, row);
-      }
-      AddTip(rings, a0, a1, w, row);
-      AddTip(rings, a1, a0, w, row);
-      continue;
-    }
+    AddTip(rings, a0, a1, w, smooth);
+    AddTip(rings, a1, a0, w, smooth);
+  }
+  else
+  {
     int ends = 0;
     for (const auto& end : { std::make_pair(a0, a1), std::make_pair(a1, a0) })
     {
@@ -213,13 +215,45 @@ StencilTable BuildButterflyStencils(const Level& parent, double tension)
       for (Index j = 0; j < K; ++j)
       {
         const double s = ButterflyExtraordinaryWeight(K, j);
-        row.Add(rings.From(v, end.second, j), s);
+        smooth.Add(rings.From(v, end.second, j), s);
         sum += s;
       }
-      row.Add(v, 1.0 - sum);
+      smooth.Add(v, 1.0 - sum);
       ++ends;
     }
-    row.Scale(1.0 / ends);
+    smooth.Scale(1.0 / ends);
+  }
+  for (const auto& entry : smooth.Entries)
+  {
+    row.Add(entry.first, scale * entry.second);
+  }
+}
+}
+
+StencilTable BuildButterflyStencils(const Level& parent, double tension)
+{
+  const MeshTopology& topo = parent.Topology;
+  const Index numEdges = topo.GetNumEdges();
+  const Index numVertices = topo.GetNumVertices();
+  const TriangleSplitNumbering number{ numEdges };
+  const Rings rings(parent);
+
+  std::vector<RowBuilder> rows(static_cast<size_t>(numEdges));
+  for (Index e = 0; e < numEdges; ++e)
+  {
+    RowBuilder& row = rows[e];
+    const bool twoFaces = topo.GetEdgeFaces(e).size() == 2 && !topo.GetEdgeTag(e).NonManifold;
+    // Sharpness s >= 1 (boundaries, non-manifold edges: infinite) takes the crease rule;
+    // a semi-sharp edge below 1 mixes s of it with 1 - s of the smooth rule.
+    const double crease = twoFaces ? std::min(1.0, static_cast<double>(parent.EdgeSharpness[e])) : 1.0;
+    if (crease > 0.0)
+    {
+      AddCreaseRule(parent, e, crease, row);
+    }
+    if (crease < 1.0)
+    {
+      AddSmoothRule(parent, rings, e, tension, 1.0 - crease, row);
+    }
   }
 
   StencilTable table(numVertices);

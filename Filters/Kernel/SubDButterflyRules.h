@@ -16,9 +16,18 @@
 //   from the other end,
 //     K = 3: 5/12, -1/12, -1/12;  K = 4: 3/8, 0, -1/8, 0;
 //     K >= 5: s_j = (1/4 + cos(2 pi j/K) + 1/2 cos(4 pi j/K)) / K;
-// - boundary edges: the 4-point rule -1/16, 9/16, 9/16, -1/16 along the boundary;
-//   non-manifold edges: the midpoint.
+// - boundary edges: the 4-point rule -1/16, 9/16, 9/16, -1/16 along the boundary (the
+//   midpoint where the boundary does not continue through an end); non-manifold edges:
+//   the midpoint.
 // Non-manifold vertices are treated like boundary vertices (they have no ring).
+//
+// Creases are treated like boundaries: a sharp edge takes the boundary's 4-point rule along
+// its crease, a vertex with two or more sharp edges has no ring (it takes the boundary
+// vertex's place in its neighbours' stencils) and a wing across a crease is reflected like
+// a missing one. A dart (one sharp edge) keeps its ring. Semi-sharp edges: sharpness s >= 1
+// takes the crease rule, 0 < s < 1 blends s of the crease rule with 1 - s of the smooth one
+// (the same transition Catmull-Clark and Loop make when a sharpness reaches zero);
+// sharpness decays by one unit per level as in the other primal schemes.
 #ifndef SubDButterflyRules_h
 #define SubDButterflyRules_h
 

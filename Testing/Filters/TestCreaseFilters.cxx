@@ -451,3 +451,64 @@ TEST(CreaseInput, ChangedSharpnessRebuildsTheStencils)
   EXPECT_TRUE(CreaseLines(filter->GetOutput()).empty());
 }
 }
+
+namespace
+{
+template <typename Filter>
+class CreaseAsBoundary : public ::testing::Test
+{
+};
+using CreaseSchemes = ::testing::Types<vtkSubDCatmullClarkFilter, vtkSubDLoopFilter, vtkSubDButterflyFilter>;
+TYPED_TEST_SUITE(CreaseAsBoundary, CreaseSchemes);
+
+// An infinitely sharp crease loop around a cylinder makes the two sides independent: the
+// result is the same as cutting the cylinder along the loop into two open cylinders whose
+// boundaries take the scheme's boundary rules.
+TYPED_TEST(CreaseAsBoundary, CreaseLoopEqualsACut)
+{
+  const bool triangles = !std::is_same<TypeParam, vtkSubDCatmullClarkFilter>::value;
+  subdtest::TestMesh cylinder = subdtest::Grid(6, 4, true, false).Jitter(0.1);
+  auto id = [](int i, int j) { return static_cast<subd::Index>(6 * j + (i % 6)); };
+  subdtest::TestMesh cut;
+  cut.Points = cylinder.Points;
+  for (int i = 0; i < 6; ++i) // copies of the crease row for the faces above it
+    cut.AddPoint(cylinder.Points[3 * id(i, 2)], cylinder.Points[3 * id(i, 2) + 1], cylinder.Points[3 * id(i, 2) + 2]);
+  for (subd::Index f = 0; f < cylinder.NumFaces(); ++f)
+  {
+    std::vector<subd::Index> face(cylinder.Vertices.begin() + cylinder.Offsets[f],
+      cylinder.Vertices.begin() + cylinder.Offsets[f + 1]);
+    if (f >= 12) // face rows 2 and 3
+      for (subd::Index& v : face)
+        if (v >= id(0, 2) && v <= id(5, 2))
+          v = 30 + v - id(0, 2);
+    cut.AddFace(face);
+  }
+  vtkSmartPointer<vtkPolyData> creased = ToPolyData(triangles ? cylinder.Triangulated() : cylinder);
+  std::vector<std::array<vtkIdType, 2>> ring;
+  for (int i = 0; i < 6; ++i)
+    ring.push_back({ id(i, 2), id(i + 1, 2) });
+  AddCreases(creased, ring, {});
+  vtkSmartPointer<vtkPolyData> a = Subdivide<TypeParam>(creased, 2);
+  vtkSmartPointer<vtkPolyData> b = Subdivide<TypeParam>(ToPolyData(triangles ? cut.Triangulated() : cut), 2);
+  ASSERT_GT(a->GetNumberOfPoints(), 0);
+  EXPECT_EQ(a->GetNumberOfPolys(), b->GetNumberOfPolys());
+  EXPECT_EQ(a->GetNumberOfPoints() + 6 * 4, b->GetNumberOfPoints()); // the crease row, split twice
+  // Every point of each result is a point of the other.
+  for (auto pair : { std::make_pair(a, b), std::make_pair(b, a) })
+  {
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < pair.first->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3], best = 1e300;
+      pair.first->GetPoint(i, p);
+      for (vtkIdType k = 0; k < pair.second->GetNumberOfPoints(); ++k)
+      {
+        pair.second->GetPoint(k, q);
+        best = std::min(best, std::max({ std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2]) }));
+      }
+      worst = std::max(worst, best);
+    }
+    EXPECT_LE(worst, 1e-12);
+  }
+}
+}
