@@ -22,7 +22,15 @@
  * w = 0 to round-off. Polygons are triangulated first (ear clipping), with a warning.
  * BoundaryRule has no effect.
  *
- * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
+ * Creases are treated like boundaries: a sharp edge takes the 4-point rule along its
+ * crease, vertices on a crease (two or more sharp edges) take the boundary vertex's place in
+ * their neighbours' butterflies, and wings across a crease are reflected. A semi-sharp edge
+ * of sharpness s < 1 blends s of the crease rule with 1 - s of the smooth one; sharpness
+ * decays one unit per level. Vertices never move (the scheme interpolates), so corner
+ * sharpness has nothing to change.
+ *
+ * Attributes, crease input/output, errors, progress and stencil caching: see
+ * vtkSubDSurfaceFilter.
  */
 #ifndef vtkSubDButterflyFilter_h
 #define vtkSubDButterflyFilter_h

@@ -20,6 +20,11 @@
  * (DeRose, Kass, Truong, "Subdivision Surfaces in Character Animation", SIGGRAPH 1998), and
  * the output matches OpenSubdiv's Far::TopologyRefiner + PrimvarRefiner to round-off.
  *
+ * Creases (infinitely sharp and semi-sharp, with the Uniform or Chaikin crease method),
+ * darts, corners and holes follow OpenSubdiv's rules exactly, including the transitional
+ * blend at the level where a fractional sharpness reaches zero; see vtkSubDSurfaceFilter for
+ * how they are given.
+ *
  * Everything else (attributes, cell data, errors, progress, stencil caching) is described
  * in vtkSubDSurfaceFilter.
  */

@@ -19,6 +19,8 @@
  * one input face corner); cell data: F-faces inherit their face's, E- and V-faces those of an
  * adjacent face. BoundaryRule has no effect.
  *
+ * Crease and corner sharpness are not honoured yet (a warning says so; holes are).
+ *
  * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
  */
 #ifndef vtkSubDDooSabinFilter_h

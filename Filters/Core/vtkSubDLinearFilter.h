@@ -16,6 +16,9 @@
  * triangulated first (ear clipping), with a warning). BoundaryRule has no effect here: with no
  * smoothing there is nothing to interpolate differently at a boundary.
  *
+ * The surface does not change shape, so creases change no point; crease lines are still
+ * refined and carried to the output (with decayed sharpness) like every primal scheme's.
+ *
  * Attributes, cell data, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
  */
 #ifndef vtkSubDLinearFilter_h

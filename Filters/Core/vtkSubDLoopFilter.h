@@ -18,6 +18,10 @@
  * and OpenSubdiv, polygons with more than three corners are accepted: they are split into
  * triangles first (ear clipping, correct for concave polygons), with a warning.
  *
+ * Creases, corners, holes, semi-sharp (fractional) sharpness and both crease methods follow
+ * OpenSubdiv exactly (see vtkSubDSurfaceFilter): the output matches OpenSubdiv's Loop to
+ * round-off with the same tags.
+ *
  * Attributes, cell data, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
  */
 #ifndef vtkSubDLoopFilter_h

@@ -14,6 +14,8 @@
  * boundary polygon's vertices and edge midpoints. Non-manifold vertices get no V-face.
  * BoundaryRule has no effect.
  *
+ * Crease and corner sharpness are not honoured yet (a warning says so; holes are).
+ *
  * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
  */
 #ifndef vtkSubDMidpointFilter_h

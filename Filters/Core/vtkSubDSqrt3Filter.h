@@ -17,6 +17,8 @@
  * round-off on closed and open meshes, and OpenMesh's on closed ones. Polygons are triangulated first (ear clipping),
  * with a warning. BoundaryRule has no effect.
  *
+ * Crease and corner sharpness are not honoured yet (a warning says so; holes are).
+ *
  * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
  */
 #ifndef vtkSubDSqrt3Filter_h

@@ -21,6 +21,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -452,6 +453,14 @@ int vtkSubDSurfaceFilter::RequestData(
                       << ") in line cell " << features.SegmentCell[first] << ".");
     }
     const bool sharpFeatures = features.Any() || this->AutomaticCreases;
+    const bool sharpnessGiven = this->AutomaticCreases ||
+      std::any_of(tags.EdgeSharpness.begin(), tags.EdgeSharpness.end(), [](float x) { return x > 0; }) ||
+      std::any_of(tags.VertexSharpness.begin(), tags.VertexSharpness.end(), [](float x) { return x > 0; });
+    if (sharpnessGiven && !scheme->HonoursSharpness())
+    {
+      vtkWarningMacro(<< "The " << scheme->GetName() << " scheme does not honour crease or corner "
+                      << "sharpness yet: they are ignored (holes are honoured).");
+    }
     subd::Level base = subd::MakeBaseLevel(std::move(topology), tags,
       scheme->EffectiveBoundaryRule(static_cast<subd::BoundaryRule>(this->BoundaryRule)));
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy,

@@ -41,6 +41,9 @@ public:
   /// boundary rule cannot change them, so BoundaryRule::None makes no holes (as in
   /// OpenSubdiv, where it only applies to schemes with a neighbourhood).
   virtual bool UsesBoundaryRule() const { return true; }
+  /// False for schemes that do not yet honour crease and corner sharpness (their tags are
+  /// then ignored, holes still apply).
+  virtual bool HonoursSharpness() const { return true; }
   /// The rule to prepare the base level with for a requested one.
   BoundaryRule EffectiveBoundaryRule(BoundaryRule requested) const
   {
@@ -102,6 +105,7 @@ public:
 class SUBDKERNEL_EXPORT DooSabinScheme : public Scheme
 {
 public:
+  bool HonoursSharpness() const override { return false; }
   const char* GetName() const override { return "doo-sabin"; }
   bool UsesBoundaryRule() const override { return false; }
   Level Split(const Level& parent, ChildTopology depth) const override;
@@ -146,6 +150,7 @@ public:
 class SUBDKERNEL_EXPORT Sqrt3Scheme : public JointRefinementScheme
 {
 public:
+  bool HonoursSharpness() const override { return false; }
   const char* GetName() const override { return "sqrt3"; }
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
@@ -156,6 +161,7 @@ public:
 class SUBDKERNEL_EXPORT MidpointScheme : public JointRefinementScheme
 {
 public:
+  bool HonoursSharpness() const override { return false; }
   const char* GetName() const override { return "midpoint"; }
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;

@@ -4,6 +4,9 @@
 // infinitely sharp crease (the cubic B-spline of its polyline); bad input.
 #include "vtkSubDButterflyFilter.h"
 #include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDDooSabinFilter.h"
+#include "vtkSubDMidpointFilter.h"
+#include "vtkSubDSqrt3Filter.h"
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
 
@@ -510,5 +513,27 @@ TYPED_TEST(CreaseAsBoundary, CreaseLoopEqualsACut)
     }
     EXPECT_LE(worst, 1e-12);
   }
+}
+}
+
+namespace
+{
+// Schemes that do not honour sharpness yet say so instead of ignoring it silently.
+template <typename Filter>
+void CheckSharpnessIgnoredWarning(bool triangles)
+{
+  vtkSmartPointer<vtkPolyData> input = ToPolyData(triangles ? subdtest::Cube().Triangulated() : subdtest::Cube());
+  AddCreases(input, { { 0, 1 } }, { 10.0f });
+  Messages messages;
+  vtkSmartPointer<vtkPolyData> out = Subdivide<Filter>(input, 1, 0, &messages);
+  EXPECT_GT(out->GetNumberOfPolys(), 0);
+  EXPECT_NE(messages.Warnings.find("does not honour crease"), std::string::npos) << messages.Warnings;
+}
+
+TEST(CreaseInput, SchemesWithoutCreaseSupportWarn)
+{
+  CheckSharpnessIgnoredWarning<vtkSubDDooSabinFilter>(false);
+  CheckSharpnessIgnoredWarning<vtkSubDMidpointFilter>(false);
+  CheckSharpnessIgnoredWarning<vtkSubDSqrt3Filter>(true);
 }
 }
