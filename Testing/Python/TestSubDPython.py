@@ -4,7 +4,8 @@ import sys
 
 import subd
 from vtkmodules.vtkCommonCore import vtkCommand
-from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkFiltersCore import vtkCleanPolyData
+from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkSphereSource
 
 
 def main():
@@ -46,6 +47,17 @@ def main():
     assert radius <= 0.5 + 1e-12, radius
     # The class documentation comes through the wrapping.
     assert "Catmull" in subd.vtkSubDCatmullClarkFilter.__doc__
+    # Sharp features: automatic creases on a cube give 12 crease lines, Chaikin selectable.
+    cube = vtkCleanPolyData()  # vtkCubeSource's faces share no points
+    cube.SetInputConnection(vtkCubeSource().GetOutputPort())
+    sharp = subd.vtkSubDCatmullClarkFilter()
+    sharp.SetInputConnection(cube.GetOutputPort())
+    sharp.SetNumberOfSubdivisions(0)
+    sharp.AutomaticCreasesOn()
+    sharp.SetCreaseMethodToChaikin()
+    assert sharp.GetCreaseMethodAsString() == "Chaikin"
+    sharp.Update()
+    assert sharp.GetOutput().GetNumberOfLines() == 12, sharp.GetOutput().GetNumberOfLines()
     print("python: %d faces, %d points" % (out.GetNumberOfPolys(), out.GetNumberOfPoints()))
     return 0
 
