@@ -48,8 +48,9 @@ def main():
     # The class documentation comes through the wrapping.
     assert "Catmull" in subd.vtkSubDCatmullClarkFilter.__doc__
     # Sharp features: automatic creases on a cube give 12 crease lines, Chaikin selectable.
+    source = vtkCubeSource()  # kept referenced: the pipeline does not own it in Python
     cube = vtkCleanPolyData()  # vtkCubeSource's faces share no points
-    cube.SetInputConnection(vtkCubeSource().GetOutputPort())
+    cube.SetInputConnection(source.GetOutputPort())
     sharp = subd.vtkSubDCatmullClarkFilter()
     sharp.SetInputConnection(cube.GetOutputPort())
     sharp.SetNumberOfSubdivisions(0)
