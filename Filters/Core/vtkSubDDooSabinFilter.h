@@ -19,7 +19,12 @@
  * one input face corner); cell data: F-faces inherit their face's, E- and V-faces those of an
  * adjacent face. BoundaryRule has no effect.
  *
- * Crease and corner sharpness are not honoured yet (a warning says so; holes are).
+ * Creases are treated like boundaries: corners next to a sharp edge take Chaikin's rule
+ * along it, so an infinitely sharp crease converges to the quadratic B-spline of its
+ * polyline; the corner points on both sides of a crease are one point (the surface stays
+ * closed); sharp vertices and vertices with three or more creases are interpolated.
+ * Semi-sharp edges are creases while their sharpness is positive (one unit less per level;
+ * the dual scheme has no edge point to blend, so there is no fractional transition).
  *
  * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
  */

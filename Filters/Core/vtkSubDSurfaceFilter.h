@@ -50,8 +50,9 @@
  * filter for what the other schemes do with creases. The output carries the refined
  * crease edges as 2-point lines (with "Sharpness" decayed by the levels applied) and the
  * decayed "CornerSharpness", so running a filter N times with one level gives the same
- * surface as running it once with N levels. Output line cells come before the faces (VTK's
- * cell order); their other cell-data values are zero.
+ * surface as running it once with N levels (except with holes or BOUNDARY_NONE, whose
+ * hole faces are not output, so the next filter cannot see them). Output line cells come
+ * before the faces (VTK's cell order); their other cell-data values are zero.
  *
  * BoundaryRule has OpenSubdiv's meanings (Sdc::Options::VtxBoundaryInterpolation):
  * None (faces at the boundary become holes that shape the surface but are not output),

@@ -1,4 +1,5 @@
 #include "SubDDooSabinRules.h"
+#include "SubDDualSplit.h"
 
 #include <cmath>
 
@@ -16,39 +17,32 @@ double DooSabinWeight(Index n, Index d)
 
 namespace
 {
-bool IsBoundaryLike(const MeshTopology& topo, Index e)
-{
-  return topo.GetEdgeFaces(e).size() != 2 || topo.GetEdgeTag(e).NonManifold;
-}
-
-bool IsCorner(const MeshTopology& topo, Index v)
-{
-  return topo.GetVertexFaces(v).size() == 1;
-}
-
 // The boundary row of corner `j` of face f at vertex v, if one of the face's two edges at v
-// is on the boundary: the vertex itself at a corner of the mesh, else Chaikin's 3/4, 1/4 (or
-// 1/2, 1/2 next to a corner of the mesh). Returns the number of entries written (0: interior).
-Index BoundaryCornerRow(const MeshTopology& topo, Index f, Index j, Index* src, double* wts)
+// is a crease (or boundary) edge: the vertex itself at a corner vertex, else Chaikin's 3/4,
+// 1/4 (or 1/2, 1/2 next to a corner vertex). Returns the number of entries written (0:
+// interior).
+Index BoundaryCornerRow(const Level& level, const std::vector<std::uint8_t>& isCorner, Index f, Index j,
+  Index* src, double* wts)
 {
+  const MeshTopology& topo = level.Topology;
   const IndexSpan fv = topo.GetFaceVertices(f);
   const IndexSpan fe = topo.GetFaceEdges(f);
   const Index n = fv.size();
   const Index v = fv[j];
-  const bool outgoing = IsBoundaryLike(topo, fe[j]);
-  const bool incoming = IsBoundaryLike(topo, fe[(j + n - 1) % n]);
+  const bool outgoing = IsDualCreaseEdge(level, fe[j]);
+  const bool incoming = IsDualCreaseEdge(level, fe[(j + n - 1) % n]);
   if (!outgoing && !incoming)
   {
     return 0;
   }
   src[0] = v;
-  if ((outgoing && incoming) || IsCorner(topo, v))
+  if ((outgoing && incoming) || isCorner[v])
   {
     wts[0] = 1.0;
     return 1;
   }
   const Index w = outgoing ? fv[(j + 1) % n] : fv[(j + n - 1) % n];
-  const double toward = IsCorner(topo, w) ? 0.5 : 0.25;
+  const double toward = isCorner[w] ? 0.5 : 0.25;
   wts[0] = 1.0 - toward;
   src[1] = w;
   wts[1] = toward;
@@ -60,17 +54,30 @@ StencilTable BuildDooSabinStencils(const Level& parent)
 {
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
+  const DualPoints points = NumberDualPoints(parent);
+  std::vector<std::uint8_t> isCorner(static_cast<size_t>(topo.GetNumVertices()));
+  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+  {
+    isCorner[v] = IsDualCornerVertex(parent, v);
+  }
+  // Welded corners have equal rows; each point takes its first corner's.
+  auto ownsRow = [&points](Index corner) { return points.CornerOfPoint[points.PointOfCorner[corner]] == corner; };
   StencilTable table(topo.GetNumVertices());
-  table.ReserveRows(topo.GetNumFaceCorners());
+  table.ReserveRows(static_cast<Index>(points.CornerOfPoint.size()));
   for (Index f = 0; f < numFaces; ++f)
   {
     const Index n = topo.GetFaceSize(f);
     for (Index j = 0; j < n; ++j)
     {
+      const Index corner = topo.GetFaceOffset(f) + j;
+      if (!ownsRow(corner))
+      {
+        continue;
+      }
       Index scratchSource[2];
       double scratchWeight[2];
-      const Index boundary = BoundaryCornerRow(topo, f, j, scratchSource, scratchWeight);
-      table.SetRowSize(topo.GetFaceOffset(f) + j, boundary > 0 ? boundary : n);
+      const Index boundary = BoundaryCornerRow(parent, isCorner, f, j, scratchSource, scratchWeight);
+      table.SetRowSize(points.PointOfCorner[corner], boundary > 0 ? boundary : n);
     }
   }
   table.FinalizeSizes();
@@ -87,9 +94,14 @@ StencilTable BuildDooSabinStencils(const Level& parent)
     }
     for (Index i = 0; i < n; ++i)
     {
-      Index* src = table.GetMutableSources(topo.GetFaceOffset(f) + i);
-      double* wts = table.GetMutableWeights(topo.GetFaceOffset(f) + i);
-      if (BoundaryCornerRow(topo, f, i, src, wts) > 0)
+      const Index corner = topo.GetFaceOffset(f) + i;
+      if (!ownsRow(corner))
+      {
+        continue;
+      }
+      Index* src = table.GetMutableSources(points.PointOfCorner[corner]);
+      double* wts = table.GetMutableWeights(points.PointOfCorner[corner]);
+      if (BoundaryCornerRow(parent, isCorner, f, i, src, wts) > 0)
       {
         continue;
       }
@@ -100,7 +112,7 @@ StencilTable BuildDooSabinStencils(const Level& parent)
       }
     }
   }
-  table.EndBlock(topo.GetNumFaceCorners());
+  table.EndBlock(static_cast<Index>(points.CornerOfPoint.size()));
   return table;
 }
 }

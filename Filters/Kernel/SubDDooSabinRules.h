@@ -13,7 +13,14 @@
 // and next to one the weights are 1/2, 1/2, so each side of the boundary between corners is
 // the clamped (end-interpolating) quadratic B-spline of its polygon. Non-manifold edges are
 // treated like boundary edges.
-// Rows are numbered like the corners (SubDDualSplit.h) and read parent points only.
+//
+// Creases are treated like boundaries (DeRose et al.'s "boundary rule along sharp edges"):
+// the corners next to a sharp edge take Chaikin's rule along it, so an infinitely sharp
+// crease converges to the uniform quadratic B-spline of its polyline; pinned vertices
+// (corner vertices, SubDDualSplit.h: sharp vertices, three or more sharp edges) are
+// interpolated. Semi-sharp edges are creases while their sharpness is positive and lose one
+// unit per level (no fractional blend: the dual scheme has no edge point to blend).
+// Rows are numbered like the child points (SubDDualSplit.h) and read parent points only.
 #ifndef SubDDooSabinRules_h
 #define SubDDooSabinRules_h
 

@@ -1,16 +1,23 @@
 // SubD kernel: the dual split (corner cutting) of Doo-Sabin subdivision.
 //
-// Every face corner gets a new point, numbered like the corners: the point of corner j of
-// face f is child point FaceOffset(f) + j. Child faces, in three blocks:
+// Every face corner gets a new point. Child faces, in three blocks:
 //   F-faces  one per face: its corner points, same orientation (faces [0, F));
-//   E-faces  one per interior manifold edge: the quad of the four corner points at its ends;
-//   V-faces  one per manifold vertex with at least three faces: the corner points around it,
-//            in the order of the faces around it (MeshTopology::GetOrderedVertexFaces); at
-//            a boundary vertex the face is closed along the boundary.
-// Boundary and non-manifold edges get no E-face; non-manifold vertices no V-face. With the
-// boundary rows of SubDDooSabinRules.h the open boundary is then refined by Chaikin's rule.
+//   E-faces  one per smooth interior manifold edge: the quad of the four corner points at
+//            its ends;
+//   V-faces  one per sector of a manifold vertex with at least three faces: the corner
+//            points around it, in the order of the faces around it
+//            (MeshTopology::GetOrderedVertexFaces). A vertex's fan is cut into sectors at its
+//            sharp edges (boundary edges are sharp); at the ends of a sector the face is
+//            closed along the crease or boundary.
+// Sharp edges (creases, boundaries, non-manifold edges) get no E-face; non-manifold vertices
+// no V-face. Creases are treated like boundaries: the corner points on the two sides of a
+// crease are the same crease (Chaikin) point, so they are welded into one child point, and
+// at a corner vertex (DualCornerVertex) all corner points next to its sharp edges are the
+// vertex itself and are welded too. Child points are numbered by their first corner
+// (DualPoints). With the rows of SubDDooSabinRules.h, boundaries and creases are refined by
+// Chaikin's rule.
 // F-faces inherit their face's hole flag and origin; an E- or V-face takes the origin of its
-// first face.
+// first face. In the child, the crease segments inherit their edge's sharpness less one.
 #ifndef SubDDualSplit_h
 #define SubDDualSplit_h
 
@@ -18,6 +25,23 @@
 
 namespace subd
 {
+/// True for an edge that the dual split treats like a boundary: sharp, or without exactly
+/// two faces, or non-manifold.
+SUBDKERNEL_EXPORT bool IsDualCreaseEdge(const Level& level, Index e);
+
+/// True for a vertex the dual split pins: a single face, a face whose two edges at the vertex
+/// are crease edges, three or more crease edges, or a sharp vertex.
+SUBDKERNEL_EXPORT bool IsDualCornerVertex(const Level& level, Index v);
+
+/// The child points of the dual split: PointOfCorner[c] for each face corner (faces'
+/// corners in order), and the first corner of each point.
+struct DualPoints
+{
+  std::vector<Index> PointOfCorner;
+  std::vector<Index> CornerOfPoint;
+};
+SUBDKERNEL_EXPORT DualPoints NumberDualPoints(const Level& level);
+
 SUBDKERNEL_EXPORT Level SplitDual(const Level& parent, ChildTopology depth);
 }
 

@@ -105,7 +105,6 @@ public:
 class SUBDKERNEL_EXPORT DooSabinScheme : public Scheme
 {
 public:
-  bool HonoursSharpness() const override { return false; }
   const char* GetName() const override { return "doo-sabin"; }
   bool UsesBoundaryRule() const override { return false; }
   Level Split(const Level& parent, ChildTopology depth) const override;
