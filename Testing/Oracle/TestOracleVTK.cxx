@@ -33,28 +33,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include "SubDFilterTestSupport.h"
+
 #include <gtest/gtest.h>
 
 namespace
 {
-vtkSmartPointer<vtkPolyData> ToPolyData(const subdtest::TestMesh& mesh)
-{
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  for (subd::Index v = 0; v < mesh.NumVertices(); ++v)
-    points->InsertNextPoint(&mesh.Points[3 * v]);
-  vtkNew<vtkCellArray> polys;
-  for (subd::Index f = 0; f < mesh.NumFaces(); ++f)
-  {
-    polys->InsertNextCell(mesh.Offsets[f + 1] - mesh.Offsets[f]);
-    for (subd::Index k = mesh.Offsets[f]; k < mesh.Offsets[f + 1]; ++k)
-      polys->InsertCellPoint(mesh.Vertices[k]);
-  }
-  poly->SetPoints(points);
-  poly->SetPolys(polys);
-  return poly;
-}
+using subdtest::ToPolyData;
 
 // Largest distance from a point of `ours` (among `which`, or all) to the nearest of `theirs`.
 double WorstDistance(vtkPolyData* ours, vtkPolyData* theirs, vtkIdType first = 0, vtkIdType last = -1)
