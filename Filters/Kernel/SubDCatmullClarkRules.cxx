@@ -26,7 +26,7 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
   }
   for (Index e = 0; e < numEdges; ++e)
   {
-    table.SetRowSize(number.EdgePoint(e), creaseWeights[e] == 1.0f ? 2 : 4);
+    table.SetRowSize(number.EdgePoint(e), PrimalEdgeRowSize(creaseWeights[e]));
   }
   for (Index v = 0; v < numVertices; ++v)
   {
@@ -50,26 +50,13 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
 
   for (Index e = 0; e < numEdges; ++e)
   {
-    const Index* ev = topo.GetEdgeVertices(e);
-    Index* src = table.GetMutableSources(number.EdgePoint(e));
-    double* wts = table.GetMutableWeights(number.EdgePoint(e));
-    src[0] = ev[0];
-    src[1] = ev[1];
-    if (creaseWeights[e] == 1.0f)
-    {
-      wts[0] = wts[1] = 0.5;
-    }
-    else
-    {
-      // The smooth rule, blended with the midpoint where a semi-sharp edge vanishes.
-      const double crease = creaseWeights[e];
-      const double smooth = 1.0 - crease;
-      const IndexSpan ef = topo.GetEdgeFaces(e);
-      src[2] = childSource(number.FacePoint(ef[0]));
-      src[3] = childSource(number.FacePoint(ef[1]));
-      wts[0] = wts[1] = crease * 0.5 + smooth * 0.25;
-      wts[2] = wts[3] = smooth * 0.25;
-    }
+    WritePrimalEdgeRow(topo.GetEdgeVertices(e), creaseWeights[e], 0.25, 0.25,
+      table.GetMutableSources(number.EdgePoint(e)), table.GetMutableWeights(number.EdgePoint(e)),
+      [&](Index* sides) {
+        const IndexSpan ef = topo.GetEdgeFaces(e);
+        sides[0] = childSource(number.FacePoint(ef[0]));
+        sides[1] = childSource(number.FacePoint(ef[1]));
+      });
   }
 
   for (Index v = 0; v < numVertices; ++v)

@@ -60,6 +60,35 @@ SUBDKERNEL_EXPORT float EdgeCreaseWeight(const Level& level, Index e);
 /// The crease weight of every edge of `level`.
 SUBDKERNEL_EXPORT std::vector<float> EdgeCreaseWeights(const Level& level);
 
+/// The size of an edge row of a primal scheme: 2 (the midpoint) for a crease, else 4 (the
+/// two ends and one source on each side).
+inline Index PrimalEdgeRowSize(float creaseWeight)
+{
+  return creaseWeight == 1.0f ? 2 : 4;
+}
+
+/// Writes the edge row of a primal scheme (Catmull-Clark, Loop): the midpoint for a crease,
+/// else the smooth rule (endWeight on each end, sideWeight on the two sources
+/// writeSides(src + 2) names, one per face) blended with the midpoint by creaseWeight
+/// (EdgeCreaseWeight), as OpenSubdiv's Sdc::Scheme::ComputeEdgeVertexMask does.
+template <typename WriteSides>
+void WritePrimalEdgeRow(const Index* ends, float creaseWeight, double endWeight, double sideWeight,
+  Index* src, double* wts, WriteSides&& writeSides)
+{
+  src[0] = ends[0];
+  src[1] = ends[1];
+  if (creaseWeight == 1.0f)
+  {
+    wts[0] = wts[1] = 0.5;
+    return;
+  }
+  const double crease = creaseWeight;
+  const double smooth = 1.0 - crease;
+  writeSides(src + 2);
+  wts[0] = wts[1] = crease * 0.5 + smooth * endWeight;
+  wts[2] = wts[3] = smooth * sideWeight;
+}
+
 /// The size of a vertex row of a primal scheme (Catmull-Clark, Loop): `smoothSize` if the
 /// vertex or its child takes the smooth rule, else 3 for a crease and 1 for a corner.
 inline Index PrimalVertexRowSize(const VertexRulePlan& plan, Index smoothSize)

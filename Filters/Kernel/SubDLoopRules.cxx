@@ -26,7 +26,7 @@ StencilTable BuildLoopStencils(const Level& parent)
   table.ReserveRows(numEdges + numVertices);
   for (Index e = 0; e < numEdges; ++e)
   {
-    table.SetRowSize(number.EdgePoint(e), creaseWeights[e] == 1.0f ? 2 : 4);
+    table.SetRowSize(number.EdgePoint(e), PrimalEdgeRowSize(creaseWeights[e]));
   }
   for (Index v = 0; v < numVertices; ++v)
   {
@@ -36,26 +36,13 @@ StencilTable BuildLoopStencils(const Level& parent)
 
   for (Index e = 0; e < numEdges; ++e)
   {
-    const Index* ev = topo.GetEdgeVertices(e);
-    Index* src = table.GetMutableSources(number.EdgePoint(e));
-    double* wts = table.GetMutableWeights(number.EdgePoint(e));
-    src[0] = ev[0];
-    src[1] = ev[1];
-    if (creaseWeights[e] == 1.0f)
-    {
-      wts[0] = wts[1] = 0.5;
-    }
-    else
-    {
-      // The smooth rule, blended with the midpoint where a semi-sharp edge vanishes.
-      const double crease = creaseWeights[e];
-      const double smooth = 1.0 - crease;
-      const IndexSpan ef = topo.GetEdgeFaces(e);
-      src[2] = topo.GetTriangleOppositeVertex(ef[0], e);
-      src[3] = topo.GetTriangleOppositeVertex(ef[1], e);
-      wts[0] = wts[1] = crease * 0.5 + smooth * 0.375;
-      wts[2] = wts[3] = smooth * 0.125;
-    }
+    WritePrimalEdgeRow(topo.GetEdgeVertices(e), creaseWeights[e], 0.375, 0.125,
+      table.GetMutableSources(number.EdgePoint(e)), table.GetMutableWeights(number.EdgePoint(e)),
+      [&](Index* sides) {
+        const IndexSpan ef = topo.GetEdgeFaces(e);
+        sides[0] = topo.GetTriangleOppositeVertex(ef[0], e);
+        sides[1] = topo.GetTriangleOppositeVertex(ef[1], e);
+      });
   }
   for (Index v = 0; v < numVertices; ++v)
   {
