@@ -50,16 +50,11 @@ Index BoundaryCornerRow(const Level& level, const std::vector<std::uint8_t>& isC
 }
 }
 
-StencilTable BuildDooSabinStencils(const Level& parent)
+StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points)
 {
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
-  const DualPoints points = NumberDualPoints(parent);
-  std::vector<std::uint8_t> isCorner(static_cast<size_t>(topo.GetNumVertices()));
-  for (Index v = 0; v < topo.GetNumVertices(); ++v)
-  {
-    isCorner[v] = IsDualCornerVertex(parent, v);
-  }
+  const std::vector<std::uint8_t>& isCorner = points.IsCornerVertex;
   // Welded corners have equal rows; each point takes its first corner's.
   auto ownsRow = [&points](Index corner) { return points.CornerOfPoint[points.PointOfCorner[corner]] == corner; };
   StencilTable table(topo.GetNumVertices());

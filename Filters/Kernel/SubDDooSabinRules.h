@@ -24,6 +24,7 @@
 #ifndef SubDDooSabinRules_h
 #define SubDDooSabinRules_h
 
+#include "SubDDualSplit.h"
 #include "SubDLevel.h"
 #include "SubDStencilTable.h"
 
@@ -31,7 +32,8 @@ namespace subd
 {
 /// alpha_ik for an n-gon, with d = i - k.
 SUBDKERNEL_EXPORT double DooSabinWeight(Index n, Index d);
-SUBDKERNEL_EXPORT StencilTable BuildDooSabinStencils(const Level& parent);
+/// The rows of the child points `points` (NumberDualPoints(parent)).
+SUBDKERNEL_EXPORT StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points);
 }
 
 #endif

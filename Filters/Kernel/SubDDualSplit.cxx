@@ -92,9 +92,12 @@ DualPoints NumberDualPoints(const Level& level)
     }
   }
   // At a corner vertex every corner next to a crease edge is the vertex itself.
+  DualPoints points;
+  points.IsCornerVertex.resize(static_cast<size_t>(topo.GetNumVertices()));
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
-    if (!IsDualCornerVertex(level, v))
+    points.IsCornerVertex[v] = IsDualCornerVertex(level, v);
+    if (!points.IsCornerVertex[v])
     {
       continue;
     }
@@ -111,7 +114,6 @@ DualPoints NumberDualPoints(const Level& level)
       }
     }
   }
-  DualPoints points;
   points.PointOfCorner.resize(static_cast<size_t>(numCorners));
   for (Index c = 0; c < numCorners; ++c)
   {
@@ -129,11 +131,10 @@ DualPoints NumberDualPoints(const Level& level)
   return points;
 }
 
-Level SplitDual(const Level& parent, ChildTopology depth)
+Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology depth)
 {
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
-  const DualPoints points = NumberDualPoints(parent);
   // The child point of corner `corner` of face f.
   auto cornerPoint = [&](Index f, Index corner) { return points.PointOfCorner[topo.GetFaceOffset(f) + corner]; };
 
@@ -282,7 +283,7 @@ Level SplitDual(const Level& parent, ChildTopology depth)
       {
         child.VertexSharpness[pointAt(topo.GetVertexFaces(v)[0], v)] = DecaySharpness(parent.VertexSharpness[v]);
       }
-      if (parent.GetNumSharpEdges(v) != 2 || IsDualCornerVertex(parent, v))
+      if (parent.GetNumSharpEdges(v) != 2 || points.IsCornerVertex[v])
       {
         continue;
       }

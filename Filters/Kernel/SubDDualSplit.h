@@ -34,15 +34,17 @@ SUBDKERNEL_EXPORT bool IsDualCreaseEdge(const Level& level, Index e);
 SUBDKERNEL_EXPORT bool IsDualCornerVertex(const Level& level, Index v);
 
 /// The child points of the dual split: PointOfCorner[c] for each face corner (faces'
-/// corners in order), and the first corner of each point.
+/// corners in order), the first corner of each point, and which vertices are corner
+/// vertices (IsDualCornerVertex). Computed once per level, shared by split and stencils.
 struct DualPoints
 {
   std::vector<Index> PointOfCorner;
   std::vector<Index> CornerOfPoint;
+  std::vector<std::uint8_t> IsCornerVertex;
 };
 SUBDKERNEL_EXPORT DualPoints NumberDualPoints(const Level& level);
 
-SUBDKERNEL_EXPORT Level SplitDual(const Level& parent, ChildTopology depth);
+SUBDKERNEL_EXPORT Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology depth);
 }
 
 #endif

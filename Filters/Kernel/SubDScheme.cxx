@@ -68,12 +68,22 @@ StencilTable LinearTriangleScheme::BuildStencils(const Level& parent) const
 
 Level DooSabinScheme::Split(const Level& parent, ChildTopology depth) const
 {
-  return SplitDual(parent, depth);
+  return SplitDual(parent, NumberDualPoints(parent), depth);
 }
 
 StencilTable DooSabinScheme::BuildStencils(const Level& parent) const
 {
-  return BuildDooSabinStencils(parent);
+  return BuildDooSabinStencils(parent, NumberDualPoints(parent));
+}
+
+LevelRefinement DooSabinScheme::RefineLevel(const Level& parent, ChildTopology depth) const
+{
+  // The welded point numbering is needed by both: compute it once.
+  const DualPoints points = NumberDualPoints(parent);
+  LevelRefinement r;
+  r.Stencils = BuildDooSabinStencils(parent, points);
+  r.Child = SplitDual(parent, points, depth);
+  return r;
 }
 
 MeshCounts DooSabinScheme::PredictChildCounts(const MeshCounts& parent) const

@@ -109,6 +109,7 @@ public:
   bool UsesBoundaryRule() const override { return false; }
   Level Split(const Level& parent, ChildTopology depth) const override;
   StencilTable BuildStencils(const Level& parent) const override;
+  LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
 };
 
