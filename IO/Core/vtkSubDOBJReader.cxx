@@ -2,16 +2,12 @@
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
-#include "vtkErrorCode.h"
 #include "vtkFloatArray.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtksys/FStream.hxx"
 
 #include <cerrno>
 #include <cmath>
@@ -149,40 +145,10 @@ std::string ParseTag(std::istringstream& in, OBJContents& contents)
 }
 }
 
-vtkSubDOBJReader::vtkSubDOBJReader()
+bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
 {
-  this->SetNumberOfInputPorts(0);
-}
-
-vtkSubDOBJReader::~vtkSubDOBJReader()
-{
-  this->SetFileName(nullptr);
-}
-
-int vtkSubDOBJReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  this->SetErrorCode(vtkErrorCode::NoError);
-  if (!this->FileName || !*this->FileName)
-  {
-    vtkErrorMacro("No file name was set.");
-    this->SetErrorCode(vtkErrorCode::NoFileNameError);
-    return 0;
-  }
-  vtksys::ifstream file(this->FileName);
-  if (!file)
-  {
-    vtkErrorMacro("Cannot open '" << this->FileName << "'.");
-    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    return 0;
-  }
   long lineNumber = 0;
-  auto fail = [&](const std::string& what) {
-    vtkErrorMacro("'" << this->FileName << "', line " << lineNumber << ": " << what);
-    output->Initialize();
-    this->SetErrorCode(vtkErrorCode::FileFormatError);
-    return 0;
-  };
+  auto fail = [&](const std::string& what) { return this->Fail(lineNumber, what); };
 
   OBJContents contents;
   std::string line, keyword, token;
@@ -366,11 +332,10 @@ int vtkSubDOBJReader::RequestData(vtkInformation*, vtkInformationVector**, vtkIn
     }
     vtkWarningMacro("'" << this->FileName << "': skipped tag(s) SubD does not use: " << names << ".");
   }
-  return 1;
+  return true;
 }
 
 void vtkSubDOBJReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
 }

@@ -25,27 +25,19 @@
 #define vtkSubDOBJReader_h
 
 #include "SubDIOModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSubDPolyDataReader.h"
 
-class SUBDIO_EXPORT vtkSubDOBJReader : public vtkPolyDataAlgorithm
+class SUBDIO_EXPORT vtkSubDOBJReader : public vtkSubDPolyDataReader
 {
 public:
   static vtkSubDOBJReader* New();
-  vtkTypeMacro(vtkSubDOBJReader, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSubDOBJReader, vtkSubDPolyDataReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
-  /** Name of the file to read. */
-  vtkSetFilePathMacro(FileName);
-  vtkGetFilePathMacro(FileName);
-  ///@}
-
 protected:
-  vtkSubDOBJReader();
-  ~vtkSubDOBJReader() override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-
-  char* FileName = nullptr;
+  vtkSubDOBJReader() = default;
+  ~vtkSubDOBJReader() override = default;
+  bool ReadFile(std::istream& file, vtkPolyData* output) override;
 
 private:
   vtkSubDOBJReader(const vtkSubDOBJReader&) = delete;

@@ -3,53 +3,18 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
-#include "vtkErrorCode.h"
-#include "vtkInformation.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSubDStripTriangles.h"
-#include "vtksys/FStream.hxx"
 
 #include <iomanip>
 #include <vector>
 
 vtkStandardNewMacro(vtkSubDOBJWriter);
 
-vtkSubDOBJWriter::vtkSubDOBJWriter() = default;
-
-vtkSubDOBJWriter::~vtkSubDOBJWriter()
+void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
 {
-  this->SetFileName(nullptr);
-}
-
-int vtkSubDOBJWriter::FillInputPortInformation(int, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
-void vtkSubDOBJWriter::WriteData()
-{
-  vtkPolyData* input = vtkPolyData::SafeDownCast(this->GetInput());
-  if (!input)
-  {
-    vtkErrorMacro("No polydata to write.");
-    return;
-  }
-  if (!this->FileName || !*this->FileName)
-  {
-    vtkErrorMacro("No file name was set.");
-    this->SetErrorCode(vtkErrorCode::NoFileNameError);
-    return;
-  }
-  vtksys::ofstream file(this->FileName);
-  if (!file)
-  {
-    vtkErrorMacro("Cannot open '" << this->FileName << "' for writing.");
-    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    return;
-  }
   file << "# written by SubD (sharp features as OpenSubdiv tags, 0-based)\n" << std::setprecision(17);
   const vtkIdType numPoints = input->GetNumberOfPoints();
   double p[3];
@@ -134,16 +99,9 @@ void vtkSubDOBJWriter::WriteData()
     }
     file << '\n';
   }
-  file.flush();
-  if (!file)
-  {
-    vtkErrorMacro("Writing '" << this->FileName << "' failed (disk full?).");
-    this->SetErrorCode(vtkErrorCode::OutOfDiskSpaceError);
-  }
 }
 
 void vtkSubDOBJWriter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
 }

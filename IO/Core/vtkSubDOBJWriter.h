@@ -14,30 +14,21 @@
 #define vtkSubDOBJWriter_h
 
 #include "SubDIOModule.h" // for export macro
-#include "vtkWriter.h"
+#include "vtkSubDPolyDataWriter.h"
 
 class vtkPolyData;
 
-class SUBDIO_EXPORT vtkSubDOBJWriter : public vtkWriter
+class SUBDIO_EXPORT vtkSubDOBJWriter : public vtkSubDPolyDataWriter
 {
 public:
   static vtkSubDOBJWriter* New();
-  vtkTypeMacro(vtkSubDOBJWriter, vtkWriter);
+  vtkTypeMacro(vtkSubDOBJWriter, vtkSubDPolyDataWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
-  /** Name of the file to write. */
-  vtkSetFilePathMacro(FileName);
-  vtkGetFilePathMacro(FileName);
-  ///@}
-
 protected:
-  vtkSubDOBJWriter();
-  ~vtkSubDOBJWriter() override;
-  void WriteData() override;
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-
-  char* FileName = nullptr;
+  vtkSubDOBJWriter() = default;
+  ~vtkSubDOBJWriter() override = default;
+  void WriteFile(vtkPolyData* input, std::ostream& file) override;
 
 private:
   vtkSubDOBJWriter(const vtkSubDOBJWriter&) = delete;

@@ -1,16 +1,12 @@
 #include "vtkSubDOFFReader.h"
 
 #include "vtkCellArray.h"
-#include "vtkErrorCode.h"
 #include "vtkIdTypeArray.h"
-#include "vtkInformation.h"
-#include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtksys/FStream.hxx"
 
 #include <cerrno>
 #include <cmath>
@@ -86,42 +82,12 @@ bool ParseNumbers(const std::string& line, std::vector<double>& values)
 }
 }
 
-vtkSubDOFFReader::vtkSubDOFFReader()
+bool vtkSubDOFFReader::ReadFile(std::istream& file, vtkPolyData* output)
 {
-  this->SetNumberOfInputPorts(0);
-}
-
-vtkSubDOFFReader::~vtkSubDOFFReader()
-{
-  this->SetFileName(nullptr);
-}
-
-int vtkSubDOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
-  vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  this->SetErrorCode(vtkErrorCode::NoError);
-  if (!this->FileName || !*this->FileName)
-  {
-    vtkErrorMacro("No file name was set.");
-    this->SetErrorCode(vtkErrorCode::NoFileNameError);
-    return 0;
-  }
-  vtksys::ifstream file(this->FileName);
-  if (!file)
-  {
-    vtkErrorMacro("Cannot open '" << this->FileName << "'.");
-    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    return 0;
-  }
   OFFLines lines(file);
   std::string line;
   std::vector<double> values;
-  auto fail = [&](const std::string& what) {
-    vtkErrorMacro("'" << this->FileName << "', line " << lines.GetNumber() << ": " << what);
-    this->SetErrorCode(vtkErrorCode::FileFormatError);
-    output->Initialize();
-    return 0;
-  };
+  auto fail = [&](const std::string& what) { return this->Fail(lines.GetNumber(), what); };
 
   if (!lines.Next(line))
   {
@@ -248,11 +214,10 @@ int vtkSubDOFFReader::RequestData(vtkInformation*, vtkInformationVector**, vtkIn
   {
     output->GetPointData()->SetScalars(colors);
   }
-  return 1;
+  return true;
 }
 
 void vtkSubDOFFReader::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
 }

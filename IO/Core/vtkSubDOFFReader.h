@@ -15,27 +15,19 @@
 #define vtkSubDOFFReader_h
 
 #include "SubDIOModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSubDPolyDataReader.h"
 
-class SUBDIO_EXPORT vtkSubDOFFReader : public vtkPolyDataAlgorithm
+class SUBDIO_EXPORT vtkSubDOFFReader : public vtkSubDPolyDataReader
 {
 public:
   static vtkSubDOFFReader* New();
-  vtkTypeMacro(vtkSubDOFFReader, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSubDOFFReader, vtkSubDPolyDataReader);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
-  /** Name of the file to read. */
-  vtkSetFilePathMacro(FileName);
-  vtkGetFilePathMacro(FileName);
-  ///@}
-
 protected:
-  vtkSubDOFFReader();
-  ~vtkSubDOFFReader() override;
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-
-  char* FileName = nullptr;
+  vtkSubDOFFReader() = default;
+  ~vtkSubDOFFReader() override = default;
+  bool ReadFile(std::istream& file, vtkPolyData* output) override;
 
 private:
   vtkSubDOFFReader(const vtkSubDOFFReader&) = delete;

@@ -11,30 +11,21 @@
 #define vtkSubDOFFWriter_h
 
 #include "SubDIOModule.h" // for export macro
-#include "vtkWriter.h"
+#include "vtkSubDPolyDataWriter.h"
 
 class vtkPolyData;
 
-class SUBDIO_EXPORT vtkSubDOFFWriter : public vtkWriter
+class SUBDIO_EXPORT vtkSubDOFFWriter : public vtkSubDPolyDataWriter
 {
 public:
   static vtkSubDOFFWriter* New();
-  vtkTypeMacro(vtkSubDOFFWriter, vtkWriter);
+  vtkTypeMacro(vtkSubDOFFWriter, vtkSubDPolyDataWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  ///@{
-  /** Name of the file to write. */
-  vtkSetFilePathMacro(FileName);
-  vtkGetFilePathMacro(FileName);
-  ///@}
-
 protected:
-  vtkSubDOFFWriter();
-  ~vtkSubDOFFWriter() override;
-  void WriteData() override;
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-
-  char* FileName = nullptr;
+  vtkSubDOFFWriter() = default;
+  ~vtkSubDOFFWriter() override = default;
+  void WriteFile(vtkPolyData* input, std::ostream& file) override;
 
 private:
   vtkSubDOFFWriter(const vtkSubDOFFWriter&) = delete;
