@@ -4,6 +4,7 @@
 #ifndef SubDTestMeshes_h
 #define SubDTestMeshes_h
 
+#include "SubDLevel.h"
 #include "SubDTypes.h"
 
 #include <cmath>
@@ -60,6 +61,12 @@ struct TestMesh
     return *this;
   }
 };
+
+/// The base level of a fixture with no tags (what the kernel tests refine).
+inline subd::Level BaseLevel(const TestMesh& mesh, subd::BoundaryRule rule = subd::BoundaryRule::EdgeOnly)
+{
+  return subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, rule);
+}
 
 /// nx by ny quads; closed directions wrap around (both closed: a torus, all valence 4).
 inline TestMesh Grid(int nx, int ny, bool closedX, bool closedY)

@@ -51,8 +51,7 @@ protected:
     const auto scheme = GetParam().Make();
     subd::Hierarchy h;
     subd::Refine(*scheme,
-      subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {},
-        scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly)),
+      subdtest::BaseLevel(mesh, scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly)),
       levels, h);
     return h;
   }
@@ -107,8 +106,7 @@ TEST_P(AllSchemes, PredictedCountsBoundTheRealOnes)
   const auto scheme = GetParam().Make();
   for (const subdtest::TestMesh& mesh : Fixtures())
   {
-    subd::Level level = subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices),
-      {}, scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly));
+    subd::Level level = subdtest::BaseLevel(mesh, scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly));
     for (int l = 1; l <= 2; ++l)
     {
       const subd::MeshTopology& p = level.Topology;
@@ -247,8 +245,7 @@ TEST(ButterflyScheme, ExtraordinaryWeightsAndInterpolation)
       subd::ButterflyScheme scheme(w);
       subd::Hierarchy h;
       subd::Refine(scheme,
-        subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {},
-          subd::BoundaryRule::EdgeOnly),
+        subdtest::BaseLevel(mesh),
         3, h);
       std::vector<double> out(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
       h.Evaluate(mesh.Points.data(), 3, out.data());
@@ -365,8 +362,7 @@ TEST_P(AllSchemes, SuccessiveLevelsConverge)
   const subdtest::TestMesh mesh =
     GetParam().TrianglesOnly ? subdtest::Bipyramid(5).Jitter(0.1) : subdtest::Star(5).Jitter(0.1);
   const auto scheme = GetParam().Make();
-  subd::Level level = subd::MakeBaseLevel(
-    subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, subd::BoundaryRule::EdgeOnly);
+  subd::Level level = subdtest::BaseLevel(mesh);
   std::vector<double> points = mesh.Points;
   std::vector<double> distances;
   for (int l = 1; l <= 4; ++l)
@@ -446,8 +442,7 @@ TEST(Sqrt3Scheme, KobbeltBoundaryIsTheTernaryCubicBSplineEveryTwoSteps)
   {
     subd::Hierarchy h;
     subd::Refine(scheme,
-      subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {},
-        subd::BoundaryRule::EdgeOnly),
+      subdtest::BaseLevel(mesh),
       levels, h);
     std::vector<double> out(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
     h.Evaluate(mesh.Points.data(), 3, out.data());
@@ -486,8 +481,7 @@ TEST(Sqrt3Scheme, CentroidAndRelaxationMasksForValences3To64)
   {
     // The apexes of a bipyramid have valence n; its equator vertices valence 4.
     const subdtest::TestMesh mesh = subdtest::Bipyramid(n).Jitter(0.2);
-    const subd::Level base = subd::MakeBaseLevel(
-      subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, subd::BoundaryRule::EdgeOnly);
+    const subd::Level base = subdtest::BaseLevel(mesh);
     const subd::LevelRefinement r = subd::Sqrt3Scheme().RefineLevel(base, subd::ChildTopology::Full);
     std::vector<double> child(static_cast<size_t>(r.Stencils.GetNumRows()) * 3);
     r.Stencils.Apply(mesh.Points.data(), child.data(), 3);

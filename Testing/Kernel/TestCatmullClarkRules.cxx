@@ -49,8 +49,7 @@ struct Refined
 
 Refined RefineOnce(const subdtest::TestMesh& mesh, subd::BoundaryRule rule)
 {
-  subd::Level base = subd::MakeBaseLevel(
-    subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, rule);
+  subd::Level base = subdtest::BaseLevel(mesh, rule);
   subd::CatmullClarkScheme scheme;
   subd::StencilTable table = scheme.BuildStencils(base);
   std::vector<double> child(static_cast<size_t>(table.GetNumRows()) * 3);
@@ -65,9 +64,7 @@ TEST(QuadSplit, CountsAndEulerCharacteristic)
   subd::CatmullClarkScheme scheme;
   for (const subdtest::TestMesh& mesh : subdtest::StandardMeshes())
   {
-    subd::Level level = subd::MakeBaseLevel(
-      subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {},
-      subd::BoundaryRule::EdgeOnly);
+    subd::Level level = subdtest::BaseLevel(mesh);
     for (int l = 1; l <= 3; ++l)
     {
       const subd::MeshTopology& p = level.Topology;
@@ -92,8 +89,7 @@ TEST(CatmullClarkRules, RowsSumToOne)
   {
     for (auto rule : { subd::BoundaryRule::None, subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::EdgeAndCorner })
     {
-      subd::Level level = subd::MakeBaseLevel(
-        subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, rule);
+      subd::Level level = subdtest::BaseLevel(mesh, rule);
       const subd::StencilTable table = scheme.BuildStencils(level);
       for (Index r = 0; r < table.GetNumRows(); ++r)
       {
@@ -202,8 +198,7 @@ TEST(CatmullClarkRules, BoundaryEdgesVerticesAndCorners)
 TEST(CatmullClarkRules, BoundaryRuleNoneMakesBoundaryFacesHoles)
 {
   const subdtest::TestMesh mesh = subdtest::Grid(4, 4, false, false);
-  const subd::Level base = subd::MakeBaseLevel(
-    subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, subd::BoundaryRule::None);
+  const subd::Level base = subdtest::BaseLevel(mesh, subd::BoundaryRule::None);
   Index holes = 0;
   for (std::uint8_t h : base.FaceIsHole)
     holes += h;

@@ -39,9 +39,7 @@ TEST(DualSplit, CountsOrientationAndEulerOnClosedMeshes)
   for (const subdtest::TestMesh& mesh : { subdtest::Cube(), subdtest::Grid(6, 5, true, true),
          subdtest::House(false), subdtest::Star(3), subdtest::Star(7) })
   {
-    subd::Level level = subd::MakeBaseLevel(
-      subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {},
-      subd::BoundaryRule::EdgeOnly);
+    subd::Level level = subdtest::BaseLevel(mesh);
     for (int l = 1; l <= 3; ++l)
     {
       const subd::MeshTopology& p = level.Topology;
@@ -66,8 +64,7 @@ TEST(DualSplit, OpenGridFaces)
   // A 3x3 grid: 9 F-faces, E-faces only for the 12 interior edges, V-faces for the 4
   // interior vertices (boundary vertices have at most two faces).
   const subdtest::TestMesh grid = subdtest::Grid(3, 3, false, false);
-  const subd::Level base = subd::MakeBaseLevel(
-    subd::MeshTopology::Build(grid.NumVertices(), grid.Offsets, grid.Vertices), {}, subd::BoundaryRule::EdgeOnly);
+  const subd::Level base = subdtest::BaseLevel(grid);
   const subd::Level child = subd::DooSabinScheme().Split(base, subd::ChildTopology::Full);
   EXPECT_EQ(child.Topology.GetNumFaces(), 9 + 12 + 4);
   EXPECT_EQ(child.Topology.GetNumNonManifoldEdges(), 0);
@@ -84,8 +81,7 @@ TEST(DooSabinProperties, RegularGridReproducesBiquadraticBSpline)
   const std::vector<double> level0Param = param;
 
   subd::DooSabinScheme scheme;
-  subd::Level level = subd::MakeBaseLevel(
-    subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, subd::BoundaryRule::EdgeOnly);
+  subd::Level level = subdtest::BaseLevel(mesh);
   std::vector<double> points = mesh.Points;
   for (int l = 1; l <= 3; ++l)
   {
@@ -176,8 +172,7 @@ TEST(DooSabinProperties, OpenBoundaryFollowsTheClampedQuadraticBSpline)
   subd::DooSabinScheme scheme;
   subd::Hierarchy h;
   subd::Refine(scheme,
-    subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {},
-      subd::BoundaryRule::EdgeOnly),
+    subdtest::BaseLevel(mesh),
     levels, h);
   std::vector<double> out(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
   h.Evaluate(mesh.Points.data(), 3, out.data());
@@ -213,8 +208,7 @@ TEST(DualSplit, OpenMeshWithBoundaryFansStaysConsistentlyOriented)
   // The open house: boundary vertices with three faces get V-faces closed along the boundary.
   const subdtest::TestMesh mesh = subdtest::House(true);
   subd::DooSabinScheme scheme;
-  subd::Level level = subd::MakeBaseLevel(
-    subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, subd::BoundaryRule::EdgeOnly);
+  subd::Level level = subdtest::BaseLevel(mesh);
   for (int l = 1; l <= 3; ++l)
   {
     level = scheme.Split(level, subd::ChildTopology::Full);

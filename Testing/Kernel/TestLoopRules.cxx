@@ -26,9 +26,7 @@ TEST(TriangleSplit, CountsAndEulerCharacteristic)
   subd::LoopScheme scheme;
   for (const subdtest::TestMesh& mesh : subdtest::TriangleMeshes())
   {
-    subd::Level level = subd::MakeBaseLevel(
-      subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {},
-      subd::BoundaryRule::EdgeOnly);
+    subd::Level level = subdtest::BaseLevel(mesh);
     for (int l = 1; l <= 3; ++l)
     {
       const subd::MeshTopology& p = level.Topology;
@@ -49,9 +47,7 @@ TEST(LoopRules, MasksMatchPublishedRules)
   for (int n = 3; n <= 64; ++n)
   {
     const subdtest::TestMesh mesh = subdtest::Bipyramid(n).Jitter(0.2);
-    const subd::Level base = subd::MakeBaseLevel(
-      subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {},
-      subd::BoundaryRule::EdgeOnly);
+    const subd::Level base = subdtest::BaseLevel(mesh);
     const subd::StencilTable table = subd::BuildLoopStencils(base);
     std::vector<double> child(static_cast<size_t>(table.GetNumRows()) * 3);
     table.Apply(mesh.Points.data(), child.data(), 3);
@@ -98,8 +94,7 @@ TEST(LoopRules, RowsSumToOneAndAffineInvariance)
   {
     for (auto rule : { subd::BoundaryRule::None, subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::EdgeAndCorner })
     {
-      const subd::Level level = subd::MakeBaseLevel(
-        subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, rule);
+      const subd::Level level = subdtest::BaseLevel(mesh, rule);
       const subd::StencilTable table = scheme.BuildStencils(level);
       for (Index r = 0; r < table.GetNumRows(); ++r)
         EXPECT_NEAR(table.GetRowSum(r), 1.0, 1e-14) << mesh.Name << " row " << r;

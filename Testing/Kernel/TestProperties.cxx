@@ -19,7 +19,7 @@ std::vector<double> RefinePoints(const subdtest::TestMesh& mesh, const std::vect
   subd::CatmullClarkScheme scheme;
   subd::Hierarchy h;
   subd::Refine(scheme,
-    subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, rule),
+    subdtest::BaseLevel(mesh, rule),
     levels, h);
   std::vector<double> finest(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
   h.Evaluate(points.data(), 3, finest.data());
@@ -45,8 +45,7 @@ TEST(Properties, RegularGridReproducesBicubicBSpline)
   const std::vector<double> level0Param = param;
 
   subd::CatmullClarkScheme scheme;
-  subd::Level level = subd::MakeBaseLevel(
-    subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, subd::BoundaryRule::EdgeOnly);
+  subd::Level level = subdtest::BaseLevel(mesh);
   std::vector<double> points = mesh.Points;
   for (int l = 1; l <= 3; ++l)
   {

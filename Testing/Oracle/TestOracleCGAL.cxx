@@ -60,8 +60,7 @@ void CompareWithCgal(Method method, const subdtest::TestMesh& input, int levels)
   const subd::Scheme& scheme = *schemePointer;
   subd::Hierarchy h;
   subd::Refine(scheme,
-    subd::MakeBaseLevel(subd::MeshTopology::Build(input.NumVertices(), input.Offsets, input.Vertices), {},
-      subd::BoundaryRule::EdgeOnly),
+    subdtest::BaseLevel(input),
     levels, h);
   std::vector<double> ours(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
   h.Evaluate(input.Points.data(), 3, ours.data());
