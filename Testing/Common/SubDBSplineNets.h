@@ -4,6 +4,8 @@
 #ifndef SubDBSplineNets_h
 #define SubDBSplineNets_h
 
+#include "SubDTestMeshes.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -31,6 +33,17 @@ inline double QuadraticBSpline(double t)
   if (t < 1.5)
     return 0.5 * (t - 1.5) * (t - 1.5);
   return 0;
+}
+
+/// An n x n open quad grid whose heights are a smooth wave, sin(a i) cos(b j) + c i j, so a
+/// B-spline test sees real surface variation.
+inline TestMesh WavyGrid(int n, double a, double b, double c)
+{
+  TestMesh mesh = Grid(n, n, false, false);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i)
+      mesh.Points[3 * (j * (n + 1) + i) + 2] = std::sin(a * i) * std::cos(b * j) + c * i * j;
+  return mesh;
 }
 
 /// (i, j) parameters of the points of an (n+1) x (n+1) grid, row by row.

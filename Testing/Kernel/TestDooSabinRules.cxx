@@ -73,10 +73,7 @@ TEST(DualSplit, OpenGridFaces)
 TEST(DooSabinProperties, RegularGridReproducesBiquadraticBSpline)
 {
   const int n = 10;
-  subdtest::TestMesh mesh = subdtest::Grid(n, n, false, false);
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i)
-      mesh.Points[3 * (j * (n + 1) + i) + 2] = std::sin(0.6 * i) * std::cos(0.5 * j) + 0.02 * i * j;
+  const subdtest::TestMesh mesh = subdtest::WavyGrid(n, 0.6, 0.5, 0.02);
   std::vector<double> param = subdtest::GridParameters(n);
   const std::vector<double> level0Param = param;
 

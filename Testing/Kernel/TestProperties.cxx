@@ -32,11 +32,7 @@ std::vector<double> RefinePoints(const subdtest::TestMesh& mesh, const std::vect
 TEST(Properties, RegularGridReproducesBicubicBSpline)
 {
   const int n = 10; // 10x10 quads, 11x11 control points at integer parameters
-  subdtest::TestMesh mesh = subdtest::Grid(n, n, false, false);
-  // Non-trivial heights so the test sees real surface variation.
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i)
-      mesh.Points[3 * (j * (n + 1) + i) + 2] = std::sin(0.7 * i) * std::cos(0.45 * j) + 0.03 * i * j;
+  const subdtest::TestMesh mesh = subdtest::WavyGrid(n, 0.7, 0.45, 0.03);
 
 
   // Parameters of the level-0 points, then propagated through the same split numbering
