@@ -4,7 +4,7 @@
 #ifndef SubDTestMeshes_h
 #define SubDTestMeshes_h
 
-#include "SubDLevel.h"
+#include "SubDRefiner.h"
 #include "SubDTypes.h"
 
 #include <cmath>
@@ -66,6 +66,16 @@ struct TestMesh
 inline subd::Level BaseLevel(const TestMesh& mesh, subd::BoundaryRule rule = subd::BoundaryRule::EdgeOnly)
 {
   return subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, rule);
+}
+
+/// Refines a fixture `levels` times into `h` and returns the finest points (xyz triples).
+inline std::vector<double> RefineFixture(const subd::Scheme& scheme, const TestMesh& mesh, int levels,
+  subd::Hierarchy& h, subd::BoundaryRule rule = subd::BoundaryRule::EdgeOnly)
+{
+  subd::Refine(scheme, BaseLevel(mesh, rule), levels, h);
+  std::vector<double> points(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
+  h.Evaluate(mesh.Points.data(), 3, points.data());
+  return points;
 }
 
 /// nx by ny quads; closed directions wrap around (both closed: a torus, all valence 4).

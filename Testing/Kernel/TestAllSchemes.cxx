@@ -176,9 +176,7 @@ TEST(MidpointScheme, OpenBoundaryKeepsItsShape)
   const subd::MeshTopology base = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
   subd::MidpointScheme scheme;
   subd::Hierarchy h;
-  subd::Refine(scheme, subd::MakeBaseLevel(base, {}, subd::BoundaryRule::EdgeOnly), 3, h);
-  std::vector<double> out(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
-  h.Evaluate(mesh.Points.data(), 3, out.data());
+  const std::vector<double> out = subdtest::RefineFixture(scheme, mesh, 3, h);
   const subd::MeshTopology finest = subd::MeshTopology::Build(
     h.GetNumFinestPoints(), h.Finest.Topology.GetFaceOffsetArray(), h.Finest.Topology.GetFaceVertexArray());
   ASSERT_GT(finest.GetNumBoundaryEdges(), 0);
@@ -244,11 +242,7 @@ TEST(ButterflyScheme, ExtraordinaryWeightsAndInterpolation)
     {
       subd::ButterflyScheme scheme(w);
       subd::Hierarchy h;
-      subd::Refine(scheme,
-        subdtest::BaseLevel(mesh),
-        3, h);
-      std::vector<double> out(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
-      h.Evaluate(mesh.Points.data(), 3, out.data());
+      const std::vector<double> out = subdtest::RefineFixture(scheme, mesh, 3, h);
       // Vertex points are numbered last at each level: the input points end the array.
       const size_t first = out.size() - mesh.Points.size();
       for (size_t i = 0; i < mesh.Points.size(); ++i)
@@ -441,11 +435,7 @@ TEST(Sqrt3Scheme, KobbeltBoundaryIsTheTernaryCubicBSplineEveryTwoSteps)
   for (int levels : { 1, 2, 4 })
   {
     subd::Hierarchy h;
-    subd::Refine(scheme,
-      subdtest::BaseLevel(mesh),
-      levels, h);
-    std::vector<double> out(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
-    h.Evaluate(mesh.Points.data(), 3, out.data());
+    const std::vector<double> out = subdtest::RefineFixture(scheme, mesh, levels, h);
     const subd::MeshTopology finest = subd::MeshTopology::Build(
       h.GetNumFinestPoints(), h.Finest.Topology.GetFaceOffsetArray(), h.Finest.Topology.GetFaceVertexArray());
     EXPECT_EQ(finest.GetNumNonManifoldEdges(), 0) << "level " << levels;

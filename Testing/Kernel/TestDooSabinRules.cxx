@@ -168,11 +168,7 @@ TEST(DooSabinProperties, OpenBoundaryFollowsTheClampedQuadraticBSpline)
 
   subd::DooSabinScheme scheme;
   subd::Hierarchy h;
-  subd::Refine(scheme,
-    subdtest::BaseLevel(mesh),
-    levels, h);
-  std::vector<double> out(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
-  h.Evaluate(mesh.Points.data(), 3, out.data());
+  const std::vector<double> out = subdtest::RefineFixture(scheme, mesh, levels, h);
   const subd::MeshTopology finest = subd::MeshTopology::Build(
     h.GetNumFinestPoints(), h.Finest.Topology.GetFaceOffsetArray(), h.Finest.Topology.GetFaceVertexArray());
   EXPECT_EQ(finest.GetNumNonManifoldEdges(), 0) << "consistently oriented";

@@ -59,11 +59,7 @@ void CompareWithCgal(Method method, const subdtest::TestMesh& input, int levels)
     schemePointer = std::make_unique<subd::Sqrt3Scheme>();
   const subd::Scheme& scheme = *schemePointer;
   subd::Hierarchy h;
-  subd::Refine(scheme,
-    subdtest::BaseLevel(input),
-    levels, h);
-  std::vector<double> ours(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
-  h.Evaluate(input.Points.data(), 3, ours.data());
+  const std::vector<double> ours = subdtest::RefineFixture(scheme, input, levels, h);
   const subd::MeshTopology& topo = h.Finest.Topology;
 
   // CGAL's.

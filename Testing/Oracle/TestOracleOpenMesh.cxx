@@ -107,11 +107,7 @@ template <typename OMMesh, typename Subdivider>
 void RefineAndCompare(const subd::Scheme& scheme, const subdtest::TestMesh& input, int levels)
 {
   subd::Hierarchy h;
-  subd::Refine(scheme,
-    subdtest::BaseLevel(input),
-    levels, h);
-  std::vector<double> ours(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
-  h.Evaluate(input.Points.data(), 3, ours.data());
+  const std::vector<double> ours = subdtest::RefineFixture(scheme, input, levels, h);
   OMMesh mesh = ToOpenMesh<OMMesh>(input);
   Subdivider subdivider;
   subdivider.attach(mesh);
