@@ -11,10 +11,17 @@
  *
  * Boundaries are kept: a boundary vertex keeps its own point and its V-face runs from it
  * through the midpoints of its edges, so the refined boundary passes through the original
- * boundary polygon's vertices and edge midpoints. Non-manifold vertices get no V-face.
- * BoundaryRule has no effect.
+ * boundary polygon's vertices and edge midpoints (a vertex with a single face becomes a
+ * corner of that face's F-face instead of getting a sliver V-face). Non-manifold vertices
+ * get no V-face. BoundaryRule has no effect.
  *
- * Crease and corner sharpness are not honoured yet (a warning says so; holes are).
+ * Creases are treated like boundaries: a vertex with two or more crease edges, or a sharp
+ * corner, keeps its point, and its fan of faces is cut into sectors at the crease edges,
+ * each with its own V-face; the midpoint of a crease edge is shared by both sides. An
+ * infinitely sharp crease therefore keeps its polyline exactly. A corner inside smooth
+ * surface becomes a corner of every F-face around it. Semi-sharp edges and corners act as
+ * sharp while their sharpness is positive (the halves of an edge decay by the crease
+ * method, one unit per level with CREASE_UNIFORM); the scheme has no rule to blend with.
  *
  * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
  */

@@ -12,12 +12,20 @@
  * Boundaries follow Kobbelt's rule: every second step the boundary edges are trisected with
  * the masks (1, 16, 10)/27 and (10, 16, 1)/27 and boundary vertices move by (4, 19, 4)/27 (in
  * between they stay), so the boundary converges to the cubic B-spline of the boundary
- * polygon. The parity counts from the filter's input: one filter with N levels is not the
- * same as N chained one-level filters on an open mesh. The output matches CGAL's sqrt(3) to
- * round-off on closed and open meshes, and OpenMesh's on closed ones. Polygons are triangulated first (ear clipping),
- * with a warning. BoundaryRule has no effect.
+ * polygon. The parity counts from the level the input was made at: the output records its
+ * depth in the field data array "SubDDepth" (one integer), and an input carrying it
+ * continues from there, so N chained one-level filters equal one N-level filter. The
+ * output matches CGAL's sqrt(3) to round-off on closed and open meshes, and OpenMesh's on
+ * closed ones. Polygons are triangulated first (ear clipping), with a warning.
+ * BoundaryRule has no effect.
  *
- * Crease and corner sharpness are not honoured yet (a warning says so; holes are).
+ * Creases are treated like boundaries: crease edges are never flipped, every second step
+ * they are trisected by the boundary masks (both sides sharing the trisection points), a
+ * vertex on a crease moves by the boundary vertex rule along it, and corners (sharp
+ * vertices, three or more crease edges) stay put: an infinitely sharp crease converges to
+ * the cubic B-spline of its polyline. A triangle trisects only one edge per step; a second
+ * crease edge of the same triangle waits for the next trisecting step. Semi-sharp edges and
+ * corners act as sharp while their sharpness is positive, losing one unit per step.
  *
  * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
  */

@@ -16,6 +16,8 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
+#include "vtkFieldData.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -179,6 +181,21 @@ vtkIdType FirstNonFinitePoint(vtkPoints* points)
   }
   return -1;
 }
+
+// The field data array recording how many steps of a depth-dependent scheme made a mesh.
+const char* const DepthArrayName = "SubDDepth";
+
+// The input's recorded depth: a single non-negative integer value, else 0.
+int ReadInputDepth(vtkPolyData* input)
+{
+  vtkDataArray* depth = input->GetFieldData() ? input->GetFieldData()->GetArray(DepthArrayName) : nullptr;
+  if (!depth || depth->GetNumberOfTuples() != 1 || depth->GetNumberOfComponents() != 1)
+  {
+    return 0;
+  }
+  const double value = depth->GetComponent(0, 0);
+  return value >= 0 && value < 1e6 && value == std::floor(value) ? static_cast<int>(value) : 0;
+}
 }
 
 // What an execution leaves for the next one: the screened input connectivity it refined,
@@ -194,6 +211,8 @@ public:
   vtkSubDSharpFeatures Features;
   std::vector<subd::Index> UnmatchedSegments; // crease segments that are not surface edges
   subd::Hierarchy Hierarchy;
+  int InputDepth = 0;        // the input's "SubDDepth" (0 without it)
+  bool WritesDepth = false;  // the scheme depends on the depth: the output records it
   // Which finest faces and points are output. In the common case (no holes, no isolated
   // input points) all are, and no maps are stored.
   bool CompactPoints = false;
@@ -377,7 +396,8 @@ int vtkSubDSurfaceFilter::RequestData(
   }
 
   vtkInternals& cache = *this->Internals;
-  const bool reuse = cache.Valid && cache.FilterMTime == this->GetMTime() &&
+  const int inputDepth = ReadInputDepth(input);
+  const bool reuse = cache.Valid && cache.FilterMTime == this->GetMTime() && cache.InputDepth == inputDepth &&
     cache.NumInputPoints == numPoints && cache.Offsets == screened.Offsets &&
     cache.Vertices == screened.Vertices && cache.Features == features && !this->AutomaticCreases;
   auto refineProgress = [this](double fraction) {
@@ -453,16 +473,10 @@ int vtkSubDSurfaceFilter::RequestData(
                       << ") in line cell " << features.SegmentCell[first] << ".");
     }
     const bool sharpFeatures = features.Any() || this->AutomaticCreases;
-    const bool sharpnessGiven = this->AutomaticCreases ||
-      std::any_of(tags.EdgeSharpness.begin(), tags.EdgeSharpness.end(), [](float x) { return x > 0; }) ||
-      std::any_of(tags.VertexSharpness.begin(), tags.VertexSharpness.end(), [](float x) { return x > 0; });
-    if (sharpnessGiven && !scheme->HonoursSharpness())
-    {
-      vtkWarningMacro(<< "The " << scheme->GetName() << " scheme does not honour crease or corner "
-                      << "sharpness yet: they are ignored (holes are honoured).");
-    }
     subd::Level base = subd::MakeBaseLevel(std::move(topology), tags,
       scheme->EffectiveBoundaryRule(static_cast<subd::BoundaryRule>(this->BoundaryRule)));
+    cache.WritesDepth = scheme->DependsOnDepth();
+    base.Depth = cache.WritesDepth ? inputDepth : 0;
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy,
           refineProgress, sharpFeatures ? subd::ChildTopology::Full : subd::ChildTopology::FacesOnly))
     {
@@ -472,6 +486,7 @@ int vtkSubDSurfaceFilter::RequestData(
 
     cache.SelectOutput(someBaseVertexUnused);
     cache.NumInputPoints = numPoints;
+    cache.InputDepth = inputDepth;
     cache.Offsets = std::move(screened.Offsets);
     cache.Vertices = std::move(screened.Vertices);
     cache.KeptFaces = std::move(screened.KeptFaces);
@@ -644,6 +659,13 @@ int vtkSubDSurfaceFilter::RequestData(
     std::fill_n(parents->GetPointer(0), numLines, -1);
     std::copy(sourceCells->GetPointer(0), sourceCells->GetPointer(0) + numOut, parents->GetPointer(numLines));
     outCD->AddArray(parents);
+  }
+  if (cache.WritesDepth)
+  {
+    vtkNew<vtkIntArray> depth;
+    depth->SetName(DepthArrayName);
+    depth->InsertNextValue(finest.Depth);
+    output->GetFieldData()->AddArray(depth);
   }
   this->UpdateProgress(1.0);
   return 1;

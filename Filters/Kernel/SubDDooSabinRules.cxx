@@ -18,20 +18,20 @@ double DooSabinWeight(Index n, Index d)
 namespace
 {
 // The boundary row of corner `j` of face f at vertex v, if one of the face's two edges at v
-// is a crease (or boundary) edge: the vertex itself at a corner vertex, else Chaikin's 3/4,
-// 1/4 (or 1/2, 1/2 next to a corner vertex). Returns the number of entries written (0:
-// interior).
-Index BoundaryCornerRow(const Level& level, const std::vector<std::uint8_t>& isCorner, Index f, Index j,
-  Index* src, double* wts)
+// is a crease (or boundary) edge or v pins every corner: the vertex itself at a corner
+// vertex, else Chaikin's 3/4, 1/4 (or 1/2, 1/2 next to a corner vertex). Returns the number
+// of entries written (0: interior).
+Index BoundaryCornerRow(const Level& level, const DualPoints& points, Index f, Index j, Index* src, double* wts)
 {
   const MeshTopology& topo = level.Topology;
+  const std::vector<std::uint8_t>& isCorner = points.IsCornerVertex;
   const IndexSpan fv = topo.GetFaceVertices(f);
   const IndexSpan fe = topo.GetFaceEdges(f);
   const Index n = fv.size();
   const Index v = fv[j];
-  const bool outgoing = IsDualCreaseEdge(level, fe[j]);
-  const bool incoming = IsDualCreaseEdge(level, fe[(j + n - 1) % n]);
-  if (!outgoing && !incoming)
+  const bool outgoing = ActsAsBoundary(level, fe[j]);
+  const bool incoming = ActsAsBoundary(level, fe[(j + n - 1) % n]);
+  if (!outgoing && !incoming && !points.PinsEveryCorner[v])
   {
     return 0;
   }
@@ -54,7 +54,6 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
 {
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
-  const std::vector<std::uint8_t>& isCorner = points.IsCornerVertex;
   // Welded corners have equal rows; each point takes its first corner's.
   auto ownsRow = [&points](Index corner) { return points.CornerOfPoint[points.PointOfCorner[corner]] == corner; };
   StencilTable table(topo.GetNumVertices());
@@ -71,7 +70,7 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
       }
       Index scratchSource[2];
       double scratchWeight[2];
-      const Index boundary = BoundaryCornerRow(parent, isCorner, f, j, scratchSource, scratchWeight);
+      const Index boundary = BoundaryCornerRow(parent, points, f, j, scratchSource, scratchWeight);
       table.SetRowSize(points.PointOfCorner[corner], boundary > 0 ? boundary : n);
     }
   }
@@ -96,7 +95,7 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
       }
       Index* src = table.GetMutableSources(points.PointOfCorner[corner]);
       double* wts = table.GetMutableWeights(points.PointOfCorner[corner]);
-      if (BoundaryCornerRow(parent, isCorner, f, i, src, wts) > 0)
+      if (BoundaryCornerRow(parent, points, f, i, src, wts) > 0)
       {
         continue;
       }

@@ -5,12 +5,6 @@
 
 namespace subd
 {
-bool IsDualCreaseEdge(const Level& level, Index e)
-{
-  const MeshTopology& topo = level.Topology;
-  return IsSharp(level.EdgeSharpness[e]) || topo.GetEdgeFaces(e).size() != 2 || topo.GetEdgeTag(e).NonManifold;
-}
-
 namespace
 {
 // The two edges of face f at its corner j: leaving and entering the corner's vertex.
@@ -53,7 +47,7 @@ bool IsDualCornerVertex(const Level& level, Index v)
   Index creases = 0;
   for (Index e : topo.GetVertexEdges(v))
   {
-    creases += IsDualCreaseEdge(level, e);
+    creases += ActsAsBoundary(level, e);
   }
   if (creases == 0 || creases > 2)
   {
@@ -62,7 +56,7 @@ bool IsDualCornerVertex(const Level& level, Index v)
   for (Index f : faces)
   {
     const auto edges = CornerEdges(topo, f, topo.FindCorner(v, f));
-    if (IsDualCreaseEdge(level, edges.first) && IsDualCreaseEdge(level, edges.second))
+    if (ActsAsBoundary(level, edges.first) && ActsAsBoundary(level, edges.second))
     {
       return true;
     }
@@ -94,6 +88,7 @@ DualPoints NumberDualPoints(const Level& level)
   // At a corner vertex every corner next to a crease edge is the vertex itself.
   DualPoints points;
   points.IsCornerVertex.resize(static_cast<size_t>(topo.GetNumVertices()));
+  points.PinsEveryCorner.resize(static_cast<size_t>(topo.GetNumVertices()));
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
     points.IsCornerVertex[v] = IsDualCornerVertex(level, v);
@@ -101,12 +96,18 @@ DualPoints NumberDualPoints(const Level& level)
     {
       continue;
     }
+    Index creases = 0;
+    for (Index e : topo.GetVertexEdges(v))
+    {
+      creases += ActsAsBoundary(level, e);
+    }
+    points.PinsEveryCorner[v] = creases < 2;
     Index first = InvalidIndex;
     for (Index f : topo.GetVertexFaces(v))
     {
       const Index j = topo.FindCorner(v, f);
       const auto edges = CornerEdges(topo, f, j);
-      if (IsDualCreaseEdge(level, edges.first) || IsDualCreaseEdge(level, edges.second))
+      if (points.PinsEveryCorner[v] || ActsAsBoundary(level, edges.first) || ActsAsBoundary(level, edges.second))
       {
         const Index c = topo.GetFaceOffset(f) + j;
         first = first == InvalidIndex ? c : first;
@@ -173,7 +174,7 @@ Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology dep
   // side of the edge and then along f1's, so that it is oriented like its neighbours.
   for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
-    if (IsDualCreaseEdge(parent, e))
+    if (ActsAsBoundary(parent, e))
     {
       continue;
     }
@@ -215,7 +216,7 @@ Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology dep
       {
         const IndexSpan ef = topo.GetEdgeFaces(e);
         const bool shared = std::find(ef.begin(), ef.end(), next) != ef.end() && next != fan[i];
-        if ((shared || (!closed && i == m - 1)) && IsDualCreaseEdge(parent, e))
+        if ((shared || (!closed && i == m - 1)) && ActsAsBoundary(parent, e))
         {
           sharpAfter[i] = 1;
         }

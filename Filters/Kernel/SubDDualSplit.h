@@ -13,7 +13,8 @@
 // no V-face. Creases are treated like boundaries: the corner points on the two sides of a
 // crease are the same crease (Chaikin) point, so they are welded into one child point, and
 // at a corner vertex (DualCornerVertex) all corner points next to its sharp edges are the
-// vertex itself and are welded too. Child points are numbered by their first corner
+// vertex itself and are welded too (all its corner points, if it has fewer than two sharp
+// edges: its V-face vanishes and its E-faces become triangles). Child points are numbered by their first corner
 // (DualPoints). With the rows of SubDDooSabinRules.h, boundaries and creases are refined by
 // Chaikin's rule.
 // F-faces inherit their face's hole flag and origin; an E- or V-face takes the origin of its
@@ -25,10 +26,6 @@
 
 namespace subd
 {
-/// True for an edge that the dual split treats like a boundary: sharp, or without exactly
-/// two faces, or non-manifold.
-SUBDKERNEL_EXPORT bool IsDualCreaseEdge(const Level& level, Index e);
-
 /// True for a vertex the dual split pins: a single face, a face whose two edges at the vertex
 /// are crease edges, three or more crease edges, or a sharp vertex.
 SUBDKERNEL_EXPORT bool IsDualCornerVertex(const Level& level, Index v);
@@ -41,6 +38,9 @@ struct DualPoints
   std::vector<Index> PointOfCorner;
   std::vector<Index> CornerOfPoint;
   std::vector<std::uint8_t> IsCornerVertex;
+  /// Corner vertices with fewer than two crease edges (a sharp vertex inside smooth
+  /// surface, or at the end of a crease): every corner around them is the vertex itself.
+  std::vector<std::uint8_t> PinsEveryCorner;
 };
 SUBDKERNEL_EXPORT DualPoints NumberDualPoints(const Level& level);
 

@@ -16,6 +16,12 @@ Index Level::GetNumSharpEdges(Index v) const
   return count;
 }
 
+bool ActsAsBoundary(const Level& level, Index e)
+{
+  const MeshTopology& topo = level.Topology;
+  return IsSharp(level.EdgeSharpness[e]) || topo.GetEdgeFaces(e).size() != 2 || topo.GetEdgeTag(e).NonManifold;
+}
+
 bool Level::HasHoles() const
 {
   return std::any_of(

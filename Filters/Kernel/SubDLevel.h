@@ -25,6 +25,11 @@ struct SUBDKERNEL_EXPORT Level
   bool HasHoles() const;
 };
 
+/// True for an edge that schemes without a crease rule of their own (Doo-Sabin, midpoint,
+/// sqrt(3)) treat like a boundary: sharp at this level, or without exactly two faces, or
+/// non-manifold.
+SUBDKERNEL_EXPORT bool ActsAsBoundary(const Level& level, Index e);
+
 /// Sharpness of the half of edge e that ends at its end vertex `end` (0 or 1), one level
 /// down, by the level's crease method (SubdivideEdgeSharpnessAtVertex).
 SUBDKERNEL_EXPORT float ChildEdgeSharpness(const Level& level, Index e, int end);

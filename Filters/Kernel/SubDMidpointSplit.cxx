@@ -4,31 +4,32 @@ namespace subd
 {
 namespace
 {
-bool KeepsBoundaryVertex(const MeshTopology& topo, Index v)
+// A manifold vertex with faces that stays in place: on a boundary, on a crease (two or
+// more edges acting as boundaries) or sharp.
+bool KeepsVertex(const Level& level, Index v)
 {
+  const MeshTopology& topo = level.Topology;
   const VertexTag tag = topo.GetVertexTag(v);
-  return tag.Boundary && !tag.NonManifold && !topo.GetVertexFaces(v).empty();
-}
-}
-
-LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
-{
-  const MeshTopology& topo = parent.Topology;
-  const Index numEdges = topo.GetNumEdges();
-
-  // Child points: midpoints, then kept boundary vertices.
-  std::vector<Index> keptPoint(static_cast<size_t>(topo.GetNumVertices()), InvalidIndex);
-  Index numChildPoints = numEdges;
-  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+  if (tag.NonManifold || topo.GetVertexFaces(v).empty())
   {
-    if (KeepsBoundaryVertex(topo, v))
-    {
-      keptPoint[v] = numChildPoints++;
-    }
+    return false;
   }
+  if (tag.Boundary || IsSharp(level.VertexSharpness[v]))
+  {
+    return true;
+  }
+  Index creases = 0;
+  for (Index e : topo.GetVertexEdges(v))
+  {
+    creases += ActsAsBoundary(level, e);
+  }
+  return creases >= 2;
+}
 
-  LevelRefinement result;
-  StencilTable& table = result.Stencils;
+void WriteStencils(const MeshTopology& topo, const std::vector<Index>& keptPoint, Index numChildPoints,
+  StencilTable& table)
+{
+  const Index numEdges = topo.GetNumEdges();
   table = StencilTable(topo.GetNumVertices());
   table.ReserveRows(numChildPoints);
   for (Index e = 0; e < numEdges; ++e)
@@ -56,53 +57,189 @@ LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
     }
   }
   table.EndBlock(numChildPoints);
+}
 
-  std::vector<Index> offsets{ 0 }, vertices;
-  Level& child = result.Child;
-  auto endFace = [&](Index origin, std::uint8_t hole) {
-    offsets.push_back(static_cast<Index>(vertices.size()));
-    child.FaceOrigin.push_back(origin);
-    child.FaceIsHole.push_back(hole);
-  };
-  for (Index f = 0; f < topo.GetNumFaces(); ++f)
+// The halves of each sharp edge next to a kept end, and the kept vertices, inherit their
+// sharpness one level down.
+void InheritMidpointSharpness(const Level& parent, const std::vector<Index>& keptPoint, Level& child)
+{
+  const MeshTopology& topo = parent.Topology;
+  for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
-    for (Index e : topo.GetFaceEdges(f))
+    if (!IsSharp(parent.EdgeSharpness[e]))
     {
-      vertices.push_back(e);
+      continue;
     }
-    endFace(parent.FaceOrigin[f], parent.FaceIsHole[f]);
+    const Index* ev = topo.GetEdgeVertices(e);
+    for (int k = 0; k < 2; ++k)
+    {
+      const Index half = keptPoint[ev[k]] == InvalidIndex ? InvalidIndex : child.Topology.FindEdge(e, keptPoint[ev[k]]);
+      if (half != InvalidIndex)
+      {
+        child.EdgeSharpness[half] = ChildEdgeSharpness(parent, e, k);
+      }
+    }
   }
-  // V-faces: in fan order each face contributes the midpoint of the edge leaving v, which
-  // is the edge entering v in the next face; a boundary fan starts at the kept vertex and
-  // ends with the boundary edge entering v.
+  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+  {
+    if (keptPoint[v] != InvalidIndex)
+    {
+      child.VertexSharpness[keptPoint[v]] = DecaySharpness(parent.VertexSharpness[v]);
+    }
+  }
+}
+
+// The V-faces. In fan order the edge entering v in one face is the edge leaving v in the
+// next, so a smooth vertex's V-face is the midpoints of the leaving edges. A kept vertex's
+// fan is cut after each face whose entering edge acts as a boundary (an open fan starts at
+// the face with the boundary edge leaving v and ends at the one with the boundary edge
+// entering it); each sector of two or more faces gets a V-face from the kept point through
+// the midpoints of its leaving edges, ending with the entering edge of its last face. A
+// sector of one face would give a triangle of three points on its two boundary-like edges
+// (a sliver along a boundary or crease): its kept point goes into the face's F-face at that
+// corner instead (insertedAtCorner, indexed by face corner).
+void AddVertexFaces(const Level& parent, const std::vector<Index>& keptPoint, std::vector<Index>& insertedAtCorner,
+  std::vector<Index>& offsets, std::vector<Index>& vertices, std::vector<Index>& origins,
+  std::vector<std::uint8_t>& holes)
+{
+  const MeshTopology& topo = parent.Topology;
   std::vector<Index> fan, corners;
+  std::vector<std::uint8_t> cutAfter;
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
     if (!topo.GetOrderedVertexFaces(v, fan, corners))
     {
       continue;
     }
-    const bool boundary = keptPoint[v] != InvalidIndex;
-    if (boundary)
+    const Index m = static_cast<Index>(fan.size());
+    auto leaving = [&](Index i) { return topo.GetFaceEdges(fan[i])[corners[i]]; };
+    auto entering = [&](Index i) {
+      const Index n = topo.GetFaceSize(fan[i]);
+      return topo.GetFaceEdges(fan[i])[(corners[i] + n - 1) % n];
+    };
+    const Index kept = keptPoint[v];
+    cutAfter.assign(static_cast<size_t>(m), 0);
+    Index start = 0;
+    if (kept != InvalidIndex)
     {
-      vertices.push_back(keptPoint[v]);
+      Index cuts = 0;
+      for (Index i = 0; i < m; ++i)
+      {
+        cutAfter[i] = ActsAsBoundary(parent, entering(i));
+        cuts += cutAfter[i];
+      }
+      const bool closed = !topo.GetVertexTag(v).Boundary;
+      if (closed && cuts < 2)
+      {
+        cutAfter.assign(static_cast<size_t>(m), 1);
+      }
+      if (closed)
+      {
+        while (!cutAfter[start])
+        {
+          ++start;
+        }
+        start = (start + 1) % m;
+      }
     }
-    std::uint8_t allHoles = 1;
-    for (size_t i = 0; i < fan.size(); ++i)
+    else if (m < 3)
     {
-      vertices.push_back(topo.GetFaceEdges(fan[i])[corners[i]]);
-      allHoles &= parent.FaceIsHole[fan[i]];
+      continue; // a smooth vertex of two faces (e.g. where a semi-sharp crease ended)
     }
-    if (boundary)
+    Index sectorFirst = 0;
+    for (Index k = 0; k < m; ++k)
     {
-      const Index n = topo.GetFaceSize(fan.back());
-      const Index last = corners.back();
-      vertices.push_back(topo.GetFaceEdges(fan.back())[last == 0 ? n - 1 : last - 1]);
+      const Index i = (start + k) % m;
+      const bool sectorEnds = cutAfter[i] || k == m - 1;
+      if (kept != InvalidIndex && sectorEnds && sectorFirst == k)
+      {
+        insertedAtCorner[topo.GetFaceOffset(fan[i]) + corners[i]] = kept;
+        sectorFirst = k + 1;
+        continue;
+      }
+      if (kept != InvalidIndex && sectorFirst == k)
+      {
+        vertices.push_back(kept);
+      }
+      vertices.push_back(leaving(i));
+      if (!sectorEnds)
+      {
+        continue;
+      }
+      if (kept != InvalidIndex)
+      {
+        vertices.push_back(entering(i));
+      }
+      std::uint8_t allHoles = 1;
+      for (Index s = sectorFirst; s <= k; ++s)
+      {
+        allHoles &= parent.FaceIsHole[fan[(start + s) % m]];
+      }
+      offsets.push_back(static_cast<Index>(vertices.size()));
+      origins.push_back(parent.FaceOrigin[fan[(start + sectorFirst) % m]]);
+      holes.push_back(allHoles);
+      sectorFirst = k + 1;
     }
-    endFace(parent.FaceOrigin[fan[0]], allHoles);
   }
+}
+}
+
+LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
+{
+  const MeshTopology& topo = parent.Topology;
+
+  // Child points: midpoints, then kept vertices.
+  std::vector<Index> keptPoint(static_cast<size_t>(topo.GetNumVertices()), InvalidIndex);
+  Index numChildPoints = topo.GetNumEdges();
+  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+  {
+    if (KeepsVertex(parent, v))
+    {
+      keptPoint[v] = numChildPoints++;
+    }
+  }
+  LevelRefinement result;
+  WriteStencils(topo, keptPoint, numChildPoints, result.Stencils);
+
+  // V-faces first (kept aside: they follow the F-faces), because a sector of a single face
+  // puts its kept point into that face's F-face instead.
+  std::vector<Index> insertedAtCorner(static_cast<size_t>(topo.GetNumFaceCorners()), InvalidIndex);
+  std::vector<Index> vOffsets{ 0 }, vVertices, vOrigins;
+  std::vector<std::uint8_t> vHoles;
+  AddVertexFaces(parent, keptPoint, insertedAtCorner, vOffsets, vVertices, vOrigins, vHoles);
+
+  Level& child = result.Child;
+  std::vector<Index> offsets{ 0 }, vertices;
+  for (Index f = 0; f < topo.GetNumFaces(); ++f)
+  {
+    const IndexSpan edges = topo.GetFaceEdges(f);
+    for (Index j = 0; j < edges.size(); ++j)
+    {
+      const Index inserted = insertedAtCorner[topo.GetFaceOffset(f) + j];
+      if (inserted != InvalidIndex)
+      {
+        vertices.push_back(inserted); // corner j lies between the edges entering and leaving it
+      }
+      vertices.push_back(edges[j]);
+    }
+    offsets.push_back(static_cast<Index>(vertices.size()));
+  }
+  child.FaceOrigin.assign(parent.FaceOrigin.begin(), parent.FaceOrigin.end());
+  child.FaceIsHole.assign(parent.FaceIsHole.begin(), parent.FaceIsHole.end());
+  const Index base = static_cast<Index>(vertices.size());
+  vertices.insert(vertices.end(), vVertices.begin(), vVertices.end());
+  for (size_t k = 1; k < vOffsets.size(); ++k)
+  {
+    offsets.push_back(base + vOffsets[k]);
+  }
+  child.FaceOrigin.insert(child.FaceOrigin.end(), vOrigins.begin(), vOrigins.end());
+  child.FaceIsHole.insert(child.FaceIsHole.end(), vHoles.begin(), vHoles.end());
 
   SetChildTopology(parent, child, numChildPoints, std::move(offsets), std::move(vertices), depth);
+  if (depth == ChildTopology::Full)
+  {
+    InheritMidpointSharpness(parent, keptPoint, child);
+  }
   return result;
 }
 }

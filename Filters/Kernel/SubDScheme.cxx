@@ -107,7 +107,8 @@ LevelRefinement MidpointScheme::RefineLevel(const Level& parent, ChildTopology d
 MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
 {
   // Upper bounds (plus kept boundary vertices, at most V): a point per edge; F- and
-  // V-faces; each face corner gives one corner to an F-face and one to a V-face.
+  // V-faces; each face corner gives one corner to an F-face and one to a V-face. A vertex on
+  // an interior crease gets a V-face per sector, which this size guard does not count.
   MeshCounts child;
   child.Vertices = parent.Edges + parent.Vertices;
   child.Faces = parent.Faces + parent.Vertices;

@@ -41,9 +41,9 @@ public:
   /// boundary rule cannot change them, so BoundaryRule::None makes no holes (as in
   /// OpenSubdiv, where it only applies to schemes with a neighbourhood).
   virtual bool UsesBoundaryRule() const { return true; }
-  /// False for schemes that do not yet honour crease and corner sharpness (their tags are
-  /// then ignored, holes still apply).
-  virtual bool HonoursSharpness() const { return true; }
+  /// True for schemes whose rules alternate with Level::Depth (sqrt(3)'s boundary steps): a
+  /// mesh they make records its depth so that a later refinement continues it.
+  virtual bool DependsOnDepth() const { return false; }
   /// The rule to prepare the base level with for a requested one.
   BoundaryRule EffectiveBoundaryRule(BoundaryRule requested) const
   {
@@ -150,7 +150,7 @@ public:
 class SUBDKERNEL_EXPORT Sqrt3Scheme : public JointRefinementScheme
 {
 public:
-  bool HonoursSharpness() const override { return false; }
+  bool DependsOnDepth() const override { return true; }
   const char* GetName() const override { return "sqrt3"; }
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
@@ -161,7 +161,6 @@ public:
 class SUBDKERNEL_EXPORT MidpointScheme : public JointRefinementScheme
 {
 public:
-  bool HonoursSharpness() const override { return false; }
   const char* GetName() const override { return "midpoint"; }
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;

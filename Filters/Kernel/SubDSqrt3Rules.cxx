@@ -12,23 +12,23 @@ double Sqrt3Alpha(Index n)
 
 namespace
 {
-bool IsBoundaryEdge(const MeshTopology& topo, Index e)
+// A boundary edge, or a crease between two triangles: refined by the boundary curve rule.
+bool IsCurveEdge(const Level& level, Index e)
 {
-  return topo.GetEdgeFaces(e).size() == 1;
+  const MeshTopology& topo = level.Topology;
+  const Index faces = topo.GetEdgeFaces(e).size();
+  return faces == 1 || (faces == 2 && !topo.GetEdgeTag(e).NonManifold && IsSharp(level.EdgeSharpness[e]));
 }
 
-bool Flippable(const MeshTopology& topo, Index e)
+// The other end of v's curve edge that does not lead to `other`, or v itself when v does
+// not have exactly two curve edges.
+Index CurveNeighbour(const Level& level, Index v, Index other)
 {
-  return topo.GetEdgeFaces(e).size() == 2 && !topo.GetEdgeTag(e).NonManifold;
-}
-
-// The other end of v's second boundary edge, or v itself when v does not have exactly two.
-Index BoundaryNeighbour(const MeshTopology& topo, Index v, Index other)
-{
+  const MeshTopology& topo = level.Topology;
   Index found = v, count = 0;
   for (Index e : topo.GetVertexEdges(v))
   {
-    if (IsBoundaryEdge(topo, e))
+    if (IsCurveEdge(level, e))
     {
       ++count;
       const Index w = topo.GetOtherEndpoint(e, v);
@@ -40,6 +40,107 @@ Index BoundaryNeighbour(const MeshTopology& topo, Index v, Index other)
   }
   return count == 2 ? found : v;
 }
+
+// In even steps, the edge each triangle trisects (or InvalidIndex): every curve edge whose
+// triangles trisect nothing else yet, in edge order.
+std::vector<Index> ChooseTrisectedEdges(const Level& level, bool evenStep)
+{
+  const MeshTopology& topo = level.Topology;
+  std::vector<Index> trisected(static_cast<size_t>(topo.GetNumFaces()), InvalidIndex);
+  if (!evenStep)
+  {
+    return trisected;
+  }
+  for (Index e = 0; e < topo.GetNumEdges(); ++e)
+  {
+    if (!IsCurveEdge(level, e))
+    {
+      continue;
+    }
+    const IndexSpan ef = topo.GetEdgeFaces(e);
+    bool free = true;
+    for (Index f : ef)
+    {
+      free = free && trisected[f] == InvalidIndex;
+    }
+    if (free)
+    {
+      for (Index f : ef)
+      {
+        trisected[f] = e;
+      }
+    }
+  }
+  return trisected;
+}
+
+// The vertex rule of each vertex in this step.
+enum class Sqrt3VertexRule : std::uint8_t
+{
+  Relax, // Kobbelt's smoothing, interior smooth or dart vertices
+  Curve, // the boundary rule along the two curve edges (even steps)
+  Fixed  // stays in place
+};
+
+Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep)
+{
+  const MeshTopology& topo = level.Topology;
+  const VertexTag tag = topo.GetVertexTag(v);
+  const Index faces = topo.GetVertexFaces(v).size();
+  if (tag.NonManifold || faces == 0 || IsSharp(level.VertexSharpness[v]))
+  {
+    return Sqrt3VertexRule::Fixed;
+  }
+  Index curves = 0;
+  for (Index e : topo.GetVertexEdges(v))
+  {
+    curves += IsCurveEdge(level, e);
+  }
+  if (!tag.Boundary && curves < 2 && faces == topo.GetVertexEdges(v).size())
+  {
+    return Sqrt3VertexRule::Relax;
+  }
+  return evenStep && curves == 2 ? Sqrt3VertexRule::Curve : Sqrt3VertexRule::Fixed;
+}
+
+// Sets the sharpness of the child pieces of each sharp edge (the unflipped edge, or the
+// three pieces of a trisected one) and of each vertex, one unit down.
+void InheritSqrt3Sharpness(const Level& parent, const std::vector<Index>& firstEdgePoint,
+  Index firstVertexPoint, Level& child)
+{
+  const MeshTopology& topo = parent.Topology;
+  const MeshTopology& childTopo = child.Topology;
+  auto setSharpness = [&](Index a, Index b, float sharpness) {
+    const Index edge = childTopo.FindEdge(a, b);
+    if (edge != InvalidIndex)
+    {
+      child.EdgeSharpness[edge] = sharpness;
+    }
+  };
+  for (Index e = 0; e < topo.GetNumEdges(); ++e)
+  {
+    if (!IsSharp(parent.EdgeSharpness[e]))
+    {
+      continue;
+    }
+    const float sharpness = DecaySharpness(parent.EdgeSharpness[e]);
+    const Index a = firstVertexPoint + topo.GetEdgeVertices(e)[0];
+    const Index b = firstVertexPoint + topo.GetEdgeVertices(e)[1];
+    const Index x = firstEdgePoint[e];
+    if (x == InvalidIndex)
+    {
+      setSharpness(a, b, sharpness);
+      continue;
+    }
+    setSharpness(a, x, sharpness);
+    setSharpness(x, x + 1, sharpness);
+    setSharpness(x + 1, b, sharpness);
+  }
+  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+  {
+    child.VertexSharpness[firstVertexPoint + v] = DecaySharpness(parent.VertexSharpness[v]);
+  }
+}
 }
 
 LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
@@ -48,23 +149,8 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
   const Index numFaces = topo.GetNumFaces();
   const Index numVertices = topo.GetNumVertices();
   const bool evenStep = (parent.Depth % 2) == 1; // the step making level Depth + 1
+  const std::vector<Index> trisectedEdge = ChooseTrisectedEdges(parent, evenStep);
 
-  // In even steps the triangle of a boundary edge is trisected instead of getting a centroid.
-  std::vector<Index> trisectedEdge(static_cast<size_t>(numFaces), InvalidIndex);
-  if (evenStep)
-  {
-    for (Index e = 0; e < topo.GetNumEdges(); ++e)
-    {
-      if (IsBoundaryEdge(topo, e))
-      {
-        const Index f = topo.GetEdgeFaces(e)[0];
-        if (trisectedEdge[f] == InvalidIndex)
-        {
-          trisectedEdge[f] = e; // a triangle with two boundary edges trisects only one
-        }
-      }
-    }
-  }
   // Child point numbering.
   std::vector<Index> centroidPoint(static_cast<size_t>(numFaces), InvalidIndex);
   Index numChildPoints = 0;
@@ -80,27 +166,27 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
   std::vector<Index> firstEdgePoint(static_cast<size_t>(topo.GetNumEdges()), InvalidIndex);
   for (Index f = 0; f < numFaces; ++f)
   {
-    if (trisectedEdge[f] != InvalidIndex)
+    const Index e = trisectedEdge[f];
+    if (e != InvalidIndex && firstEdgePoint[e] == InvalidIndex)
     {
-      firstEdgePoint[trisectedEdge[f]] = numChildPoints;
+      firstEdgePoint[e] = numChildPoints;
       numChildPoints += 2;
     }
   }
+  // The trisection point of edge e next to its end v.
+  auto trisectionPoint = [&](Index e, Index v) {
+    return firstEdgePoint[e] + (topo.GetEdgeVertices(e)[0] == v ? 0 : 1);
+  };
 
   LevelRefinement result;
   StencilTable& table = result.Stencils;
   table = StencilTable(numVertices);
   table.ReserveRows(numChildPoints);
-  // Vertex rules: interior manifold vertices relax; boundary vertices move in even steps.
-  auto relaxes = [&](Index v) {
-    const VertexTag tag = topo.GetVertexTag(v);
-    const Index faces = topo.GetVertexFaces(v).size();
-    return !tag.Boundary && !tag.NonManifold && faces > 0 && faces == topo.GetVertexEdges(v).size();
-  };
-  auto boundaryMoves = [&](Index v) {
-    return evenStep && topo.GetVertexTag(v).Boundary && !topo.GetVertexTag(v).NonManifold &&
-      BoundaryNeighbour(topo, v, InvalidIndex) != v;
-  };
+  std::vector<Sqrt3VertexRule> rules(static_cast<size_t>(numVertices));
+  for (Index v = 0; v < numVertices; ++v)
+  {
+    rules[v] = ClassifySqrt3Vertex(parent, v, evenStep);
+  }
   for (Index f = 0; f < numFaces; ++f)
   {
     if (centroidPoint[f] != InvalidIndex)
@@ -110,8 +196,9 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
   }
   for (Index v = 0; v < numVertices; ++v)
   {
-    table.SetRowSize(firstVertexPoint + v,
-      relaxes(v) ? 1 + topo.GetVertexEdges(v).size() : (boundaryMoves(v) ? 3 : 1));
+    const Index size = rules[v] == Sqrt3VertexRule::Relax ? 1 + topo.GetVertexEdges(v).size()
+                                                           : (rules[v] == Sqrt3VertexRule::Curve ? 3 : 1);
+    table.SetRowSize(firstVertexPoint + v, size);
   }
   for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
@@ -142,7 +229,7 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
   for (Index v = 0; v < numVertices; ++v)
   {
     const Index row = firstVertexPoint + v;
-    if (relaxes(v))
+    if (rules[v] == Sqrt3VertexRule::Relax)
     {
       const IndexSpan edges = topo.GetVertexEdges(v);
       const Index n = edges.size();
@@ -157,10 +244,10 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
         wts[1 + i] = alpha / n;
       }
     }
-    else if (boundaryMoves(v))
+    else if (rules[v] == Sqrt3VertexRule::Curve)
     {
-      const Index p = BoundaryNeighbour(topo, v, InvalidIndex);
-      const Index q = BoundaryNeighbour(topo, v, p);
+      const Index p = CurveNeighbour(parent, v, InvalidIndex);
+      const Index q = CurveNeighbour(parent, v, p);
       setRow(row, { { p, 4.0 / 27.0 }, { v, 19.0 / 27.0 }, { q, 4.0 / 27.0 } });
     }
     else
@@ -168,24 +255,14 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
       setRow(row, { { v, 1.0 } });
     }
   }
-  // Trisection points of boundary edge (a, b), oriented as its triangle runs it.
-  auto orientedEnds = [&](Index e, Index f, Index& a, Index& b) {
-    const Index* ev = topo.GetEdgeVertices(e);
-    const Index corner = topo.FindCorner(ev[0], f);
-    const bool forward = topo.GetFaceVertices(f)[(corner + 1) % 3] == ev[1];
-    a = forward ? ev[0] : ev[1];
-    b = forward ? ev[1] : ev[0];
-  };
-  for (Index f = 0; f < numFaces; ++f)
+  for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
-    const Index e = trisectedEdge[f];
-    if (e == InvalidIndex)
+    if (firstEdgePoint[e] == InvalidIndex)
     {
       continue;
     }
-    Index a, b;
-    orientedEnds(e, f, a, b);
-    const Index p = BoundaryNeighbour(topo, a, b), q = BoundaryNeighbour(topo, b, a);
+    const Index a = topo.GetEdgeVertices(e)[0], b = topo.GetEdgeVertices(e)[1];
+    const Index p = CurveNeighbour(parent, a, b), q = CurveNeighbour(parent, b, a);
     setRow(firstEdgePoint[e], { { p, 1.0 / 27.0 }, { a, 16.0 / 27.0 }, { b, 10.0 / 27.0 } });
     setRow(firstEdgePoint[e] + 1, { { a, 10.0 / 27.0 }, { b, 16.0 / 27.0 }, { q, 1.0 / 27.0 } });
   }
@@ -201,24 +278,31 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
     child.FaceIsHole.push_back(hole);
   };
   auto vertexPoint = [firstVertexPoint](Index v) { return firstVertexPoint + v; };
-  // The point an old edge e of face f is flipped to: the centroid, or in a trisected
-  // triangle (a, b, m) the trisection point next to the end of the trisected edge that e
-  // shares (x1 next to a, x2 next to b).
+  // Edge e's ends (a, b) in the order face f runs them.
+  auto orientedEnds = [&](Index e, Index f, Index& a, Index& b) {
+    const Index* ev = topo.GetEdgeVertices(e);
+    const Index corner = topo.FindCorner(ev[0], f);
+    const bool forward = topo.GetFaceVertices(f)[(corner + 1) % 3] == ev[1];
+    a = forward ? ev[0] : ev[1];
+    b = forward ? ev[1] : ev[0];
+  };
+  // The point an old edge e of face f is flipped to: the centroid, or in a triangle that
+  // trisects another edge the trisection point next to the end the two edges share.
   auto apex = [&](Index f, Index e) {
     if (centroidPoint[f] != InvalidIndex)
     {
       return centroidPoint[f];
     }
-    Index a, b;
-    orientedEnds(trisectedEdge[f], f, a, b);
+    const Index t = trisectedEdge[f];
     const Index* ev = topo.GetEdgeVertices(e);
-    const bool touchesA = ev[0] == a || ev[1] == a;
-    return firstEdgePoint[trisectedEdge[f]] + (touchesA ? 0 : 1);
+    const Index* tv = topo.GetEdgeVertices(t);
+    const Index shared = (ev[0] == tv[0] || ev[0] == tv[1]) ? ev[0] : ev[1];
+    return trisectionPoint(t, shared);
   };
   for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
     const IndexSpan ef = topo.GetEdgeFaces(e);
-    if (Flippable(topo, e))
+    if (!ActsAsBoundary(parent, e))
     {
       Index f1 = ef[0], f2 = ef[1], a, b;
       orientedEnds(e, f1, a, b);
@@ -227,8 +311,8 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
       addTriangle(vertexPoint(b), apex(f1, e), apex(f2, e), f2, hole);
       continue;
     }
-    // Not flipped (boundary, non-manifold): each face keeps its part next to e, unless e is
-    // the trisected edge itself (handled below).
+    // Not flipped (boundary, crease, non-manifold): each face keeps its part next to e,
+    // unless e is the edge the face trisects (handled below).
     for (Index f : ef)
     {
       if (e == trisectedEdge[f])
@@ -240,8 +324,8 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
       addTriangle(vertexPoint(a), vertexPoint(b), apex(f, e), f, parent.FaceIsHole[f]);
     }
   }
-  // Trisected boundary triangles (a, b, m): the middle triangle (x1, x2, m); the triangles
-  // (a, x1, m) and (x2, b, m) were made above, through the flips of (m, a) and (b, m).
+  // Triangles (a, b, m) trisecting (a, b): the middle triangle (x_a, x_b, m); the triangles
+  // (a, x_a, m) and (x_b, b, m) were made above, through the flips of (m, a) and (b, m).
   for (Index f = 0; f < numFaces; ++f)
   {
     const Index e = trisectedEdge[f];
@@ -249,10 +333,16 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
     {
       continue;
     }
+    Index a, b;
+    orientedEnds(e, f, a, b);
     const Index m = topo.GetTriangleOppositeVertex(f, e);
-    addTriangle(firstEdgePoint[e], firstEdgePoint[e] + 1, vertexPoint(m), f, parent.FaceIsHole[f]);
+    addTriangle(trisectionPoint(e, a), trisectionPoint(e, b), vertexPoint(m), f, parent.FaceIsHole[f]);
   }
   SetChildTopology(parent, child, numChildPoints, std::move(offsets), std::move(vertices), depth);
+  if (depth == ChildTopology::Full)
+  {
+    InheritSqrt3Sharpness(parent, firstEdgePoint, firstVertexPoint, child);
+  }
   return result;
 }
 }

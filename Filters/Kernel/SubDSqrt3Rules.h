@@ -22,8 +22,19 @@
 // Non-manifold edges are treated like boundary edges that are never trisected, and
 // non-manifold vertices stay in place.
 //
-// Child points: the centroids (of every face in odd steps, of the faces without a boundary
-// edge in even steps), then the old vertices, then two points per trisected boundary edge.
+// Creases are treated like boundaries (ActsAsBoundary): a crease edge is never flipped, and
+// in even steps it is trisected by the boundary masks (p, q its neighbours along the
+// crease), the two trisection points shared by the triangles on both sides; a vertex with
+// exactly two crease or boundary edges follows the boundary vertex rule along them, a
+// vertex with more (or a sharp vertex) stays in place, and a crease end (a dart) takes the
+// smooth rule. A triangle can only trisect one of its edges: an edge whose triangle (on
+// either side) already trisects another one waits for the next even step, by which time
+// its triangles have a single crease edge each. Semi-sharp edges act as creases while their
+// sharpness is positive; each step takes one unit off every crease piece and sharp vertex.
+//
+// Child points: the centroids (of every face in odd steps, of the faces without a trisected
+// edge in even steps), then the old vertices, then two points per trisected edge, the first
+// next to the edge's first vertex.
 // The parity comes from Level::Depth, so a hierarchy refined in one go is consistent; one
 // level at a time from a refined mesh restarts at an odd step.
 #ifndef SubDSqrt3Rules_h

@@ -140,11 +140,12 @@ class CreaseChaining : public ::testing::Test
 {
 };
 using ChainedFilters = ::testing::Types<vtkSubDCatmullClarkFilter, vtkSubDLoopFilter,
-  vtkSubDButterflyFilter, vtkSubDLinearFilter, vtkSubDDooSabinFilter>;
+  vtkSubDButterflyFilter, vtkSubDLinearFilter, vtkSubDDooSabinFilter, vtkSubDMidpointFilter, vtkSubDSqrt3Filter>;
 TYPED_TEST_SUITE(CreaseChaining, ChainedFilters);
 
 // Three filters of one level each give the same surface, crease lines and corner sharpness
-// as one filter of three levels, for both crease methods.
+// as one filter of three levels, for both crease methods (sqrt(3) continues the parity of
+// its boundary steps through the "SubDDepth" field data).
 TYPED_TEST(CreaseChaining, ThreeOneLevelFiltersEqualOneThreeLevelFilter)
 {
   const bool triangles = !std::is_same<TypeParam, vtkSubDCatmullClarkFilter>::value &&
@@ -280,11 +281,12 @@ std::array<double, 3> ClosedQuadraticBSpline(const std::vector<std::array<double
   return c;
 }
 
-// Refines a torus with an infinitely sharp crease ring and compares the crease with
-// `curve` of the ring's polygon: `sample(points, j)` turns the ordered level-k crease
-// polygon into the curve point at t = j / 2^k (up to the start and direction of the walk).
+// Refines a torus with an infinitely sharp crease ring by `levels` levels and compares the
+// crease with `curve` of the ring's polygon: each ring edge must have become `pieces`
+// crease edges, and `sample(points, j)` turns the ordered crease polygon into the curve
+// point at t = j / pieces (up to the start and direction of the walk).
 template <typename Filter, typename Curve, typename Sample>
-void CheckCreaseFollowsCurve(bool triangles, Curve&& curve, Sample&& sample)
+void CheckCreaseFollowsCurve(bool triangles, int levels, size_t pieces, Curve&& curve, Sample&& sample)
 {
   const subdtest::TestMesh torus = Torus(triangles);
   vtkSmartPointer<vtkPolyData> input = ToPolyData(torus);
@@ -297,7 +299,6 @@ void CheckCreaseFollowsCurve(bool triangles, Curve&& curve, Sample&& sample)
       torus.Points[3 * TorusVertex(i, 2) + 2] });
   }
   AddCreases(input, ring, {}); // no Sharpness array: infinitely sharp
-  const int levels = 3;
   vtkSmartPointer<vtkPolyData> out = Subdivide<Filter>(input, levels);
   // Walk the crease lines around the ring.
   std::map<vtkIdType, std::vector<vtkIdType>> next;
@@ -306,7 +307,7 @@ void CheckCreaseFollowsCurve(bool triangles, Curve&& curve, Sample&& sample)
     next[line.first.first].push_back(line.first.second);
     next[line.first.second].push_back(line.first.first);
   }
-  const size_t count = 6u << levels;
+  const size_t count = 6 * pieces;
   ASSERT_EQ(next.size(), count);
   std::vector<vtkIdType> order{ next.begin()->first };
   while (order.size() < count)
@@ -327,7 +328,7 @@ void CheckCreaseFollowsCurve(bool triangles, Curve&& curve, Sample&& sample)
       double worst = 0.0;
       for (size_t j = 0; j < count; ++j)
       {
-        const std::array<double, 3> exact = curve(control, static_cast<double>(j) / (1 << levels));
+        const std::array<double, 3> exact = curve(control, static_cast<double>(j) / pieces);
         const auto& mine = limit[(start + direction * static_cast<long>(j) + 2 * count) % count];
         for (int d = 0; d < 3; ++d)
           worst = std::max(worst, std::abs(exact[d] - mine[d]));
@@ -358,17 +359,39 @@ std::array<double, 3> Midpoint(const std::vector<std::array<double, 3>>& q, size
 
 TEST(CreaseClosedForm, InfinitelySharpCreaseIsTheCubicBSplineOfItsPolylineCatmullClark)
 {
-  CheckCreaseFollowsCurve<vtkSubDCatmullClarkFilter>(false, ClosedCubicBSpline, CubicLimitPoint);
+  CheckCreaseFollowsCurve<vtkSubDCatmullClarkFilter>(false, 3, 8, ClosedCubicBSpline, CubicLimitPoint);
 }
 
 TEST(CreaseClosedForm, InfinitelySharpCreaseIsTheCubicBSplineOfItsPolylineLoop)
 {
-  CheckCreaseFollowsCurve<vtkSubDLoopFilter>(true, ClosedCubicBSpline, CubicLimitPoint);
+  CheckCreaseFollowsCurve<vtkSubDLoopFilter>(true, 3, 8, ClosedCubicBSpline, CubicLimitPoint);
+}
+
+// Two sqrt(3) steps trisect the crease with the ternary masks of the cubic B-spline.
+TEST(CreaseClosedForm, InfinitelySharpCreaseIsTheCubicBSplineOfItsPolylineSqrt3)
+{
+  CheckCreaseFollowsCurve<vtkSubDSqrt3Filter>(true, 4, 9, ClosedCubicBSpline, CubicLimitPoint);
 }
 
 TEST(CreaseClosedForm, InfinitelySharpCreaseIsTheQuadraticBSplineOfItsPolylineDooSabin)
 {
-  CheckCreaseFollowsCurve<vtkSubDDooSabinFilter>(false, ClosedQuadraticBSpline, Midpoint);
+  CheckCreaseFollowsCurve<vtkSubDDooSabinFilter>(false, 3, 8, ClosedQuadraticBSpline, Midpoint);
+}
+
+// The midpoint scheme keeps crease vertices and splits crease edges at their midpoints: the
+// crease stays its polyline.
+TEST(CreaseClosedForm, InfinitelySharpCreaseKeepsItsPolylineMidpoint)
+{
+  auto polyline = [](const std::vector<std::array<double, 3>>& p, double t) {
+    const size_t i = static_cast<size_t>(std::floor(t));
+    const double u = t - i;
+    std::array<double, 3> c;
+    for (int d = 0; d < 3; ++d)
+      c[d] = (1 - u) * p[i % p.size()][d] + u * p[(i + 1) % p.size()][d];
+    return c;
+  };
+  auto vertex = [](const std::vector<std::array<double, 3>>& q, size_t j) { return q[j]; };
+  CheckCreaseFollowsCurve<vtkSubDMidpointFilter>(false, 3, 8, polyline, vertex);
 }
 
 TEST(CreaseInput, LineThatIsNotAnEdgeIsWarnedAndPassedThrough)
@@ -498,7 +521,7 @@ class CreaseAsBoundary : public ::testing::Test
 {
 };
 using CreaseSchemes = ::testing::Types<vtkSubDCatmullClarkFilter, vtkSubDLoopFilter, vtkSubDButterflyFilter,
-  vtkSubDDooSabinFilter>;
+  vtkSubDDooSabinFilter, vtkSubDMidpointFilter, vtkSubDSqrt3Filter>;
 TYPED_TEST_SUITE(CreaseAsBoundary, CreaseSchemes);
 
 // An infinitely sharp crease loop around a cylinder makes the two sides independent: the
@@ -507,7 +530,8 @@ TYPED_TEST_SUITE(CreaseAsBoundary, CreaseSchemes);
 TYPED_TEST(CreaseAsBoundary, CreaseLoopEqualsACut)
 {
   const bool triangles = !std::is_same<TypeParam, vtkSubDCatmullClarkFilter>::value &&
-    !std::is_same<TypeParam, vtkSubDDooSabinFilter>::value;
+    !std::is_same<TypeParam, vtkSubDDooSabinFilter>::value && !std::is_same<TypeParam, vtkSubDMidpointFilter>::value;
+  const bool sqrt3 = std::is_same<TypeParam, vtkSubDSqrt3Filter>::value;
   subdtest::TestMesh cylinder = subdtest::Grid(6, 4, true, false).Jitter(0.1);
   auto id = [](int i, int j) { return static_cast<subd::Index>(6 * j + (i % 6)); };
   subdtest::TestMesh cut;
@@ -534,8 +558,9 @@ TYPED_TEST(CreaseAsBoundary, CreaseLoopEqualsACut)
   ASSERT_GT(a->GetNumberOfPoints(), 0);
   EXPECT_EQ(a->GetNumberOfPolys(), b->GetNumberOfPolys());
   // The cut duplicates the crease's points: 6 * 4 after two levels (primal schemes keep and
-  // split the crease row, Doo-Sabin's Chaikin rule doubles it per level too).
-  EXPECT_EQ(a->GetNumberOfPoints() + 6 * 4, b->GetNumberOfPoints());
+  // split the crease row, Doo-Sabin's Chaikin rule doubles it per level too), 6 * 3 after
+  // two sqrt(3) steps (one trisection).
+  EXPECT_EQ(a->GetNumberOfPoints() + 6 * (sqrt3 ? 3 : 4), b->GetNumberOfPoints());
   // Every point of each result is a point of the other.
   for (auto pair : { std::make_pair(a, b), std::make_pair(b, a) })
   {
@@ -558,21 +583,41 @@ TYPED_TEST(CreaseAsBoundary, CreaseLoopEqualsACut)
 
 namespace
 {
-// Schemes that do not honour sharpness yet say so instead of ignoring it silently.
+// A corner (CornerSharpness >= 10) is a point of the refined surface in every scheme that
+// keeps vertices (the approximating ones pin it; the interpolating ones keep every vertex).
 template <typename Filter>
-void CheckSharpnessIgnoredWarning(bool triangles)
+void CheckCornerStaysPut(bool triangles)
 {
+  SCOPED_TRACE(vtkNew<Filter>()->GetClassName());
   vtkSmartPointer<vtkPolyData> input = ToPolyData(triangles ? subdtest::Cube().Triangulated() : subdtest::Cube());
-  AddCreases(input, { { 0, 1 } }, { 10.0f });
+  double corner[3];
+  input->GetPoint(6, corner);
+  auto distanceToCorner = [&corner](vtkPolyData* out) {
+    double nearest = 1e300;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      out->GetPoint(i, p);
+      nearest = std::min(nearest,
+        std::max({ std::abs(p[0] - corner[0]), std::abs(p[1] - corner[1]), std::abs(p[2] - corner[2]) }));
+    }
+    return nearest;
+  };
+  // Untagged, every one of these schemes moves the cube's corner inside.
+  EXPECT_GT(distanceToCorner(Subdivide<Filter>(input, 3)), 1e-3);
+  AddCornerSharpness(input, { { 6, 10.0f } });
   Messages messages;
-  vtkSmartPointer<vtkPolyData> out = Subdivide<Filter>(input, 1, 0, &messages);
-  EXPECT_GT(out->GetNumberOfPolys(), 0);
-  EXPECT_NE(messages.Warnings.find("does not honour crease"), std::string::npos) << messages.Warnings;
+  vtkSmartPointer<vtkPolyData> out = Subdivide<Filter>(input, 3, 0, &messages);
+  EXPECT_EQ(messages.NumErrors + messages.NumWarnings, 0) << messages.Warnings;
+  EXPECT_EQ(distanceToCorner(out), 0.0);
 }
 
-TEST(CreaseInput, SchemesWithoutCreaseSupportWarn)
+TEST(CreaseCorners, SharpCornerIsKeptByEveryScheme)
 {
-  CheckSharpnessIgnoredWarning<vtkSubDMidpointFilter>(false);
-  CheckSharpnessIgnoredWarning<vtkSubDSqrt3Filter>(true);
+  CheckCornerStaysPut<vtkSubDCatmullClarkFilter>(false);
+  CheckCornerStaysPut<vtkSubDLoopFilter>(true);
+  CheckCornerStaysPut<vtkSubDDooSabinFilter>(false);
+  CheckCornerStaysPut<vtkSubDMidpointFilter>(false);
+  CheckCornerStaysPut<vtkSubDSqrt3Filter>(true);
 }
 }
