@@ -2,6 +2,7 @@
 #include "SubDBuiltinCages.h"
 #include "SubDMeshIO.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -34,6 +35,37 @@ bool ParseDouble(const std::string& text, double& value)
   return true;
 }
 
+// A comma-separated list of scheme names, or "all".
+bool ParseSchemeList(const std::string& text, std::vector<std::string>& names, std::string& error)
+{
+  names.clear();
+  if (text == "all")
+  {
+    for (const SchemeEntry& entry : Schemes())
+    {
+      names.push_back(entry.Name);
+    }
+    return true;
+  }
+  std::istringstream in(text);
+  std::string name;
+  while (std::getline(in, name, ','))
+  {
+    if (!FindScheme(name))
+    {
+      error = "--compare: unknown scheme '" + name + "' (see --help)";
+      return false;
+    }
+    names.push_back(name);
+  }
+  if (names.empty())
+  {
+    error = "--compare wants a comma-separated list of schemes, or 'all'";
+    return false;
+  }
+  return true;
+}
+
 bool ParseBoundary(const std::string& text, int& rule)
 {
   if (text == "none")
@@ -61,6 +93,7 @@ std::string UsageText()
   std::ostringstream out;
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
          "            [--crease-method METHOD] [--feature-angle DEG] [--output FILE]\n"
+         "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
          "\n"
          "Subdivides the polygon mesh INPUT (" << SupportedExtensions() << ") and writes the\n"
          "result; the formats are chosen by the file extensions. Without INPUT, a built-in\n"
@@ -94,7 +127,16 @@ std::string UsageText()
     out << " " << name;
   }
   out << " (default " << BuiltinCageNames().front() << ")\n"
-         "  -o, --output FILE  output file (default <input>-<scheme>-L<levels>.vtp)\n"
+         "  -o, --output FILE  output file (default <input>-<scheme>-L<levels>.vtp; with --image,\n"
+         "                     no mesh is written unless --output is given)\n"
+         "\n"
+         "Pictures (rendered offscreen: no display server needed):\n"
+         "  --image FILE.png   render the result: curvature colours, control cage, creases\n"
+         "  --compare S1,S2,.. with --image: a side-by-side grid of these schemes (or 'all') at\n"
+         "                     the same level, seen through one camera\n"
+         "  --color C          none, mean or gaussian (discrete curvature; default mean)\n"
+         "  --view-size WxH    pixels per view, 64..4096 each (default 500x500)\n"
+         "  --no-cage          do not overlay the control cage\n"
          "  -q, --quiet        no summary line\n"
          "  -h, --help         this text\n"
          "  --version          the program's version\n"
@@ -230,6 +272,60 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
         return false;
       }
     }
+    else if (arg == "--image")
+    {
+      if (!value(cmd.Image))
+      {
+        return false;
+      }
+      if (LowerExtension(cmd.Image) != ".png")
+      {
+        error = "--image writes PNG files: '" + cmd.Image + "' does not end in .png";
+        return false;
+      }
+    }
+    else if (arg == "--compare")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      if (!ParseSchemeList(text, cmd.Compare, error))
+      {
+        return false;
+      }
+    }
+    else if (arg == "--color")
+    {
+      if (!value(cmd.Color))
+      {
+        return false;
+      }
+      if (cmd.Color != "none" && cmd.Color != "mean" && cmd.Color != "gaussian")
+      {
+        error = "--color wants none, mean or gaussian, not '" + cmd.Color + "'";
+        return false;
+      }
+    }
+    else if (arg == "--view-size")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      const auto x = text.find('x');
+      if (x == std::string::npos || !ParseInt(text.substr(0, x), cmd.ViewSize[0]) ||
+        !ParseInt(text.substr(x + 1), cmd.ViewSize[1]) || cmd.ViewSize[0] < 64 || cmd.ViewSize[1] < 64 ||
+        cmd.ViewSize[0] > 4096 || cmd.ViewSize[1] > 4096)
+      {
+        error = "--view-size wants WxH with each in 64..4096, not '" + text + "'";
+        return false;
+      }
+    }
+    else if (arg == "--no-cage")
+    {
+      cmd.Cage = false;
+    }
     else if (!arg.empty() && arg[0] == '-')
     {
       error = "unknown option '" + arg + "' (see --help)";
@@ -245,7 +341,14 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
       return false;
     }
   }
-  if (cmd.TensionGiven && cmd.Scheme != "butterfly")
+  if (!cmd.Compare.empty() && cmd.Image.empty())
+  {
+    error = "--compare draws a picture: give --image FILE.png too";
+    return false;
+  }
+  const bool comparesButterfly =
+    std::find(cmd.Compare.begin(), cmd.Compare.end(), std::string("butterfly")) != cmd.Compare.end();
+  if (cmd.TensionGiven && cmd.Scheme != "butterfly" && !comparesButterfly)
   {
     error = "--tension applies to the butterfly scheme only";
     return false;
@@ -280,5 +383,10 @@ std::string DefaultOutputPath(const CommandLine& cmd)
     }
   }
   return stem + "-" + cmd.Scheme + "-L" + std::to_string(cmd.Options.Levels) + ".vtp";
+}
+
+bool WritesMesh(const CommandLine& cmd)
+{
+  return cmd.Image.empty() || !cmd.Output.empty();
 }
 }

@@ -4,6 +4,7 @@
 
 #include "SubDSchemeRegistry.h"
 #include <string>
+#include <vector>
 
 namespace subdapp
 {
@@ -15,6 +16,11 @@ struct CommandLine
   std::string Scheme = "catmull-clark";
   SchemeOptions Options;
   bool TensionGiven = false;
+  std::string Image;                ///< PNG to render the result to (empty: none)
+  std::vector<std::string> Compare; ///< with Image: the schemes of a side-by-side grid
+  std::string Color = "mean";       ///< none, mean or gaussian (curvature colouring)
+  int ViewSize[2] = { 500, 500 };   ///< pixels per view
+  bool Cage = true;                 ///< overlay the control cage
   bool Quiet = false;
   bool Help = false;
   bool Version = false;
@@ -24,6 +30,9 @@ struct CommandLine
 bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& error);
 
 std::string UsageText();
+
+/// True when a mesh file is written: always, except with --image and no --output.
+bool WritesMesh(const CommandLine& cmd);
 
 /// Output path when none was given: "<input stem>-<scheme>-L<levels>.vtp".
 std::string DefaultOutputPath(const CommandLine& cmd);

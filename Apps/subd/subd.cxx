@@ -2,6 +2,7 @@
 // it with the chosen scheme and writes the result, printing a one-line summary.
 #include "SubDBuiltinCages.h"
 #include "SubDCommandLine.h"
+#include "SubDImage.h"
 #include "SubDMeshIO.h"
 #include "SubDMessageCollector.h"
 #include "SubDSchemeRegistry.h"
@@ -124,8 +125,8 @@ int main(int argc, char* argv[])
     std::cerr << "subd: refusing to overwrite the input file '" << cmd.Input << "'\n";
     return 1;
   }
-  if (subdapp::LowerExtension(output).empty() ||
-    std::string(subdapp::SupportedExtensions()).find(subdapp::LowerExtension(output)) == std::string::npos)
+  if (subdapp::WritesMesh(cmd) && (subdapp::LowerExtension(output).empty() ||
+    std::string(subdapp::SupportedExtensions()).find(subdapp::LowerExtension(output)) == std::string::npos))
   {
     std::cerr << "subd: cannot write '" << output << "': unknown output type (supported: "
               << subdapp::SupportedExtensions() << ")\n";
@@ -154,10 +155,21 @@ int main(int argc, char* argv[])
     PrintMessages(messages.Errors.empty() ? "subdivision produced no output\n" : messages.Errors, "error");
     return 1;
   }
-  if (!subdapp::WriteMesh(result, output, error))
+  if (subdapp::WritesMesh(cmd) && !subdapp::WriteMesh(result, output, error))
   {
     std::cerr << "subd: " << error << "\n";
     return 1;
+  }
+  if (!cmd.Image.empty())
+  {
+    std::string warnings;
+    const bool rendered = subdapp::RenderImage(cmd, input, result, warnings, error);
+    PrintMessages(warnings, "warning");
+    if (!rendered)
+    {
+      std::cerr << "subd: " << error << "\n";
+      return 1;
+    }
   }
   if (!cmd.Quiet)
   {
@@ -169,7 +181,16 @@ int main(int argc, char* argv[])
     {
       std::cout << ", " << result->GetNumberOfLines() << " crease edges";
     }
-    std::cout << " in " << seconds << " s -> " << output << "\n";
+    std::cout << " in " << seconds << " s";
+    if (subdapp::WritesMesh(cmd))
+    {
+      std::cout << " -> " << output;
+    }
+    if (!cmd.Image.empty())
+    {
+      std::cout << " -> image " << cmd.Image;
+    }
+    std::cout << "\n";
   }
   return 0;
 }

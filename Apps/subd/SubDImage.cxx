@@ -1,0 +1,75 @@
+#include "SubDImage.h"
+
+#include "SubDMessageCollector.h"
+#include "SubDSchemeRegistry.h"
+
+#include "vtkPolyData.h"
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkRenderWindow.h"
+#include "vtkSmartPointer.h"
+#include "vtkSubDScene.h"
+
+#include <vector>
+
+namespace subdapp
+{
+namespace
+{
+int ColoringOf(const std::string& color)
+{
+  if (color == "none")
+  {
+    return vtkSubDScene::COLOR_NONE;
+  }
+  return color == "gaussian" ? vtkSubDScene::COLOR_GAUSSIAN_CURVATURE : vtkSubDScene::COLOR_MEAN_CURVATURE;
+}
+
+std::string TitleOf(const std::string& scheme, int levels)
+{
+  return scheme + ", " + std::to_string(levels) + (levels == 1 ? " level" : " levels");
+}
+}
+
+bool RenderImage(const CommandLine& cmd, vtkPolyData* cage, vtkPolyData* result, std::string& warnings,
+  std::string& error)
+{
+  vtkNew<vtkSubDScene> scene;
+  MessageCollector sceneMessages;
+  sceneMessages.Watch(scene);
+  sceneMessages.Watch(scene->GetRenderWindow());
+  scene->SetColoring(ColoringOf(cmd.Color));
+  scene->SetShowCage(cmd.Cage);
+  scene->SetViewSize(cmd.ViewSize[0], cmd.ViewSize[1]);
+  std::vector<vtkSmartPointer<vtkPolyData>> keep; // the compared results outlive their filters
+  if (cmd.Compare.empty())
+  {
+    scene->AddView(result, cage, TitleOf(cmd.Scheme, cmd.Options.Levels).c_str());
+  }
+  for (const std::string& name : cmd.Compare)
+  {
+    vtkSmartPointer<vtkPolyDataAlgorithm> filter = FindScheme(name)->Make(cmd.Options);
+    MessageCollector messages;
+    messages.Watch(filter);
+    filter->SetInputData(cage);
+    filter->Update();
+    warnings += messages.Warnings;
+    if (!messages.Errors.empty() || filter->GetOutput()->GetNumberOfCells() == 0)
+    {
+      error = "--compare: the " + name + " scheme failed: " +
+        (messages.Errors.empty() ? std::string("no output") : messages.Errors);
+      return false;
+    }
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->ShallowCopy(filter->GetOutput());
+    keep.push_back(copy);
+    scene->AddView(copy, cage, TitleOf(name, cmd.Options.Levels).c_str());
+  }
+  if (!scene->WritePNG(cmd.Image.c_str()))
+  {
+    error = "cannot render '" + cmd.Image + "': " +
+      (sceneMessages.Errors.empty() ? std::string("rendering failed") : sceneMessages.Errors);
+    return false;
+  }
+  return true;
+}
+}
