@@ -347,7 +347,8 @@ bool vtkSubDScene::Render()
       title->GetTextProperty()->SetFontSize(16);
       title->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
       title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-      title->GetPositionCoordinate()->SetValue(0.02, 0.94);
+      title->GetPositionCoordinate()->SetValue(0.02, 0.98);
+      title->GetTextProperty()->SetVerticalJustificationToTop();
       renderer->AddActor2D(title);
     }
     if (this->ShowScalarBar && this->Coloring != COLOR_NONE)
