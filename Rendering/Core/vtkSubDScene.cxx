@@ -34,7 +34,10 @@
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -396,6 +399,14 @@ bool vtkSubDScene::WritePNG(const char* fileName)
   {
     vtkErrorMacro("WritePNG needs a file name.");
     return false;
+  }
+  {
+    std::ofstream probe(fileName, std::ios::binary); // fail early, before rendering
+    if (!probe)
+    {
+      vtkErrorMacro(<< "Cannot open '" << fileName << "' for writing: " << std::strerror(errno) << ".");
+      return false;
+    }
   }
   if (!this->Render())
   {

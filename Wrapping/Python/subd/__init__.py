@@ -6,5 +6,9 @@ classes, e.g. ``subd.vtkSubDCatmullClarkFilter``.
 from vtkmodules import vtkCommonCore as _vtkCommonCore  # noqa: F401  (registers VTK types)
 from .SubDFilters import *  # noqa: F401,F403
 from .SubDIO import *  # noqa: F401,F403
+# Rendering: VTK's OpenGL and FreeType modules register the classes the scene needs.
+from vtkmodules import vtkRenderingOpenGL2 as _vtkRenderingOpenGL2  # noqa: F401
+from vtkmodules import vtkRenderingFreeType as _vtkRenderingFreeType  # noqa: F401
+from .SubDRendering import *  # noqa: F401,F403
 
 __all__ = [name for name in dir() if name.startswith("vtkSubD")]
