@@ -55,15 +55,32 @@ struct View
   std::string Title;
 };
 
+// The points and polygons of a mesh (its lines and vertices left out).
+vtkSmartPointer<vtkPolyData> PolygonsOf(vtkPolyData* mesh)
+{
+  auto faces = vtkSmartPointer<vtkPolyData>::New();
+  faces->SetPoints(mesh->GetPoints());
+  faces->SetPolys(mesh->GetPolys());
+  return faces;
+}
+
+// The renderer of cell k of a grid of `columns` x `rows` views, filled from the top left.
+vtkSmartPointer<vtkRenderer> GridRenderer(int k, int columns, int rows)
+{
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  const int column = k % columns, row = k / columns;
+  renderer->SetViewport(static_cast<double>(column) / columns, 1.0 - static_cast<double>(row + 1) / rows,
+    static_cast<double>(column + 1) / columns, 1.0 - static_cast<double>(row) / rows);
+  renderer->SetBackground(Background[0], Background[1], Background[2]);
+  return renderer;
+}
+
 // The surface's polygons as triangles, with the chosen curvature as active point scalars
 // (none for COLOR_NONE), shaded with normals split at 60 degrees.
 vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* surface, int coloring)
 {
-  vtkNew<vtkPolyData> faces;
-  faces->SetPoints(surface->GetPoints());
-  faces->SetPolys(surface->GetPolys());
   vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(faces);
+  triangles->SetInputData(PolygonsOf(surface));
   triangles->PassLinesOff();
   triangles->PassVertsOff();
   vtkSmartPointer<vtkAlgorithm> last = triangles;
@@ -155,11 +172,8 @@ vtkSmartPointer<vtkActor> TubeActor(vtkPolyData* lines, double radius, const dou
 // The edges of the cage's polygons as tubes, and its vertices as spheres.
 void AddCage(vtkRenderer* renderer, vtkPolyData* cage, double size)
 {
-  vtkNew<vtkPolyData> faces;
-  faces->SetPoints(cage->GetPoints());
-  faces->SetPolys(cage->GetPolys());
   vtkNew<vtkExtractEdges> edges;
-  edges->SetInputData(faces);
+  edges->SetInputData(PolygonsOf(cage));
   edges->Update();
   renderer->AddActor(TubeActor(edges->GetOutput(), 0.004 * size, CageColor));
   vtkNew<vtkSphereSource> sphere;
@@ -305,11 +319,7 @@ bool vtkSubDScene::Render()
   for (int k = 0; k < n; ++k)
   {
     const View& view = views[k];
-    vtkNew<vtkRenderer> renderer;
-    const int column = k % columns, row = k / columns;
-    renderer->SetViewport(static_cast<double>(column) / columns, 1.0 - static_cast<double>(row + 1) / rows,
-      static_cast<double>(column + 1) / columns, 1.0 - static_cast<double>(row) / rows);
-    renderer->SetBackground(Background[0], Background[1], Background[2]);
+    vtkSmartPointer<vtkRenderer> renderer = GridRenderer(k, columns, rows);
     renderer->SetActiveCamera(camera);
 
     vtkNew<vtkPolyDataMapper> mapper;
@@ -375,12 +385,7 @@ bool vtkSubDScene::Render()
   }
   for (int k = n; k < rows * columns; ++k) // empty cells of the grid
   {
-    vtkNew<vtkRenderer> empty;
-    const int column = k % columns, row = k / columns;
-    empty->SetViewport(static_cast<double>(column) / columns, 1.0 - static_cast<double>(row + 1) / rows,
-      static_cast<double>(column + 1) / columns, 1.0 - static_cast<double>(row) / rows);
-    empty->SetBackground(Background[0], Background[1], Background[2]);
-    window->AddRenderer(empty);
+    window->AddRenderer(GridRenderer(k, columns, rows));
   }
   window->Render();
   if (auto* offscreen = vtkSubDOffscreenRenderWindow::SafeDownCast(window))
