@@ -8,6 +8,7 @@
 // first, then edges, then vertices; faces are matched by their vertex sets, edges by their
 // end points), never by assuming equal numbering. Positions must agree to 1e-9 of the
 // bounding-box diagonal; faces and holes must agree exactly.
+#include "SubDLimitRules.h"
 #include "SubDRefiner.h"
 #include "SubDQuadSplit.h"
 #include "SubDScheme.h"
@@ -340,6 +341,34 @@ TEST_P(SchemeOracle, MatchesOpenSubdiv)
     mine.swap(mineChild);
     osdToMine = childMap;
   }
+
+  // Limit positions of the finest vertices (Far::PrimvarRefiner::Limit).
+  if (c.Kind == SchemeKind::Bilinear)
+    return;
+  std::vector<Point3> osdLimit(osd.size());
+  Point3* limitSrc = osd.data();
+  Point3* limitDst = osdLimit.data();
+  primvar.Limit(limitSrc, limitDst);
+  subd::StencilTable limit;
+  if (c.Kind == SchemeKind::Loop)
+    limit = subd::BuildLoopLimitStencils(level);
+  else
+  {
+    std::string error;
+    ASSERT_TRUE(subd::BuildCatmullClarkLimitStencils(level, limit, error)) << error;
+  }
+  std::vector<double> mineLimit(static_cast<size_t>(limit.GetNumRows()) * 3);
+  limit.Apply(mine.data(), mineLimit.data(), 3);
+  double worst = 0.0;
+  for (size_t i = 0; i < osdLimit.size(); ++i)
+  {
+    const double* a = osdLimit[i].P;
+    const double* b = &mineLimit[3 * static_cast<size_t>(osdToMine[i])];
+    worst = std::max({ worst, std::abs(a[0] - b[0]), std::abs(a[1] - b[1]), std::abs(a[2] - b[2]) });
+  }
+  std::printf("%s %s%s %s limit: largest difference %.3g of the bounding-box diagonal\n", scheme.GetName(),
+    c.Mesh.Name.c_str(), c.Tags.Label.c_str(), subd::ToString(c.Rule), worst / (tolerance * 1e9));
+  EXPECT_LE(worst, tolerance) << "limit positions";
 }
 
 std::string CaseName(const ::testing::TestParamInfo<OracleCase>& info)
