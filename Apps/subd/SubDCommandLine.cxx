@@ -92,7 +92,7 @@ std::string UsageText()
 {
   std::ostringstream out;
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
-         "            [--crease-method METHOD] [--feature-angle DEG] [--output FILE]\n"
+         "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--output FILE]\n"
          "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
          "\n"
          "Subdivides the polygon mesh INPUT (" << SupportedExtensions() << ") and writes the\n"
@@ -115,6 +115,8 @@ std::string UsageText()
          "                       uniform: one unit of sharpness per level\n"
          "                       chaikin: averaged along the crease first (OpenSubdiv's Chaikin)\n"
          "  --feature-angle D  edges whose faces meet at more than D degrees become sharp creases\n"
+         "  --limit            move the output points (and point data) to the limit surface\n"
+         "                     (catmull-clark and loop; OpenSubdiv's limit masks)\n"
          "\n"
          "Creases come with the input: in .vtp/.vtk as line cells with the cell array\n"
          "\"Sharpness\" (0 smooth .. 10 infinitely sharp), \"CornerSharpness\" point data and\n"
@@ -321,6 +323,10 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
         error = "--view-size wants WxH with each in 64..4096, not '" + text + "'";
         return false;
       }
+    }
+    else if (arg == "--limit")
+    {
+      cmd.Options.ProjectToLimit = true;
     }
     else if (arg == "--no-cage")
     {

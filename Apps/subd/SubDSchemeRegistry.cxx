@@ -20,6 +20,7 @@ vtkSmartPointer<Filter> NewSurfaceFilter(const SchemeOptions& options)
   filter->SetBoundaryRule(options.BoundaryRule);
   filter->SetCreaseMethod(options.CreaseMethod);
   filter->SetAutomaticCreases(options.FeatureAngle > 0.0);
+  filter->SetProjectToLimit(options.ProjectToLimit);
   if (options.FeatureAngle > 0.0)
   {
     filter->SetFeatureAngle(options.FeatureAngle);

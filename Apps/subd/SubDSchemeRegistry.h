@@ -17,6 +17,7 @@ struct SchemeOptions
   double Tension = 0.0; // butterfly only
   int CreaseMethod = 0;      // vtkSubDSurfaceFilter::CREASE_UNIFORM
   double FeatureAngle = 0.0; // > 0: edges sharper than this (degrees) become creases
+  bool ProjectToLimit = false; // move the output points to the limit surface
 };
 
 struct SchemeEntry

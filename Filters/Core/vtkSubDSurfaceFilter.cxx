@@ -477,10 +477,23 @@ int vtkSubDSurfaceFilter::RequestData(
       scheme->EffectiveBoundaryRule(static_cast<subd::BoundaryRule>(this->BoundaryRule)));
     cache.WritesDepth = scheme->DependsOnDepth();
     base.Depth = cache.WritesDepth ? inputDepth : 0;
-    if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy,
-          refineProgress, sharpFeatures ? subd::ChildTopology::Full : subd::ChildTopology::FacesOnly))
+    if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy, refineProgress,
+          sharpFeatures || this->ProjectToLimit ? subd::ChildTopology::Full : subd::ChildTopology::FacesOnly))
     {
       return aborted();
+    }
+    if (this->ProjectToLimit)
+    {
+      // The limit masks read the finest points: one more stencil table after the levels,
+      // so that points and point data are projected alike, and cached alike.
+      subd::StencilTable limit;
+      std::string limitError;
+      if (!scheme->BuildLimitStencils(cache.Hierarchy.Finest, limit, limitError))
+      {
+        vtkErrorMacro(<< "ProjectToLimit: " << limitError << ".");
+        return fail();
+      }
+      cache.Hierarchy.Stencils.push_back(std::move(limit));
     }
     ++this->NumberOfStencilBuilds;
 
@@ -680,6 +693,7 @@ void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutomaticCreases: " << (this->AutomaticCreases ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "ProjectToLimit: " << (this->ProjectToLimit ? "On" : "Off") << "\n";
   os << indent << "GenerateParentCellIds: " << (this->GenerateParentCellIds ? "On" : "Off") << "\n";
   os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
   os << indent << "NumberOfStencilBuilds: " << this->NumberOfStencilBuilds << "\n";

@@ -148,6 +148,20 @@ public:
 
   ///@{
   /**
+   * Move the output points to the limit surface (default off): after the levels, each
+   * vertex is replaced by the point of the limit surface it converges to, by the scheme's
+   * limit masks (SubDLimitRules.h: Catmull-Clark and Loop so far, with their crease, corner
+   * and boundary rules; they match OpenSubdiv's PrimvarRefiner::Limit). Every point-data
+   * array is projected with the same masks. Other schemes report an error. Catmull-Clark
+   * needs quads: with polygons other than quads, ask for at least one level.
+   */
+  vtkSetMacro(ProjectToLimit, bool);
+  vtkGetMacro(ProjectToLimit, bool);
+  vtkBooleanMacro(ProjectToLimit, bool);
+  ///@}
+
+  ///@{
+  /**
    * Add a vtkIdTypeArray "ParentCellId" to the output cell data, naming for each output face
    * the input cell it descends from (default off).
    */
@@ -191,6 +205,7 @@ protected:
   double FeatureAngle = 30.0;
   int OutputPointsPrecision = DEFAULT_PRECISION;
   bool GenerateParentCellIds = false;
+  bool ProjectToLimit = false;
   double MaximumMemory = 16384.0;
   int NumberOfStencilBuilds = 0;
 

@@ -26,10 +26,12 @@ using ProgressCallback = std::function<bool(double)>;
 struct SUBDKERNEL_EXPORT Hierarchy
 {
   Index NumBasePoints = 0;
-  std::vector<StencilTable> Stencils; ///< one per level, level 0 -> 1 first
+  /// One per level, level 0 -> 1 first; a caller may append tables that map the finest
+  /// points to as many points (the limit projection), which Evaluate then applies too.
+  std::vector<StencilTable> Stencils;
   Level Finest; ///< the last level: its faces, holes and origins (edges: see Refine)
 
-  int GetNumLevels() const { return static_cast<int>(Stencils.size()); }
+  int GetNumStencilTables() const { return static_cast<int>(Stencils.size()); }
   Index GetNumFinestPoints() const { return Finest.Topology.GetNumVertices(); }
 
   /// Applies every level's stencils to `components` values per base point; `finest` receives
@@ -50,7 +52,7 @@ template <typename T>
 bool Hierarchy::Evaluate(const T* base, int components, T* finest, const ParallelFor& parallelFor,
   const ProgressCallback& progress) const
 {
-  const int levels = this->GetNumLevels();
+  const int levels = this->GetNumStencilTables();
   if (levels == 0)
   {
     std::copy(base, base + static_cast<size_t>(this->NumBasePoints) * components, finest);

@@ -1,4 +1,5 @@
 #include "SubDScheme.h"
+#include "SubDLimitRules.h"
 #include "SubDCatmullClarkRules.h"
 #include "SubDButterflyRules.h"
 #include "SubDDooSabinRules.h"
@@ -141,5 +142,22 @@ MeshCounts Sqrt3Scheme::PredictChildCounts(const MeshCounts& parent) const
   child.Corners = 3.0 * parent.Corners;
   child.BoundaryEdges = 3.0 * parent.BoundaryEdges;
   return child;
+}
+
+bool Scheme::BuildLimitStencils(const Level&, StencilTable&, std::string& error) const
+{
+  error = std::string("the ") + this->GetName() + " scheme has no limit masks yet";
+  return false;
+}
+
+bool CatmullClarkScheme::BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const
+{
+  return BuildCatmullClarkLimitStencils(level, stencils, error);
+}
+
+bool LoopScheme::BuildLimitStencils(const Level& level, StencilTable& stencils, std::string&) const
+{
+  stencils = BuildLoopLimitStencils(level);
+  return true;
 }
 }

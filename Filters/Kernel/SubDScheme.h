@@ -9,6 +9,8 @@
 #include "SubDLevel.h"
 #include "SubDStencilTable.h"
 
+#include <string>
+
 namespace subd
 {
 /// Element counts of a level, in double so that predictions for deep levels cannot overflow.
@@ -44,6 +46,10 @@ public:
   /// True for schemes whose rules alternate with Level::Depth (sqrt(3)'s boundary steps): a
   /// mesh they make records its depth so that a later refinement continues it.
   virtual bool DependsOnDepth() const { return false; }
+  /// The limit positions of the vertices of `level` (a full-topology level), one row per
+  /// vertex (SubDLimitRules.h). Returns false and says why in `error` when the scheme has
+  /// no limit masks (yet) or the level does not suit them.
+  virtual bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const;
   /// The rule to prepare the base level with for a requested one.
   BoundaryRule EffectiveBoundaryRule(BoundaryRule requested) const
   {
@@ -73,6 +79,7 @@ class SUBDKERNEL_EXPORT CatmullClarkScheme : public QuadSplitScheme
 public:
   const char* GetName() const override { return "catmull-clark"; }
   StencilTable BuildStencils(const Level& parent) const override;
+  bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 
 /// Bilinear: centroids, midpoints and fixed vertices (SubDLinearRules.h).
@@ -90,6 +97,7 @@ class SUBDKERNEL_EXPORT LoopScheme : public TriangleSplitScheme
 public:
   const char* GetName() const override { return "loop"; }
   StencilTable BuildStencils(const Level& parent) const override;
+  bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 
 /// Linear triangles: midpoints and fixed vertices (SubDLinearRules.h).

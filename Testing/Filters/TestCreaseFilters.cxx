@@ -621,3 +621,127 @@ TEST(CreaseCorners, SharpCornerIsKeptByEveryScheme)
   CheckCornerStaysPut<vtkSubDSqrt3Filter>(true);
 }
 }
+
+namespace
+{
+// The limit of a vertex does not depend on the level it is computed from: the limit points
+// of level 2 are among those of level 3 (a vertex's child converges to the same point),
+// with an infinitely sharp crease loop and a corner, on a closed and an open mesh. (Not at
+// darts: there the smooth limit mask, as in OpenSubdiv, ignores the crease edge's
+// midpoint rule, so it is an approximation that changes with the level.)
+template <typename Filter>
+void CheckLimitIsLevelIndependent(bool triangles)
+{
+  SCOPED_TRACE(vtkNew<Filter>()->GetClassName());
+  std::vector<vtkSmartPointer<vtkPolyData>> inputs;
+  vtkSmartPointer<vtkPolyData> torus = ToPolyData(Torus(triangles));
+  std::vector<std::array<vtkIdType, 2>> ring;
+  for (int i = 0; i < 6; ++i)
+    ring.push_back({ TorusVertex(i, 2), TorusVertex(i + 1, 2) });
+  AddCreases(torus, ring, {});
+  AddCornerSharpness(torus, { { TorusVertex(4, 0), 10.0f } });
+  inputs.push_back(torus);
+  subdtest::TestMesh grid = subdtest::Grid(5, 4, false, false).Jitter(0.1);
+  inputs.push_back(ToPolyData(triangles ? grid.Triangulated() : grid));
+  for (vtkPolyData* input : inputs)
+  {
+    vtkSmartPointer<vtkPolyData> limits[2];
+    for (int k = 0; k < 2; ++k)
+    {
+      vtkNew<Filter> filter;
+      filter->SetInputData(input);
+      filter->SetNumberOfSubdivisions(2 + k);
+      filter->ProjectToLimitOn();
+      filter->Update();
+      limits[k] = vtkSmartPointer<vtkPolyData>::New();
+      limits[k]->ShallowCopy(filter->GetOutput());
+      ASSERT_GT(limits[k]->GetNumberOfPolys(), 0);
+    }
+    double worst = 0.0;
+    for (vtkIdType i = 0; i < limits[0]->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3], best = 1e300;
+      limits[0]->GetPoint(i, p);
+      for (vtkIdType j = 0; j < limits[1]->GetNumberOfPoints(); ++j)
+      {
+        limits[1]->GetPoint(j, q);
+        best = std::min(best, std::max({ std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2]) }));
+      }
+      worst = std::max(worst, best);
+    }
+    EXPECT_LE(worst, 1e-12);
+  }
+}
+
+TEST(Limit, LimitPointsDoNotDependOnTheLevel)
+{
+  CheckLimitIsLevelIndependent<vtkSubDCatmullClarkFilter>(false);
+  CheckLimitIsLevelIndependent<vtkSubDLoopFilter>(true);
+}
+
+// Regular quads: the limit point of a vertex is the uniform bicubic B-spline at its knot,
+// (16 v + 4 sum e + sum f) / 36 of its 3 x 3 neighbourhood, here of a planar grid lifted by
+// z = x^2: the uniform B-spline of control values x_i^2 at spacing H is x^2 + H^2 / 3.
+TEST(Limit, RegularCatmullClarkVertexIsTheBicubicBSplinePoint)
+{
+  subdtest::TestMesh grid = subdtest::Grid(6, 6, false, false);
+  for (size_t i = 0; i < grid.Points.size(); i += 3)
+    grid.Points[i + 2] = grid.Points[i] * grid.Points[i];
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(ToPolyData(grid));
+  filter->SetNumberOfSubdivisions(1);
+  filter->ProjectToLimitOn();
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  double a[3], b[3];
+  ToPolyData(grid)->GetPoint(0, a);
+  ToPolyData(grid)->GetPoint(1, b);
+  const double spacing = std::abs(b[0] - a[0]); // of the control net
+  int interior = 0;
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    out->GetPoint(i, p);
+    // Away from the boundary (whose crease rule changes the surface) the B-spline's value.
+    const double lo = 2 * spacing - 1e-9, hi = 4 * spacing + 1e-9; // two spacings from the boundary
+    if (p[0] - a[0] > lo && p[0] - a[0] < hi && p[1] - a[1] > lo && p[1] - a[1] < hi)
+    {
+      ++interior;
+      EXPECT_NEAR(p[2], p[0] * p[0] + spacing * spacing / 3.0, 1e-12) << "point " << i;
+    }
+  }
+  EXPECT_GT(interior, 10);
+}
+
+TEST(Limit, ErrorsAreClear)
+{
+  // Catmull-Clark limit masks need quads: a pyramid at level 0 has triangles.
+  subdtest::TestMesh pyramid;
+  for (double p : { 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 1.0, 1.0, 0.0, 0.0, 1.0, 0.0, 0.5, 0.5, 1.0 })
+    pyramid.Points.push_back(p);
+  pyramid.AddFace({ 0, 3, 2, 1 });
+  for (subd::Index i = 0; i < 4; ++i)
+    pyramid.AddFace({ i, (i + 1) % 4, 4 });
+  {
+    vtkNew<vtkSubDCatmullClarkFilter> filter;
+    Messages messages;
+    messages.Watch(filter);
+    filter->SetInputData(ToPolyData(pyramid));
+    filter->SetNumberOfSubdivisions(0);
+    filter->ProjectToLimitOn();
+    filter->Update();
+    EXPECT_NE(messages.Errors.find("refine one level first"), std::string::npos) << messages.Errors;
+    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+    filter->SetNumberOfSubdivisions(1);
+    filter->Update();
+    EXPECT_GT(filter->GetOutput()->GetNumberOfPolys(), 0);
+  }
+  vtkNew<vtkSubDDooSabinFilter> filter;
+  Messages messages;
+  messages.Watch(filter);
+  filter->SetInputData(ToPolyData(pyramid));
+  filter->ProjectToLimitOn();
+  filter->Update();
+  EXPECT_NE(messages.Errors.find("no limit masks"), std::string::npos) << messages.Errors;
+}
+}
