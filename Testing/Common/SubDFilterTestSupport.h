@@ -2,6 +2,7 @@
 #ifndef SubDFilterTestSupport_h
 #define SubDFilterTestSupport_h
 
+#include "SubDOracleSupport.h"
 #include "SubDTestMeshes.h"
 
 #include "vtkCallbackCommand.h"
@@ -13,6 +14,7 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <vector>
 
 namespace subdtest
 {
@@ -62,6 +64,39 @@ inline vtkSmartPointer<vtkPolyData> ToPolyData(const TestMesh& mesh)
   poly->SetPoints(points);
   poly->SetPolys(polys);
   return poly;
+}
+
+// The points of a mesh as xyz triples.
+inline std::vector<double> Coordinates(vtkPolyData* mesh)
+{
+  std::vector<double> xyz(static_cast<size_t>(mesh->GetNumberOfPoints()) * 3);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+    mesh->GetPoint(i, &xyz[3 * static_cast<size_t>(i)]);
+  return xyz;
+}
+
+// The max-norm distance from p to the nearest point of `mesh`.
+inline double DistanceToNearestPoint(vtkPolyData* mesh, const double p[3])
+{
+  double distance;
+  NearestPoint(Coordinates(mesh), p, distance);
+  return distance;
+}
+
+// The largest max-norm distance from a point of `a` to its nearest point of `b`: 0 when
+// every point of `a` is a point of `b`.
+inline double LargestDistanceToNearestPoint(vtkPolyData* a, vtkPolyData* b)
+{
+  const std::vector<double> ours = Coordinates(b);
+  double worst = 0.0;
+  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+  {
+    double p[3], distance;
+    a->GetPoint(i, p);
+    NearestPoint(ours, p, distance);
+    worst = std::max(worst, distance);
+  }
+  return worst;
 }
 }
 

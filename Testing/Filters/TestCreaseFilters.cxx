@@ -562,22 +562,8 @@ TYPED_TEST(CreaseAsBoundary, CreaseLoopEqualsACut)
   // two sqrt(3) steps (one trisection).
   EXPECT_EQ(a->GetNumberOfPoints() + 6 * (sqrt3 ? 3 : 4), b->GetNumberOfPoints());
   // Every point of each result is a point of the other.
-  for (auto pair : { std::make_pair(a, b), std::make_pair(b, a) })
-  {
-    double worst = 0.0;
-    for (vtkIdType i = 0; i < pair.first->GetNumberOfPoints(); ++i)
-    {
-      double p[3], q[3], best = 1e300;
-      pair.first->GetPoint(i, p);
-      for (vtkIdType k = 0; k < pair.second->GetNumberOfPoints(); ++k)
-      {
-        pair.second->GetPoint(k, q);
-        best = std::min(best, std::max({ std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2]) }));
-      }
-      worst = std::max(worst, best);
-    }
-    EXPECT_LE(worst, 1e-12);
-  }
+  EXPECT_LE(subdtest::LargestDistanceToNearestPoint(a, b), 1e-12);
+  EXPECT_LE(subdtest::LargestDistanceToNearestPoint(b, a), 1e-12);
 }
 }
 
@@ -592,17 +578,7 @@ void CheckCornerStaysPut(bool triangles)
   vtkSmartPointer<vtkPolyData> input = ToPolyData(triangles ? subdtest::Cube().Triangulated() : subdtest::Cube());
   double corner[3];
   input->GetPoint(6, corner);
-  auto distanceToCorner = [&corner](vtkPolyData* out) {
-    double nearest = 1e300;
-    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
-    {
-      double p[3];
-      out->GetPoint(i, p);
-      nearest = std::min(nearest,
-        std::max({ std::abs(p[0] - corner[0]), std::abs(p[1] - corner[1]), std::abs(p[2] - corner[2]) }));
-    }
-    return nearest;
-  };
+  auto distanceToCorner = [&corner](vtkPolyData* out) { return subdtest::DistanceToNearestPoint(out, corner); };
   // Untagged, every one of these schemes moves the cube's corner inside.
   EXPECT_GT(distanceToCorner(Subdivide<Filter>(input, 3)), 1e-3);
   AddCornerSharpness(input, { { 6, 10.0f } });
@@ -657,19 +633,7 @@ void CheckLimitIsLevelIndependent(bool triangles)
       limits[k]->ShallowCopy(filter->GetOutput());
       ASSERT_GT(limits[k]->GetNumberOfPolys(), 0);
     }
-    double worst = 0.0;
-    for (vtkIdType i = 0; i < limits[0]->GetNumberOfPoints(); ++i)
-    {
-      double p[3], q[3], best = 1e300;
-      limits[0]->GetPoint(i, p);
-      for (vtkIdType j = 0; j < limits[1]->GetNumberOfPoints(); ++j)
-      {
-        limits[1]->GetPoint(j, q);
-        best = std::min(best, std::max({ std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2]) }));
-      }
-      worst = std::max(worst, best);
-    }
-    EXPECT_LE(worst, 1e-12);
+    EXPECT_LE(subdtest::LargestDistanceToNearestPoint(limits[0], limits[1]), 1e-12);
   }
 }
 

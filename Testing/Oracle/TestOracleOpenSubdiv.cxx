@@ -9,6 +9,7 @@
 // end points), never by assuming equal numbering. Positions must agree to 1e-9 of the
 // bounding-box diagonal; faces and holes must agree exactly.
 #include "SubDLimitRules.h"
+#include "SubDOracleSupport.h"
 #include "SubDRefiner.h"
 #include "SubDQuadSplit.h"
 #include "SubDScheme.h"
@@ -137,18 +138,6 @@ std::vector<Index> SortedCorners(const Index* begin, Index n, const std::vector<
   return key;
 }
 
-double Diagonal(const std::vector<double>& p)
-{
-  double lo[3] = { 1e300, 1e300, 1e300 }, hi[3] = { -1e300, -1e300, -1e300 };
-  for (size_t i = 0; i < p.size(); ++i)
-  {
-    lo[i % 3] = std::min(lo[i % 3], p[i]);
-    hi[i % 3] = std::max(hi[i % 3], p[i]);
-  }
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-    (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 /// The same tags in SubD's form, for the base level of `topology`.
 subd::BaseTags ToBaseTags(const SharpTags& tags, const subd::MeshTopology& topology)
 {
@@ -232,7 +221,7 @@ TEST_P(SchemeOracle, MatchesOpenSubdiv)
   {
     std::copy(&c.Mesh.Points[3 * v], &c.Mesh.Points[3 * v] + 3, osd[v].P);
   }
-  const double tolerance = 1e-9 * Diagonal(c.Mesh.Points);
+  const double tolerance = 1e-9 * subdtest::Diagonal(c.Mesh.Points);
 
   // osdToMine[i]: my index of OpenSubdiv's vertex i at the current level.
   std::vector<Index> osdToMine(static_cast<size_t>(c.Mesh.NumVertices()));
