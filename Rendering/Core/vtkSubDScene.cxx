@@ -36,6 +36,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <map>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -75,9 +76,44 @@ vtkSmartPointer<vtkRenderer> GridRenderer(int k, int columns, int rows)
   return renderer;
 }
 
+// |curvature| at the points of a triangle mesh that are not on its boundary (where discrete
+// curvature is meaningless: vtkCurvatures' angle deficit there is about pi).
+void AppendInteriorMagnitudes(vtkPolyData* triangles, vtkDataArray* curvature, std::vector<double>& magnitudes)
+{
+  std::map<std::pair<vtkIdType, vtkIdType>, int> edgeUses;
+  vtkCellArray* cells = triangles->GetPolys();
+  vtkIdType n;
+  const vtkIdType* ids;
+  for (cells->InitTraversal(); cells->GetNextCell(n, ids);)
+  {
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType a = ids[k], b = ids[(k + 1) % n];
+      ++edgeUses[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  std::vector<bool> boundary(static_cast<size_t>(triangles->GetNumberOfPoints()), false);
+  for (const auto& edge : edgeUses)
+  {
+    if (edge.second == 1)
+    {
+      boundary[edge.first.first] = boundary[edge.first.second] = true;
+    }
+  }
+  for (vtkIdType i = 0; i < curvature->GetNumberOfTuples(); ++i)
+  {
+    const double value = std::abs(curvature->GetComponent(i, 0));
+    if (!boundary[i] && std::isfinite(value))
+    {
+      magnitudes.push_back(value);
+    }
+  }
+}
+
 // The surface's polygons as triangles, with the chosen curvature as active point scalars
-// (none for COLOR_NONE), shaded with normals split at 60 degrees.
-vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* surface, int coloring)
+// (none for COLOR_NONE), shaded with normals split at 60 degrees. The interior curvature
+// magnitudes are appended to `magnitudes`.
+vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* surface, int coloring, std::vector<double>& magnitudes)
 {
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputData(PolygonsOf(surface));
@@ -85,11 +121,15 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* surface, int coloring)
   triangles->PassVertsOff();
   vtkSmartPointer<vtkAlgorithm> last = triangles;
   vtkNew<vtkCurvatures> curvatures;
+  const char* name = coloring == vtkSubDScene::COLOR_MEAN_CURVATURE ? "Mean_Curvature" : "Gauss_Curvature";
   if (coloring != vtkSubDScene::COLOR_NONE)
   {
     curvatures->SetInputConnection(triangles->GetOutputPort());
     curvatures->SetCurvatureType(
       coloring == vtkSubDScene::COLOR_MEAN_CURVATURE ? VTK_CURVATURE_MEAN : VTK_CURVATURE_GAUSS);
+    curvatures->Update();
+    AppendInteriorMagnitudes(
+      curvatures->GetOutput(), curvatures->GetOutput()->GetPointData()->GetArray(name), magnitudes);
     last = curvatures;
   }
   vtkNew<vtkPolyDataNormals> normals;
@@ -102,29 +142,15 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* surface, int coloring)
   vtkSmartPointer<vtkPolyData> result = normals->GetOutput();
   if (coloring != vtkSubDScene::COLOR_NONE)
   {
-    const char* name = coloring == vtkSubDScene::COLOR_MEAN_CURVATURE ? "Mean_Curvature" : "Gauss_Curvature";
     result->GetPointData()->SetActiveScalars(name);
   }
   return result;
 }
 
-// The 95th percentile of |scalar| over all surfaces: a symmetric range robust to the spikes
-// discrete curvature has at boundaries and corners.
-double SymmetricRange(const std::vector<vtkSmartPointer<vtkPolyData>>& surfaces)
+// The 95th percentile of the magnitudes: a symmetric range robust to the spikes discrete
+// curvature has at corners and creases.
+double SymmetricRange(std::vector<double>& magnitudes)
 {
-  std::vector<double> magnitudes;
-  for (const auto& surface : surfaces)
-  {
-    vtkDataArray* scalars = surface->GetPointData()->GetScalars();
-    for (vtkIdType i = 0; scalars && i < scalars->GetNumberOfTuples(); ++i)
-    {
-      const double value = std::abs(scalars->GetComponent(i, 0));
-      if (std::isfinite(value))
-      {
-        magnitudes.push_back(value);
-      }
-    }
-  }
   if (magnitudes.empty())
   {
     return 1.0;
@@ -284,10 +310,11 @@ bool vtkSubDScene::Render()
   window->GetRenderers()->RemoveAllItems();
 
   std::vector<vtkSmartPointer<vtkPolyData>> surfaces;
+  std::vector<double> magnitudes; // interior |curvature| of every view, for one colour scale
   vtkBoundingBox box;
   for (const View& view : views)
   {
-    surfaces.push_back(PrepareSurface(view.Surface, this->Coloring));
+    surfaces.push_back(PrepareSurface(view.Surface, this->Coloring, magnitudes));
     double bounds[6];
     view.Surface->GetBounds(bounds);
     box.AddBounds(bounds);
@@ -298,7 +325,7 @@ bool vtkSubDScene::Render()
     }
   }
   const double size = box.IsValid() ? box.GetDiagonalLength() : 1.0;
-  const double range = this->Coloring == COLOR_NONE ? 1.0 : SymmetricRange(surfaces);
+  const double range = this->Coloring == COLOR_NONE ? 1.0 : SymmetricRange(magnitudes);
   vtkSmartPointer<vtkLookupTable> table = DivergingTable(range);
 
   // One camera for all views, looking at the centre of the union of the bounds.
@@ -357,7 +384,7 @@ bool vtkSubDScene::Render()
     {
       vtkNew<vtkTextActor> title;
       title->SetInput(view.Title.c_str());
-      title->GetTextProperty()->SetFontSize(16);
+      title->GetTextProperty()->SetFontSize(std::max(10, std::min(16, this->ViewSize[0] / 12)));
       title->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
       title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
       title->GetPositionCoordinate()->SetValue(0.02, 0.98);

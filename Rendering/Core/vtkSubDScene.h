@@ -5,8 +5,9 @@
  * Each view shows a surface, coloured by its discrete curvature (vtkCurvatures: mean or
  * Gaussian, on the triangulated surface) with a diverging cool-to-warm colour map
  * (K. Moreland, "Diverging Color Maps for Scientific Visualization", ISVC 2009) over a
- * symmetric range (the 95th percentile of |curvature| over all views, so that views are
- * comparable and boundary spikes do not wash out the picture) and a scalar bar; its
+ * symmetric range (the 95th percentile of |curvature| over the interior points of all views,
+ * so that views are comparable; boundary points, where discrete curvature means nothing,
+ * and spikes at corners do not wash out the picture) and a scalar bar; its
  * control cage overlaid (edges as tubes and vertices as spheres, in gold); and the crease
  * lines of the surface (its line cells, as the SubD filters output them) in magenta. Shading
  * uses point normals split at 60 degrees, so sharp creases look sharp.
