@@ -47,6 +47,11 @@ bool RenderImage(const CommandLine& cmd, vtkPolyData* cage, vtkPolyData* result,
   }
   for (const std::string& name : cmd.Compare)
   {
+    if (name == cmd.Scheme) // subdivided already
+    {
+      scene->AddView(result, cage, TitleOf(name, cmd.Options.Levels).c_str());
+      continue;
+    }
     vtkSmartPointer<vtkPolyDataAlgorithm> filter = FindScheme(name)->Make(cmd.Options);
     MessageCollector messages;
     messages.Watch(filter);
