@@ -1,0 +1,100 @@
+// SubD kernel: exact evaluation of the Catmull-Clark and Loop limit surfaces at any
+// (face, u, v), with first and second derivatives, as stencils over the control points.
+//
+// Method (feature-adaptive evaluation, after Niessner et al. 2012, evaluated exactly):
+// - a face that is a regular patch (SubDRegularPatch.h: bicubic B-spline, with phantom
+//   points along infinitely sharp creases and boundaries, or Loop's quartic box spline) is
+//   evaluated in closed form (SubDPatchBasis.h);
+// - any other face is refined locally (SubDLocalLevel.h) and the sample handed to the
+//   child face that contains it, in that child's parameters, until the face holding it is
+//   regular. Each level isolates extraordinary vertices and lets semi-sharp features decay,
+//   so a sample at parameter distance d from an extraordinary vertex is reached after about
+//   log2(1/d) levels;
+// - a sample exactly at an extraordinary vertex (or any vertex with an irregular rule:
+//   dart, crease or corner whose side is not a regular grid), or within 2^-MaxDepth of one,
+//   takes the limit point and tangents from the eigenstructure of that vertex
+//   (SubDVertexLimit.h). The parametrisation is singular there, so second derivatives, and
+//   the curvature, are those of the nearby point at parameter distance 2^-CurvatureDepth
+//   towards the face's centre (LimitStencil::CurvatureWeights); curvature at such vertices
+//   is generally not continuous (it depends on the direction of approach), and this is
+//   the value one reads arriving along the face's diagonal.
+//
+// Parameters: a quad over the unit square, a triangle over the unit triangle (SubDPatchParam.h).
+// A Catmull-Clark face that is not a quad is split into quads at its centre like the first
+// refinement does: sub-face k is the quad at corner k, with (0,0) at the corner, (1,0) at the
+// midpoint of the edge to the next corner, (1,1) at the centre (OpenSubdiv's convention for
+// its Ptex faces of non-quads).
+#ifndef SubDLimitEvaluator_h
+#define SubDLimitEvaluator_h
+
+#include "SubDLocalLevel.h"
+#include "SubDPatchBasis.h"
+#include "SubDPatchParam.h"
+
+#include <string>
+#include <vector>
+
+namespace subd
+{
+struct FaceSample
+{
+  double U = 0.0, V = 0.0;
+  Index SubFace = 0; ///< Catmull-Clark faces that are not quads: the corner's sub-face
+};
+
+/// The limit surface at one sample, as weights over control points.
+struct LimitStencil
+{
+  std::vector<Index> Points;
+  /// NumPatchDerivatives rows (PatchDerivative order) of Points.size() weights.
+  std::vector<double> Weights;
+  /// Empty, or at an extraordinary vertex the rows of the nearby point that curvature is
+  /// read at (see above).
+  std::vector<double> CurvatureWeights;
+
+  const double* Row(int derivative) const { return Weights.data() + derivative * Points.size(); }
+  /// Applies one row to `components` interleaved values per control point.
+  void Apply(const std::vector<double>& rows, int derivative, const double* values, int components, double* out) const;
+};
+
+class SUBDKERNEL_EXPORT LimitEvaluator
+{
+public:
+  /// `level` needs its full topology; `scheme` is Catmull-Clark or Loop (else IsValid fails).
+  LimitEvaluator(const Scheme& scheme, const Level& level);
+
+  bool IsValid(std::string& error) const;
+
+  /// Evaluates the limit at `samples` of `face`. Returns false (with the reason) for a
+  /// hole, a sample outside the face, or a face the scheme cannot evaluate.
+  bool EvaluateFace(Index face, const std::vector<FaceSample>& samples, std::vector<LimitStencil>& out,
+    std::string& error) const;
+
+  /// Sample at corner `corner` of `face` (for a non-quad Catmull-Clark face: its sub-face's corner).
+  static FaceSample CornerSample(Index faceSize, Index corner, bool quads);
+
+  /// Levels of local refinement after which a sample is taken to be at the vertex it is
+  /// closest to (its parameter distance is then below 2^-MaxDepth).
+  static constexpr int MaxDepth = 30;
+  /// Parameter distance 2^-CurvatureDepth of the point curvature is read at near an
+  /// extraordinary vertex.
+  static constexpr int CurvatureDepth = 10;
+
+private:
+  struct Pending;
+  bool Descend(const LocalLevel& local, Index face, std::vector<Pending>& pending, const ParamFrame& frame,
+    int depth, std::string& error) const;
+  void EvaluateRegular(const LocalLevel& local, const RegularPatch& patch, const double p[2],
+    const ParamFrame& frame, std::vector<double>& weights) const;
+  bool EvaluateCorner(const LocalLevel& local, Index face, Index corner, const ParamFrame& frame, int depth,
+    bool withCurvature, LimitStencil& out, std::string& error) const;
+
+  const Scheme& TheScheme;
+  const Level& TheLevel;
+  PatchKind Kind = PatchKind::BSpline;
+  bool Valid = false;
+  std::string Problem;
+};
+}
+
+#endif

@@ -1,0 +1,239 @@
+#include "SubDVertexLimit.h"
+
+#include "SubDQuadSplit.h"
+#include "SubDRegularPatch.h"
+#include "SubDTriangleSplit.h"
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <complex>
+
+namespace subd
+{
+namespace
+{
+using ComplexMatrix = Eigen::MatrixXcd;
+
+// Indices of the eigenvalues sorted by decreasing magnitude.
+std::vector<int> ByMagnitude(const Eigen::VectorXcd& values)
+{
+  std::vector<int> order(static_cast<size_t>(values.size()));
+  for (int i = 0; i < values.size(); ++i)
+  {
+    order[i] = i;
+  }
+  std::stable_sort(order.begin(), order.end(), [&values](int a, int b) { return std::abs(values[a]) > std::abs(values[b]); });
+  return order;
+}
+
+// The spectral projector onto the eigenvalues of `wanted` (indices into the right
+// solver's values): R (L^T R)^-1 L^T, L the left eigenvectors with the same eigenvalues.
+Eigen::MatrixXd Projector(const Eigen::EigenSolver<Eigen::MatrixXd>& right,
+  const Eigen::EigenSolver<Eigen::MatrixXd>& left, const std::vector<int>& wanted, double tol)
+{
+  const Eigen::Index n = right.eigenvalues().size();
+  const Eigen::Index m = static_cast<Eigen::Index>(wanted.size());
+  ComplexMatrix R(n, m), L(n, m);
+  std::vector<bool> used(static_cast<size_t>(n), false);
+  for (Eigen::Index c = 0; c < m; ++c)
+  {
+    const std::complex<double> value = right.eigenvalues()[wanted[c]];
+    R.col(c) = right.eigenvectors().col(wanted[c]);
+    Eigen::Index best = -1;
+    for (Eigen::Index k = 0; k < n; ++k)
+    {
+      if (!used[k] && std::abs(left.eigenvalues()[k] - value) < tol &&
+        (best < 0 || std::abs(left.eigenvalues()[k] - value) < std::abs(left.eigenvalues()[best] - value)))
+      {
+        best = k;
+      }
+    }
+    if (best < 0)
+    {
+      return {};
+    }
+    used[best] = true;
+    L.col(c) = left.eigenvectors().col(best);
+  }
+  const ComplexMatrix gram = L.transpose() * R;
+  return (R * gram.inverse() * L.transpose()).real();
+}
+}
+
+bool IsStableCorner(const Level& level, Index face, Index corner, Index faceSize)
+{
+  const MeshTopology& topo = level.Topology;
+  const Index v = topo.GetFaceVertices(face)[corner];
+  auto stable = [](float s) { return !IsSharp(s) || IsInfinitelySharp(s); };
+  if (topo.GetVertexTag(v).NonManifold || !stable(level.VertexSharpness[v]))
+  {
+    return false;
+  }
+  for (Index e : topo.GetVertexEdges(v))
+  {
+    if (!stable(level.EdgeSharpness[e]))
+    {
+      return false;
+    }
+  }
+  for (Index g : topo.GetVertexFaces(v))
+  {
+    if (topo.GetFaceSize(g) != faceSize)
+    {
+      return false;
+    }
+  }
+  const VertexRulePlan plan = PlanVertexRule(level, v);
+  return plan.Rule == plan.ChildRule;
+}
+
+bool ComputeVertexLimit(const Scheme& scheme, const Level& level, Index face, Index corner, VertexLimit& out,
+  std::string& error)
+{
+  const MeshTopology& topo = level.Topology;
+  const Index faceSize = topo.GetFaceSize(face);
+  const bool quads = faceSize == 4;
+  const Index v = topo.GetFaceVertices(face)[corner];
+  const std::vector<Index> sector = SectorFaces(level, face, corner);
+  if (sector.empty() || !IsStableCorner(level, face, corner, faceSize))
+  {
+    error = "vertex " + std::to_string(v) + " cannot be analysed (non-manifold or not stable)";
+    return false;
+  }
+
+  // The neighbourhood: v, then the other corners of the sector's faces, and the sector as a
+  // mesh of its own. v keeps its rule there: a corner is pinned by vertex sharpness (the
+  // sector may hold fewer of its sharp edges).
+  std::vector<Index>& points = out.Points;
+  points.assign(1, v);
+  std::vector<Index> offsets{ 0 }, vertices;
+  for (Index g : sector)
+  {
+    for (Index p : topo.GetFaceVertices(g))
+    {
+      auto found = std::find(points.begin(), points.end(), p);
+      vertices.push_back(static_cast<Index>(found - points.begin()));
+      if (found == points.end())
+      {
+        points.push_back(p);
+      }
+    }
+    offsets.push_back(static_cast<Index>(vertices.size()));
+  }
+  const Index n = static_cast<Index>(points.size());
+  Level mini;
+  mini.Topology = MeshTopology::Build(n, offsets, vertices);
+  mini.Creasing = level.Creasing;
+  mini.Depth = level.Depth;
+  mini.EdgeSharpness.resize(static_cast<size_t>(mini.Topology.GetNumEdges()));
+  for (Index e = 0; e < mini.Topology.GetNumEdges(); ++e)
+  {
+    const Index* ev = mini.Topology.GetEdgeVertices(e);
+    mini.EdgeSharpness[e] = mini.Topology.GetEdgeFaces(e).size() == 2
+      ? level.EdgeSharpness[topo.FindEdge(points[ev[0]], points[ev[1]])]
+      : SharpnessInfinite; // the sector's border: creases, or edges never read
+  }
+  mini.VertexSharpness.resize(static_cast<size_t>(n));
+  for (Index p = 0; p < n; ++p)
+  {
+    mini.VertexSharpness[p] = level.VertexSharpness[points[p]];
+  }
+  if (PlanVertexRule(level, v).Rule == VertexRule::Corner)
+  {
+    mini.VertexSharpness[0] = SharpnessInfinite;
+  }
+  mini.FaceIsHole.assign(sector.size(), 0);
+  mini.FaceOrigin.assign(sector.size(), 0);
+
+  // S: the child of each neighbourhood point in terms of the neighbourhood.
+  const StencilTable stencils = scheme.BuildStencils(mini);
+  const Index numChildren = stencils.GetNumRows();
+  Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(n, n);
+  Eigen::MatrixXd children(n, numChildren); // column-major: column c = child c's weights
+  stencils.Apply(identity.data(), children.data(), static_cast<int>(n));
+  const MeshTopology& mt = mini.Topology;
+  const Index numFaces = mt.GetNumFaces(), numEdges = mt.GetNumEdges();
+  auto childOf = [&](Index p) -> Index {
+    if (p == 0)
+    {
+      return quads ? QuadSplitNumbering{ numFaces, numEdges }.VertexPoint(0)
+                   : TriangleSplitNumbering{ numEdges }.VertexPoint(0);
+    }
+    const Index spoke = mt.FindEdge(0, p);
+    if (spoke != InvalidIndex)
+    {
+      return quads ? QuadSplitNumbering{ numFaces, numEdges }.EdgePoint(spoke)
+                   : TriangleSplitNumbering{ numEdges }.EdgePoint(spoke);
+    }
+    for (Index g = 0; g < numFaces; ++g) // a diagonal corner: its face's point
+    {
+      const IndexSpan gv = mt.GetFaceVertices(g);
+      if (std::find(gv.begin(), gv.end(), p) != gv.end())
+      {
+        return QuadSplitNumbering{ numFaces, numEdges }.FacePoint(g);
+      }
+    }
+    return InvalidIndex;
+  };
+  Eigen::MatrixXd S(n, n);
+  for (Index p = 0; p < n; ++p)
+  {
+    const Index c = childOf(p);
+    if (c == InvalidIndex)
+    {
+      error = "vertex " + std::to_string(v) + ": its neighbourhood is not closed under refinement";
+      return false;
+    }
+    S.row(p) = children.col(c).transpose();
+  }
+
+  const Eigen::EigenSolver<Eigen::MatrixXd> right(S), left(S.transpose());
+  if (right.info() != Eigen::Success || left.info() != Eigen::Success)
+  {
+    error = "vertex " + std::to_string(v) + ": eigen-decomposition failed";
+    return false;
+  }
+  const Eigen::VectorXcd& values = right.eigenvalues();
+  const std::vector<int> order = ByMagnitude(values);
+  const double tol = 1e-9;
+  if (std::abs(values[order[0]] - 1.0) > 1e-8 || (n > 1 && std::abs(values[order[1]]) > 1.0 - 1e-8))
+  {
+    error = "vertex " + std::to_string(v) + ": the subdivision matrix has no single eigenvalue 1";
+    return false;
+  }
+  // The tangent eigenvalues: the next ones by magnitude, whole clusters, at least two.
+  std::vector<int> tangent;
+  size_t next = 1;
+  while (tangent.size() < 2 && next < order.size())
+  {
+    const double magnitude = std::abs(values[order[next]]);
+    while (next < order.size() && std::abs(std::abs(values[order[next]]) - magnitude) < tol)
+    {
+      tangent.push_back(order[next++]);
+    }
+  }
+  const Eigen::MatrixXd limit = Projector(right, left, { order[0] }, 1e-7);
+  const Eigen::MatrixXd tangents = Projector(right, left, tangent, 1e-7);
+  if (limit.size() == 0 || tangents.size() == 0)
+  {
+    error = "vertex " + std::to_string(v) + ": eigenvectors could not be matched";
+    return false;
+  }
+  const IndexSpan fv = topo.GetFaceVertices(face);
+  const Index nextPoint = static_cast<Index>(
+    std::find(points.begin(), points.end(), fv[(corner + 1) % faceSize]) - points.begin());
+  const Index previousPoint = static_cast<Index>(
+    std::find(points.begin(), points.end(), fv[(corner + faceSize - 1) % faceSize]) - points.begin());
+  out.Position.resize(static_cast<size_t>(n));
+  out.TangentNext.resize(static_cast<size_t>(n));
+  out.TangentPrevious.resize(static_cast<size_t>(n));
+  for (Index p = 0; p < n; ++p)
+  {
+    out.Position[p] = limit(0, p);
+    out.TangentNext[p] = tangents(nextPoint, p);
+    out.TangentPrevious[p] = tangents(previousPoint, p);
+  }
+  return true;
+}
+}
