@@ -30,7 +30,10 @@ float SubdivideEdgeSharpnessAtVertex(
   {
     return DecaySharpness(edgeSharpness);
   }
-  float semiSharpSum = 0.0f;
+  // The sum is accumulated in double, where a few floats add exactly: the result must not
+  // depend on the order the edges are listed in (a vertex's edges are ordered differently
+  // in a piece of the mesh, SubDLocalLevel.h, than in the whole).
+  double semiSharpSum = 0.0;
   Index semiSharpCount = 0;
   for (Index i = 0; i < count; ++i)
   {
@@ -43,7 +46,7 @@ float SubdivideEdgeSharpnessAtVertex(
   float averaged = edgeSharpness;
   if (semiSharpCount > 1)
   {
-    const float othersMean = (semiSharpSum - edgeSharpness) / static_cast<float>(semiSharpCount - 1);
+    const float othersMean = static_cast<float>((semiSharpSum - edgeSharpness) / (semiSharpCount - 1));
     averaged = 0.75f * edgeSharpness + 0.25f * othersMean;
   }
   averaged -= 1.0f;
@@ -54,7 +57,7 @@ float TransitionWeightAtVertex(float parentVertexSharpness, float childVertexSha
   const float* parentEdgeSharpness, const float* childEdgeSharpness, Index count)
 {
   Index transitions = 0;
-  float sum = 0.0f;
+  double sum = 0.0; // in double: independent of the order of the edges (see above)
   if (IsSharp(parentVertexSharpness) && !IsSharp(childVertexSharpness))
   {
     transitions = 1;
@@ -72,7 +75,7 @@ float TransitionWeightAtVertex(float parentVertexSharpness, float childVertexSha
   {
     return 0.0f;
   }
-  const float weight = sum / static_cast<float>(transitions);
+  const float weight = static_cast<float>(sum / transitions);
   return weight > 1.0f ? 1.0f : weight;
 }
 }

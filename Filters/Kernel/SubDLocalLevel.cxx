@@ -23,6 +23,37 @@ Level ExtractPiece(const Level& level, Index face, std::vector<Index>& points)
       }
     }
   }
+  if (level.Creasing == CreaseMethod::Chaikin)
+  {
+    // Chaikin creasing gives the far half of a semi-sharp spoke a sharpness averaged over
+    // the edges at the spoke's far end, and the spoke's edge point reads it: where such an
+    // end has semi-sharp edges, the piece takes all its faces too.
+    const size_t numNear = faces.size();
+    std::vector<Index> ends;
+    for (size_t i = 0; i < numNear; ++i)
+    {
+      for (Index v : topo.GetFaceVertices(faces[i]))
+      {
+        const IndexSpan edges = topo.GetVertexEdges(v);
+        const bool semiSharp = std::any_of(edges.begin(), edges.end(),
+          [&level](Index e) { return IsSemiSharp(level.EdgeSharpness[e]); });
+        if (semiSharp && std::find(ends.begin(), ends.end(), v) == ends.end())
+        {
+          ends.push_back(v);
+        }
+      }
+    }
+    for (Index v : ends)
+    {
+      for (Index g : topo.GetVertexFaces(v))
+      {
+        if (std::find(faces.begin(), faces.end(), g) == faces.end())
+        {
+          faces.push_back(g);
+        }
+      }
+    }
+  }
   std::unordered_map<Index, Index> localOf;
   points.clear();
   std::vector<Index> offsets{ 0 }, vertices;

@@ -188,10 +188,6 @@ std::vector<Index> SectorFaces(const Level& level, Index face, Index corner)
   const MeshTopology& topo = level.Topology;
   const Index v = topo.GetFaceVertices(face)[corner];
   std::vector<Index> sector{ face };
-  if (topo.GetVertexTag(v).NonManifold)
-  {
-    return {};
-  }
   // Walk one way through the edges leaving v, then the other way through those entering it
   // (unless the first walk came back round a closed fan).
   for (int direction = 0; direction < 2; ++direction)
@@ -227,7 +223,7 @@ bool IsRegularCorner(const Level& level, Index face, Index corner, PatchKind kin
   const MeshTopology& topo = level.Topology;
   const Index v = topo.GetFaceVertices(face)[corner];
   const Index size = kind == PatchKind::BSpline ? 4 : 3;
-  if (topo.GetVertexTag(v).NonManifold || !IsZeroOrInfinite(level.VertexSharpness[v]))
+  if (!IsZeroOrInfinite(level.VertexSharpness[v]))
   {
     return false;
   }
@@ -253,7 +249,8 @@ bool IsRegularCorner(const Level& level, Index face, Index corner, PatchKind kin
   switch (plan.Rule)
   {
     case VertexRule::Smooth:
-      return !topo.GetVertexTag(v).Boundary && topo.GetVertexEdges(v).size() == (size == 4 ? 4 : 6) &&
+      return !topo.GetVertexTag(v).Boundary && !topo.GetVertexTag(v).NonManifold &&
+        topo.GetVertexEdges(v).size() == (size == 4 ? 4 : 6) &&
         topo.GetVertexFaces(v).size() == topo.GetVertexEdges(v).size();
     case VertexRule::Crease:
       return SectorFaces(level, face, corner).size() == (kind == PatchKind::BSpline ? 2u : 3u);

@@ -58,8 +58,8 @@ SUBDKERNEL_EXPORT bool IsRegularCorner(const Level& level, Index face, Index cor
 SUBDKERNEL_EXPORT bool GatherRegularPatch(const Level& level, Index face, PatchKind kind, RegularPatch& patch);
 
 /// The faces around corner `corner` of `face` that lie between the same sharp edges (the
-/// whole fan without them), in order around the vertex; empty if the vertex is
-/// non-manifold. Used to find the side of a crease a face is on.
+/// whole fan without them), in order around the vertex (a non-manifold vertex: the faces
+/// reached without crossing a non-manifold edge). Used to find the side of a crease a face is on.
 SUBDKERNEL_EXPORT std::vector<Index> SectorFaces(const Level& level, Index face, Index corner);
 
 /// True if the edge can be crossed within a smooth region: two faces, manifold, not sharp.

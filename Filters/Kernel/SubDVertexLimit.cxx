@@ -66,7 +66,7 @@ bool IsStableCorner(const Level& level, Index face, Index corner, Index faceSize
   const MeshTopology& topo = level.Topology;
   const Index v = topo.GetFaceVertices(face)[corner];
   auto stable = [](float s) { return !IsSharp(s) || IsInfinitelySharp(s); };
-  if (topo.GetVertexTag(v).NonManifold || !stable(level.VertexSharpness[v]))
+  if (!stable(level.VertexSharpness[v]))
   {
     return false;
   }
@@ -98,7 +98,7 @@ bool ComputeVertexLimit(const Scheme& scheme, const Level& level, Index face, In
   const std::vector<Index> sector = SectorFaces(level, face, corner);
   if (sector.empty() || !IsStableCorner(level, face, corner, faceSize))
   {
-    error = "vertex " + std::to_string(v) + " cannot be analysed (non-manifold or not stable)";
+    error = "vertex " + std::to_string(v) + " cannot be analysed (semi-sharp features not decayed)";
     return false;
   }
 

@@ -80,7 +80,7 @@ void Crease(Case& c, const std::vector<Index>& chain, float sharpness)
 {
   const subd::MeshTopology topo = subd::MeshTopology::Build(c.Mesh.NumVertices(), c.Mesh.Offsets, c.Mesh.Vertices);
   c.Tags.EdgeSharpness.resize(static_cast<size_t>(topo.GetNumEdges()), 0.0f);
-  c.Mesh.Name += "-crease" + std::to_string(chain.size()) + "-s" + std::to_string(sharpness);
+  c.Mesh.Name += "-crease" + std::to_string(chain.size()) + "-s" + std::to_string(sharpness).substr(0, 4);
   for (size_t i = 0; i + 1 < chain.size(); ++i)
   {
     c.Tags.EdgeSharpness[topo.FindEdge(chain[i], chain[i + 1])] = sharpness;
@@ -108,6 +108,18 @@ std::vector<Case> QuadCases()
   Crease(*add(subdtest::Cube()), { 0, 1, 2 }, 10.0f);             // a crease ending in darts
   Crease(*add(subdtest::Cube()), { 0, 1, 5, 4, 0, 3 }, 2.5f);     // semi-sharp, a corner
   Crease(*add(subdtest::Grid(4, 4, false, false)), { 6, 7, 8, 13 }, 10.0f);
+  Case* chaikin = add(subdtest::Grid(6, 5, true, true));
+  Crease(*chaikin, { 1, 2, 3, 4, 10 }, 1.7f);
+  chaikin->Tags.Creasing = subd::CreaseMethod::Chaikin;
+  chaikin->Mesh.Name += "-chaikin";
+  add(subdtest::NonManifold());
+  // Semi-sharp spokes all around a pole, of increasing sharpness, with Chaikin creasing.
+  Case* spokes = add(subdtest::Star(8));
+  for (int k = 0; k < 8; ++k)
+  {
+    Crease(*spokes, { 2 * k + 1, 16 }, 0.2f + 2.5f * k / 8);
+  }
+  if (getenv("UNIFORM") == nullptr) spokes->Tags.Creasing = subd::CreaseMethod::Chaikin;
   return cases;
 }
 
@@ -304,5 +316,65 @@ TEST(LimitEvaluator, BoxSplineBasisReproducesLinearFunctions)
       EXPECT_NEAR(a[2], 0.0, 1e-12);
       EXPECT_NEAR(b[1], 0.0, 1e-12);
     }
+  }
+}
+
+namespace
+{
+// Derivatives against central differences of the evaluator's own positions and first
+// derivatives, at samples inside faces (irregular ones included).
+void CheckAgainstFiniteDifferences(const subd::Scheme& scheme, const Case& c, bool quads)
+{
+  const subd::Level base = c.Base();
+  const subd::LimitEvaluator evaluator(scheme, base);
+  const double params[][2] = { { 0.3, 0.2 }, { 0.12, 0.61 }, { 0.05, 0.07 } };
+  const double h = 1e-5;
+  double worst1 = 0.0, worst2 = 0.0;
+  for (Index f = 0; f < base.Topology.GetNumFaces(); ++f)
+  {
+    if (base.Topology.GetFaceSize(f) != (quads ? 4 : 3))
+    {
+      continue;
+    }
+    for (const auto& p : params)
+    {
+      auto at = [&](double du, double dv) {
+        subd::FaceSample s;
+        s.U = p[0] + du;
+        s.V = p[1] + dv;
+        return EvaluateAt(evaluator, c.Mesh.Points, f, s);
+      };
+      const Evaluated e = at(0, 0), up = at(h, 0), um = at(-h, 0), vp = at(0, h), vm = at(0, -h);
+      for (int x = 0; x < 3; ++x)
+      {
+        const double du = (up.D[0][x] - um.D[0][x]) / (2 * h), dv = (vp.D[0][x] - vm.D[0][x]) / (2 * h);
+        const double duu = (up.D[1][x] - um.D[1][x]) / (2 * h), duv = (vp.D[1][x] - vm.D[1][x]) / (2 * h);
+        const double dvv = (vp.D[2][x] - vm.D[2][x]) / (2 * h);
+        worst1 = std::max({ worst1, std::abs(du - e.D[1][x]), std::abs(dv - e.D[2][x]) });
+        worst2 = std::max({ worst2, std::abs(duu - e.D[3][x]), std::abs(duv - e.D[4][x]), std::abs(dvv - e.D[5][x]) });
+      }
+    }
+  }
+  const double size = Size(c.Mesh.Points);
+  EXPECT_LT(worst1, 1e-6 * size) << c.Mesh.Name;
+  EXPECT_LT(worst2, 1e-5 * size) << c.Mesh.Name;
+}
+}
+
+TEST(LimitEvaluator, CatmullClarkDerivativesMatchFiniteDifferences)
+{
+  const subd::CatmullClarkScheme scheme;
+  for (const Case& c : QuadCases())
+  {
+    CheckAgainstFiniteDifferences(scheme, c, true);
+  }
+}
+
+TEST(LimitEvaluator, LoopDerivativesMatchFiniteDifferences)
+{
+  const subd::LoopScheme scheme;
+  for (const Case& c : TriangleCases())
+  {
+    CheckAgainstFiniteDifferences(scheme, c, false);
   }
 }
