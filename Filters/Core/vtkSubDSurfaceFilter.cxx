@@ -1,9 +1,12 @@
 #include "vtkSubDSurfaceFilter.h"
 
+#include "SubDLimitEvaluator.h"
 #include "SubDMeshValidation.h"
 #include "SubDPolygonTriangulation.h"
 #include "SubDRefiner.h"
+#include "SubDRegularPatch.h"
 #include "SubDScheme.h"
+#include "vtkSubDLimitGeometry.h"
 #include "vtkSubDPointDataInterpolation.h"
 #include "vtkSubDSharpFeatures.h"
 
@@ -27,6 +30,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <numeric>
 #include <sstream>
 #include <vector>
@@ -211,6 +215,7 @@ public:
   vtkSubDSharpFeatures Features;
   std::vector<subd::Index> UnmatchedSegments; // crease segments that are not surface edges
   subd::Hierarchy Hierarchy;
+  std::unique_ptr<subd::Scheme> Scheme; // the scheme the hierarchy was built with
   int InputDepth = 0;        // the input's "SubDDepth" (0 without it)
   bool WritesDepth = false;  // the scheme depends on the depth: the output records it
   // Which finest faces and points are output. In the common case (no holes, no isolated
@@ -412,7 +417,8 @@ int vtkSubDSurfaceFilter::RequestData(
     {
       allTriangles = screened.Offsets[f + 1] - screened.Offsets[f] == 3;
     }
-    std::unique_ptr<subd::Scheme> scheme(this->NewScheme(allTriangles));
+    cache.Scheme.reset(this->NewScheme(allTriangles));
+    const subd::Scheme* scheme = cache.Scheme.get();
     subd::MeshTopology topology =
       subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices);
     if (topology.GetNumNonManifoldEdges() > 0 || topology.GetNumNonManifoldVertices() > 0)
@@ -477,8 +483,10 @@ int vtkSubDSurfaceFilter::RequestData(
       scheme->EffectiveBoundaryRule(static_cast<subd::BoundaryRule>(this->BoundaryRule)));
     cache.WritesDepth = scheme->DependsOnDepth();
     base.Depth = cache.WritesDepth ? inputDepth : 0;
+    const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy, refineProgress,
-          sharpFeatures || this->ProjectToLimit ? subd::ChildTopology::Full : subd::ChildTopology::FacesOnly))
+          sharpFeatures || this->ProjectToLimit || limitGeometry ? subd::ChildTopology::Full
+                                                                 : subd::ChildTopology::FacesOnly))
     {
       return aborted();
     }
@@ -494,6 +502,13 @@ int vtkSubDSurfaceFilter::RequestData(
         return fail();
       }
       cache.Hierarchy.Stencils.push_back(std::move(limit));
+    }
+    std::string evaluationError;
+    if (limitGeometry && !subd::LimitEvaluator(*scheme, cache.Hierarchy.Finest).IsValid(evaluationError))
+    {
+      vtkErrorMacro(<< (this->ComputeLimitNormals ? "ComputeLimitNormals" : "ComputeCurvature") << ": "
+                    << evaluationError << ".");
+      return fail();
     }
     ++this->NumberOfStencilBuilds;
 
@@ -547,6 +562,11 @@ int vtkSubDSurfaceFilter::RequestData(
   }
   outPoints->SetData(outCoords);
   output->SetPoints(outPoints);
+  if ((this->ComputeLimitNormals || this->ComputeCurvature) &&
+    !this->AddLimitGeometry(basePoints->GetPointer(0), output->GetPointData()))
+  {
+    return fail();
+  }
 
   // Point data: every array, with the same stencils.
   vtkPointData* inPD = input->GetPointData();
@@ -684,6 +704,75 @@ int vtkSubDSurfaceFilter::RequestData(
   return 1;
 }
 
+bool vtkSubDSurfaceFilter::AddLimitGeometry(const double* basePoints, vtkPointData* outPD)
+{
+  const vtkInternals& cache = *this->Internals;
+  const subd::Hierarchy& hierarchy = cache.Hierarchy;
+  const subd::Level& finest = hierarchy.Finest;
+  const subd::MeshTopology& topo = finest.Topology;
+  // The finest control points (without the limit projection, if any).
+  const int levelTables = this->NumberOfSubdivisions;
+  std::vector<double> control(static_cast<size_t>(hierarchy.GetNumFinestPoints()) * 3);
+  hierarchy.Evaluate(basePoints, 3, control.data(), SMPFor, nullptr, levelTables);
+
+  const subd::LimitEvaluator evaluator(*cache.Scheme, finest);
+  const bool quads = std::string(cache.Scheme->GetName()) == "catmull-clark";
+  const vtkIdType numOut =
+    cache.CompactPoints ? static_cast<vtkIdType>(cache.FinestPointOfOutput.size()) : topo.GetNumVertices();
+  vtkSubDLimitGeometry geometry(numOut, this->ComputeLimitNormals, this->ComputeCurvature, false);
+  std::mutex errorMutex;
+  std::string firstError;
+  vtkSMPTools::For(0, numOut, 256, [&](vtkIdType begin, vtkIdType end) {
+    std::vector<subd::LimitStencil> stencils;
+    std::vector<subd::SurfaceGeometry> sides;
+    std::vector<subd::Index> seen;
+    for (vtkIdType o = begin; o < end; ++o)
+    {
+      const subd::Index v = cache.CompactPoints ? cache.FinestPointOfOutput[o] : static_cast<subd::Index>(o);
+      const subd::IndexSpan faces = topo.GetVertexFaces(v);
+      const subd::IndexSpan corners = topo.GetVertexFaceCorners(v);
+      sides.clear();
+      seen.clear();
+      double d[6][3] = {}, c[6][3];
+      // One evaluation per side of the creases through v (one in all when v is smooth).
+      for (subd::Index i = 0; i < faces.size(); ++i)
+      {
+        const subd::Index f = faces[i];
+        if (finest.FaceIsHole[f] || std::find(seen.begin(), seen.end(), f) != seen.end())
+        {
+          continue;
+        }
+        const std::vector<subd::Index> sector = subd::SectorFaces(finest, f, corners[i]);
+        seen.insert(seen.end(), sector.begin(), sector.end());
+        seen.push_back(f);
+        std::string error;
+        if (!evaluator.EvaluateFace(
+              f, { subd::LimitEvaluator::CornerSample(topo.GetFaceSize(f), corners[i], quads) }, stencils, error))
+        {
+          std::lock_guard<std::mutex> lock(errorMutex);
+          firstError = firstError.empty() ? error : firstError;
+          return;
+        }
+        double di[6][3];
+        vtkSubDLimitGeometry::Apply(stencils[0], control.data(), di, c);
+        sides.push_back(subd::ComputeSurfaceGeometry(di, c));
+        if (sides.size() == 1)
+        {
+          std::copy(&di[0][0], &di[0][0] + 18, &d[0][0]);
+        }
+      }
+      geometry.SetMean(o, sides, d);
+    }
+  });
+  if (!firstError.empty())
+  {
+    vtkErrorMacro(<< "Limit geometry: " << firstError << ".");
+    return false;
+  }
+  geometry.AddTo(outPD);
+  return true;
+}
+
 void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -694,6 +783,8 @@ void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "ProjectToLimit: " << (this->ProjectToLimit ? "On" : "Off") << "\n";
+  os << indent << "ComputeLimitNormals: " << (this->ComputeLimitNormals ? "On" : "Off") << "\n";
+  os << indent << "ComputeCurvature: " << (this->ComputeCurvature ? "On" : "Off") << "\n";
   os << indent << "GenerateParentCellIds: " << (this->GenerateParentCellIds ? "On" : "Off") << "\n";
   os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
   os << indent << "NumberOfStencilBuilds: " << this->NumberOfStencilBuilds << "\n";

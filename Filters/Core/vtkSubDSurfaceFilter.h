@@ -71,6 +71,7 @@ namespace subd
 {
 class Scheme;
 }
+class vtkPointData;
 
 class SUBDFILTERS_EXPORT vtkSubDSurfaceFilter : public vtkPolyDataAlgorithm
 {
@@ -162,6 +163,38 @@ public:
 
   ///@{
   /**
+   * Add the exact normals of the limit surface as the point-data array "Normals" (default
+   * off): at each output point, the normal of the limit surface at the point its vertex
+   * converges to (where ProjectToLimit puts it). Computed from the limit tangents (first
+   * derivatives of the regular B-spline or box-spline patches, and at extraordinary
+   * vertices, darts, creases and corners from the eigenvectors of the subdivision matrix;
+   * SubDLimitEvaluator.h), not by averaging face normals. On a crease or at a corner the
+   * surface has one normal per side: the point gets their normalized mean. Catmull-Clark and
+   * Loop only (others report an error).
+   */
+  vtkSetMacro(ComputeLimitNormals, bool);
+  vtkGetMacro(ComputeLimitNormals, bool);
+  vtkBooleanMacro(ComputeLimitNormals, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Add the curvature of the limit surface at each output point's limit point (default off),
+   * from the exact first and second derivatives of the limit surface: "Mean_Curvature",
+   * "Gauss_Curvature", "Maximum_Curvature", "Minimum_Curvature" (vtkCurvatures' names; a
+   * convex closed surface has positive curvature) and the unit principal directions
+   * "Maximum_Curvature_Direction", "Minimum_Curvature_Direction". At an extraordinary vertex,
+   * where curvature is in general not defined, the values are those at parameter distance
+   * 2^-10 along the diagonal of one of its faces (SubDLimitEvaluator.h); on a crease, the
+   * mean of both sides. Catmull-Clark and Loop only.
+   */
+  vtkSetMacro(ComputeCurvature, bool);
+  vtkGetMacro(ComputeCurvature, bool);
+  vtkBooleanMacro(ComputeCurvature, bool);
+  ///@}
+
+  ///@{
+  /**
    * Add a vtkIdTypeArray "ParentCellId" to the output cell data, naming for each output face
    * the input cell it descends from (default off).
    */
@@ -194,6 +227,10 @@ protected:
   /// whether every (screened) input face is a triangle.
   virtual subd::Scheme* NewScheme(bool allTriangles) = 0;
 
+  /// Adds the limit normals and curvature arrays (ComputeLimitNormals, ComputeCurvature) of the
+  /// output points; false (with an error message) if evaluation failed.
+  bool AddLimitGeometry(const double* basePoints, vtkPointData* outPD);
+
   /// True for schemes defined on triangles only; polygons are then triangulated first (ear
   /// clipping, correct for concave polygons), with one warning, instead of being refused.
   virtual bool RequiresTriangles() { return false; }
@@ -206,6 +243,8 @@ protected:
   int OutputPointsPrecision = DEFAULT_PRECISION;
   bool GenerateParentCellIds = false;
   bool ProjectToLimit = false;
+  bool ComputeLimitNormals = false;
+  bool ComputeCurvature = false;
   double MaximumMemory = 16384.0;
   int NumberOfStencilBuilds = 0;
 

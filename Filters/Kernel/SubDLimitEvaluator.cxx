@@ -70,6 +70,7 @@ struct LimitEvaluator::Pending
   double Local[2];
   LimitStencil* Out;
   bool ForCurvature; ///< the nearby point of an extraordinary vertex: no nearby point of its own
+  int Rows;          ///< rows still to be written by the patch that holds the sample (6, 3 or 1)
 };
 
 void LimitStencil::Apply(const std::vector<double>& rows, int derivative, const double* values, int components,
@@ -218,7 +219,7 @@ bool LimitEvaluator::EvaluateFace(Index face, const std::vector<FaceSample>& sam
     std::vector<Pending> pending;
     for (size_t s = 0; s < samples.size(); ++s)
     {
-      pending.push_back({ { samples[s].U, samples[s].V }, &out[s], false });
+      pending.push_back({ { samples[s].U, samples[s].V }, &out[s], false, NumPatchDerivatives });
     }
     return this->Descend(local, 0, pending, ParamFrame(), 0, error);
   }
@@ -231,7 +232,7 @@ bool LimitEvaluator::EvaluateFace(Index face, const std::vector<FaceSample>& sam
     {
       if (samples[s].SubFace == k)
       {
-        pending.push_back({ { samples[s].U, samples[s].V }, &out[s], false });
+        pending.push_back({ { samples[s].U, samples[s].V }, &out[s], false, NumPatchDerivatives });
       }
     }
     if (!pending.empty())
@@ -250,12 +251,19 @@ bool LimitEvaluator::Descend(const LocalLevel& local, Index face, std::vector<Pe
   const ParamFrame& frame, int depth, std::string& error) const
 {
   const Index size = this->Kind == PatchKind::BSpline ? 4 : 3;
+  const size_t n = static_cast<size_t>(local.SupportSize);
+  // Writes the first `rows` rows of `from` into the sample's stencil.
+  auto keep = [n](const std::vector<double>& from, int rows, LimitStencil& to) {
+    std::copy(from.begin(), from.begin() + rows * n, to.Weights.begin());
+  };
   RegularPatch patch;
   if (GatherRegularPatch(local.Mesh, face, this->Kind, patch))
   {
+    std::vector<double> weights(NumPatchDerivatives * n);
     for (Pending& p : pending)
     {
-      this->EvaluateRegular(local, patch, p.Local, frame, p.Out->Weights);
+      this->EvaluateRegular(local, patch, p.Local, frame, weights);
+      keep(weights, p.Rows, *p.Out);
     }
     return true;
   }
@@ -264,9 +272,10 @@ bool LimitEvaluator::Descend(const LocalLevel& local, Index face, std::vector<Pe
   for (Pending& p : pending)
   {
     Index corner = CornerAt(size, p.Local, 1e-12);
-    if (corner == InvalidIndex && depth >= MaxDepth)
+    const bool deepest = depth >= MaxDepth;
+    if (corner == InvalidIndex && (deepest || (depth == DerivativeDepth && p.Rows > 1)))
     {
-      // Close enough: the nearest irregular corner.
+      // The irregular corner nearest the sample.
       double best = 2.0;
       for (Index k = 0; k < size; ++k)
       {
@@ -279,13 +288,38 @@ bool LimitEvaluator::Descend(const LocalLevel& local, Index face, std::vector<Pe
           corner = k;
         }
       }
+      if (!deepest && corner != InvalidIndex && IsStableCorner(local.Mesh, face, corner, size))
+      {
+        // The patches this deep are too close together for derivatives in double: take the
+        // vertex's tangents, and go on for the position only.
+        LimitStencil vertex;
+        vertex.Points = p.Out->Points;
+        vertex.Weights.assign(p.Out->Weights.size(), 0.0);
+        if (!this->EvaluateCorner(local, face, corner, frame, depth, false, vertex, error))
+        {
+          return false;
+        }
+        std::copy(vertex.Weights.begin() + PatchDu * n, vertex.Weights.begin() + PatchDuu * n,
+          p.Out->Weights.begin() + PatchDu * n);
+        p.Rows = 1;
+        corner = InvalidIndex;
+      }
     }
     if (corner != InvalidIndex && !IsRegularCorner(local.Mesh, face, corner, this->Kind) &&
       IsStableCorner(local.Mesh, face, corner, size))
     {
-      if (!this->EvaluateCorner(local, face, corner, frame, depth, !p.ForCurvature, *p.Out, error))
+      LimitStencil vertex;
+      vertex.Points = p.Out->Points;
+      vertex.Weights.assign(p.Out->Weights.size(), 0.0);
+      const bool withCurvature = !p.ForCurvature && p.Rows == NumPatchDerivatives;
+      if (!this->EvaluateCorner(local, face, corner, frame, depth, withCurvature, vertex, error))
       {
         return false;
+      }
+      keep(vertex.Weights, p.Rows, *p.Out);
+      if (withCurvature)
+      {
+        p.Out->CurvatureWeights = std::move(vertex.CurvatureWeights);
       }
       continue;
     }
@@ -294,6 +328,23 @@ bool LimitEvaluator::Descend(const LocalLevel& local, Index face, std::vector<Pe
       error = "the limit near vertex " + std::to_string(local.Mesh.Topology.GetFaceVertices(face)[0]) +
         " could not be evaluated (no regular patch after " + std::to_string(depth) + " levels)";
       return false;
+    }
+    if (depth == CurvatureDepth && !p.ForCurvature && p.Rows == NumPatchDerivatives)
+    {
+      // Within 2^-CurvatureDepth of an irregular vertex curvature is read at the centre of
+      // this face, as at the vertex itself (EvaluateCorner).
+      double centre[2] = { size == 4 ? 0.5 : 1.0 / 3.0, size == 4 ? 0.5 : 1.0 / 3.0 };
+      LimitStencil nearby;
+      nearby.Points = p.Out->Points;
+      nearby.Weights.assign(p.Out->Weights.size(), 0.0);
+      std::vector<Pending> aux{ { { centre[0], centre[1] }, &nearby, true, NumPatchDerivatives } };
+      if (!this->Descend(local, face, aux, frame, depth, error))
+      {
+        return false;
+      }
+      std::copy(nearby.Weights.begin() + PatchDuu * n, nearby.Weights.end(), p.Out->Weights.begin() + PatchDuu * n);
+      p.Out->CurvatureWeights = std::move(nearby.Weights);
+      p.Rows = 3;
     }
     rest.push_back(p);
   }
@@ -314,7 +365,7 @@ bool LimitEvaluator::Descend(const LocalLevel& local, Index face, std::vector<Pe
       if (!placed[i] && InsideFace(size, q, 1e-12))
       {
         placed[i] = true;
-        inside.push_back({ { q[0], q[1] }, rest[i].Out, rest[i].ForCurvature });
+        inside.push_back({ { q[0], q[1] }, rest[i].Out, rest[i].ForCurvature, rest[i].Rows });
       }
     }
     if (inside.empty())
@@ -374,8 +425,8 @@ bool LimitEvaluator::EvaluateCorner(const LocalLevel& local, Index face, Index c
   double c[2], centre[2] = { size == 4 ? 0.5 : 1.0 / 3.0, size == 4 ? 0.5 : 1.0 / 3.0 };
   CornerParam(size, corner, c);
   const double delta = std::ldexp(1.0, -CurvatureDepth);
-  std::vector<Pending> aux{ { { c[0] + 2.0 * delta * (centre[0] - c[0]), c[1] + 2.0 * delta * (centre[1] - c[1]) },
-    &nearby, true } };
+  std::vector<Pending> aux{ { { c[0] + delta * (centre[0] - c[0]), c[1] + delta * (centre[1] - c[1]) }, &nearby,
+    true, NumPatchDerivatives } };
   if (withCurvature && !this->Descend(local, face, aux, frame, depth, error))
   {
     return false;

@@ -14,10 +14,13 @@
 //   dart, crease or corner whose side is not a regular grid), or within 2^-MaxDepth of one,
 //   takes the limit point and tangents from the eigenstructure of that vertex
 //   (SubDVertexLimit.h). The parametrisation is singular there, so second derivatives, and
-//   the curvature, are those of the nearby point at parameter distance 2^-CurvatureDepth
-//   towards the face's centre (LimitStencil::CurvatureWeights); curvature at such vertices
-//   is generally not continuous (it depends on the direction of approach), and this is
-//   the value one reads arriving along the face's diagonal.
+//   the curvature, are those of the centre of the vertex's sub-face 2^-CurvatureDepth
+//   across (LimitStencil::CurvatureWeights); curvature at such vertices is generally not
+//   continuous (it depends on the direction of approach), and this is the value one reads
+//   arriving along the face's diagonal. Samples closer than that to the vertex read their
+//   curvature at the same kind of point of their own sub-face of that size, and closer than
+//   2^-DerivativeDepth take the vertex's tangents: below, the sub-patches are too close
+//   together for derivatives in double precision. Positions stay exact.
 //
 // Parameters: a quad over the unit square, a triangle over the unit triangle (SubDPatchParam.h).
 // A Catmull-Clark face that is not a quad is split into quads at its centre like the first
@@ -75,10 +78,14 @@ public:
 
   /// Levels of local refinement after which a sample is taken to be at the vertex it is
   /// closest to (its parameter distance is then below 2^-MaxDepth).
-  static constexpr int MaxDepth = 30;
-  /// Parameter distance 2^-CurvatureDepth of the point curvature is read at near an
-  /// extraordinary vertex.
+  static constexpr int MaxDepth = 40;
+  /// Near an irregular vertex, the depth below which curvature is read at the centre of the
+  /// sample's face of that depth, as at the vertex itself: the centre of the vertex's face
+  /// 2^-CurvatureDepth across. Deeper, second derivatives would lose digits in double.
   static constexpr int CurvatureDepth = 10;
+  /// The depth below which first derivatives are the irregular vertex's tangents (the
+  /// position is still followed down to MaxDepth).
+  static constexpr int DerivativeDepth = 22;
 
 private:
   struct Pending;

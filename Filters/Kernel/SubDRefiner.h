@@ -36,10 +36,11 @@ struct SUBDKERNEL_EXPORT Hierarchy
 
   /// Applies every level's stencils to `components` values per base point; `finest` receives
   /// GetNumFinestPoints() * components values. T is float or double (accumulation is in
-  /// double either way). Returns false when progress asked to stop.
+  /// double either way). Returns false when progress asked to stop. `numTables` (if not
+  /// negative) applies only the first tables (the levels, without an appended limit table).
   template <typename T>
   bool Evaluate(const T* base, int components, T* finest, const ParallelFor& parallelFor = SerialFor,
-    const ProgressCallback& progress = nullptr) const;
+    const ProgressCallback& progress = nullptr, int numTables = -1) const;
 };
 
 /// Refines `base` `levels` times. The finest level has faces only unless `finest` asks
@@ -50,9 +51,9 @@ SUBDKERNEL_EXPORT bool Refine(const Scheme& scheme, Level base, int levels, Hier
 
 template <typename T>
 bool Hierarchy::Evaluate(const T* base, int components, T* finest, const ParallelFor& parallelFor,
-  const ProgressCallback& progress) const
+  const ProgressCallback& progress, int numTables) const
 {
-  const int levels = this->GetNumStencilTables();
+  const int levels = numTables < 0 ? this->GetNumStencilTables() : std::min(numTables, this->GetNumStencilTables());
   if (levels == 0)
   {
     std::copy(base, base + static_cast<size_t>(this->NumBasePoints) * components, finest);

@@ -1,0 +1,126 @@
+/**
+ * @class   vtkSubDLimitFilter
+ * @brief   exact evaluation of the Catmull-Clark or Loop limit surface of a control cage
+ *
+ * vtkSubDLimitFilter evaluates the limit surface that Catmull-Clark (Catmull, Clark 1978) or
+ * Loop (Loop 1987) subdivision of the input polygons converges to, exactly (to round-off),
+ * without refining the whole cage:
+ *
+ * - on a uniform grid of Resolution segments along every edge of every face (a Catmull-Clark
+ *   face that is not a quad is split at its centre into quads, one per corner, each with
+ *   Resolution/2 segments, Resolution then rounded up to even), giving a watertight
+ *   tessellation of the limit surface: points on shared edges and vertices are evaluated
+ *   once and shared; Catmull-Clark gives quads, Loop triangles; cell data "FaceId" names the
+ *   input cell each comes from; or
+ * - at the locations given on the second input (SetLocationsConnection): any vtkDataSet
+ *   whose point data has "FaceId" (the input cell id of a polygon) and "FaceUV" (2
+ *   components: (u, v) in the unit square of a quad, corners 0..3 at (0,0), (1,0), (1,1),
+ *   (0,1), or in the unit triangle of a triangle, corners at (0,0), (1,0), (0,1)), and for a
+ *   Catmull-Clark polygon that is not a quad "SubFace" (the corner k whose quad is meant,
+ *   with (0,0) at the corner, (1,0) at the middle of the edge to the next corner, (1,1) at the
+ *   centre). The output has one vertex cell per location, and the locations' point data.
+ *
+ * Each output point carries the cage's point data, evaluated with the same limit weights,
+ * and on request the limit surface's "Normals" (ComputeNormals, default on), curvature
+ * (ComputeCurvature: "Mean_Curvature", "Gauss_Curvature", "Maximum_Curvature",
+ * "Minimum_Curvature", "Maximum_Curvature_Direction", "Minimum_Curvature_Direction"; positive
+ * where convex) and first derivatives "dPdu", "dPdv" (ComputeDerivatives), all from the
+ * exact first and second derivatives of the limit surface.
+ *
+ * Method (SubDLimitEvaluator.h): regular faces are bicubic B-spline (Catmull-Clark) or
+ * quartic box-spline (Loop) patches, with phantom points along infinitely sharp creases and
+ * boundaries; other faces are refined locally, only around the face, until the sample lies
+ * in a regular patch (feature-adaptive evaluation, Niessner et al., ACM TOG 2012); at an
+ * extraordinary vertex, or a dart, crease or corner vertex that is not regular, the limit
+ * point and tangent plane come from the eigenvectors of the subdivision matrix (Halstead,
+ * Kass, DeRose, SIGGRAPH 1993; Zorin 1998), and curvature, which is in general not defined
+ * there, is read at parameter distance 2^-10 along the face's diagonal. It agrees with
+ * OpenSubdiv's feature-adaptive patches to about 1e-15 (TestOracleOpenSubdiv).
+ *
+ * Sharp features are read as vtkSubDSurfaceFilter reads them (lines with "Sharpness",
+ * "CornerSharpness", "Hole"), with the same BoundaryRule and CreaseMethod. Bad input (no
+ * polygons, NaN points, a polygon with a repeated point, Loop on polygons that are not
+ * triangles, a location outside its face or on a missing or hole face) is an error naming
+ * the culprit, with an empty output.
+ *
+ * @sa vtkSubDCatmullClarkFilter vtkSubDLoopFilter
+ */
+#ifndef vtkSubDLimitFilter_h
+#define vtkSubDLimitFilter_h
+
+#include "SubDFiltersModule.h" // for export macro
+#include "vtkPolyDataAlgorithm.h"
+
+class SUBDFILTERS_EXPORT vtkSubDLimitFilter : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkSubDLimitFilter* New();
+  vtkTypeMacro(vtkSubDLimitFilter, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Schemes
+  {
+    CATMULL_CLARK = 0,
+    LOOP = 1
+  };
+
+  ///@{
+  /// The scheme whose limit surface is evaluated (default CATMULL_CLARK).
+  vtkSetClampMacro(Scheme, int, CATMULL_CLARK, LOOP);
+  vtkGetMacro(Scheme, int);
+  void SetSchemeToCatmullClark() { this->SetScheme(CATMULL_CLARK); }
+  void SetSchemeToLoop() { this->SetScheme(LOOP); }
+  ///@}
+
+  ///@{
+  /// Segments along each face edge of the tessellation (default 4, 1..1024).
+  vtkSetClampMacro(Resolution, int, 1, 1024);
+  vtkGetMacro(Resolution, int);
+  ///@}
+
+  ///@{
+  /// As vtkSubDSurfaceFilter: 0 none, 1 edge only (default), 2 edge and corner.
+  vtkSetClampMacro(BoundaryRule, int, 0, 2);
+  vtkGetMacro(BoundaryRule, int);
+  /// As vtkSubDSurfaceFilter: 0 uniform (default), 1 Chaikin.
+  vtkSetClampMacro(CreaseMethod, int, 0, 1);
+  vtkGetMacro(CreaseMethod, int);
+  ///@}
+
+  ///@{
+  /// The arrays to add (see the class description).
+  vtkSetMacro(ComputeNormals, bool);
+  vtkGetMacro(ComputeNormals, bool);
+  vtkBooleanMacro(ComputeNormals, bool);
+  vtkSetMacro(ComputeCurvature, bool);
+  vtkGetMacro(ComputeCurvature, bool);
+  vtkBooleanMacro(ComputeCurvature, bool);
+  vtkSetMacro(ComputeDerivatives, bool);
+  vtkGetMacro(ComputeDerivatives, bool);
+  vtkBooleanMacro(ComputeDerivatives, bool);
+  ///@}
+
+  /// The locations to evaluate at (optional second input; see the class description).
+  void SetLocationsConnection(vtkAlgorithmOutput* output) { this->SetInputConnection(1, output); }
+
+protected:
+  vtkSubDLimitFilter();
+  ~vtkSubDLimitFilter() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Scheme = CATMULL_CLARK;
+  int Resolution = 4;
+  int BoundaryRule = 1;
+  int CreaseMethod = 0;
+  bool ComputeNormals = true;
+  bool ComputeCurvature = false;
+  bool ComputeDerivatives = false;
+
+private:
+  vtkSubDLimitFilter(const vtkSubDLimitFilter&) = delete;
+  void operator=(const vtkSubDLimitFilter&) = delete;
+};
+
+#endif

@@ -1,0 +1,343 @@
+// Filter tests of the limit surface: vtkSubDLimitFilter's tessellation and locations, and
+// the ComputeLimitNormals / ComputeCurvature options of the surface filters, against closed
+// forms (the periodic bicubic B-spline of a torus-like net), against the surface filters'
+// own limit points, and against the refined meshes they converge to.
+#include "SubDBSplineNets.h"
+#include "SubDFilterTestSupport.h"
+#include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDLimitFilter.h"
+#include "vtkSubDLoopFilter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkFeatureEdges.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataNormals.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+
+namespace
+{
+using subdtest::ToPolyData;
+
+// Locations (face cell id, u, v, and the sub-face of a polygon) as the second input of
+// vtkSubDLimitFilter.
+vtkSmartPointer<vtkPolyData> Locations(const std::vector<std::array<double, 4>>& samples)
+{
+  auto locations = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName("FaceId");
+  vtkNew<vtkDoubleArray> uv;
+  uv->SetName("FaceUV");
+  uv->SetNumberOfComponents(2);
+  vtkNew<vtkIdTypeArray> sub;
+  sub->SetName("SubFace");
+  for (const auto& s : samples)
+  {
+    points->InsertNextPoint(0, 0, 0);
+    ids->InsertNextValue(static_cast<vtkIdType>(s[0]));
+    uv->InsertNextTuple2(s[1], s[2]);
+    sub->InsertNextValue(static_cast<vtkIdType>(s[3]));
+  }
+  locations->SetPoints(points);
+  locations->GetPointData()->AddArray(ids);
+  locations->GetPointData()->AddArray(uv);
+  locations->GetPointData()->AddArray(sub);
+  return locations;
+}
+
+vtkIdType OpenOrNonManifoldEdges(vtkPolyData* mesh)
+{
+  vtkNew<vtkFeatureEdges> edges;
+  edges->SetInputData(mesh);
+  edges->BoundaryEdgesOn();
+  edges->NonManifoldEdgesOn();
+  edges->FeatureEdgesOff();
+  edges->ManifoldEdgesOff();
+  edges->Update();
+  return edges->GetOutput()->GetNumberOfCells();
+}
+
+double Norm(const double v[3])
+{
+  return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+}
+
+// Derivatives of the cubic B-spline basis centred at 0.
+double CubicBSplineD1(double t)
+{
+  const double a = std::abs(t), s = t < 0 ? -1.0 : 1.0;
+  if (a < 1)
+    return s * (-2 * a + 1.5 * a * a);
+  if (a < 2)
+    return s * (-0.5 * (2 - a) * (2 - a));
+  return 0;
+}
+double CubicBSplineD2(double t)
+{
+  const double a = std::abs(t);
+  if (a < 1)
+    return -2 + 3 * a;
+  if (a < 2)
+    return 2 - a;
+  return 0;
+}
+}
+
+TEST(LimitFilter, TessellationIsWatertightAndMatchesTheLimitPoints)
+{
+  struct Case
+  {
+    subdtest::TestMesh Mesh;
+    bool Loop;
+  };
+  const std::vector<Case> cases = { { subdtest::House(false), false }, { subdtest::Star(5), false },
+    { subdtest::Cube().Triangulated(), true }, { subdtest::Bipyramid(7), true } };
+  for (const Case& c : cases)
+  {
+    for (int levels : { 1, 2 })
+    {
+      const int resolution = 1 << levels;
+      vtkNew<vtkSubDLimitFilter> limit;
+      limit->SetInputData(ToPolyData(c.Mesh));
+      limit->SetScheme(c.Loop ? vtkSubDLimitFilter::LOOP : vtkSubDLimitFilter::CATMULL_CLARK);
+      limit->SetResolution(resolution);
+      limit->Update();
+      vtkPolyData* out = limit->GetOutput();
+      ASSERT_GT(out->GetNumberOfCells(), 0) << c.Mesh.Name;
+      EXPECT_EQ(OpenOrNonManifoldEdges(out), 0) << c.Mesh.Name << ": the tessellation has cracks";
+      // Its points are the limit points of the mesh refined `levels` times (Catmull-Clark
+      // splits polygons at level 1, so a polygon's quads have half the resolution).
+      vtkSmartPointer<vtkPolyDataAlgorithm> refine;
+      if (c.Loop)
+        refine = vtkSmartPointer<vtkSubDLoopFilter>::New();
+      else
+        refine = vtkSmartPointer<vtkSubDCatmullClarkFilter>::New();
+      auto* surface = vtkSubDSurfaceFilter::SafeDownCast(refine);
+      surface->SetInputData(ToPolyData(c.Mesh));
+      surface->SetNumberOfSubdivisions(levels);
+      surface->ProjectToLimitOn();
+      surface->Update();
+      vtkPolyData* refined = surface->GetOutput();
+      EXPECT_EQ(out->GetNumberOfPoints(), refined->GetNumberOfPoints()) << c.Mesh.Name;
+      const double diagonal = subdtest::Diagonal(subdtest::Coordinates(refined));
+      EXPECT_LT(subdtest::LargestDistanceToNearestPoint(out, refined), 1e-12 * diagonal) << c.Mesh.Name;
+      EXPECT_LT(subdtest::LargestDistanceToNearestPoint(refined, out), 1e-12 * diagonal) << c.Mesh.Name;
+      vtkDataArray* normals = out->GetPointData()->GetNormals();
+      ASSERT_NE(normals, nullptr);
+      for (vtkIdType i = 0; i < normals->GetNumberOfTuples(); ++i)
+      {
+        EXPECT_NEAR(Norm(normals->GetTuple3(i)), 1.0, 1e-6);
+      }
+    }
+  }
+}
+
+// A torus-like closed net of valence-4 quads: Catmull-Clark's limit is the periodic
+// bicubic B-spline, evaluated here independently with its analytic curvature.
+TEST(LimitFilter, TorusCurvatureIsTheBSplineCurvature)
+{
+  const int nx = 8, ny = 6;
+  subdtest::TestMesh torus = subdtest::Grid(nx, ny, true, true);
+  torus.Jitter(0.05);
+  std::vector<std::array<double, 4>> samples;
+  for (int f = 0; f < nx * ny; f += 5)
+    for (double u : { 0.0, 0.3, 0.75 })
+      for (double v : { 0.1, 0.5, 1.0 })
+        samples.push_back({ static_cast<double>(f), u, v, 0 });
+  vtkNew<vtkSubDLimitFilter> limit;
+  limit->SetInputData(ToPolyData(torus));
+  limit->SetLocationsConnection(nullptr);
+  limit->SetInputData(1, Locations(samples));
+  limit->ComputeCurvatureOn();
+  limit->Update();
+  vtkPolyData* out = limit->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPoints(), static_cast<vtkIdType>(samples.size()));
+  vtkDataArray* mean = out->GetPointData()->GetArray("Mean_Curvature");
+  vtkDataArray* gauss = out->GetPointData()->GetArray("Gauss_Curvature");
+  vtkDataArray* normals = out->GetPointData()->GetNormals();
+  ASSERT_TRUE(mean && gauss && normals);
+  for (size_t k = 0; k < samples.size(); ++k)
+  {
+    const int f = static_cast<int>(samples[k][0]);
+    const double s = f % nx + samples[k][1], t = f / nx + samples[k][2];
+    double P[3] = {}, Ps[3] = {}, Pt[3] = {}, Pss[3] = {}, Pst[3] = {}, Ptt[3] = {};
+    for (int b = -3; b <= ny + 3; ++b)
+    {
+      for (int a = -3; a <= nx + 3; ++a)
+      {
+        const double Na = subdtest::CubicBSpline(s - a), Nb = subdtest::CubicBSpline(t - b);
+        const double Da = CubicBSplineD1(s - a), Db = CubicBSplineD1(t - b);
+        const double DDa = CubicBSplineD2(s - a), DDb = CubicBSplineD2(t - b);
+        const double* X = &torus.Points[3 * (((b % ny) + ny) % ny * nx + ((a % nx) + nx) % nx)];
+        for (int x = 0; x < 3; ++x)
+        {
+          P[x] += Na * Nb * X[x];
+          Ps[x] += Da * Nb * X[x];
+          Pt[x] += Na * Db * X[x];
+          Pss[x] += DDa * Nb * X[x];
+          Pst[x] += Da * Db * X[x];
+          Ptt[x] += Na * DDb * X[x];
+        }
+      }
+    }
+    double n[3] = { Ps[1] * Pt[2] - Ps[2] * Pt[1], Ps[2] * Pt[0] - Ps[0] * Pt[2], Ps[0] * Pt[1] - Ps[1] * Pt[0] };
+    const double length = Norm(n);
+    for (double& x : n)
+      x /= length;
+    auto dot = [](const double* a, const double* b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+    // First and second fundamental forms; the shape operator I^-1 II; with outward normals a
+    // convex surface bends away from n, so its curvature is minus the shape operator's.
+    const double I[2][2] = { { dot(Ps, Ps), dot(Ps, Pt) }, { dot(Ps, Pt), dot(Pt, Pt) } };
+    const double II[2][2] = { { dot(Pss, n), dot(Pst, n) }, { dot(Pst, n), dot(Ptt, n) } };
+    const double detI = I[0][0] * I[1][1] - I[0][1] * I[0][1];
+    const double W[2][2] = { { (I[1][1] * II[0][0] - I[0][1] * II[1][0]) / detI, (I[1][1] * II[0][1] - I[0][1] * II[1][1]) / detI },
+      { (I[0][0] * II[1][0] - I[0][1] * II[0][0]) / detI, (I[0][0] * II[1][1] - I[0][1] * II[0][1]) / detI } };
+    const double expectedMean = -0.5 * (W[0][0] + W[1][1]);
+    const double expectedGauss = W[0][0] * W[1][1] - W[0][1] * W[1][0];
+    double got[3];
+    out->GetPoint(static_cast<vtkIdType>(k), got);
+    for (int x = 0; x < 3; ++x)
+    {
+      EXPECT_NEAR(got[x], P[x], 1e-12) << "sample " << k;
+      EXPECT_NEAR(normals->GetComponent(static_cast<vtkIdType>(k), x), n[x], 1e-6) << "sample " << k;
+    }
+    EXPECT_NEAR(mean->GetTuple1(static_cast<vtkIdType>(k)), expectedMean, 1e-10) << "sample " << k;
+    EXPECT_NEAR(gauss->GetTuple1(static_cast<vtkIdType>(k)), expectedGauss, 1e-10) << "sample " << k;
+  }
+}
+
+// Near an extraordinary vertex curvature stays finite and settles as samples approach it.
+TEST(LimitFilter, CurvatureNearExtraordinaryVerticesConverges)
+{
+  for (const subdtest::TestMesh& mesh : { subdtest::Cube(), subdtest::Star(5), subdtest::Star(7) })
+  {
+    // Face 0's corner 0 is extraordinary in all three (valence 3, 5, 7 there... or its
+    // polygon's corner): approach it along the diagonal of the first quad found there.
+    vtkSmartPointer<vtkPolyData> cage = ToPolyData(mesh);
+    const vtkIdType face = mesh.Name == "cube" ? 0 : 2; // star: a side quad at the apex ring? no: roof
+    std::vector<std::array<double, 4>> samples;
+    for (int k = 2; k <= 24; ++k)
+      samples.push_back({ static_cast<double>(face), std::ldexp(1.0, -k), std::ldexp(1.0, -k) });
+    vtkNew<vtkSubDLimitFilter> limit;
+    limit->SetInputData(cage);
+    limit->SetInputData(1, Locations(samples));
+    limit->ComputeCurvatureOn();
+    limit->Update();
+    vtkDataArray* gauss = limit->GetOutput()->GetPointData()->GetArray("Gauss_Curvature");
+    vtkDataArray* mean = limit->GetOutput()->GetPointData()->GetArray("Mean_Curvature");
+    ASSERT_TRUE(gauss && mean) << mesh.Name;
+    const vtkIdType n = gauss->GetNumberOfTuples();
+    const double atVertex = mean->GetTuple1(n - 1);
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const double H = mean->GetTuple1(i), K = gauss->GetTuple1(i);
+      ASSERT_TRUE(std::isfinite(H) && std::isfinite(K)) << mesh.Name << " sample " << i;
+      EXPECT_LT(std::abs(H), 2.0 * std::abs(atVertex) + 1.0) << mesh.Name << " sample " << i;
+      if (i >= 7 && i + 1 < n)
+      {
+        // From 2^-9 on, the value settles to the vertex's (no blow-up from lost digits).
+        EXPECT_LT(std::abs(H - atVertex), 0.05 * std::abs(atVertex)) << mesh.Name << " sample " << i;
+      }
+    }
+  }
+}
+
+TEST(LimitNormals, UnitAndConvergingToTheRefinedMeshNormals)
+{
+  struct Case
+  {
+    subdtest::TestMesh Mesh;
+    bool Loop;
+  };
+  for (const Case& c : { Case{ subdtest::Star(5).Jitter(0.1), false }, Case{ subdtest::Bipyramid(7).Jitter(0.1), true } })
+  {
+    double previous = 1e300;
+    for (int levels = 2; levels <= 5; ++levels)
+    {
+      vtkSmartPointer<vtkSubDSurfaceFilter> filter;
+      if (c.Loop)
+        filter = vtkSmartPointer<vtkSubDLoopFilter>::New();
+      else
+        filter = vtkSmartPointer<vtkSubDCatmullClarkFilter>::New();
+      filter->SetInputData(ToPolyData(c.Mesh));
+      filter->SetNumberOfSubdivisions(levels);
+      filter->ProjectToLimitOn();
+      filter->ComputeLimitNormalsOn();
+      filter->Update();
+      vtkPolyData* out = filter->GetOutput();
+      vtkDataArray* exact = out->GetPointData()->GetNormals();
+      ASSERT_NE(exact, nullptr);
+      vtkNew<vtkPolyData> plain;
+      plain->SetPoints(out->GetPoints());
+      plain->SetPolys(out->GetPolys());
+      vtkNew<vtkPolyDataNormals> meshNormals;
+      meshNormals->SetInputData(plain);
+      meshNormals->SplittingOff();
+      meshNormals->ConsistencyOff();
+      meshNormals->Update();
+      vtkDataArray* averaged = meshNormals->GetOutput()->GetPointData()->GetNormals();
+      double worst = 0.0;
+      for (vtkIdType i = 0; i < exact->GetNumberOfTuples(); ++i)
+      {
+        const double* n = exact->GetTuple3(i);
+        EXPECT_NEAR(Norm(n), 1.0, 1e-6);
+        double a[3];
+        averaged->GetTuple(i, a);
+        worst = std::max(worst, std::acos(std::min(1.0, (n[0] * a[0] + n[1] * a[1] + n[2] * a[2]) / Norm(a))));
+      }
+      EXPECT_LT(worst, previous) << c.Mesh.Name << " level " << levels;
+      previous = worst;
+    }
+    EXPECT_LT(previous, 0.02) << c.Mesh.Name;
+  }
+}
+
+TEST(LimitCurvature, ConvexSurfacesHavePositiveCurvature)
+{
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(ToPolyData(subdtest::Cube()));
+  filter->SetNumberOfSubdivisions(3);
+  filter->ComputeCurvatureOn();
+  filter->Update();
+  vtkDataArray* mean = filter->GetOutput()->GetPointData()->GetArray("Mean_Curvature");
+  vtkDataArray* gauss = filter->GetOutput()->GetPointData()->GetArray("Gauss_Curvature");
+  ASSERT_TRUE(mean && gauss);
+  for (vtkIdType i = 0; i < mean->GetNumberOfTuples(); ++i)
+  {
+    EXPECT_GT(mean->GetTuple1(i), 0.0) << "point " << i;
+    EXPECT_GT(gauss->GetTuple1(i), 0.0) << "point " << i;
+  }
+}
+
+TEST(LimitFilter, BadInputGivesClearErrors)
+{
+  auto run = [](vtkPolyData* cage, vtkPolyData* locations, bool loop) {
+    vtkNew<vtkSubDLimitFilter> limit;
+    subdtest::Messages messages;
+    messages.Watch(limit);
+    limit->SetInputData(cage);
+    if (locations)
+      limit->SetInputData(1, locations);
+    limit->SetScheme(loop ? vtkSubDLimitFilter::LOOP : vtkSubDLimitFilter::CATMULL_CLARK);
+    limit->Update();
+    EXPECT_EQ(limit->GetOutput()->GetNumberOfPoints(), 0);
+    return messages.Errors;
+  };
+  vtkSmartPointer<vtkPolyData> cube = ToPolyData(subdtest::Cube());
+  EXPECT_NE(run(cube, nullptr, true).find("Loop needs triangles"), std::string::npos);
+  EXPECT_NE(run(cube, Locations({ { 6, 0.5, 0.5 } }), false).find("not a polygon"), std::string::npos);
+  EXPECT_NE(run(cube, Locations({ { 1, 1.5, 0.5 } }), false).find("outside face"), std::string::npos);
+  vtkNew<vtkPolyData> empty;
+  EXPECT_NE(run(empty, nullptr, false).find("no polygons"), std::string::npos);
+}
