@@ -92,7 +92,8 @@ std::string UsageText()
 {
   std::ostringstream out;
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
-         "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--output FILE]\n"
+         "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--normals]\n"
+         "            [--curvature] [--output FILE]\n"
          "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
          "\n"
          "Subdivides the polygon mesh INPUT (" << SupportedExtensions() << ") and writes the\n"
@@ -117,6 +118,10 @@ std::string UsageText()
          "  --feature-angle D  edges whose faces meet at more than D degrees become sharp creases\n"
          "  --limit            move the output points (and point data) to the limit surface\n"
          "                     (catmull-clark and loop; OpenSubdiv's limit masks)\n"
+         "  --normals          add the exact normals of the limit surface (point data \"Normals\")\n"
+         "  --curvature        add the limit surface's curvature from its exact derivatives:\n"
+         "                     Mean_Curvature, Gauss_Curvature, Maximum_/Minimum_Curvature and\n"
+         "                     their directions (catmull-clark and loop)\n"
          "\n"
          "Creases come with the input: in .vtp/.vtk as line cells with the cell array\n"
          "\"Sharpness\" (0 smooth .. 10 infinitely sharp), \"CornerSharpness\" point data and\n"
@@ -327,6 +332,14 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     else if (arg == "--limit")
     {
       cmd.Options.ProjectToLimit = true;
+    }
+    else if (arg == "--normals")
+    {
+      cmd.Options.LimitNormals = true;
+    }
+    else if (arg == "--curvature")
+    {
+      cmd.Options.LimitCurvature = true;
     }
     else if (arg == "--no-cage")
     {

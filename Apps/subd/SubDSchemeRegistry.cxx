@@ -21,6 +21,8 @@ vtkSmartPointer<Filter> NewSurfaceFilter(const SchemeOptions& options)
   filter->SetCreaseMethod(options.CreaseMethod);
   filter->SetAutomaticCreases(options.FeatureAngle > 0.0);
   filter->SetProjectToLimit(options.ProjectToLimit);
+  filter->SetComputeLimitNormals(options.LimitNormals);
+  filter->SetComputeCurvature(options.LimitCurvature);
   if (options.FeatureAngle > 0.0)
   {
     filter->SetFeatureAngle(options.FeatureAngle);

@@ -18,6 +18,8 @@ struct SchemeOptions
   int CreaseMethod = 0;      // vtkSubDSurfaceFilter::CREASE_UNIFORM
   double FeatureAngle = 0.0; // > 0: edges sharper than this (degrees) become creases
   bool ProjectToLimit = false; // move the output points to the limit surface
+  bool LimitNormals = false;   // add the exact limit normals
+  bool LimitCurvature = false; // add the limit curvature arrays
 };
 
 struct SchemeEntry

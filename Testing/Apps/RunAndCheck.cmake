@@ -1,6 +1,7 @@
 # Runs a command and checks its exit code and output.
 #   cmake -DCOMMAND=prog -DARGS="arg|arg|..." -DEXPECT_EXIT=0|nonzero [-DEXPECT_OUTPUT=regex]
-#         [-DEXPECT_FILE=path] [-DWORKING_DIRECTORY=dir] -P RunAndCheck.cmake
+#         [-DEXPECT_FILE=path [-DEXPECT_FILE_CONTAINS=regex]] [-DWORKING_DIRECTORY=dir]
+#         -P RunAndCheck.cmake
 if (DEFINED EXPECT_FILE)
   file(REMOVE "${EXPECT_FILE}")
 endif ()
@@ -25,4 +26,10 @@ if (DEFINED EXPECT_OUTPUT AND NOT "${out}${err}" MATCHES "${EXPECT_OUTPUT}")
 endif ()
 if (DEFINED EXPECT_FILE AND NOT EXISTS "${EXPECT_FILE}")
   message(FATAL_ERROR "expected output file ${EXPECT_FILE} was not written")
+endif ()
+if (DEFINED EXPECT_FILE_CONTAINS)
+  file(READ "${EXPECT_FILE}" content LIMIT 200000)
+  if (NOT content MATCHES "${EXPECT_FILE_CONTAINS}")
+    message(FATAL_ERROR "${EXPECT_FILE} does not match '${EXPECT_FILE_CONTAINS}'")
+  endif ()
 endif ()
