@@ -122,7 +122,14 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* surface, int coloring, 
   vtkSmartPointer<vtkAlgorithm> last = triangles;
   vtkNew<vtkCurvatures> curvatures;
   const char* name = coloring == vtkSubDScene::COLOR_MEAN_CURVATURE ? "Mean_Curvature" : "Gauss_Curvature";
-  if (coloring != vtkSubDScene::COLOR_NONE)
+  triangles->Update();
+  vtkDataArray* exact = triangles->GetOutput()->GetPointData()->GetArray(name);
+  if (coloring != vtkSubDScene::COLOR_NONE && exact)
+  {
+    // The surface carries its limit surface's curvature (ComputeCurvature): use it.
+    AppendInteriorMagnitudes(triangles->GetOutput(), exact, magnitudes);
+  }
+  else if (coloring != vtkSubDScene::COLOR_NONE)
   {
     curvatures->SetInputConnection(triangles->GetOutputPort());
     curvatures->SetCurvatureType(

@@ -2,8 +2,10 @@
  * @class   vtkSubDScene
  * @brief   SubD's standard picture of one or more subdivided surfaces, rendered offscreen
  *
- * Each view shows a surface, coloured by its discrete curvature (vtkCurvatures: mean or
- * Gaussian, on the triangulated surface) with a diverging cool-to-warm colour map
+ * Each view shows a surface, coloured by its curvature (mean or Gaussian): the exact
+ * curvature of the limit surface when the surface carries it ("Mean_Curvature" /
+ * "Gauss_Curvature" point data, as SubD's filters make with ComputeCurvature), else its
+ * discrete curvature (vtkCurvatures on the triangulated surface), with a diverging cool-to-warm colour map
  * (K. Moreland, "Diverging Color Maps for Scientific Visualization", ISVC 2009) over a
  * symmetric range (the 95th percentile of |curvature| over the interior points of all views,
  * so that views are comparable; boundary points, where discrete curvature means nothing,
@@ -18,8 +20,7 @@
  * window size is the grid size times ViewSize. Rendering happens in a
  * vtkSubDOffscreenRenderWindow (no display server needed) unless another window is set.
  *
- * The limit-surface curvature of SubD's limit evaluation will replace the discrete one
- * where it exists; until then this is VTK's vtkCurvatures on the refined mesh.
+ * Both curvatures share vtkCurvatures' sign convention (a convex closed surface is positive).
  */
 #ifndef vtkSubDScene_h
 #define vtkSubDScene_h
