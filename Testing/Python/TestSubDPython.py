@@ -59,6 +59,19 @@ def main():
     assert sharp.GetCreaseMethodAsString() == "Chaikin"
     sharp.Update()
     assert sharp.GetOutput().GetNumberOfLines() == 12, sharp.GetOutput().GetNumberOfLines()
+
+    # The limit surface: a tessellation with exact normals and (convex: positive) curvature.
+    limit = subd.vtkSubDLimitFilter()
+    limit.SetInputConnection(cube.GetOutputPort())
+    limit.SetResolution(2)
+    limit.ComputeCurvatureOn()
+    limit.Update()
+    tess = limit.GetOutput()
+    assert tess.GetNumberOfPolys() == 6 * 2 * 2, tess.GetNumberOfPolys()  # Resolution 2 per edge
+    mean = tess.GetPointData().GetArray("Mean_Curvature")
+    assert mean is not None and all(mean.GetValue(i) > 0 for i in range(mean.GetNumberOfTuples()))
+    normals = tess.GetPointData().GetNormals()
+    assert normals is not None and normals.GetNumberOfTuples() == tess.GetNumberOfPoints()
     print("python: %d faces, %d points" % (out.GetNumberOfPolys(), out.GetNumberOfPoints()))
     return 0
 
