@@ -151,10 +151,12 @@ public:
   /**
    * Move the output points to the limit surface (default off): after the levels, each
    * vertex is replaced by the point of the limit surface it converges to, by the scheme's
-   * limit masks (SubDLimitRules.h: Catmull-Clark and Loop so far, with their crease, corner
-   * and boundary rules; they match OpenSubdiv's PrimvarRefiner::Limit). Every point-data
-   * array is projected with the same masks. Other schemes report an error. Catmull-Clark
-   * needs quads: with polygons other than quads, ask for at least one level.
+   * limit masks (SubDLimitRules.h: Catmull-Clark and Loop with their crease, corner and
+   * boundary rules, matching OpenSubdiv's PrimvarRefiner::Limit; the interpolating linear
+   * and butterfly schemes, whose vertices are on their limit already, are left as they
+   * are). Every point-data array is projected with the same masks. Doo-Sabin, midpoint and
+   * sqrt(3) report an error. Catmull-Clark needs quads: with polygons other than quads, ask
+   * for at least one level.
    */
   vtkSetMacro(ProjectToLimit, bool);
   vtkGetMacro(ProjectToLimit, bool);

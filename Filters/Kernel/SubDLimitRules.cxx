@@ -104,4 +104,23 @@ StencilTable BuildLoopLimitStencils(const Level& level)
   };
   return BuildLimitRows(level, smoothSize, writeSmooth);
 }
+
+StencilTable BuildInterpolatingLimitStencils(const Level& level)
+{
+  const Index n = level.Topology.GetNumVertices();
+  StencilTable table(n);
+  table.ReserveRows(n);
+  for (Index v = 0; v < n; ++v)
+  {
+    table.SetRowSize(v, 1);
+  }
+  table.FinalizeSizes();
+  for (Index v = 0; v < n; ++v)
+  {
+    table.GetMutableSources(v)[0] = v;
+    table.GetMutableWeights(v)[0] = 1.0;
+  }
+  table.EndBlock(n);
+  return table;
+}
 }

@@ -32,6 +32,10 @@ SUBDKERNEL_EXPORT bool BuildCatmullClarkLimitStencils(const Level& level, Stenci
 
 /// Loop limit positions; every face must be a triangle.
 SUBDKERNEL_EXPORT StencilTable BuildLoopLimitStencils(const Level& level);
+
+/// The limit positions of an interpolating scheme (linear, bilinear, modified butterfly):
+/// the identity, since their vertices never move.
+SUBDKERNEL_EXPORT StencilTable BuildInterpolatingLimitStencils(const Level& level);
 }
 
 #endif

@@ -150,6 +150,24 @@ bool Scheme::BuildLimitStencils(const Level&, StencilTable&, std::string& error)
   return false;
 }
 
+bool BilinearScheme::BuildLimitStencils(const Level& level, StencilTable& stencils, std::string&) const
+{
+  stencils = BuildInterpolatingLimitStencils(level);
+  return true;
+}
+
+bool LinearTriangleScheme::BuildLimitStencils(const Level& level, StencilTable& stencils, std::string&) const
+{
+  stencils = BuildInterpolatingLimitStencils(level);
+  return true;
+}
+
+bool ButterflyScheme::BuildLimitStencils(const Level& level, StencilTable& stencils, std::string&) const
+{
+  stencils = BuildInterpolatingLimitStencils(level);
+  return true;
+}
+
 bool CatmullClarkScheme::BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const
 {
   return BuildCatmullClarkLimitStencils(level, stencils, error);

@@ -88,6 +88,8 @@ class SUBDKERNEL_EXPORT BilinearScheme : public QuadSplitScheme
 public:
   const char* GetName() const override { return "bilinear"; }
   StencilTable BuildStencils(const Level& parent) const override;
+  /// Interpolating: the identity (SubDLimitRules.h).
+  bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
   bool UsesBoundaryRule() const override { return false; }
 };
 
@@ -106,6 +108,8 @@ class SUBDKERNEL_EXPORT LinearTriangleScheme : public TriangleSplitScheme
 public:
   const char* GetName() const override { return "linear-triangles"; }
   StencilTable BuildStencils(const Level& parent) const override;
+  /// Interpolating: the identity (SubDLimitRules.h).
+  bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
   bool UsesBoundaryRule() const override { return false; }
 };
 
@@ -131,6 +135,8 @@ public:
   }
   const char* GetName() const override { return "butterfly"; }
   StencilTable BuildStencils(const Level& parent) const override;
+  /// Interpolating: the identity (SubDLimitRules.h).
+  bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
   bool UsesBoundaryRule() const override { return false; }
 
 private:

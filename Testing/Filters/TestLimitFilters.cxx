@@ -4,8 +4,10 @@
 // own limit points, and against the refined meshes they converge to.
 #include "SubDBSplineNets.h"
 #include "SubDFilterTestSupport.h"
+#include "vtkSubDButterflyFilter.h"
 #include "vtkSubDCatmullClarkFilter.h"
 #include "vtkSubDLimitFilter.h"
+#include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
 
 #include "vtkCellArray.h"
@@ -340,4 +342,38 @@ TEST(LimitFilter, BadInputGivesClearErrors)
   EXPECT_NE(run(cube, Locations({ { 1, 1.5, 0.5 } }), false).find("outside face"), std::string::npos);
   vtkNew<vtkPolyData> empty;
   EXPECT_NE(run(empty, nullptr, false).find("no polygons"), std::string::npos);
+}
+
+// Interpolating schemes never move their vertices: projecting to the limit changes nothing.
+TEST(LimitFilter, InterpolatingSchemesProjectToThemselves)
+{
+  vtkSmartPointer<vtkPolyData> cube = ToPolyData(subdtest::Cube().Triangulated());
+  for (int scheme = 0; scheme < 2; ++scheme)
+  {
+    vtkSmartPointer<vtkSubDSurfaceFilter> filters[2];
+    for (int project = 0; project < 2; ++project)
+    {
+      if (scheme == 0)
+        filters[project] = vtkSmartPointer<vtkSubDButterflyFilter>::New();
+      else
+        filters[project] = vtkSmartPointer<vtkSubDLinearFilter>::New();
+      filters[project]->SetInputData(cube);
+      filters[project]->SetNumberOfSubdivisions(2);
+      filters[project]->SetProjectToLimit(project == 1);
+      filters[project]->Update();
+    }
+    vtkPolyData* a = filters[0]->GetOutput();
+    vtkPolyData* b = filters[1]->GetOutput();
+    ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints());
+    ASSERT_GT(a->GetNumberOfPoints(), 0);
+    for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
+    {
+      double p[3], q[3];
+      a->GetPoint(i, p);
+      b->GetPoint(i, q);
+      EXPECT_EQ(p[0], q[0]);
+      EXPECT_EQ(p[1], q[1]);
+      EXPECT_EQ(p[2], q[2]);
+    }
+  }
 }
