@@ -34,8 +34,9 @@
  * extraordinary vertex, or a dart, crease or corner vertex that is not regular, the limit
  * point and tangent plane come from the eigenvectors of the subdivision matrix (Halstead,
  * Kass, DeRose, SIGGRAPH 1993; Zorin 1998), and curvature, which is in general not defined
- * there, is read at parameter distance 2^-10 along the face's diagonal. It agrees with
- * OpenSubdiv's feature-adaptive patches to about 1e-15 (TestOracleOpenSubdiv).
+ * there, is read at the centre of the vertex's sub-face 2^-10 across. It agrees with
+ * OpenSubdiv's feature-adaptive patches to 1e-14 in positions and first derivatives and
+ * 1e-12 in second derivatives (TestOracleOpenSubdiv).
  *
  * Sharp features are read as vtkSubDSurfaceFilter reads them (lines with "Sharpness",
  * "CornerSharpness", "Hole"), with the same BoundaryRule and CreaseMethod. Bad input (no

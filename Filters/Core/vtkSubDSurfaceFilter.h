@@ -186,9 +186,9 @@ public:
    * "Gauss_Curvature", "Maximum_Curvature", "Minimum_Curvature" (vtkCurvatures' names; a
    * convex closed surface has positive curvature) and the unit principal directions
    * "Maximum_Curvature_Direction", "Minimum_Curvature_Direction". At an extraordinary vertex,
-   * where curvature is in general not defined, the values are those at parameter distance
-   * 2^-10 along the diagonal of one of its faces (SubDLimitEvaluator.h); on a crease, the
-   * mean of both sides. Catmull-Clark and Loop only.
+   * where curvature is in general not defined, the values are those at the centre of the
+   * vertex's sub-face 2^-10 across in one of its faces (SubDLimitEvaluator.h); on a crease,
+   * the mean of both sides. Catmull-Clark and Loop only.
    */
   vtkSetMacro(ComputeCurvature, bool);
   vtkGetMacro(ComputeCurvature, bool);
