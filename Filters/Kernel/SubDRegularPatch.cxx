@@ -218,11 +218,10 @@ std::vector<Index> SectorFaces(const Level& level, Index face, Index corner)
   return sector;
 }
 
-bool IsRegularCorner(const Level& level, Index face, Index corner, PatchKind kind)
+bool IsStableCorner(const Level& level, Index face, Index corner, Index faceSize)
 {
   const MeshTopology& topo = level.Topology;
   const Index v = topo.GetFaceVertices(face)[corner];
-  const Index size = kind == PatchKind::BSpline ? 4 : 3;
   if (!IsZeroOrInfinite(level.VertexSharpness[v]))
   {
     return false;
@@ -236,16 +235,25 @@ bool IsRegularCorner(const Level& level, Index face, Index corner, PatchKind kin
   }
   for (Index g : topo.GetVertexFaces(v))
   {
-    if (topo.GetFaceSize(g) != size)
+    if (topo.GetFaceSize(g) != faceSize)
     {
       return false;
     }
   }
   const VertexRulePlan plan = PlanVertexRule(level, v);
-  if (plan.Rule != plan.ChildRule)
+  return plan.Rule == plan.ChildRule;
+}
+
+bool IsRegularCorner(const Level& level, Index face, Index corner, PatchKind kind)
+{
+  const MeshTopology& topo = level.Topology;
+  const Index v = topo.GetFaceVertices(face)[corner];
+  const Index size = kind == PatchKind::BSpline ? 4 : 3;
+  if (!IsStableCorner(level, face, corner, size))
   {
     return false;
   }
+  const VertexRulePlan plan = PlanVertexRule(level, v);
   switch (plan.Rule)
   {
     case VertexRule::Smooth:

@@ -51,7 +51,12 @@ struct RegularPatch
 /// and its 1-ring; a along corner 0 -> 1, b along corner 0 -> 2).
 SUBDKERNEL_EXPORT const int (&BoxSplineLattice())[12][2];
 
-/// True if corner vertex v of a face of `level` lets the face be regular (see above).
+/// True if the vertex at corner `corner` of `face` has a rule that stays the same from level
+/// to level: its edges and itself smooth or infinitely sharp (semi-sharp ones decay), no
+/// transition, and all its faces of `faceSize` sides (4 Catmull-Clark, 3 Loop).
+SUBDKERNEL_EXPORT bool IsStableCorner(const Level& level, Index face, Index corner, Index faceSize);
+
+/// True if the vertex at corner `corner` of `face` lets the face be regular (see above).
 SUBDKERNEL_EXPORT bool IsRegularCorner(const Level& level, Index face, Index corner, PatchKind kind);
 
 /// If `face` is regular, fills its control points and returns true.

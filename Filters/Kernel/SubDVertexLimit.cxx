@@ -61,33 +61,6 @@ Eigen::MatrixXd Projector(const Eigen::EigenSolver<Eigen::MatrixXd>& right,
 }
 }
 
-bool IsStableCorner(const Level& level, Index face, Index corner, Index faceSize)
-{
-  const MeshTopology& topo = level.Topology;
-  const Index v = topo.GetFaceVertices(face)[corner];
-  auto stable = [](float s) { return !IsSharp(s) || IsInfinitelySharp(s); };
-  if (!stable(level.VertexSharpness[v]))
-  {
-    return false;
-  }
-  for (Index e : topo.GetVertexEdges(v))
-  {
-    if (!stable(level.EdgeSharpness[e]))
-    {
-      return false;
-    }
-  }
-  for (Index g : topo.GetVertexFaces(v))
-  {
-    if (topo.GetFaceSize(g) != faceSize)
-    {
-      return false;
-    }
-  }
-  const VertexRulePlan plan = PlanVertexRule(level, v);
-  return plan.Rule == plan.ChildRule;
-}
-
 bool ComputeVertexLimit(const Scheme& scheme, const Level& level, Index face, Index corner, VertexLimit& out,
   std::string& error)
 {

@@ -22,6 +22,7 @@
 #ifndef SubDVertexLimit_h
 #define SubDVertexLimit_h
 
+#include "SubDRegularPatch.h" // IsStableCorner
 #include "SubDScheme.h"
 
 #include <string>
@@ -37,12 +38,8 @@ struct VertexLimit
   std::vector<double> TangentPrevious;///< along the face's edge to its previous corner
 };
 
-/// True if corner `corner` of `face` can be analysed (see above). `faceSize` is the
-/// scheme's face size (4 Catmull-Clark, 3 Loop).
-SUBDKERNEL_EXPORT bool IsStableCorner(const Level& level, Index face, Index corner, Index faceSize);
-
 /// Limit point and tangents at corner `corner` of `face`, on `face`'s side of any crease.
-/// Returns false (with the reason) if the corner cannot be analysed.
+/// Returns false (with the reason) if the corner cannot be analysed (IsStableCorner).
 SUBDKERNEL_EXPORT bool ComputeVertexLimit(const Scheme& scheme, const Level& level, Index face, Index corner,
   VertexLimit& out, std::string& error);
 }
