@@ -2,6 +2,7 @@
 
 #include "vtkPointData.h"
 
+#include <algorithm>
 #include <cmath>
 
 vtkSubDLimitGeometry::vtkSubDLimitGeometry(vtkIdType numPoints, bool normals, bool curvature, bool derivatives)
@@ -30,7 +31,14 @@ void vtkSubDLimitGeometry::Apply(const subd::LimitStencil& stencil, const double
   for (int k = 0; k < 6; ++k)
   {
     stencil.Apply(stencil.Weights, k, points, 3, d[k]);
-    stencil.Apply(stencil.CurvatureWeights.empty() ? stencil.Weights : stencil.CurvatureWeights, k, points, 3, c[k]);
+    if (stencil.CurvatureWeights.empty())
+    {
+      std::copy(d[k], d[k] + 3, c[k]);
+    }
+    else
+    {
+      stencil.Apply(stencil.CurvatureWeights, k, points, 3, c[k]);
+    }
   }
 }
 

@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 
 namespace subd
@@ -53,7 +54,16 @@ const std::array<std::array<int, 3>, 15>& QuarticExponents()
 void QuarticBernstein(double u, double v, double out[NumPatchDerivatives][15])
 {
   const double b[3] = { 1.0 - u - v, u, v };
-  auto power = [](double x, int e) { return e < 0 ? 0.0 : std::pow(x, e); };
+  double powers[3][5]; // b[m]^k, tabulated: this runs once per sample
+  for (int m = 0; m < 3; ++m)
+  {
+    powers[m][0] = 1.0;
+    for (int k = 1; k < 5; ++k)
+    {
+      powers[m][k] = powers[m][k - 1] * b[m];
+    }
+  }
+  auto power = [&powers](int m, int e) { return e < 0 ? 0.0 : powers[m][e]; };
   auto fact = [](int n) { return n <= 1 ? 1.0 : (n == 2 ? 2.0 : (n == 3 ? 6.0 : 24.0)); };
   const auto& exps = QuarticExponents();
   for (int a = 0; a < 15; ++a)
@@ -71,7 +81,7 @@ void QuarticBernstein(double u, double v, double out[NumPatchDerivatives][15])
         {
           falling *= e[m] - q;
         }
-        value *= falling * power(b[m], e[m] - d[m]);
+        value *= falling * power(m, e[m] - d[m]);
       }
       return value;
     };
@@ -218,6 +228,35 @@ void EvaluatePatchBasis(PatchKind kind, double u, double v, double weights[NumPa
     return;
   }
   static const Eigen::Matrix<double, 15, 12> coefficients = DeriveBoxSplineCoefficients();
+  // The corners, where filters evaluate every vertex, are tabulated.
+  struct CornerTable
+  {
+    double Weights[3][NumPatchDerivatives][16];
+  };
+  static const CornerTable corners = [] {
+    CornerTable table{};
+    const double at[3][2] = { { 0, 0 }, { 1, 0 }, { 0, 1 } };
+    for (int c = 0; c < 3; ++c)
+    {
+      double bern[NumPatchDerivatives][15];
+      QuarticBernstein(at[c][0], at[c][1], bern);
+      for (int d = 0; d < NumPatchDerivatives; ++d)
+        for (int i = 0; i < 12; ++i)
+        {
+          double sum = 0.0;
+          for (int a = 0; a < 15; ++a)
+            sum += bern[d][a] * coefficients(a, i);
+          table.Weights[c][d][i] = sum;
+        }
+    }
+    return table;
+  }();
+  const int corner = (u == 0.0 && v == 0.0) ? 0 : (u == 1.0 && v == 0.0) ? 1 : (u == 0.0 && v == 1.0) ? 2 : -1;
+  if (corner >= 0)
+  {
+    std::copy(&corners.Weights[corner][0][0], &corners.Weights[corner][0][0] + NumPatchDerivatives * 16, &weights[0][0]);
+    return;
+  }
   double bern[NumPatchDerivatives][15];
   QuarticBernstein(u, v, bern);
   for (int d = 0; d < NumPatchDerivatives; ++d)
