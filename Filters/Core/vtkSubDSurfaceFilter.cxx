@@ -734,7 +734,11 @@ bool vtkSubDSurfaceFilter::AddLimitGeometry(const double* basePoints, vtkPointDa
       sides.clear();
       seen.clear();
       double d[6][3] = {}, c[6][3];
-      // One evaluation per side of the creases through v (one in all when v is smooth).
+      // One evaluation per side of the creases through v: one in all when no sharp,
+      // boundary or non-manifold edge splits its fan.
+      const subd::IndexSpan edges = topo.GetVertexEdges(v);
+      const bool oneSide = std::all_of(edges.begin(), edges.end(),
+        [&finest](subd::Index e) { return subd::IsSmoothInteriorEdge(finest, e); });
       for (subd::Index i = 0; i < faces.size(); ++i)
       {
         const subd::Index f = faces[i];
@@ -742,9 +746,15 @@ bool vtkSubDSurfaceFilter::AddLimitGeometry(const double* basePoints, vtkPointDa
         {
           continue;
         }
-        const std::vector<subd::Index> sector = subd::SectorFaces(finest, f, corners[i]);
-        seen.insert(seen.end(), sector.begin(), sector.end());
-        seen.push_back(f);
+        if (oneSide)
+        {
+          seen.assign(faces.begin(), faces.end());
+        }
+        else
+        {
+          const std::vector<subd::Index> sector = subd::SectorFaces(finest, f, corners[i]);
+          seen.insert(seen.end(), sector.begin(), sector.end());
+        }
         std::string error;
         if (!evaluator.EvaluateFace(
               f, { subd::LimitEvaluator::CornerSample(topo.GetFaceSize(f), corners[i], quads) }, stencils, error))

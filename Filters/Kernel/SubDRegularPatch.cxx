@@ -218,7 +218,10 @@ std::vector<Index> SectorFaces(const Level& level, Index face, Index corner)
   return sector;
 }
 
-bool IsStableCorner(const Level& level, Index face, Index corner, Index faceSize)
+namespace
+{
+// IsStableCorner, handing out the vertex's plan for the caller to go on with.
+bool StableCorner(const Level& level, Index face, Index corner, Index faceSize, VertexRulePlan& plan)
 {
   const MeshTopology& topo = level.Topology;
   const Index v = topo.GetFaceVertices(face)[corner];
@@ -240,8 +243,15 @@ bool IsStableCorner(const Level& level, Index face, Index corner, Index faceSize
       return false;
     }
   }
-  const VertexRulePlan plan = PlanVertexRule(level, v);
+  plan = PlanVertexRule(level, v);
   return plan.Rule == plan.ChildRule;
+}
+}
+
+bool IsStableCorner(const Level& level, Index face, Index corner, Index faceSize)
+{
+  VertexRulePlan plan;
+  return StableCorner(level, face, corner, faceSize, plan);
 }
 
 bool IsRegularCorner(const Level& level, Index face, Index corner, PatchKind kind)
@@ -249,11 +259,11 @@ bool IsRegularCorner(const Level& level, Index face, Index corner, PatchKind kin
   const MeshTopology& topo = level.Topology;
   const Index v = topo.GetFaceVertices(face)[corner];
   const Index size = kind == PatchKind::BSpline ? 4 : 3;
-  if (!IsStableCorner(level, face, corner, size))
+  VertexRulePlan plan;
+  if (!StableCorner(level, face, corner, size, plan))
   {
     return false;
   }
-  const VertexRulePlan plan = PlanVertexRule(level, v);
   switch (plan.Rule)
   {
     case VertexRule::Smooth:
