@@ -3,6 +3,7 @@
 #include "SubDLimitEvaluator.h"
 #include "SubDScheme.h"
 #include "vtkSubDLimitGeometry.h"
+#include "vtkSubDPointDataInterpolation.h"
 #include "vtkSubDSharpFeatures.h"
 
 #include "vtkCellArray.h"
@@ -343,8 +344,17 @@ int vtkSubDLimitFilter::RequestData(
   points->SetNumberOfPoints(numSamples);
   double* xyz = static_cast<vtkDoubleArray*>(points->GetData())->GetPointer(0);
   vtkSubDLimitGeometry geometry(numSamples, this->ComputeNormals, this->ComputeCurvature, this->ComputeDerivatives);
+  // The cage's point data, in double, evaluated with the limit weights and stored by the
+  // surface filters' rules (integers rounded and clamped, normals re-normalized).
   vtkPointData* inPD = input->GetPointData();
-  std::vector<vtkSmartPointer<vtkDataArray>> inArrays, outArrays;
+  struct CarriedArray
+  {
+    vtkDataArray* Input;
+    int Components;
+    bool Normals;
+    std::vector<double> Cage, Samples;
+  };
+  std::vector<CarriedArray> carried;
   for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
   {
     vtkDataArray* array = inPD->GetArray(a);
@@ -353,18 +363,20 @@ int vtkSubDLimitFilter::RequestData(
     {
       continue;
     }
-    vtkSmartPointer<vtkDataArray> out = vtkSmartPointer<vtkDataArray>::Take(array->NewInstance());
-    out->SetName(array->GetName());
-    out->SetNumberOfComponents(array->GetNumberOfComponents());
-    out->SetNumberOfTuples(numSamples);
-    inArrays.emplace_back(array);
-    outArrays.push_back(out);
+    CarriedArray c{ array, array->GetNumberOfComponents(), inPD->IsArrayAnAttribute(a) == vtkDataSetAttributes::NORMALS,
+      {}, {} };
+    c.Cage.resize(static_cast<size_t>(array->GetNumberOfTuples()) * c.Components);
+    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+    {
+      array->GetTuple(i, c.Cage.data() + i * c.Components);
+    }
+    c.Samples.resize(static_cast<size_t>(numSamples) * c.Components);
+    carried.push_back(std::move(c));
   }
   std::mutex errorMutex;
   std::string firstError;
   vtkSMPTools::For(0, static_cast<vtkIdType>(grids.size()), [&](vtkIdType begin, vtkIdType end) {
     std::vector<subd::LimitStencil> stencils;
-    std::vector<double> tuple;
     for (vtkIdType g = begin; g < end; ++g)
     {
       const FaceGrid& grid = grids[g];
@@ -383,20 +395,10 @@ int vtkSubDLimitFilter::RequestData(
         vtkSubDLimitGeometry::Apply(stencils[s], cage.Points.data(), d, c);
         std::copy(d[0], d[0] + 3, xyz + 3 * id);
         geometry.Set(id, d, c);
-        const subd::LimitStencil& st = stencils[s];
-        for (size_t a = 0; a < inArrays.size(); ++a)
+        for (CarriedArray& c : carried)
         {
-          const int nc = inArrays[a]->GetNumberOfComponents();
-          tuple.assign(static_cast<size_t>(nc), 0.0);
-          for (size_t p = 0; p < st.Points.size(); ++p)
-          {
-            const double w = st.Row(subd::PatchValue)[p];
-            for (int k = 0; k < nc; ++k)
-            {
-              tuple[k] += w * inArrays[a]->GetComponent(st.Points[p], k);
-            }
-          }
-          outArrays[a]->SetTuple(id, tuple.data());
+          stencils[s].Apply(stencils[s].Weights, subd::PatchValue, c.Cage.data(), c.Components,
+            c.Samples.data() + id * c.Components);
         }
       }
     }
@@ -418,8 +420,14 @@ int vtkSubDLimitFilter::RequestData(
     output->SetPolys(cells);
     output->GetCellData()->AddArray(cellFace);
   }
-  for (auto& out : outArrays)
+  for (const CarriedArray& c : carried)
   {
+    vtkSmartPointer<vtkDataArray> out =
+      vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(c.Input->GetDataType()));
+    out->SetName(c.Input->GetName());
+    out->SetNumberOfComponents(c.Components);
+    out->SetNumberOfTuples(numSamples);
+    vtkSubDPointDataInterpolation::Store(c.Samples.data(), c.Components, nullptr, numSamples, c.Normals, out);
     output->GetPointData()->AddArray(out);
   }
   geometry.AddTo(output->GetPointData());

@@ -30,7 +30,7 @@ T StoreAs(double value)
 }
 
 template <typename T>
-void Store(const double* values, int components, const std::vector<vtkIdType>* selection,
+void StoreTyped(const double* values, int components, const std::vector<vtkIdType>* selection,
   vtkIdType numOut, bool normalize, T* out)
 {
   vtkSMPTools::For(0, numOut, 4096, [&](vtkIdType begin, vtkIdType end) {
@@ -115,15 +115,22 @@ vtkSmartPointer<vtkDataArray> vtkSubDPointDataInterpolation::Interpolate(
   {
     return nullptr;
   }
-  if (!direct)
+  if (!direct && !Store(finestValues, components, this->Selection, numOut, normalize, out))
   {
-    switch (outputType)
-    {
-      vtkTemplateMacro(Store(finestValues, components, this->Selection, numOut, normalize,
-        static_cast<VTK_TT*>(out->GetVoidPointer(0))));
-      default:
-        return nullptr;
-    }
+    return nullptr;
   }
   return out;
+}
+
+bool vtkSubDPointDataInterpolation::Store(const double* values, int components,
+  const std::vector<vtkIdType>* selection, vtkIdType n, bool normalize, vtkDataArray* out)
+{
+  switch (out->GetDataType())
+  {
+    vtkTemplateMacro(
+      StoreTyped(values, components, selection, n, normalize, static_cast<VTK_TT*>(out->GetVoidPointer(0))));
+    default:
+      return false;
+  }
+  return true;
 }

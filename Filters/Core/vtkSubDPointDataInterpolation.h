@@ -31,6 +31,12 @@ public:
   vtkSmartPointer<vtkDataArray> Interpolate(vtkDataArray* base, int outputType, bool normalize,
     const subd::ProgressCallback& progress) const;
 
+  /// Stores `n` tuples of double values (rows `selection`[i] of `values`, or the first n)
+  /// into `out` (already sized) by the rules above: integers rounded and clamped, vectors
+  /// re-normalized when `normalize`.
+  static bool Store(const double* values, int components, const std::vector<vtkIdType>* selection, vtkIdType n,
+    bool normalize, vtkDataArray* out);
+
 private:
   const subd::Hierarchy& Hierarchy;
   subd::ParallelFor ParallelFor;

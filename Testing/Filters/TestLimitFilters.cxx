@@ -16,6 +16,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFeatureEdges.h"
 #include "vtkIdTypeArray.h"
+#include "vtkIntArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -375,5 +376,40 @@ TEST(LimitFilter, InterpolatingSchemesProjectToThemselves)
       EXPECT_EQ(p[1], q[1]);
       EXPECT_EQ(p[2], q[2]);
     }
+  }
+}
+
+// The cage's point data are evaluated with the limit weights: a linear field follows the
+// limit points exactly (the weights are affine), an integer field is rounded to nearest.
+TEST(LimitFilter, PointDataFollowTheLimitWeights)
+{
+  vtkSmartPointer<vtkPolyData> cage = ToPolyData(subdtest::House(false).Jitter(0.1));
+  vtkNew<vtkDoubleArray> x;
+  x->SetName("X");
+  vtkNew<vtkIntArray> hundredX;
+  hundredX->SetName("HundredX");
+  for (vtkIdType i = 0; i < cage->GetNumberOfPoints(); ++i)
+  {
+    x->InsertNextValue(cage->GetPoint(i)[0]);
+    hundredX->InsertNextValue(static_cast<int>(std::lround(100 * cage->GetPoint(i)[0])));
+  }
+  cage->GetPointData()->AddArray(x);
+  cage->GetPointData()->AddArray(hundredX);
+  vtkNew<vtkSubDLimitFilter> limit;
+  limit->SetInputData(cage);
+  limit->SetResolution(3);
+  limit->Update();
+  vtkPolyData* out = limit->GetOutput();
+  vtkDataArray* outX = out->GetPointData()->GetArray("X");
+  vtkDataArray* outHundredX = out->GetPointData()->GetArray("HundredX");
+  ASSERT_TRUE(outX && outHundredX);
+  EXPECT_EQ(outHundredX->GetDataType(), VTK_INT);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    EXPECT_NEAR(outX->GetTuple1(i), out->GetPoint(i)[0], 1e-12);
+    // The control values are rounded 100 x, so the limit is within 0.5 of 100 x, then rounded.
+    const double value = outHundredX->GetTuple1(i);
+    EXPECT_EQ(value, std::round(value));
+    EXPECT_LE(std::abs(value - 100 * out->GetPoint(i)[0]), 1.0);
   }
 }
