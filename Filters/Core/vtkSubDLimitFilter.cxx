@@ -1,7 +1,9 @@
 #include "vtkSubDLimitFilter.h"
 
 #include "SubDLimitEvaluator.h"
+#include "SubDMeshValidation.h"
 #include "SubDScheme.h"
+#include "vtkSubDInputFaces.h"
 #include "vtkSubDLimitGeometry.h"
 #include "vtkSubDPointDataInterpolation.h"
 #include "vtkSubDSharpFeatures.h"
@@ -25,6 +27,7 @@
 #include <memory>
 #include <mutex>
 #include <sstream>
+#include <unordered_map>
 
 vtkStandardNewMacro(vtkSubDLimitFilter);
 
@@ -35,63 +38,68 @@ struct Cage
 {
   subd::Level Level;
   std::vector<double> Points;
-  std::vector<vtkIdType> FaceCell;
-  vtkIdType FirstPolyCell = 0;
+  std::vector<vtkIdType> FaceCell;                  ///< input cell id of each face
+  std::unordered_map<vtkIdType, subd::Index> FaceOfCell; ///< and back
 };
 
 bool ReadCage(vtkPolyData* input, bool triangles, subd::BoundaryRule rule, subd::CreaseMethod creasing, Cage& cage,
-  std::string& error)
+  std::string& error, std::string& warning)
 {
   const vtkIdType numPoints = input && input->GetPoints() ? input->GetNumberOfPoints() : 0;
-  if (numPoints == 0 || !input->GetPolys() || input->GetPolys()->GetNumberOfCells() == 0)
+  const vtkSubDInputFaces faces = input ? vtkSubDGatherFaces(input) : vtkSubDInputFaces();
+  if (numPoints == 0 || faces.NumFaces == 0)
   {
     error = "the input has no polygons to evaluate the limit surface of";
     return false;
   }
-  if (input->GetNumberOfStrips() > 0)
+  const vtkIdType badPoint = vtkSubDFirstNonFinitePoint(input->GetPoints());
+  if (badPoint >= 0)
   {
-    error = "the input has triangle strips; convert them with vtkTriangleFilter first";
+    error = "point " + std::to_string(badPoint) + " has a non-finite coordinate";
+    return false;
+  }
+  // Faces screened as the surface filters screen them: degenerate ones are dropped.
+  const vtkIdType numPolys = input->GetNumberOfPolys();
+  const subd::FaceScreening screened = subd::ScreenFaces(static_cast<subd::Index>(numPoints),
+    static_cast<subd::Index>(faces.NumFaces), faces.Offsets, faces.Connectivity);
+  if (screened.NumOutOfRange > 0)
+  {
+    error = "cell " + std::to_string(faces.CellIdOf(screened.FirstOutOfRangeFace, numPolys)) + " uses point id " +
+      std::to_string(screened.FirstOutOfRangeId) + ", which does not exist";
+    return false;
+  }
+  if (screened.NumDropped > 0)
+  {
+    warning = "ignored " + std::to_string(screened.NumDropped) +
+      " degenerate polygon(s) (fewer than 3 distinct points, or a point repeated); the first is cell " +
+      std::to_string(faces.CellIdOf(screened.FirstDroppedFace, numPolys));
+  }
+  for (subd::Index f : screened.KeptFaces)
+  {
+    cage.FaceCell.push_back(faces.CellIdOf(f, numPolys));
+  }
+  for (size_t f = 0; f + 1 < screened.Offsets.size(); ++f)
+  {
+    const subd::Index size = screened.Offsets[f + 1] - screened.Offsets[f];
+    if (triangles && size != 3)
+    {
+      error = "cell " + std::to_string(cage.FaceCell[f]) + " has " + std::to_string(size) +
+        " points; Loop needs triangles (use vtkTriangleFilter)";
+      return false;
+    }
+  }
+  if (screened.KeptFaces.empty())
+  {
+    error = "no usable polygon remains after removing degenerate ones";
     return false;
   }
   cage.Points.resize(static_cast<size_t>(numPoints) * 3);
   for (vtkIdType i = 0; i < numPoints; ++i)
   {
     input->GetPoint(i, &cage.Points[3 * i]);
-    if (!std::isfinite(cage.Points[3 * i]) || !std::isfinite(cage.Points[3 * i + 1]) ||
-      !std::isfinite(cage.Points[3 * i + 2]))
-    {
-      error = "point " + std::to_string(i) + " has a non-finite coordinate";
-      return false;
-    }
   }
-  cage.FirstPolyCell = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  std::vector<subd::Index> offsets{ 0 }, vertices;
-  vtkCellArray* polys = input->GetPolys();
-  vtkIdType npts;
-  const vtkIdType* pts;
-  vtkIdType face = 0;
-  for (polys->InitTraversal(); polys->GetNextCell(npts, pts); ++face)
-  {
-    const vtkIdType cell = cage.FirstPolyCell + face;
-    if (npts < 3 || (triangles && npts != 3))
-    {
-      error = "cell " + std::to_string(cell) + " has " + std::to_string(npts) + " points; " +
-        (triangles ? "Loop needs triangles (use vtkTriangleFilter)" : "a face needs at least 3");
-      return false;
-    }
-    for (vtkIdType k = 0; k < npts; ++k)
-    {
-      if (pts[k] < 0 || pts[k] >= numPoints || std::count(pts, pts + npts, pts[k]) > 1)
-      {
-        error = "cell " + std::to_string(cell) + " has a repeated or missing point (" + std::to_string(pts[k]) + ")";
-        return false;
-      }
-      vertices.push_back(static_cast<subd::Index>(pts[k]));
-    }
-    offsets.push_back(static_cast<subd::Index>(vertices.size()));
-    cage.FaceCell.push_back(cell);
-  }
-  subd::MeshTopology topology = subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), offsets, vertices);
+  subd::MeshTopology topology =
+    subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices);
   vtkSubDSharpFeatures features;
   if (!features.Read(input, cage.FaceCell, error))
   {
@@ -100,6 +108,10 @@ bool ReadCage(vtkPolyData* input, bool triangles, subd::BoundaryRule rule, subd:
   std::vector<subd::Index> unmatched;
   const subd::BaseTags tags = features.ToBaseTags(topology, input->GetPoints(), 0.0, creasing, unmatched);
   cage.Level = subd::MakeBaseLevel(std::move(topology), tags, rule);
+  for (size_t f = 0; f < cage.FaceCell.size(); ++f)
+  {
+    cage.FaceOfCell.emplace(cage.FaceCell[f], static_cast<subd::Index>(f));
+  }
   return true;
 }
 
@@ -141,9 +153,14 @@ int vtkSubDLimitFilter::RequestData(
   output->Initialize();
   const bool quads = this->Scheme == CATMULL_CLARK;
   Cage cage;
-  std::string error;
-  if (!ReadCage(input, !quads, static_cast<subd::BoundaryRule>(this->BoundaryRule),
-        static_cast<subd::CreaseMethod>(this->CreaseMethod), cage, error))
+  std::string error, warning;
+  const bool read = ReadCage(input, !quads, static_cast<subd::BoundaryRule>(this->BoundaryRule),
+    static_cast<subd::CreaseMethod>(this->CreaseMethod), cage, error, warning);
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< "I" << warning.substr(1) << ".");
+  }
+  if (!read)
   {
     vtkErrorMacro(<< error << ".");
     return 0;
@@ -182,16 +199,17 @@ int vtkSubDLimitFilter::RequestData(
     for (vtkIdType i = 0; i < numSamples; ++i)
     {
       const double cell = ids->GetComponent(i, 0);
-      const vtkIdType face = static_cast<vtkIdType>(cell) - cage.FirstPolyCell;
-      if (!(cell == std::floor(cell)) || face < 0 || face >= topo.GetNumFaces())
+      auto known = cell == std::floor(cell) ? cage.FaceOfCell.find(static_cast<vtkIdType>(cell)) : cage.FaceOfCell.end();
+      if (known == cage.FaceOfCell.end())
       {
         vtkErrorMacro("Location " << i << " names cell " << cell << ", which is not a polygon of the input.");
         return 0;
       }
-      auto found = gridOf.emplace(static_cast<subd::Index>(face), grids.size());
+      const subd::Index face = known->second;
+      auto found = gridOf.emplace(face, grids.size());
       if (found.second)
       {
-        grids.push_back({ static_cast<subd::Index>(face), {}, {} });
+        grids.push_back({ face, {}, {} });
       }
       subd::FaceSample s;
       s.U = uv->GetComponent(i, 0);

@@ -39,10 +39,11 @@
  * 1e-12 in second derivatives (TestOracleOpenSubdiv).
  *
  * Sharp features are read as vtkSubDSurfaceFilter reads them (lines with "Sharpness",
- * "CornerSharpness", "Hole"), with the same BoundaryRule and CreaseMethod. Bad input (no
- * polygons, NaN points, a polygon with a repeated point, Loop on polygons that are not
- * triangles, a location outside its face or on a missing or hole face) is an error naming
- * the culprit, with an empty output.
+ * "CornerSharpness", "Hole"), with the same BoundaryRule and CreaseMethod, and its faces the
+ * same way (polygons, then the triangles of strips; degenerate polygons dropped with a
+ * warning). Bad input (no polygons, NaN points, Loop on polygons that are not triangles, a
+ * location outside its face or on a missing or hole face) is an error naming the culprit,
+ * with an empty output.
  *
  * @sa vtkSubDCatmullClarkFilter vtkSubDLoopFilter
  */

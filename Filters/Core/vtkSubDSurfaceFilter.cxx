@@ -6,6 +6,7 @@
 #include "SubDRefiner.h"
 #include "SubDRegularPatch.h"
 #include "SubDScheme.h"
+#include "vtkSubDInputFaces.h"
 #include "vtkSubDLimitGeometry.h"
 #include "vtkSubDPointDataInterpolation.h"
 #include "vtkSubDSharpFeatures.h"
@@ -37,89 +38,6 @@
 
 namespace
 {
-// Faces of the input (polygons, then triangles cut from strips) in one offsets/connectivity
-// pair, and the input cell id of each. Polygons are read in place when there are no strips.
-struct InputFaces
-{
-  const vtkIdType* Offsets = nullptr;
-  const vtkIdType* Connectivity = nullptr;
-  vtkIdType NumFaces = 0;
-  std::vector<vtkIdType> OwnedOffsets, OwnedConnectivity;
-  vtkIdType FirstPolyCellId = 0;
-  std::vector<vtkIdType> StripCellIds; // cell id of faces past the polygons
-
-  vtkIdType CellIdOf(vtkIdType face, vtkIdType numPolys) const
-  {
-    return face < numPolys ? this->FirstPolyCellId + face : this->StripCellIds[face - numPolys];
-  }
-};
-
-void ReadCells(vtkCellArray* cells, std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& conn)
-{
-  offsets.clear();
-  conn.clear();
-  offsets.push_back(0);
-  vtkIdType n;
-  const vtkIdType* pts;
-  for (cells->InitTraversal(); cells->GetNextCell(n, pts);)
-  {
-    conn.insert(conn.end(), pts, pts + n);
-    offsets.push_back(static_cast<vtkIdType>(conn.size()));
-  }
-}
-
-InputFaces GatherFaces(vtkPolyData* input)
-{
-  InputFaces faces;
-  vtkCellArray* polys = input->GetPolys();
-  vtkCellArray* strips = input->GetStrips();
-  const vtkIdType numPolys = polys ? polys->GetNumberOfCells() : 0;
-  const vtkIdType numStrips = strips ? strips->GetNumberOfCells() : 0;
-  faces.FirstPolyCellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
-
-  if (numStrips == 0 && numPolys > 0 && polys->IsStorage64Bit() && sizeof(vtkIdType) == 8)
-  {
-    faces.Offsets = reinterpret_cast<const vtkIdType*>(polys->GetOffsetsArray64()->GetPointer(0));
-    faces.Connectivity =
-      reinterpret_cast<const vtkIdType*>(polys->GetConnectivityArray64()->GetPointer(0));
-    faces.NumFaces = numPolys;
-    return faces;
-  }
-  if (numPolys > 0)
-  {
-    ReadCells(polys, faces.OwnedOffsets, faces.OwnedConnectivity);
-  }
-  else
-  {
-    faces.OwnedOffsets.assign(1, 0);
-  }
-  if (numStrips > 0)
-  {
-    // A strip p0 p1 p2 p3 ... is the triangles (p0 p1 p2), (p2 p1 p3), ... with alternating
-    // orientation so all of them face the same way.
-    const vtkIdType firstStripCellId = faces.FirstPolyCellId + numPolys;
-    vtkIdType n;
-    const vtkIdType* pts;
-    vtkIdType s = 0;
-    for (strips->InitTraversal(); strips->GetNextCell(n, pts); ++s)
-    {
-      for (vtkIdType k = 0; k + 2 < n; ++k)
-      {
-        const bool even = (k % 2) == 0;
-        faces.OwnedConnectivity.push_back(even ? pts[k] : pts[k + 1]);
-        faces.OwnedConnectivity.push_back(even ? pts[k + 1] : pts[k]);
-        faces.OwnedConnectivity.push_back(pts[k + 2]);
-        faces.OwnedOffsets.push_back(static_cast<vtkIdType>(faces.OwnedConnectivity.size()));
-        faces.StripCellIds.push_back(firstStripCellId + s);
-      }
-    }
-  }
-  faces.Offsets = faces.OwnedOffsets.data();
-  faces.Connectivity = faces.OwnedConnectivity.data();
-  faces.NumFaces = static_cast<vtkIdType>(faces.OwnedOffsets.size()) - 1;
-  return faces;
-}
-
 // Runs the kernel's row loops with vtkSMPTools.
 void SMPFor(subd::Index begin, subd::Index end, const subd::RangeTask& task)
 {
@@ -169,21 +87,6 @@ subd::Index TriangulateFaces(subd::FaceScreening& faces, vtkPoints* points)
   faces.Vertices.swap(vertices);
   faces.KeptFaces.swap(kept);
   return split;
-}
-
-vtkIdType FirstNonFinitePoint(vtkPoints* points)
-{
-  const vtkIdType n = points->GetNumberOfPoints();
-  double p[3];
-  for (vtkIdType i = 0; i < n; ++i)
-  {
-    points->GetPoint(i, p);
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
-    {
-      return i;
-    }
-  }
-  return -1;
 }
 
 // The field data array recording how many steps of a depth-dependent scheme made a mesh.
@@ -331,7 +234,7 @@ int vtkSubDSurfaceFilter::RequestData(
                                << std::numeric_limits<subd::Index>::max() / 8 << " are supported.");
     return fail();
   }
-  const vtkIdType badPoint = FirstNonFinitePoint(input->GetPoints());
+  const vtkIdType badPoint = vtkSubDFirstNonFinitePoint(input->GetPoints());
   if (badPoint >= 0)
   {
     double p[3];
@@ -341,7 +244,7 @@ int vtkSubDSurfaceFilter::RequestData(
     return fail();
   }
 
-  InputFaces faces = GatherFaces(input);
+  vtkSubDInputFaces faces = vtkSubDGatherFaces(input);
   if (faces.NumFaces == 0)
   {
     vtkErrorMacro("Input has no polygons (it has " << input->GetNumberOfVerts() << " verts, "

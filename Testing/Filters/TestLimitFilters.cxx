@@ -22,6 +22,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataNormals.h"
+#include "vtkStripper.h"
 
 #include <gtest/gtest.h>
 
@@ -412,4 +413,39 @@ TEST(LimitFilter, PointDataFollowTheLimitWeights)
     EXPECT_EQ(value, std::round(value));
     EXPECT_LE(std::abs(value - 100 * out->GetPoint(i)[0]), 1.0);
   }
+}
+
+// The cage is read as the surface filters read it: strips are triangles, degenerate polygons
+// are dropped with a warning.
+TEST(LimitFilter, StripsAndDegeneratePolygonsAreReadLikeTheSurfaceFilters)
+{
+  vtkSmartPointer<vtkPolyData> triangles = ToPolyData(subdtest::Cube().Triangulated());
+  vtkNew<vtkStripper> stripper;
+  stripper->SetInputData(triangles);
+  stripper->Update();
+  ASSERT_GT(stripper->GetOutput()->GetNumberOfStrips(), 0);
+  vtkIdType counts[2];
+  for (int k = 0; k < 2; ++k)
+  {
+    vtkNew<vtkSubDLimitFilter> limit;
+    limit->SetSchemeToLoop();
+    limit->SetResolution(2);
+    limit->SetInputData(k == 0 ? triangles.Get() : stripper->GetOutput());
+    limit->Update();
+    counts[k] = limit->GetOutput()->GetNumberOfPoints();
+  }
+  EXPECT_GT(counts[0], 0);
+  EXPECT_EQ(counts[0], counts[1]);
+
+  vtkSmartPointer<vtkPolyData> cube = ToPolyData(subdtest::Cube());
+  const vtkIdType degenerate[4] = { 0, 1, 1, 0 };
+  cube->GetPolys()->InsertNextCell(4, degenerate);
+  vtkNew<vtkSubDLimitFilter> limit;
+  subdtest::Messages messages;
+  messages.Watch(limit);
+  limit->SetInputData(cube);
+  limit->SetResolution(2);
+  limit->Update();
+  EXPECT_NE(messages.Warnings.find("degenerate"), std::string::npos) << messages.Warnings;
+  EXPECT_EQ(limit->GetOutput()->GetNumberOfCells(), 6 * 4);
 }

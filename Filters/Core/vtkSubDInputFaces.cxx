@@ -1,0 +1,94 @@
+#include "vtkSubDInputFaces.h"
+
+#include "vtkCellArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkTypeInt64Array.h"
+
+#include <cmath>
+
+namespace
+{
+void ReadCells(vtkCellArray* cells, std::vector<vtkIdType>& offsets, std::vector<vtkIdType>& conn)
+{
+  offsets.clear();
+  conn.clear();
+  offsets.push_back(0);
+  vtkIdType n;
+  const vtkIdType* pts;
+  for (cells->InitTraversal(); cells->GetNextCell(n, pts);)
+  {
+    conn.insert(conn.end(), pts, pts + n);
+    offsets.push_back(static_cast<vtkIdType>(conn.size()));
+  }
+}
+}
+
+vtkSubDInputFaces vtkSubDGatherFaces(vtkPolyData* input)
+{
+  vtkSubDInputFaces faces;
+  vtkCellArray* polys = input->GetPolys();
+  vtkCellArray* strips = input->GetStrips();
+  const vtkIdType numPolys = polys ? polys->GetNumberOfCells() : 0;
+  const vtkIdType numStrips = strips ? strips->GetNumberOfCells() : 0;
+  faces.FirstPolyCellId = input->GetNumberOfVerts() + input->GetNumberOfLines();
+
+  if (numStrips == 0 && numPolys > 0 && polys->IsStorage64Bit() && sizeof(vtkIdType) == 8)
+  {
+    faces.Offsets = reinterpret_cast<const vtkIdType*>(polys->GetOffsetsArray64()->GetPointer(0));
+    faces.Connectivity =
+      reinterpret_cast<const vtkIdType*>(polys->GetConnectivityArray64()->GetPointer(0));
+    faces.NumFaces = numPolys;
+    return faces;
+  }
+  if (numPolys > 0)
+  {
+    ReadCells(polys, faces.OwnedOffsets, faces.OwnedConnectivity);
+  }
+  else
+  {
+    faces.OwnedOffsets.assign(1, 0);
+  }
+  if (numStrips > 0)
+  {
+    // A strip p0 p1 p2 p3 ... is the triangles (p0 p1 p2), (p2 p1 p3), ... with alternating
+    // orientation so all of them face the same way.
+    const vtkIdType firstStripCellId = faces.FirstPolyCellId + numPolys;
+    vtkIdType n;
+    const vtkIdType* pts;
+    vtkIdType s = 0;
+    for (strips->InitTraversal(); strips->GetNextCell(n, pts); ++s)
+    {
+      for (vtkIdType k = 0; k + 2 < n; ++k)
+      {
+        const bool even = (k % 2) == 0;
+        faces.OwnedConnectivity.push_back(even ? pts[k] : pts[k + 1]);
+        faces.OwnedConnectivity.push_back(even ? pts[k + 1] : pts[k]);
+        faces.OwnedConnectivity.push_back(pts[k + 2]);
+        faces.OwnedOffsets.push_back(static_cast<vtkIdType>(faces.OwnedConnectivity.size()));
+        faces.StripCellIds.push_back(firstStripCellId + s);
+      }
+    }
+  }
+  faces.Offsets = faces.OwnedOffsets.data();
+  faces.Connectivity = faces.OwnedConnectivity.data();
+  faces.NumFaces = static_cast<vtkIdType>(faces.OwnedOffsets.size()) - 1;
+  return faces;
+}
+
+vtkIdType vtkSubDFirstNonFinitePoint(vtkPoints* points)
+{
+  const vtkIdType n = points->GetNumberOfPoints();
+  double p[3];
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    points->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      return i;
+    }
+  }
+  return -1;
+}
+

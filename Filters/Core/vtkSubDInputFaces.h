@@ -1,0 +1,36 @@
+// Private helper of SubD's filters: the faces of an input vtkPolyData (polygons, then the
+// triangles of its strips) as one offsets/connectivity pair with the input cell id of each,
+// and the check for points that cannot be subdivided.
+#ifndef vtkSubDInputFaces_h
+#define vtkSubDInputFaces_h
+
+#include "vtkType.h"
+
+#include <vector>
+
+class vtkPoints;
+class vtkPolyData;
+
+// Polygons are read in place when there are no strips.
+struct vtkSubDInputFaces
+{
+  const vtkIdType* Offsets = nullptr;
+  const vtkIdType* Connectivity = nullptr;
+  vtkIdType NumFaces = 0;
+  std::vector<vtkIdType> OwnedOffsets, OwnedConnectivity;
+  vtkIdType FirstPolyCellId = 0;
+  std::vector<vtkIdType> StripCellIds; // cell id of faces past the polygons
+
+  vtkIdType CellIdOf(vtkIdType face, vtkIdType numPolys) const
+  {
+    return face < numPolys ? this->FirstPolyCellId + face : this->StripCellIds[face - numPolys];
+  }
+};
+
+/// The faces of `input`. A strip p0 p1 p2 p3 ... gives the triangles (p0 p1 p2), (p2 p1 p3), ...
+vtkSubDInputFaces vtkSubDGatherFaces(vtkPolyData* input);
+
+/// The first point with a NaN or infinite coordinate, or -1.
+vtkIdType vtkSubDFirstNonFinitePoint(vtkPoints* points);
+
+#endif
