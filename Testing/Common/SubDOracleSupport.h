@@ -6,6 +6,7 @@
 #include "SubDTypes.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -21,6 +22,18 @@ inline double Diagonal(const std::vector<double>& xyz)
   }
   return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
     (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+/// Points as xyz triples.
+inline std::vector<double> Flatten(const std::vector<std::array<double, 3>>& points)
+{
+  std::vector<double> flat;
+  flat.reserve(points.size() * 3);
+  for (const auto& p : points)
+  {
+    flat.insert(flat.end(), p.begin(), p.end());
+  }
+  return flat;
 }
 
 /// The index of the point of `ours` (xyz triples) nearest to p in the max norm, and the

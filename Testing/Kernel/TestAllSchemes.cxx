@@ -4,6 +4,7 @@
 #include "SubDButterflyRules.h"
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
+#include "SubDOracleSupport.h"
 #include "SubDTestMeshes.h"
 
 #include <gtest/gtest.h>
@@ -449,16 +450,15 @@ TEST(Sqrt3Scheme, KobbeltBoundaryIsTheTernaryCubicBSplineEveryTwoSteps)
     std::vector<std::array<double, 3>> expected = loop;
     for (int step = 2; step <= levels; step += 2)
       expected = TernaryCubic(expected);
+    const std::vector<double> expectedPoints = subdtest::Flatten(expected);
     Index boundaryPoints = 0;
     for (Index v = 0; v < finest.GetNumVertices(); ++v)
     {
       if (!finest.GetVertexTag(v).Boundary)
         continue;
       ++boundaryPoints;
-      double best = 1e300;
-      for (const auto& q : expected)
-        best = std::min(best, std::max({ std::abs(q[0] - out[3 * v]), std::abs(q[1] - out[3 * v + 1]),
-                                std::abs(q[2] - out[3 * v + 2]) }));
+      double best;
+      subdtest::NearestPoint(expectedPoints, &out[3 * v], best);
       EXPECT_LT(best, 1e-12) << "level " << levels << " boundary point " << v;
     }
     EXPECT_EQ(static_cast<size_t>(boundaryPoints), expected.size()) << "level " << levels;

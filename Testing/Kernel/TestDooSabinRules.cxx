@@ -1,6 +1,7 @@
 // Kernel unit tests: Doo-Sabin weights, the dual split's counts and orientation, and on a
 // regular grid the refined net is the knot-inserted net of the biquadratic B-spline.
 #include "SubDBSplineNets.h"
+#include "SubDOracleSupport.h"
 #include "SubDDooSabinRules.h"
 #include "SubDDualSplit.h"
 #include "SubDRefiner.h"
@@ -180,17 +181,20 @@ TEST(DooSabinProperties, OpenBoundaryFollowsTheClampedQuadraticBSpline)
   for (const auto& side : sides)
     expected += side.size();
   expected -= 4;
+  std::vector<double> candidates;
+  for (const auto& side : sides)
+  {
+    const std::vector<double> flat = subdtest::Flatten(side);
+    candidates.insert(candidates.end(), flat.begin(), flat.end());
+  }
   Index boundaryPoints = 0;
   for (Index v = 0; v < finest.GetNumVertices(); ++v)
   {
     if (!finest.GetVertexTag(v).Boundary)
       continue;
     ++boundaryPoints;
-    double best = 1e300;
-    for (const auto& side : sides)
-      for (const auto& q : side)
-        best = std::min(best, std::max({ std::abs(q[0] - out[3 * v]), std::abs(q[1] - out[3 * v + 1]),
-                                std::abs(q[2] - out[3 * v + 2]) }));
+    double best;
+    subdtest::NearestPoint(candidates, &out[3 * v], best);
     EXPECT_LT(best, 1e-12) << "boundary point " << v;
   }
   EXPECT_EQ(static_cast<size_t>(boundaryPoints), expected);
