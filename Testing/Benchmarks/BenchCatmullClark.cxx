@@ -116,18 +116,15 @@ std::pair<double, double> RunFilter(const Mesh& mesh, int level, int threads)
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2)
+  subdbench::BenchArguments args;
+  int status = 0;
+  if (!subdbench::ReadBenchArguments(argc, argv, 4, args, status))
   {
-    std::fprintf(stderr, "usage: %s mesh.off [maxLevel=4] [repeats=3]\n", argv[0]);
-    return 2;
+    return status;
   }
-  const int maxLevel = argc > 2 ? std::atoi(argv[2]) : 4;
-  const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
-  Mesh mesh;
-  if (!subdbench::ReadBenchMesh(argv[1], mesh))
-  {
-    return 1;
-  }
+  const int maxLevel = args.MaxLevel;
+  const int repeats = args.Repeats;
+  const Mesh& mesh = args.Mesh;
   std::printf("Catmull-Clark on %s: %d points, %zu faces; best of %d runs each\n", argv[1],
     mesh.NumVertices(), mesh.Sizes.size(), repeats);
   std::printf("%-5s %-28s %10s %12s %10s %9s\n", "level", "implementation", "seconds", "faces/s",

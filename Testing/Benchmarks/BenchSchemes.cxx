@@ -183,18 +183,15 @@ struct SchemeBench
 
 int main(int argc, char* argv[])
 {
-  if (argc < 2)
+  subdbench::BenchArguments args;
+  int status = 0;
+  if (!subdbench::ReadBenchArguments(argc, argv, 3, args, status))
   {
-    std::fprintf(stderr, "usage: %s mesh.off [maxLevel=3] [repeats=3]\n", argv[0]);
-    return 2;
+    return status;
   }
-  const int maxLevel = argc > 2 ? std::atoi(argv[2]) : 3;
-  const int repeats = argc > 3 ? std::atoi(argv[3]) : 3;
-  Mesh mesh;
-  if (!subdbench::ReadBenchMesh(argv[1], mesh))
-  {
-    return 1;
-  }
+  const int maxLevel = args.MaxLevel;
+  const int repeats = args.Repeats;
+  const Mesh& mesh = args.Mesh;
 
   const std::vector<SchemeBench> schemes = {
     { "loop", RunSubD<vtkSubDLoopFilter>,

@@ -115,6 +115,29 @@ inline bool ReadBenchMesh(const char* path, BenchMesh& mesh)
   }
   return true;
 }
+/// A benchmark's command line, `mesh.off [maxLevel] [repeats]`.
+struct BenchArguments
+{
+  BenchMesh Mesh;
+  int MaxLevel = 0;
+  int Repeats = 3;
+};
+
+/// Parses the command line and reads the mesh; false (after a message) when the program
+/// should exit with status 2 (usage) or 1 (unreadable mesh), given in `status`.
+inline bool ReadBenchArguments(int argc, char* argv[], int defaultMaxLevel, BenchArguments& args, int& status)
+{
+  if (argc < 2)
+  {
+    std::fprintf(stderr, "usage: %s mesh.off [maxLevel=%d] [repeats=3]\n", argv[0], defaultMaxLevel);
+    status = 2;
+    return false;
+  }
+  args.MaxLevel = argc > 2 ? std::atoi(argv[2]) : defaultMaxLevel;
+  args.Repeats = argc > 3 ? std::atoi(argv[3]) : 3;
+  status = 1;
+  return ReadBenchMesh(argv[1], args.Mesh);
+}
 }
 
 #endif
