@@ -15,10 +15,8 @@
 #include "vtkSMPTools.h"
 #include "vtkCellArray.h"
 
-#include "SubDBenchSupport.h"
+#include "SubDBenchOpenSubdiv.h"
 
-#include <opensubdiv/far/primvarRefiner.h>
-#include <opensubdiv/far/topologyDescriptor.h>
 
 #include <chrono>
 #include <cstdio>
@@ -39,48 +37,6 @@ using subdbench::Result;
 using namespace OpenSubdiv;
 
 using Mesh = subdbench::BenchMesh;
-
-struct Point3
-{
-  double P[3];
-  void Clear() { P[0] = P[1] = P[2] = 0; }
-  void AddWithWeight(const Point3& s, double w)
-  {
-    P[0] += w * s.P[0];
-    P[1] += w * s.P[1];
-    P[2] += w * s.P[2];
-  }
-};
-
-std::pair<double, double> RunOpenSubdiv(const Mesh& mesh, int level)
-{
-  const Clock::time_point start = Clock::now();
-  Far::TopologyDescriptor desc;
-  desc.numVertices = mesh.NumVertices();
-  desc.numFaces = static_cast<int>(mesh.Sizes.size());
-  desc.numVertsPerFace = mesh.Sizes.data();
-  desc.vertIndicesPerFace = mesh.Corners.data();
-  Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(Sdc::Options::VTX_BOUNDARY_EDGE_ONLY);
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  std::unique_ptr<Far::TopologyRefiner> refiner(
-    Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, options)));
-  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
-  std::vector<Point3> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
-  for (int v = 0; v < mesh.NumVertices(); ++v)
-    for (int c = 0; c < 3; ++c)
-      buffer[v].P[c] = mesh.Points[3 * v + c];
-  Far::PrimvarRefinerReal<double> primvar(*refiner);
-  Point3* src = buffer.data();
-  for (int l = 1; l <= level; ++l)
-  {
-    Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
-    primvar.Interpolate(l, src, dst);
-    src = dst;
-  }
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  return { seconds, double(refiner->GetLevel(level).GetNumFaces()) };
-}
 
 std::pair<double, double> RunKernel(const Mesh& mesh, int level)
 {
@@ -131,7 +87,7 @@ int main(int argc, char* argv[])
     "peak MiB", "OSD/this");
   for (int level = 1; level <= maxLevel; ++level)
   {
-    const Result osd = Measure([&] { return RunOpenSubdiv(mesh, level); }, repeats);
+    const Result osd = Measure([&] { return subdbench::RunOpenSubdiv(mesh, level, Sdc::SCHEME_CATMARK); }, repeats);
     const Result kernel = Measure([&] { return RunKernel(mesh, level); }, repeats);
     const Result filter1 = Measure([&] { return RunFilter(mesh, level, 1); }, repeats);
     const Result filter2 = Measure([&] { return RunFilter(mesh, level, 2); }, repeats);

@@ -8,7 +8,7 @@
 // peak RSS and, per scheme, the ratio fastest peer time / SubD time (2 threads).
 //
 //   usage: BenchSchemes mesh.off [maxLevel=3] [repeats=3]
-#include "SubDBenchSupport.h"
+#include "SubDBenchOpenSubdiv.h"
 
 #include "vtkSubDButterflyFilter.h"
 #include "vtkSubDDooSabinFilter.h"
@@ -38,8 +38,6 @@
 #include <OpenMesh/Tools/Subdivider/Uniform/ModifiedButterFlyT.hh>
 #include <OpenMesh/Tools/Subdivider/Uniform/Sqrt3T.hh>
 
-#include <opensubdiv/far/primvarRefiner.h>
-#include <opensubdiv/far/topologyDescriptor.h>
 
 #include <memory>
 #include <string>
@@ -56,9 +54,8 @@ using Work = std::pair<double, double>;
 using Mesh = subdbench::BenchMesh;
 
 template <typename Filter>
-Work RunSubD(const Mesh& mesh, int level, int threads)
+Work RunFilter(const Mesh& mesh, int level)
 {
-  vtkSMPTools::Initialize(threads);
   const Clock::time_point start = Clock::now();
   vtkNew<Filter> filter;
   filter->SetInputData(mesh.PolyData);
@@ -68,14 +65,10 @@ Work RunSubD(const Mesh& mesh, int level, int threads)
 }
 
 template <typename Filter>
-Work RunVtk(const Mesh& mesh, int level)
+Work RunSubD(const Mesh& mesh, int level, int threads)
 {
-  const Clock::time_point start = Clock::now();
-  vtkNew<Filter> filter;
-  filter->SetInputData(mesh.PolyData);
-  filter->SetNumberOfSubdivisions(level);
-  filter->Update();
-  return { SecondsSince(start), double(filter->GetOutput()->GetNumberOfPolys()) };
+  vtkSMPTools::Initialize(threads);
+  return RunFilter<Filter>(mesh, level);
 }
 
 using CgalMesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
@@ -128,43 +121,9 @@ Work RunOpenMesh(const Mesh& mesh, int level)
 using OMTri = OpenMesh::TriMesh_ArrayKernelT<OMTraits>;
 using OMPoly = OpenMesh::PolyMesh_ArrayKernelT<OMTraits>;
 
-struct Point3
-{
-  double P[3];
-  void Clear() { P[0] = P[1] = P[2] = 0; }
-  void AddWithWeight(const Point3& s, double w)
-  {
-    for (int c = 0; c < 3; ++c)
-      P[c] += w * s.P[c];
-  }
-};
-
 Work RunOpenSubdivLoop(const Mesh& mesh, int level)
 {
-  using namespace OpenSubdiv;
-  const Clock::time_point start = Clock::now();
-  Far::TopologyDescriptor desc;
-  desc.numVertices = mesh.NumVertices();
-  desc.numFaces = static_cast<int>(mesh.Sizes.size());
-  desc.numVertsPerFace = mesh.Sizes.data();
-  desc.vertIndicesPerFace = mesh.Corners.data();
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  std::unique_ptr<Far::TopologyRefiner> refiner(
-    Factory::Create(desc, Factory::Options(Sdc::SCHEME_LOOP, Sdc::Options())));
-  refiner->RefineUniform(Far::TopologyRefiner::UniformOptions(level));
-  std::vector<Point3> buffer(static_cast<size_t>(refiner->GetNumVerticesTotal()));
-  for (int v = 0; v < mesh.NumVertices(); ++v)
-    for (int c = 0; c < 3; ++c)
-      buffer[v].P[c] = mesh.Points[3 * v + c];
-  Far::PrimvarRefinerReal<double> primvar(*refiner);
-  Point3* src = buffer.data();
-  for (int l = 1; l <= level; ++l)
-  {
-    Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
-    primvar.Interpolate(l, src, dst);
-    src = dst;
-  }
-  return { SecondsSince(start), double(refiner->GetLevel(level).GetNumFaces()) };
+  return subdbench::RunOpenSubdiv(mesh, level, OpenSubdiv::Sdc::SCHEME_LOOP);
 }
 
 struct Peer
@@ -198,10 +157,10 @@ int main(int argc, char* argv[])
       { { "OpenSubdiv Far", RunOpenSubdivLoop },
         { "CGAL", [](const Mesh& m, int l) { return RunCgal(m, l, [](CgalMesh& x, auto p) { CGAL::Subdivision_method_3::Loop_subdivision(x, p); }); } },
         { "OpenMesh", RunOpenMesh<OMTri, OpenMesh::Subdivider::Uniform::LoopT<OMTri>> },
-        { "VTK", RunVtk<vtkLoopSubdivisionFilter> } } },
+        { "VTK", RunFilter<vtkLoopSubdivisionFilter> } } },
     { "butterfly", RunSubD<vtkSubDButterflyFilter>,
       { { "OpenMesh", RunOpenMesh<OMTri, OpenMesh::Subdivider::Uniform::ModifiedButterflyT<OMTri>> },
-        { "VTK", RunVtk<vtkButterflySubdivisionFilter> } } },
+        { "VTK", RunFilter<vtkButterflySubdivisionFilter> } } },
     { "sqrt3", RunSubD<vtkSubDSqrt3Filter>,
       { { "CGAL", [](const Mesh& m, int l) { return RunCgal(m, l, [](CgalMesh& x, auto p) { CGAL::Subdivision_method_3::Sqrt3_subdivision(x, p); }); } },
         { "OpenMesh", RunOpenMesh<OMTri, OpenMesh::Subdivider::Uniform::Sqrt3T<OMTri>> } } },
@@ -209,7 +168,7 @@ int main(int argc, char* argv[])
       { { "CGAL", [](const Mesh& m, int l) { return RunCgal(m, l, [](CgalMesh& x, auto p) { CGAL::Subdivision_method_3::DooSabin_subdivision(x, p); }); } } } },
     { "midpoint", RunSubD<vtkSubDMidpointFilter>,
       { { "OpenMesh", RunOpenMesh<OMPoly, OpenMesh::Subdivider::Uniform::MidpointT<OMPoly>> } } },
-    { "linear", RunSubD<vtkSubDLinearFilter>, { { "VTK", RunVtk<vtkLinearSubdivisionFilter> } } },
+    { "linear", RunSubD<vtkSubDLinearFilter>, { { "VTK", RunFilter<vtkLinearSubdivisionFilter> } } },
   };
 
   std::printf("Surface schemes on %s: %d points, %zu faces; best of %d runs each\n", argv[1], mesh.NumVertices(),
