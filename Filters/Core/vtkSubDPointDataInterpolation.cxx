@@ -122,6 +122,13 @@ vtkSmartPointer<vtkDataArray> vtkSubDPointDataInterpolation::Interpolate(
   return out;
 }
 
+void vtkSubDPointDataInterpolation::SMPFor(subd::Index begin, subd::Index end, const subd::RangeTask& task)
+{
+  constexpr vtkIdType grain = 2048;
+  vtkSMPTools::For(begin, end, grain,
+    [&task](vtkIdType b, vtkIdType e) { task(static_cast<subd::Index>(b), static_cast<subd::Index>(e)); });
+}
+
 bool vtkSubDPointDataInterpolation::Store(const double* values, int components,
   const std::vector<vtkIdType>* selection, vtkIdType n, bool normalize, vtkDataArray* out)
 {

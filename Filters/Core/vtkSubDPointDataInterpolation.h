@@ -34,6 +34,9 @@ public:
   /// Stores `n` tuples of double values (rows `selection`[i] of `values`, or the first n)
   /// into `out` (already sized) by the rules above: integers rounded and clamped, vectors
   /// re-normalized when `normalize`.
+  /// Runs the kernel's row loops with vtkSMPTools (a subd::ParallelFor).
+  static void SMPFor(subd::Index begin, subd::Index end, const subd::RangeTask& task);
+
   static bool Store(const double* values, int components, const std::vector<vtkIdType>* selection, vtkIdType n,
     bool normalize, vtkDataArray* out);
 

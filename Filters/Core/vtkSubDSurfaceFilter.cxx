@@ -38,14 +38,6 @@
 
 namespace
 {
-// Runs the kernel's row loops with vtkSMPTools.
-void SMPFor(subd::Index begin, subd::Index end, const subd::RangeTask& task)
-{
-  constexpr vtkIdType grain = 2048;
-  vtkSMPTools::For(begin, end, grain,
-    [&task](vtkIdType b, vtkIdType e) { task(static_cast<subd::Index>(b), static_cast<subd::Index>(e)); });
-}
-
 // Splits every face of more than three corners into triangles (ear clipping, so concave
 // polygons come out right; SubDPolygonTriangulation.h); each triangle keeps the input cell
 // of its polygon. Returns how many faces were split.
@@ -432,7 +424,7 @@ int vtkSubDSurfaceFilter::RequestData(
 
   const subd::Hierarchy& hierarchy = cache.Hierarchy;
   const subd::Level& finest = hierarchy.Finest;
-  vtkSubDPointDataInterpolation interpolation(hierarchy, SMPFor,
+  vtkSubDPointDataInterpolation interpolation(hierarchy, vtkSubDPointDataInterpolation::SMPFor,
     cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr);
 
   // Points.
@@ -616,7 +608,7 @@ bool vtkSubDSurfaceFilter::AddLimitGeometry(const double* basePoints, vtkPointDa
   // The finest control points (without the limit projection, if any).
   const int levelTables = this->NumberOfSubdivisions;
   std::vector<double> control(static_cast<size_t>(hierarchy.GetNumFinestPoints()) * 3);
-  hierarchy.Evaluate(basePoints, 3, control.data(), SMPFor, nullptr, levelTables);
+  hierarchy.Evaluate(basePoints, 3, control.data(), vtkSubDPointDataInterpolation::SMPFor, nullptr, levelTables);
 
   const subd::LimitEvaluator evaluator(*cache.Scheme, finest);
   const bool quads = std::string(cache.Scheme->GetName()) == "catmull-clark";

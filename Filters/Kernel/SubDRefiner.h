@@ -32,7 +32,11 @@ struct SUBDKERNEL_EXPORT Hierarchy
   Level Finest; ///< the last level: its faces, holes and origins (edges: see Refine)
 
   int GetNumStencilTables() const { return static_cast<int>(Stencils.size()); }
-  Index GetNumFinestPoints() const { return Finest.Topology.GetNumVertices(); }
+  /// The points the tables make (curve hierarchies have tables but no Finest level).
+  Index GetNumFinestPoints() const
+  {
+    return Stencils.empty() ? Finest.Topology.GetNumVertices() : Stencils.back().GetNumRows();
+  }
 
   /// Applies every level's stencils to `components` values per base point; `finest` receives
   /// GetNumFinestPoints() * components values. T is float or double (accumulation is in

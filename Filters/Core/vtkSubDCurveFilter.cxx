@@ -1,0 +1,427 @@
+#include "vtkSubDCurveFilter.h"
+
+#include "SubDCurveLimit.h"
+#include "SubDCurveRefiner.h"
+#include "vtkSubDInputFaces.h"
+#include "vtkSubDPointDataInterpolation.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkIdList.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkSubDCurveFilter);
+
+namespace
+{
+// The input's line cells as polylines of kernel indices: a closed polyline (first id == last,
+// or every line when `allClosed`) lists its points once.
+struct InputLines
+{
+  std::vector<subd::Index> Offsets{ 0 };
+  std::vector<subd::Index> Ids;
+  std::vector<unsigned char> Closed;
+  std::vector<vtkIdType> CellIds; // input cell id of each kept line
+  vtkIdType Empty = 0;           // line cells without points (dropped)
+  vtkIdType SinglePoint = 0;     // one-point polylines (kept)
+  vtkIdType FirstBadCell = -1;   // first line with an out-of-range point id
+};
+
+InputLines ReadLines(vtkPolyData* input, bool allClosed)
+{
+  InputLines lines;
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  const vtkIdType firstLineCell = input->GetNumberOfVerts();
+  auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
+  vtkIdType index = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++index)
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    if (n == 0)
+    {
+      ++lines.Empty;
+      continue;
+    }
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      if (ids[k] < 0 || ids[k] >= numPoints)
+      {
+        lines.FirstBadCell = firstLineCell + index;
+        return lines;
+      }
+    }
+    bool closed = allClosed;
+    if (n >= 4 && ids[0] == ids[n - 1])
+    {
+      closed = true;
+      --n; // the repeated point is listed once
+    }
+    lines.SinglePoint += n == 1 ? 1 : 0;
+    lines.Ids.insert(lines.Ids.end(), ids, ids + n);
+    lines.Offsets.push_back(static_cast<subd::Index>(lines.Ids.size()));
+    lines.Closed.push_back(closed ? 1 : 0);
+    lines.CellIds.push_back(firstLineCell + index);
+  }
+  return lines;
+}
+
+// Points whose "CornerSharpness" is infinitely sharp (OpenSubdiv's 10).
+std::vector<unsigned char> ReadCorners(vtkPolyData* input)
+{
+  std::vector<unsigned char> corners;
+  vtkDataArray* sharpness = input->GetPointData()->GetArray("CornerSharpness");
+  if (!sharpness || sharpness->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    return corners;
+  }
+  corners.resize(static_cast<size_t>(input->GetNumberOfPoints()));
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    corners[i] = sharpness->GetComponent(i, 0) >= 10.0 ? 1 : 0;
+  }
+  return corners;
+}
+
+// Unit tangents per output curve point: the tangent rows are one per piece entry; a point in
+// several pieces (a corner) gets the normalized mean of its unit tangents.
+vtkSmartPointer<vtkDoubleArray> UnitTangents(const subd::StencilTable& rows, const subd::CurvePieces& pieces,
+  const std::vector<double>& points, vtkIdType numPoints, vtkIdType shift)
+{
+  std::vector<double> raw(static_cast<size_t>(rows.GetNumRows()) * 3);
+  rows.Apply(points.data(), raw.data(), 3);
+  auto tangents = vtkSmartPointer<vtkDoubleArray>::New();
+  tangents->SetName("Tangents");
+  tangents->SetNumberOfComponents(3);
+  tangents->SetNumberOfTuples(shift + numPoints);
+  tangents->FillValue(0.0);
+  double* out = tangents->GetPointer(0) + 3 * shift;
+  for (size_t r = 0; r < pieces.Points.size(); ++r)
+  {
+    const double* t = raw.data() + 3 * r;
+    const double norm = std::sqrt(t[0] * t[0] + t[1] * t[1] + t[2] * t[2]);
+    if (norm > 0.0)
+    {
+      double* o = out + 3 * static_cast<size_t>(pieces.Points[r]);
+      for (int c = 0; c < 3; ++c)
+      {
+        o[c] += t[c] / norm;
+      }
+    }
+  }
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    double* o = out + 3 * i;
+    const double norm = std::sqrt(o[0] * o[0] + o[1] * o[1] + o[2] * o[2]);
+    for (int c = 0; c < 3 && norm > 0.0; ++c)
+    {
+      o[c] /= norm;
+    }
+  }
+  return tangents;
+}
+
+// One output polyline per kept input line: its pieces joined at their shared end points.
+vtkNew<vtkCellArray> OutputLines(const subd::CurvePieces& pieces, const std::vector<subd::Index>& firstPiece, vtkIdType shift)
+{
+  vtkNew<vtkCellArray> cells;
+  std::vector<vtkIdType> ids;
+  for (size_t line = 0; line + 1 < firstPiece.size(); ++line)
+  {
+    ids.clear();
+    for (subd::Index p = firstPiece[line]; p < firstPiece[line + 1]; ++p)
+    {
+      const subd::IndexSpan piece = pieces.GetPiece(p);
+      for (subd::Index k = ids.empty() ? 0 : 1; k < piece.size(); ++k)
+      {
+        ids.push_back(shift + piece[k]);
+      }
+      if (pieces.IsClosed(p))
+      {
+        ids.push_back(shift + piece[0]);
+      }
+    }
+    cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  return cells;
+}
+
+// `curve` (values of the curve points) after `shift` tuples of `input` (the points that
+// other cells use), in one array of the input's type.
+vtkSmartPointer<vtkDataArray> Concatenate(vtkDataArray* input, vtkDataArray* curve, vtkIdType shift)
+{
+  if (shift == 0)
+  {
+    return curve;
+  }
+  vtkSmartPointer<vtkDataArray> out = vtkSmartPointer<vtkDataArray>::Take(curve->NewInstance());
+  out->SetName(curve->GetName());
+  out->SetNumberOfComponents(curve->GetNumberOfComponents());
+  out->SetNumberOfTuples(shift + curve->GetNumberOfTuples());
+  out->InsertTuples(0, shift, 0, input);
+  out->InsertTuples(shift, curve->GetNumberOfTuples(), 0, curve);
+  return out;
+}
+}
+
+vtkSubDCurveFilter::vtkSubDCurveFilter() = default;
+vtkSubDCurveFilter::~vtkSubDCurveFilter() = default;
+
+const char* vtkSubDCurveFilter::GetSchemeAsString()
+{
+  return subd::ToString(static_cast<subd::CurveScheme>(this->Scheme));
+}
+
+int vtkSubDCurveFilter::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->Initialize();
+  this->SetErrorCode(vtkErrorCode::NoError);
+  auto fail = [this, output]() {
+    output->Initialize();
+    this->SetErrorCode(vtkErrorCode::UserError);
+    return 0;
+  };
+
+  if (!input || input->GetNumberOfLines() == 0)
+  {
+    vtkWarningMacro(<< "Input has no lines (line or polyline cells) to refine; "
+                    << (input ? input->GetNumberOfCells() : 0) << " other cells passed through unchanged.");
+    if (input)
+    {
+      output->ShallowCopy(input);
+    }
+    return 1;
+  }
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  if (numPoints >= static_cast<vtkIdType>(std::numeric_limits<subd::Index>::max() / 4))
+  {
+    vtkErrorMacro("Input has " << numPoints << " points; at most "
+                               << std::numeric_limits<subd::Index>::max() / 4 << " are supported.");
+    return fail();
+  }
+  const vtkIdType badPoint = numPoints > 0 ? vtkSubDFirstNonFinitePoint(input->GetPoints()) : -1;
+  if (badPoint >= 0)
+  {
+    double p[3];
+    input->GetPoint(badPoint, p);
+    vtkErrorMacro("Point " << badPoint << " has a non-finite coordinate (" << p[0] << ", " << p[1] << ", "
+                           << p[2] << "): the curves cannot be subdivided.");
+    return fail();
+  }
+  const InputLines lines = ReadLines(input, this->Closed);
+  if (lines.FirstBadCell >= 0)
+  {
+    vtkErrorMacro("Cell " << lines.FirstBadCell << " refers to a point id outside 0.." << numPoints - 1 << ".");
+    return fail();
+  }
+  if (lines.Empty > 0)
+  {
+    vtkWarningMacro(<< lines.Empty << " line cell(s) without points were dropped.");
+  }
+  if (lines.SinglePoint > 0)
+  {
+    vtkWarningMacro(<< lines.SinglePoint << " polyline(s) of a single point cannot be refined; kept as they are.");
+  }
+
+  subd::CurveRules rules;
+  rules.Scheme = static_cast<subd::CurveScheme>(this->Scheme);
+  rules.Tension = this->Tension;
+  const std::vector<unsigned char> corners = ReadCorners(input);
+  subd::CurvePieces pieces;
+  std::vector<subd::Index> firstPiece;
+  subd::SplitAtCorners(
+    subd::CurveLines{ &lines.Offsets, &lines.Ids, &lines.Closed, &corners }, pieces, firstPiece);
+
+  // Size guard: 3 doubles per point, plus the point data, before anything large exists.
+  const double predicted = subd::PredictCurvePoints(rules, pieces, this->NumberOfSubdivisions);
+  double bytesPerPoint = 3.0 * sizeof(double) + (this->ComputeTangents ? 24.0 : 0.0);
+  for (int a = 0; a < input->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    if (vtkDataArray* array = input->GetPointData()->GetArray(a))
+    {
+      bytesPerPoint += array->GetNumberOfComponents() * sizeof(double);
+    }
+  }
+  if (predicted >= std::numeric_limits<subd::Index>::max() / 2 ||
+    predicted * bytesPerPoint > this->MaximumMemory * 1024.0 * 1024.0)
+  {
+    vtkErrorMacro("Refusing " << this->NumberOfSubdivisions << " level(s): about " << predicted
+                              << " output points would need " << predicted * bytesPerPoint / (1024.0 * 1024.0)
+                              << " MiB, above MaximumMemory (" << this->MaximumMemory << " MiB).");
+    return fail();
+  }
+
+  auto progress = [this](double first, double span) {
+    return [this, first, span](double fraction) {
+      this->UpdateProgress(first + span * fraction);
+      return !this->GetAbortExecute();
+    };
+  };
+  subd::Hierarchy hierarchy;
+  subd::CurvePieces finest;
+  if (!subd::RefineCurves(rules, static_cast<subd::Index>(numPoints), pieces, this->NumberOfSubdivisions, hierarchy,
+        finest, progress(0.0, 0.4)))
+  {
+    output->Initialize();
+    return 1; // aborted: empty output, not an error
+  }
+  const int levelTables = hierarchy.GetNumStencilTables();
+  const subd::Index numCurvePoints = hierarchy.GetNumFinestPoints();
+  if (this->ProjectToLimit)
+  {
+    hierarchy.Stencils.push_back(subd::CurveLimitStencils(rules, finest, numCurvePoints));
+  }
+
+  // Points: the input's points first when other cells use them.
+  const bool keepInputPoints =
+    input->GetNumberOfVerts() + input->GetNumberOfPolys() + input->GetNumberOfStrips() > 0;
+  const vtkIdType shift = keepInputPoints ? numPoints : 0;
+  std::vector<double> basePoints(static_cast<size_t>(numPoints) * 3);
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    input->GetPoint(i, basePoints.data() + 3 * i);
+  }
+  std::vector<double> curvePoints(static_cast<size_t>(numCurvePoints) * 3);
+  hierarchy.Evaluate(basePoints.data(), 3, curvePoints.data(), vtkSubDPointDataInterpolation::SMPFor, nullptr,
+    levelTables);
+  int precision = this->OutputPointsPrecision;
+  if (precision == DEFAULT_PRECISION)
+  {
+    precision = input->GetPoints()->GetDataType() == VTK_DOUBLE ? DOUBLE_PRECISION : SINGLE_PRECISION;
+  }
+  vtkNew<vtkPoints> outPoints;
+  outPoints->SetDataType(precision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
+  outPoints->SetNumberOfPoints(shift + numCurvePoints);
+  for (vtkIdType i = 0; i < shift; ++i)
+  {
+    outPoints->SetPoint(i, basePoints.data() + 3 * i);
+  }
+  const double* finalPoints = curvePoints.data();
+  std::vector<double> limitPoints;
+  if (this->ProjectToLimit)
+  {
+    limitPoints.resize(curvePoints.size());
+    hierarchy.Stencils.back().Apply(curvePoints.data(), limitPoints.data(), 3);
+    finalPoints = limitPoints.data();
+  }
+  for (vtkIdType i = 0; i < numCurvePoints; ++i)
+  {
+    outPoints->SetPoint(shift + i, finalPoints + 3 * i);
+  }
+  output->SetPoints(outPoints);
+  this->UpdateProgress(0.5);
+
+  // Point data: every array with the same stencils.
+  vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  vtkSubDPointDataInterpolation interpolation(hierarchy, vtkSubDPointDataInterpolation::SMPFor, nullptr);
+  const int numArrays = inPD->GetNumberOfArrays();
+  for (int a = 0; a < numArrays; ++a)
+  {
+    vtkAbstractArray* abstractArray = inPD->GetAbstractArray(a);
+    vtkDataArray* array = vtkDataArray::SafeDownCast(abstractArray);
+    const std::string name = abstractArray->GetName() ? abstractArray->GetName() : "";
+    if (!array || array->GetNumberOfTuples() != numPoints)
+    {
+      vtkWarningMacro(<< "Point-data array '" << name << "' is not numeric or has "
+                      << abstractArray->GetNumberOfTuples() << " tuples for " << numPoints
+                      << " points; it is not passed on.");
+      continue;
+    }
+    const int attribute = inPD->IsArrayAnAttribute(a);
+    vtkSmartPointer<vtkDataArray> curve = interpolation.Interpolate(array, array->GetDataType(),
+      attribute == vtkDataSetAttributes::NORMALS, progress(0.5 + 0.4 * a / numArrays, 0.4 / numArrays));
+    if (!curve)
+    {
+      output->Initialize();
+      return 1; // aborted
+    }
+    if (name == "CornerSharpness")
+    {
+      // Corners and ends keep theirs (they are anchors); new points are smooth.
+      for (vtkIdType i = finest.NumAnchors; i < numCurvePoints; ++i)
+      {
+        curve->SetComponent(i, 0, 0.0);
+      }
+    }
+    outPD->AddArray(Concatenate(array, curve, shift));
+    if (attribute >= 0)
+    {
+      outPD->SetActiveAttribute(outPD->GetNumberOfArrays() - 1, attribute);
+    }
+  }
+  if (this->ComputeTangents)
+  {
+    outPD->SetTangents(UnitTangents(
+      subd::CurveTangentStencils(rules, finest, numCurvePoints), finest, curvePoints, numCurvePoints, shift));
+  }
+
+  // Cells in VTK's order (verts, lines, polys, strips), each with its input cell's data.
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  const vtkIdType numVerts = input->GetNumberOfVerts(), numInputLines = input->GetNumberOfLines();
+  const vtkIdType numOtherCells = input->GetNumberOfPolys() + input->GetNumberOfStrips();
+  vtkNew<vtkIdList> sources;
+  for (vtkIdType c = 0; c < numVerts; ++c)
+  {
+    sources->InsertNextId(c);
+  }
+  for (vtkIdType c : lines.CellIds)
+  {
+    sources->InsertNextId(c);
+  }
+  for (vtkIdType c = 0; c < numOtherCells; ++c)
+  {
+    sources->InsertNextId(numVerts + numInputLines + c);
+  }
+  outCD->CopyAllocate(inCD, sources->GetNumberOfIds());
+  for (vtkIdType c = 0; c < sources->GetNumberOfIds(); ++c)
+  {
+    outCD->CopyData(inCD, sources->GetId(c), c);
+  }
+  if (numVerts > 0)
+  {
+    output->SetVerts(input->GetVerts());
+  }
+  output->SetLines(OutputLines(finest, firstPiece, shift));
+  if (input->GetNumberOfPolys() > 0)
+  {
+    output->SetPolys(input->GetPolys());
+  }
+  if (input->GetNumberOfStrips() > 0)
+  {
+    output->SetStrips(input->GetStrips());
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+void vtkSubDCurveFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Scheme: " << this->GetSchemeAsString() << "\n";
+  os << indent << "NumberOfSubdivisions: " << this->NumberOfSubdivisions << "\n";
+  os << indent << "Tension: " << this->Tension << "\n";
+  os << indent << "Closed: " << (this->Closed ? "On" : "Off") << "\n";
+  os << indent << "ProjectToLimit: " << (this->ProjectToLimit ? "On" : "Off") << "\n";
+  os << indent << "ComputeTangents: " << (this->ComputeTangents ? "On" : "Off") << "\n";
+  os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
+  os << indent << "MaximumMemory: " << this->MaximumMemory << "\n";
+}
