@@ -96,6 +96,63 @@ vtkSmartPointer<vtkPolyData> OpenGrid()
   }
   return MakePolyData(xyz, faces);
 }
+
+// Control polygons as polylines (for the curve schemes): `closed` repeats the first point.
+vtkSmartPointer<vtkPolyData> MakePolyline(const std::vector<double>& xyz, bool closed)
+{
+  auto curve = MakePolyData(xyz, {});
+  curve->SetPolys(nullptr);
+  std::vector<vtkIdType> ids;
+  for (vtkIdType i = 0; i < curve->GetNumberOfPoints(); ++i)
+  {
+    ids.push_back(i);
+  }
+  if (closed)
+  {
+    ids.push_back(0);
+  }
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  curve->SetLines(lines);
+  return curve;
+}
+
+// A closed five-pointed star whose top tip is a sharp corner ("CornerSharpness" 10): the
+// other tips round off, that one stays.
+vtkSmartPointer<vtkPolyData> Star()
+{
+  std::vector<double> xyz;
+  for (int k = 0; k < 10; ++k)
+  {
+    const double angle = M_PI / 2 + k * M_PI / 5, radius = k % 2 ? 0.45 : 1.0;
+    xyz.insert(xyz.end(), { radius * std::cos(angle), radius * std::sin(angle), 0.0 });
+  }
+  vtkSmartPointer<vtkPolyData> curve = MakePolyline(xyz, true);
+  vtkNew<vtkFloatArray> corners;
+  corners->SetName("CornerSharpness");
+  corners->SetNumberOfTuples(curve->GetNumberOfPoints());
+  corners->Fill(0.0);
+  corners->SetValue(0, 10.0f);
+  curve->GetPointData()->AddArray(corners);
+  return curve;
+}
+
+// An open zigzag climbing a helix: end rules, and a curve that is not planar.
+vtkSmartPointer<vtkPolyData> Zigzag()
+{
+  std::vector<double> xyz;
+  for (int k = 0; k < 9; ++k)
+  {
+    const double angle = k * M_PI / 4, radius = k % 2 ? 1.3 : 0.8;
+    xyz.insert(xyz.end(), { radius * std::cos(angle), radius * std::sin(angle), 0.2 * k });
+  }
+  return MakePolyline(xyz, false);
+}
+}
+
+std::vector<std::string> BuiltinCurveNames()
+{
+  return { "star", "zigzag" };
 }
 
 std::vector<std::string> BuiltinCageNames()
@@ -120,6 +177,14 @@ vtkSmartPointer<vtkPolyData> MakeBuiltinCage(const std::string& name)
   if (name == "open-grid")
   {
     return OpenGrid();
+  }
+  if (name == "star")
+  {
+    return Star();
+  }
+  if (name == "zigzag")
+  {
+    return Zigzag();
   }
   return nullptr;
 }

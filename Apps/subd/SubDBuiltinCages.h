@@ -12,7 +12,9 @@ namespace subdapp
 {
 /// Names of the built-in cages; the first is the default.
 std::vector<std::string> BuiltinCageNames();
-/// The named cage, or nullptr.
+/// Names of the built-in curves (polylines, for the curve schemes); the first is the default.
+std::vector<std::string> BuiltinCurveNames();
+/// The named cage or curve, or nullptr.
 vtkSmartPointer<vtkPolyData> MakeBuiltinCage(const std::string& name);
 }
 

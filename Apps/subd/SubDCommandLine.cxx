@@ -41,10 +41,7 @@ bool ParseSchemeList(const std::string& text, std::vector<std::string>& names, s
   names.clear();
   if (text == "all")
   {
-    for (const SchemeEntry& entry : Schemes())
-    {
-      names.push_back(entry.Name);
-    }
+    names.push_back("all"); // resolved once the main scheme is known: the schemes of its kind
     return true;
   }
   std::istringstream in(text);
@@ -93,12 +90,13 @@ std::string UsageText()
   std::ostringstream out;
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
          "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--normals]\n"
-         "            [--curvature] [--output FILE]\n"
+         "            [--curvature] [--tangents] [--closed] [--output FILE]\n"
          "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
          "\n"
          "Subdivides the polygon mesh INPUT (" << SupportedExtensions() << ") and writes the\n"
-         "result; the formats are chosen by the file extensions. Without INPUT, a built-in\n"
-         "control cage is used.\n"
+         "result; the formats are chosen by the file extensions. The curve schemes refine the\n"
+         "input's lines and polylines instead (its polygons pass through). Without INPUT, a\n"
+         "built-in control cage (or curve) is used.\n"
          "\n"
          "options:\n"
          "  --scheme NAME      subdivision scheme (default catmull-clark):\n";
@@ -111,7 +109,8 @@ std::string UsageText()
          "                       none: faces at the boundary become holes (shape, not output)\n"
          "                       edge-only: boundary edges are sharp creases\n"
          "                       edge-and-corner: also pin vertices that have a single face\n"
-         "  --tension W        butterfly tension in [-0.0625, 0.0625] (default 0: 8-point butterfly)\n"
+         "  --tension W        butterfly tension in [-0.0625, 0.0625] (default 0: 8-point butterfly);\n"
+         "                     four-point tension in [0, 0.125] (default 0.0625: reproduces cubics)\n"
          "  --crease-method M  how semi-sharp creases decay (default uniform):\n"
          "                       uniform: one unit of sharpness per level\n"
          "                       chaikin: averaged along the crease first (OpenSubdiv's Chaikin)\n"
@@ -124,6 +123,10 @@ std::string UsageText()
          "                     Mean_Curvature, Gauss_Curvature, Maximum_/Minimum_Curvature and\n"
          "                     their directions (catmull-clark and loop); --image then colours\n"
          "                     the main scheme's view with it instead of the discrete curvature\n"
+         "  --tangents         curves: add the unit tangents of the limit curve (point data \"Tangents\")\n"
+         "  --closed           curves: every polyline is closed (otherwise only those whose last\n"
+         "                     point repeats the first); a point with \"CornerSharpness\" >= 10 is\n"
+         "                     a sharp corner of its curve\n"
          "\n"
          "Creases come with the input: in .vtp/.vtk as line cells with the cell array\n"
          "\"Sharpness\" (0 smooth .. 10 infinitely sharp), \"CornerSharpness\" point data and\n"
@@ -135,7 +138,13 @@ std::string UsageText()
   {
     out << " " << name;
   }
-  out << " (default " << BuiltinCageNames().front() << ")\n"
+  out << " (default " << BuiltinCageNames().front() << ");\n"
+         "                     curves:";
+  for (const std::string& name : BuiltinCurveNames())
+  {
+    out << " " << name;
+  }
+  out << " (default " << BuiltinCurveNames().front() << ")\n"
          "  -o, --output FILE  output file (default <input>-<scheme>-L<levels>.vtp; with --image,\n"
          "                     no mesh is written unless --output is given)\n"
          "\n"
@@ -212,6 +221,7 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     }
     else if (arg == "--boundary")
     {
+      cmd.SurfaceOptions.push_back(arg);
       if (!value(text))
       {
         return false;
@@ -228,16 +238,16 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
       {
         return false;
       }
-      if (!ParseDouble(text, cmd.Options.Tension) || cmd.Options.Tension < -0.0625 ||
-        cmd.Options.Tension > 0.0625)
+      if (!ParseDouble(text, cmd.Options.Tension))
       {
-        error = "--tension wants a number in [-0.0625, 0.0625], not '" + text + "'";
+        error = "--tension wants a number, not '" + text + "'";
         return false;
       }
-      cmd.TensionGiven = true;
+      cmd.Options.TensionGiven = true;
     }
     else if (arg == "--crease-method")
     {
+      cmd.SurfaceOptions.push_back(arg);
       if (!value(text))
       {
         return false;
@@ -251,6 +261,7 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     }
     else if (arg == "--feature-angle")
     {
+      cmd.SurfaceOptions.push_back(arg);
       if (!value(text))
       {
         return false;
@@ -338,10 +349,22 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     else if (arg == "--normals")
     {
       cmd.Options.LimitNormals = true;
+      cmd.SurfaceOptions.push_back(arg);
     }
     else if (arg == "--curvature")
     {
       cmd.Options.LimitCurvature = true;
+      cmd.SurfaceOptions.push_back(arg);
+    }
+    else if (arg == "--tangents")
+    {
+      cmd.Options.Tangents = true;
+      cmd.CurveOptions.push_back(arg);
+    }
+    else if (arg == "--closed")
+    {
+      cmd.Options.Closed = true;
+      cmd.CurveOptions.push_back(arg);
     }
     else if (arg == "--no-cage")
     {
@@ -367,12 +390,52 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     error = "--compare draws a picture: give --image FILE.png too";
     return false;
   }
-  const bool comparesButterfly =
-    std::find(cmd.Compare.begin(), cmd.Compare.end(), std::string("butterfly")) != cmd.Compare.end();
-  if (cmd.TensionGiven && cmd.Scheme != "butterfly" && !comparesButterfly)
+  const bool curve = FindScheme(cmd.Scheme)->Curve;
+  if (cmd.Compare.size() == 1 && cmd.Compare.front() == "all")
   {
-    error = "--tension applies to the butterfly scheme only";
+    cmd.Compare.clear();
+    for (const SchemeEntry& entry : Schemes())
+    {
+      if (entry.Curve == curve)
+      {
+        cmd.Compare.push_back(entry.Name);
+      }
+    }
+  }
+  for (const std::string& name : cmd.Compare)
+  {
+    if (name == "all" || FindScheme(name)->Curve != curve)
+    {
+      error = "--compare: '" + name + "' is not a " + (curve ? "curve" : "surface") + " scheme like " + cmd.Scheme;
+      return false;
+    }
+  }
+  const std::vector<std::string>& misplaced = curve ? cmd.SurfaceOptions : cmd.CurveOptions;
+  if (!misplaced.empty())
+  {
+    error = misplaced.front() + " applies to " + (curve ? "surface" : "curve") + " schemes, not to " + cmd.Scheme;
     return false;
+  }
+  if (cmd.Options.TensionGiven)
+  {
+    const bool butterfly = cmd.Scheme == "butterfly" ||
+      std::find(cmd.Compare.begin(), cmd.Compare.end(), std::string("butterfly")) != cmd.Compare.end();
+    const bool fourPoint = cmd.Scheme == "four-point" ||
+      std::find(cmd.Compare.begin(), cmd.Compare.end(), std::string("four-point")) != cmd.Compare.end();
+    const double low = butterfly ? -0.0625 : 0.0, high = butterfly ? 0.0625 : 0.125;
+    if (!butterfly && !fourPoint)
+    {
+      error = "--tension applies to the butterfly and four-point schemes only";
+      return false;
+    }
+    if (cmd.Options.Tension < low || cmd.Options.Tension > high)
+    {
+      std::ostringstream message;
+      message << "--tension wants a number in [" << low << ", " << high << "] for the "
+              << (butterfly ? "butterfly" : "four-point") << " scheme, not " << cmd.Options.Tension;
+      error = message.str();
+      return false;
+    }
   }
   if (!cmd.Input.empty() && !cmd.Builtin.empty())
   {
@@ -381,7 +444,7 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
   }
   if (cmd.Input.empty() && cmd.Builtin.empty())
   {
-    cmd.Builtin = BuiltinCageNames().front();
+    cmd.Builtin = curve ? BuiltinCurveNames().front() : BuiltinCageNames().front();
   }
   return true;
 }

@@ -15,7 +15,8 @@ struct CommandLine
   std::string Output;  ///< empty: derived from input and scheme
   std::string Scheme = "catmull-clark";
   SchemeOptions Options;
-  bool TensionGiven = false;
+  std::vector<std::string> SurfaceOptions; ///< options given that only surface schemes take
+  std::vector<std::string> CurveOptions;   ///< options given that only curve schemes take
   std::string Image;                ///< PNG to render the result to (empty: none)
   std::vector<std::string> Compare; ///< with Image: the schemes of a side-by-side grid
   std::string Color = "mean";       ///< none, mean or gaussian (curvature colouring)

@@ -40,6 +40,10 @@ bool RenderImage(const CommandLine& cmd, vtkPolyData* cage, vtkPolyData* result,
   scene->SetColoring(ColoringOf(cmd.Color));
   scene->SetShowCage(cmd.Cage);
   scene->SetViewSize(cmd.ViewSize[0], cmd.ViewSize[1]);
+  if (FindScheme(cmd.Scheme)->Curve)
+  {
+    scene->SetViewElevation(70.0); // curves are often drawn in a plane: look at it from above
+  }
   std::vector<vtkSmartPointer<vtkPolyData>> keep; // the compared results outlive their filters
   if (cmd.Compare.empty())
   {

@@ -2,6 +2,7 @@
 
 #include "vtkSubDButterflyFilter.h"
 #include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDCurveFilter.h"
 #include "vtkSubDDooSabinFilter.h"
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
@@ -39,7 +40,23 @@ vtkSmartPointer<vtkPolyDataAlgorithm> MakeSurfaceFilter(const SchemeOptions& opt
 vtkSmartPointer<vtkPolyDataAlgorithm> MakeButterfly(const SchemeOptions& options)
 {
   auto filter = NewSurfaceFilter<vtkSubDButterflyFilter>(options);
-  filter->SetTension(options.Tension);
+  filter->SetTension(options.TensionGiven ? options.Tension : 0.0);
+  return filter;
+}
+
+template <int Scheme>
+vtkSmartPointer<vtkPolyDataAlgorithm> MakeCurveFilter(const SchemeOptions& options)
+{
+  auto filter = vtkSmartPointer<vtkSubDCurveFilter>::New();
+  filter->SetScheme(Scheme);
+  filter->SetNumberOfSubdivisions(options.Levels);
+  filter->SetProjectToLimit(options.ProjectToLimit);
+  filter->SetComputeTangents(options.Tangents);
+  filter->SetClosed(options.Closed);
+  if (options.TensionGiven)
+  {
+    filter->SetTension(options.Tension);
+  }
   return filter;
 }
 }
@@ -48,19 +65,25 @@ const std::vector<SchemeEntry>& Schemes()
 {
   static const std::vector<SchemeEntry> schemes = {
     { "catmull-clark", "Catmull-Clark: quads from any polygons (approximating, C2 where regular)",
-      &MakeSurfaceFilter<vtkSubDCatmullClarkFilter> },
+      false, &MakeSurfaceFilter<vtkSubDCatmullClarkFilter> },
     { "loop", "Loop: triangles (other polygons are triangulated first; approximating, C2 where regular)",
-      &MakeSurfaceFilter<vtkSubDLoopFilter> },
+      false, &MakeSurfaceFilter<vtkSubDLoopFilter> },
     { "butterfly", "modified butterfly: interpolating, triangles (other polygons are triangulated), --tension W",
-      &MakeButterfly },
+      false, &MakeButterfly },
     { "doo-sabin", "Doo-Sabin: corner cutting of any polygons (approximating, C1; biquadratic where regular)",
-      &MakeSurfaceFilter<vtkSubDDooSabinFilter> },
+      false, &MakeSurfaceFilter<vtkSubDDooSabinFilter> },
     { "midpoint", "midpoint (Peters-Reif simplest scheme): edge midpoints, boundaries kept (C1)",
-      &MakeSurfaceFilter<vtkSubDMidpointFilter> },
+      false, &MakeSurfaceFilter<vtkSubDMidpointFilter> },
     { "sqrt3", "Kobbelt's sqrt(3): triangles, 3x faces per step (approximating, C2 where regular)",
-      &MakeSurfaceFilter<vtkSubDSqrt3Filter> },
+      false, &MakeSurfaceFilter<vtkSubDSqrt3Filter> },
     { "linear", "linear: more resolution, same shape (triangles split in four, other polygons into quads)",
-      &MakeSurfaceFilter<vtkSubDLinearFilter> },
+      false, &MakeSurfaceFilter<vtkSubDLinearFilter> },
+    { "chaikin", "curves: Chaikin corner cutting (approximating; the quadratic B-spline, C1)", true,
+      &MakeCurveFilter<vtkSubDCurveFilter::SCHEME_CHAIKIN> },
+    { "bspline", "curves: cubic B-spline (approximating; C2)", true,
+      &MakeCurveFilter<vtkSubDCurveFilter::SCHEME_CUBIC_BSPLINE> },
+    { "four-point", "curves: Dyn-Levin-Gregory 4-point (interpolating; C1), --tension W", true,
+      &MakeCurveFilter<vtkSubDCurveFilter::SCHEME_FOUR_POINT> },
   };
   return schemes;
 }

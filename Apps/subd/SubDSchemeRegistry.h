@@ -14,18 +14,22 @@ struct SchemeOptions
 {
   int Levels = 2;
   int BoundaryRule = 1; // vtkSubDSurfaceFilter::BOUNDARY_EDGE_ONLY
-  double Tension = 0.0; // butterfly only
+  double Tension = 0.0; // butterfly and four-point (see TensionGiven)
+  bool TensionGiven = false; // otherwise each scheme's default (butterfly 0, four-point 1/16)
   int CreaseMethod = 0;      // vtkSubDSurfaceFilter::CREASE_UNIFORM
   double FeatureAngle = 0.0; // > 0: edges sharper than this (degrees) become creases
   bool ProjectToLimit = false; // move the output points to the limit surface
   bool LimitNormals = false;   // add the exact limit normals
   bool LimitCurvature = false; // add the limit curvature arrays
+  bool Tangents = false;       // curves: add the unit limit tangents
+  bool Closed = false;         // curves: every polyline is closed
 };
 
 struct SchemeEntry
 {
   std::string Name;
   std::string Summary;
+  bool Curve; ///< refines the input's lines (vtkSubDCurveFilter), not its polygons
   /// A configured filter for the options.
   vtkSmartPointer<vtkPolyDataAlgorithm> (*Make)(const SchemeOptions&);
 };

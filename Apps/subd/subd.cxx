@@ -173,13 +173,22 @@ int main(int argc, char* argv[])
   }
   if (!cmd.Quiet)
   {
-    std::cout << "subd: " << inputName << " (" << input->GetNumberOfPoints() << " points, "
-              << input->GetNumberOfPolys() + input->GetNumberOfStrips() << " faces) -> " << cmd.Scheme
-              << ", " << cmd.Options.Levels << " level(s) -> " << result->GetNumberOfPoints()
-              << " points, " << result->GetNumberOfPolys() << " faces";
-    if (result->GetNumberOfLines() > 0)
+    std::cout << "subd: " << inputName << " (" << input->GetNumberOfPoints() << " points, ";
+    if (scheme->Curve)
     {
-      std::cout << ", " << result->GetNumberOfLines() << " crease edges";
+      std::cout << input->GetNumberOfLines() << " curves) -> " << cmd.Scheme << ", " << cmd.Options.Levels
+                << " level(s) -> " << result->GetNumberOfPoints() << " points, " << result->GetNumberOfLines()
+                << " curves";
+    }
+    else
+    {
+      std::cout << input->GetNumberOfPolys() + input->GetNumberOfStrips() << " faces) -> " << cmd.Scheme << ", "
+                << cmd.Options.Levels << " level(s) -> " << result->GetNumberOfPoints() << " points, "
+                << result->GetNumberOfPolys() << " faces";
+      if (result->GetNumberOfLines() > 0)
+      {
+        std::cout << ", " << result->GetNumberOfLines() << " crease edges";
+      }
     }
     std::cout << " in " << seconds << " s";
     if (subdapp::WritesMesh(cmd))

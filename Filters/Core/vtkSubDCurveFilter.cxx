@@ -136,10 +136,13 @@ vtkSmartPointer<vtkDoubleArray> UnitTangents(const subd::StencilTable& rows, con
 }
 
 // One output polyline per kept input line: its pieces joined at their shared end points.
-vtkNew<vtkCellArray> OutputLines(const subd::CurvePieces& pieces, const std::vector<subd::Index>& firstPiece, vtkIdType shift)
+// A one-point line becomes a vertex cell (VTK's cell links refuse one-point lines; this is
+// what vtkCleanPolyData does with them too), appended to `verts`.
+void OutputCells(const subd::CurvePieces& pieces, const std::vector<subd::Index>& firstPiece, vtkIdType shift,
+  vtkCellArray* lines, vtkCellArray* verts, std::vector<bool>& isVertex)
 {
-  vtkNew<vtkCellArray> cells;
   std::vector<vtkIdType> ids;
+  isVertex.assign(firstPiece.size() - 1, false);
   for (size_t line = 0; line + 1 < firstPiece.size(); ++line)
   {
     ids.clear();
@@ -155,9 +158,9 @@ vtkNew<vtkCellArray> OutputLines(const subd::CurvePieces& pieces, const std::vec
         ids.push_back(shift + piece[0]);
       }
     }
-    cells->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    isVertex[line] = ids.size() == 1;
+    (isVertex[line] ? verts : lines)->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
   }
-  return cells;
 }
 
 // `curve` (values of the curve points) after `shift` tuples of `input` (the points that
@@ -237,7 +240,7 @@ int vtkSubDCurveFilter::RequestData(
   }
   if (lines.SinglePoint > 0)
   {
-    vtkWarningMacro(<< lines.SinglePoint << " polyline(s) of a single point cannot be refined; kept as they are.");
+    vtkWarningMacro(<< lines.SinglePoint << " polyline(s) of a single point cannot be refined; each is kept as a vertex cell.");
   }
 
   subd::CurveRules rules;
@@ -374,6 +377,10 @@ int vtkSubDCurveFilter::RequestData(
   }
 
   // Cells in VTK's order (verts, lines, polys, strips), each with its input cell's data.
+  vtkNew<vtkCellArray> outVerts, outLines;
+  outVerts->DeepCopy(input->GetVerts());
+  std::vector<bool> isVertex;
+  OutputCells(finest, firstPiece, shift, outLines, outVerts, isVertex);
   vtkCellData* inCD = input->GetCellData();
   vtkCellData* outCD = output->GetCellData();
   const vtkIdType numVerts = input->GetNumberOfVerts(), numInputLines = input->GetNumberOfLines();
@@ -383,9 +390,15 @@ int vtkSubDCurveFilter::RequestData(
   {
     sources->InsertNextId(c);
   }
-  for (vtkIdType c : lines.CellIds)
+  for (bool vertices : { true, false })
   {
-    sources->InsertNextId(c);
+    for (size_t line = 0; line < lines.CellIds.size(); ++line)
+    {
+      if (isVertex[line] == vertices)
+      {
+        sources->InsertNextId(lines.CellIds[line]);
+      }
+    }
   }
   for (vtkIdType c = 0; c < numOtherCells; ++c)
   {
@@ -396,11 +409,11 @@ int vtkSubDCurveFilter::RequestData(
   {
     outCD->CopyData(inCD, sources->GetId(c), c);
   }
-  if (numVerts > 0)
+  if (outVerts->GetNumberOfCells() > 0)
   {
-    output->SetVerts(input->GetVerts());
+    output->SetVerts(outVerts);
   }
-  output->SetLines(OutputLines(finest, firstPiece, shift));
+  output->SetLines(outLines);
   if (input->GetNumberOfPolys() > 0)
   {
     output->SetPolys(input->GetPolys());

@@ -48,7 +48,8 @@
  *
  * Bad input: no lines gives a warning and the input passed through; NaN or infinite
  * coordinates and out-of-range point ids give an error and an empty output; a polyline of a
- * single point is kept as it is, with a warning; empty line cells are dropped, with a warning.
+ * single point is kept as a vertex cell (with its cell data; VTK refuses one-point lines, and
+ * vtkCleanPolyData makes the same change), with a warning; empty line cells are dropped, with a warning.
  * A request whose predicted output exceeds MaximumMemory (MiB) is refused before allocation.
  *
  * @sa vtkSubDSurfaceFilter

@@ -115,6 +115,10 @@ void AppendInteriorMagnitudes(vtkPolyData* triangles, vtkDataArray* curvature, s
 // magnitudes are appended to `magnitudes`.
 vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* surface, int coloring, std::vector<double>& magnitudes)
 {
+  if (surface->GetNumberOfPolys() == 0)
+  {
+    return vtkSmartPointer<vtkPolyData>::New(); // a curve: drawn as tubes (Render)
+  }
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputData(PolygonsOf(surface));
   triangles->PassLinesOff();
@@ -202,19 +206,34 @@ vtkSmartPointer<vtkActor> TubeActor(vtkPolyData* lines, double radius, const dou
   return actor;
 }
 
-// The edges of the cage's polygons as tubes, and its vertices as spheres.
+// The points of `mesh` with its lines only.
+vtkSmartPointer<vtkPolyData> LinesOf(vtkPolyData* mesh)
+{
+  auto lines = vtkSmartPointer<vtkPolyData>::New();
+  lines->SetPoints(mesh->GetPoints());
+  lines->SetLines(mesh->GetLines());
+  return lines;
+}
+
+// The edges of the cage's polygons (or, for a curve's control polygon, its lines) as tubes,
+// and its vertices as spheres.
 void AddCage(vtkRenderer* renderer, vtkPolyData* cage, double size)
 {
-  vtkNew<vtkExtractEdges> edges;
-  edges->SetInputData(PolygonsOf(cage));
-  edges->Update();
-  renderer->AddActor(TubeActor(edges->GetOutput(), 0.004 * size, CageColor));
+  vtkSmartPointer<vtkPolyData> cageEdges = LinesOf(cage);
+  if (cage->GetNumberOfPolys() > 0)
+  {
+    vtkNew<vtkExtractEdges> edges;
+    edges->SetInputData(PolygonsOf(cage));
+    edges->Update();
+    cageEdges = edges->GetOutput();
+  }
+  renderer->AddActor(TubeActor(cageEdges, 0.004 * size, CageColor));
   vtkNew<vtkSphereSource> sphere;
   sphere->SetRadius(0.012 * size);
   sphere->SetThetaResolution(12);
   sphere->SetPhiResolution(8);
   vtkNew<vtkPolyData> points;
-  points->SetPoints(edges->GetOutput()->GetPoints());
+  points->SetPoints(cageEdges->GetPoints());
   vtkNew<vtkGlyph3D> glyphs;
   glyphs->SetInputData(points);
   glyphs->SetSourceConnection(sphere->GetOutputPort());
@@ -380,12 +399,14 @@ bool vtkSubDScene::Render()
     {
       AddCage(renderer, view.Cage, size);
     }
-    if (this->ShowCreases && view.Surface->GetNumberOfLines() > 0)
+    if (view.Surface->GetNumberOfPolys() == 0)
     {
-      vtkNew<vtkPolyData> creases;
-      creases->SetPoints(view.Surface->GetPoints());
-      creases->SetLines(view.Surface->GetLines());
-      renderer->AddActor(TubeActor(creases, 0.005 * size, CreaseColor));
+      // A curve: the refined polylines as tubes.
+      renderer->AddActor(TubeActor(LinesOf(view.Surface), 0.008 * size, SurfaceColor));
+    }
+    else if (this->ShowCreases && view.Surface->GetNumberOfLines() > 0)
+    {
+      renderer->AddActor(TubeActor(LinesOf(view.Surface), 0.005 * size, CreaseColor));
     }
     if (!view.Title.empty())
     {
@@ -398,7 +419,7 @@ bool vtkSubDScene::Render()
       title->GetTextProperty()->SetVerticalJustificationToTop();
       renderer->AddActor2D(title);
     }
-    if (this->ShowScalarBar && this->Coloring != COLOR_NONE)
+    if (this->ShowScalarBar && this->Coloring != COLOR_NONE && view.Surface->GetNumberOfPolys() > 0)
     {
       vtkNew<vtkScalarBarActor> bar;
       bar->SetLookupTable(table);

@@ -14,6 +14,10 @@
  * lines of the surface (its line cells, as the SubD filters output them) in magenta. Shading
  * uses point normals split at 60 degrees, so sharp creases look sharp.
  *
+ * A view whose "surface" has no polygons is a curve (vtkSubDCurveFilter's output): its lines
+ * are drawn as tubes in the surface colour, with its control polygon (the cage's lines)
+ * overlaid as for a cage; curves have no curvature colouring.
+ *
  * Several views are laid out in a grid (as square as possible, in the order added), all
  * seen through one camera fitted to the union of their bounds from a fixed direction
  * (ViewAzimuth, ViewElevation), so a comparison shows each surface at the same scale. The
