@@ -254,6 +254,8 @@ class vtkSubDScene::vtkInternals
 public:
   std::vector<View> Views;
   vtkSmartPointer<vtkRenderWindow> Window;
+  vtkNew<vtkCamera> Camera;
+  bool CameraPlaced = false;
 };
 
 vtkStandardNewMacro(vtkSubDScene);
@@ -332,7 +334,10 @@ bool vtkSubDScene::Render()
   const int columns = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
   const int rows = (n + columns - 1) / columns;
   vtkRenderWindow* window = this->GetRenderWindow();
-  window->SetSize(columns * this->ViewSize[0], rows * this->ViewSize[1]);
+  if (this->FitWindowToViews)
+  {
+    window->SetSize(columns * this->ViewSize[0], rows * this->ViewSize[1]);
+  }
   window->GetRenderers()->RemoveAllItems();
 
   std::vector<vtkSmartPointer<vtkPolyData>> surfaces;
@@ -355,19 +360,23 @@ bool vtkSubDScene::Render()
   vtkSmartPointer<vtkLookupTable> table = DivergingTable(range);
 
   // One camera for all views, looking at the centre of the union of the bounds.
-  vtkNew<vtkCamera> camera;
-  double center[3];
-  box.GetCenter(center);
-  const double azimuth = vtkMath::RadiansFromDegrees(this->ViewAzimuth);
-  const double elevation = vtkMath::RadiansFromDegrees(this->ViewElevation);
-  const double direction[3] = { std::cos(elevation) * std::sin(azimuth), -std::cos(elevation) * std::cos(azimuth),
-    std::sin(elevation) };
-  camera->SetViewAngle(30.0);
-  const double distance = 0.5 * (size > 0 ? size : 1.0) / std::sin(vtkMath::RadiansFromDegrees(15.0)) * 1.02;
-  camera->SetFocalPoint(center);
-  camera->SetPosition(center[0] + distance * direction[0], center[1] + distance * direction[1],
-    center[2] + distance * direction[2]);
-  camera->SetViewUp(0.0, 0.0, 1.0);
+  vtkCamera* camera = this->Internals->Camera;
+  if (this->AutoResetCamera || !this->Internals->CameraPlaced)
+  {
+    double center[3];
+    box.GetCenter(center);
+    const double azimuth = vtkMath::RadiansFromDegrees(this->ViewAzimuth);
+    const double elevation = vtkMath::RadiansFromDegrees(this->ViewElevation);
+    const double direction[3] = { std::cos(elevation) * std::sin(azimuth),
+      -std::cos(elevation) * std::cos(azimuth), std::sin(elevation) };
+    camera->SetViewAngle(30.0);
+    const double distance = 0.5 * (size > 0 ? size : 1.0) / std::sin(vtkMath::RadiansFromDegrees(15.0)) * 1.02;
+    camera->SetFocalPoint(center);
+    camera->SetPosition(center[0] + distance * direction[0], center[1] + distance * direction[1],
+      center[2] + distance * direction[2]);
+    camera->SetViewUp(0.0, 0.0, 1.0);
+    this->Internals->CameraPlaced = true;
+  }
 
   for (int k = 0; k < n; ++k)
   {
@@ -453,6 +462,17 @@ bool vtkSubDScene::Render()
   return true;
 }
 
+vtkCamera* vtkSubDScene::GetCamera()
+{
+  return this->Internals->Camera;
+}
+
+void vtkSubDScene::ResetCamera()
+{
+  this->Internals->CameraPlaced = false;
+  this->Modified();
+}
+
 bool vtkSubDScene::WritePNG(const char* fileName)
 {
   if (!fileName || !*fileName)
@@ -498,4 +518,6 @@ void vtkSubDScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ViewSize: " << this->ViewSize[0] << " x " << this->ViewSize[1] << "\n";
   os << indent << "ViewAzimuth: " << this->ViewAzimuth << "\n";
   os << indent << "ViewElevation: " << this->ViewElevation << "\n";
+  os << indent << "FitWindowToViews: " << (this->FitWindowToViews ? "On" : "Off") << "\n";
+  os << indent << "AutoResetCamera: " << (this->AutoResetCamera ? "On" : "Off") << "\n";
 }

@@ -34,6 +34,7 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkCamera;
 class vtkPolyData;
 class vtkRenderWindow;
 
@@ -115,6 +116,29 @@ public:
   vtkRenderWindow* GetRenderWindow();
   ///@}
 
+  ///@{
+  /**
+   * For interactive use (the explorer): when off, Render() leaves the window's size alone
+   * (default on: the window becomes the grid size times ViewSize).
+   */
+  vtkSetMacro(FitWindowToViews, bool);
+  vtkGetMacro(FitWindowToViews, bool);
+  vtkBooleanMacro(FitWindowToViews, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The one camera of all views. Render() places it (fitted to the views, from ViewAzimuth
+   * and ViewElevation) at the first render and after ResetCamera(), and on every render
+   * while AutoResetCamera is on (the default); with it off, a camera the user moved stays.
+   */
+  vtkCamera* GetCamera();
+  void ResetCamera();
+  vtkSetMacro(AutoResetCamera, bool);
+  vtkGetMacro(AutoResetCamera, bool);
+  vtkBooleanMacro(AutoResetCamera, bool);
+  ///@}
+
   /**
    * Builds the scene and renders it. Returns false (with an error) if there is no view or
    * no OpenGL context.
@@ -138,6 +162,8 @@ protected:
   int ViewSize[2] = { 400, 400 };
   double ViewAzimuth = 30.0;
   double ViewElevation = 25.0;
+  bool FitWindowToViews = true;
+  bool AutoResetCamera = true;
 
 private:
   vtkSubDScene(const vtkSubDScene&) = delete;
