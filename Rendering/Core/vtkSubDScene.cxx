@@ -370,7 +370,14 @@ bool vtkSubDScene::Render()
     const double direction[3] = { std::cos(elevation) * std::sin(azimuth),
       -std::cos(elevation) * std::cos(azimuth), std::sin(elevation) };
     camera->SetViewAngle(30.0);
-    const double distance = 0.5 * (size > 0 ? size : 1.0) / std::sin(vtkMath::RadiansFromDegrees(15.0)) * 1.02;
+    // Fit the bounding sphere into the view angle (vertical), and into the width too when a
+    // view is narrower than tall.
+    const int* windowSize = window->GetSize();
+    const double aspect = windowSize[0] > 0 && windowSize[1] > 0
+      ? (static_cast<double>(windowSize[0]) / columns) / (static_cast<double>(windowSize[1]) / rows)
+      : 1.0;
+    const double distance = 0.5 * (size > 0 ? size : 1.0) / std::sin(vtkMath::RadiansFromDegrees(15.0)) * 1.02 *
+      std::max(1.0, 1.0 / aspect);
     camera->SetFocalPoint(center);
     camera->SetPosition(center[0] + distance * direction[0], center[1] + distance * direction[1],
       center[2] + distance * direction[2]);

@@ -1,0 +1,165 @@
+#include "SubDExplorerOptions.h"
+
+#include "SubDBuiltinCages.h"
+#include "SubDSchemeRegistry.h"
+
+#include <cstdlib>
+#include <sstream>
+
+namespace subdexplorer
+{
+std::string ExplorerUsage()
+{
+  std::ostringstream out;
+  out << "usage: subd-explorer [FILE] [--builtin NAME] [--views 1|2|4] [--schemes S1,S2,...]\n"
+         "                     [--levels N] [--color none|mean|gaussian] [--no-cage] [--limit]\n"
+         "                     [--size WxH] [--screenshot VIEWS.png] [--window-shot WINDOW.png] [--quit]\n"
+         "\n"
+         "Compares subdivision schemes side by side on a mesh (.vtp .vtk .obj .ply .stl .off)\n"
+         "or a built-in cage. --screenshot/--window-shot save pictures once the views are up to\n"
+         "date; with --quit the app then exits (scripted use, e.g. under xvfb-run).\n";
+  return out.str();
+}
+
+bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std::string& error)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&](std::string& out) {
+      if (i + 1 >= argc)
+      {
+        error = "option " + arg + " needs a value";
+        return false;
+      }
+      out = argv[++i];
+      return true;
+    };
+    std::string text;
+    if (arg == "-h" || arg == "--help")
+    {
+      options.Help = true;
+    }
+    else if (arg == "--builtin")
+    {
+      if (!value(options.Builtin))
+      {
+        return false;
+      }
+      if (!subdapp::MakeBuiltinCage(options.Builtin))
+      {
+        error = "unknown built-in cage '" + options.Builtin + "'";
+        return false;
+      }
+    }
+    else if (arg == "--views")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      if (text != "1" && text != "2" && text != "4")
+      {
+        error = "--views wants 1, 2 or 4, not '" + text + "'";
+        return false;
+      }
+      options.Views = std::atoi(text.c_str());
+    }
+    else if (arg == "--schemes")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      options.Schemes.clear();
+      std::istringstream in(text);
+      std::string name;
+      while (std::getline(in, name, ','))
+      {
+        if (!subdapp::FindScheme(name))
+        {
+          error = "unknown scheme '" + name + "'";
+          return false;
+        }
+        options.Schemes.push_back(name);
+      }
+    }
+    else if (arg == "--levels")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      char* end = nullptr;
+      const long levels = std::strtol(text.c_str(), &end, 10);
+      if (text.empty() || *end != '\0' || levels < 0 || levels > 8)
+      {
+        error = "--levels wants an integer in 0..8, not '" + text + "'";
+        return false;
+      }
+      options.Levels = static_cast<int>(levels);
+    }
+    else if (arg == "--color")
+    {
+      if (!value(options.Color))
+      {
+        return false;
+      }
+      if (options.Color != "none" && options.Color != "mean" && options.Color != "gaussian")
+      {
+        error = "--color wants none, mean or gaussian, not '" + options.Color + "'";
+        return false;
+      }
+    }
+    else if (arg == "--size")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      const auto x = text.find('x');
+      options.Width = x == std::string::npos ? 0 : std::atoi(text.substr(0, x).c_str());
+      options.Height = x == std::string::npos ? 0 : std::atoi(text.substr(x + 1).c_str());
+      if (options.Width < 200 || options.Height < 200 || options.Width > 8192 || options.Height > 8192)
+      {
+        error = "--size wants WxH, each in 200..8192, not '" + text + "'";
+        return false;
+      }
+    }
+    else if (arg == "--screenshot" || arg == "--window-shot")
+    {
+      if (!value(arg == "--screenshot" ? options.Screenshot : options.WindowShot))
+      {
+        return false;
+      }
+    }
+    else if (arg == "--no-cage")
+    {
+      options.Cage = false;
+    }
+    else if (arg == "--limit")
+    {
+      options.Limit = true;
+    }
+    else if (arg == "--quit")
+    {
+      options.Quit = true;
+    }
+    else if (!arg.empty() && arg[0] == '-')
+    {
+      error = "unknown option '" + arg + "'";
+      return false;
+    }
+    else if (options.Load.empty())
+    {
+      options.Load = arg;
+    }
+    else
+    {
+      error = "more than one file ('" + options.Load + "', '" + arg + "')";
+      return false;
+    }
+  }
+  return true;
+}
+}

@@ -1,0 +1,32 @@
+// SubD Explorer: the command line, which makes the app scriptable (tests, screenshots).
+#ifndef SubDExplorerOptions_h
+#define SubDExplorerOptions_h
+
+#include <string>
+#include <vector>
+
+namespace subdexplorer
+{
+struct ExplorerOptions
+{
+  std::string Load;                 ///< a mesh file to open (empty: Builtin)
+  std::string Builtin = "cube";     ///< a built-in cage or curve
+  int Views = 1;                    ///< 1, 2 or 4 linked views
+  std::vector<std::string> Schemes; ///< per view (missing ones: catmull-clark, loop, butterfly, doo-sabin)
+  int Levels = 2;
+  std::string Color = "mean"; ///< none, mean or gaussian
+  bool Cage = true;
+  bool Limit = false; ///< project to the limit (and use exact curvature) where the scheme can
+  std::string Screenshot; ///< PNG of the views, written once the views are up to date
+  std::string WindowShot; ///< PNG of the whole window (controls included)
+  bool Quit = false;      ///< quit after the screenshots
+  int Width = 1100, Height = 750;
+  bool Help = false;
+};
+
+/// Parses argv (Qt's own options already removed). On a usage error returns false with `error`.
+bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std::string& error);
+std::string ExplorerUsage();
+}
+
+#endif

@@ -1,0 +1,525 @@
+#include "SubDExplorerWindow.h"
+
+#include "SubDBuiltinCages.h"
+#include "SubDMeshIO.h"
+#include "SubDMeshStatistics.h"
+#include "SubDSchemeRegistry.h"
+
+#include "QVTKOpenGLNativeWidget.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
+#include "vtkGenericOpenGLRenderWindow.h"
+#include "vtkInteractorStyleTrackballCamera.h"
+#include "vtkPolyData.h"
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkSubDScene.h"
+
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QImage>
+#include <QLabel>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QSettings>
+#include <QSlider>
+#include <QStatusBar>
+#include <QVBoxLayout>
+
+namespace subdexplorer
+{
+namespace
+{
+// Collects a filter's errors and warnings (shown with its view's statistics, not on the
+// console: a filter with observers does not print).
+struct MessageCollector
+{
+  std::string Errors, Warnings;
+  static void OnMessage(vtkObject*, unsigned long event, void* client, void* callData)
+  {
+    auto* self = static_cast<MessageCollector*>(client);
+    (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings) +=
+      callData ? static_cast<const char*>(callData) : "(no message)";
+  }
+};
+
+const char* const DefaultSchemes[ExplorerWindow::MaxViews] = { "catmull-clark", "loop", "butterfly", "doo-sabin" };
+
+// Schemes whose limit surface (or curve) the filters can project to and whose exact
+// curvature they compute.
+bool HasLimitPositions(const std::string& scheme)
+{
+  return scheme == "catmull-clark" || scheme == "loop" || scheme == "chaikin" || scheme == "bspline" ||
+    scheme == "four-point";
+}
+bool HasLimitCurvature(const std::string& scheme)
+{
+  return scheme == "catmull-clark" || scheme == "loop";
+}
+}
+
+ExplorerWindow::ExplorerWindow(QWidget* parent)
+  : QMainWindow(parent)
+{
+  this->setWindowTitle("SubD Explorer");
+  this->VTKWidget = new QVTKOpenGLNativeWidget(this);
+  this->VTKWidget->setRenderWindow(this->RenderWindow);
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  this->RenderWindow->GetInteractor()->SetInteractorStyle(style);
+  this->Scene->SetRenderWindow(this->RenderWindow);
+  this->Scene->FitWindowToViewsOff(); // the widget's size is the user's
+  this->Scene->AutoResetCameraOff();  // a camera the user moved stays put
+  this->setCentralWidget(this->VTKWidget);
+
+  auto* dock = new QDockWidget("Schemes", this);
+  dock->setObjectName("SchemesDock");
+  dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
+  dock->setWidget(this->BuildControls());
+  this->addDockWidget(Qt::RightDockWidgetArea, dock);
+  this->BuildMenus();
+  this->statusBar()->showMessage("Drag to rotate, right-drag or wheel to zoom, middle-drag to pan; R resets the camera.");
+  this->LoadBuiltin("cube");
+}
+
+ExplorerWindow::~ExplorerWindow() = default;
+
+QWidget* ExplorerWindow::BuildControls()
+{
+  auto* panel = new QWidget;
+  auto* layout = new QVBoxLayout(panel);
+
+  auto* global = new QGroupBox("All views");
+  auto* form = new QFormLayout(global);
+  this->CageLabel = new QLabel;
+  this->CageLabel->setWordWrap(true);
+  form->addRow("Cage", this->CageLabel);
+  this->Layout = new QComboBox;
+  this->Layout->addItems({ "1 view", "2 views", "4 views" });
+  form->addRow("Layout", this->Layout);
+  this->LevelSlider = new QSlider(Qt::Horizontal);
+  this->LevelSlider->setRange(0, 6);
+  this->LevelSlider->setValue(2);
+  this->LevelSlider->setTickPosition(QSlider::TicksBelow);
+  this->LevelLabel = new QLabel("2");
+  auto* levelRow = new QHBoxLayout;
+  levelRow->addWidget(this->LevelSlider);
+  levelRow->addWidget(this->LevelLabel);
+  form->addRow("Level", levelRow);
+  this->Coloring = new QComboBox;
+  this->Coloring->addItems({ "none", "mean", "gaussian" });
+  this->Coloring->setCurrentIndex(1);
+  this->Coloring->setToolTip("Curvature colouring: exact limit curvature for Catmull-Clark and Loop with "
+                             "'Limit', discrete curvature of the refined mesh otherwise");
+  form->addRow("Curvature", this->Coloring);
+  this->ShowCage = new QCheckBox("Control cage");
+  this->ShowCage->setChecked(true);
+  form->addRow(this->ShowCage);
+  this->Limit = new QCheckBox("Limit (project, exact curvature)");
+  form->addRow(this->Limit);
+  layout->addWidget(global);
+
+  for (int v = 0; v < MaxViews; ++v)
+  {
+    ViewControls& view = this->Views[v];
+    view.Box = new QGroupBox(QString("View %1").arg(v + 1));
+    auto* viewForm = new QFormLayout(view.Box);
+    view.Scheme = new QComboBox;
+    for (const subdapp::SchemeEntry& entry : subdapp::Schemes())
+    {
+      view.Scheme->addItem(QString::fromStdString(entry.Name));
+      view.Scheme->setItemData(view.Scheme->count() - 1, QString::fromStdString(entry.Summary), Qt::ToolTipRole);
+    }
+    view.Scheme->setCurrentText(DefaultSchemes[v]);
+    viewForm->addRow("Scheme", view.Scheme);
+    view.Boundary = new QComboBox;
+    view.Boundary->addItems({ "none", "edge-only", "edge-and-corner" });
+    view.Boundary->setCurrentIndex(1);
+    viewForm->addRow("Boundary", view.Boundary);
+    view.Tension = new QDoubleSpinBox;
+    view.Tension->setDecimals(4);
+    view.Tension->setSingleStep(0.005);
+    view.Tension->setToolTip("butterfly: [-0.0625, 0.0625], four-point: [0, 0.125]");
+    viewForm->addRow("Tension", view.Tension);
+    view.Statistics = new QLabel;
+    view.Statistics->setWordWrap(true);
+    view.Statistics->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    viewForm->addRow(view.Statistics);
+    layout->addWidget(view.Box);
+
+    auto schemeChanged = [this, v]() {
+      ViewControls& changed = this->Views[v];
+      const std::string scheme = changed.Scheme->currentText().toStdString();
+      const bool fourPoint = scheme == "four-point";
+      const bool updating = this->Updating;
+      this->Updating = true;
+      changed.Tension->setEnabled(scheme == "butterfly" || fourPoint);
+      changed.Tension->setRange(fourPoint ? 0.0 : -0.0625, fourPoint ? 0.125 : 0.0625);
+      changed.Tension->setValue(fourPoint ? 0.0625 : 0.0);
+      changed.Boundary->setEnabled(!subdapp::FindScheme(scheme)->Curve);
+      this->Updating = updating;
+      if (!this->Updating)
+      {
+        this->UpdateViews();
+      }
+    };
+    connect(view.Scheme, &QComboBox::currentTextChanged, this, schemeChanged);
+    schemeChanged();
+    connect(view.Boundary, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this]() {
+      if (!this->Updating)
+        this->UpdateViews();
+    });
+    connect(view.Tension, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this]() {
+      if (!this->Updating)
+        this->UpdateViews();
+    });
+  }
+  layout->addStretch(1);
+
+  connect(this->Layout, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
+    [this](int index) { this->SetViewCount(index == 0 ? 1 : (index == 1 ? 2 : 4)); });
+  connect(this->LevelSlider, &QSlider::valueChanged, this, [this](int level) {
+    this->LevelLabel->setText(QString::number(level));
+    if (!this->Updating)
+      this->UpdateViews();
+  });
+  connect(this->Coloring, &QComboBox::currentTextChanged, this,
+    [this](const QString& text) { this->SetColoring(text.toStdString()); });
+  connect(this->ShowCage, &QCheckBox::toggled, this, [this](bool show) { this->SetShowCage(show); });
+  connect(this->Limit, &QCheckBox::toggled, this, [this](bool limit) { this->SetLimit(limit); });
+  this->SetViewCount(1);
+  return panel;
+}
+
+void ExplorerWindow::BuildMenus()
+{
+  QMenu* file = this->menuBar()->addMenu("&File");
+  file->addAction("&Open...", this, &ExplorerWindow::OpenDialog, QKeySequence::Open);
+  QMenu* builtins = file->addMenu("&Built-in cage");
+  std::vector<std::string> names = subdapp::BuiltinCageNames();
+  for (const std::string& curve : subdapp::BuiltinCurveNames())
+  {
+    names.push_back(curve);
+  }
+  for (const std::string& name : names)
+  {
+    builtins->addAction(QString::fromStdString(name), this, [this, name]() { this->LoadBuiltin(name); });
+  }
+  this->RecentMenu = file->addMenu("&Recent files");
+  this->RefreshRecentMenu();
+  file->addSeparator();
+  file->addAction("&Export surface...", this, &ExplorerWindow::ExportDialog, QKeySequence(Qt::CTRL | Qt::Key_E));
+  file->addAction("Save views &image...", this, &ExplorerWindow::ScreenshotDialog, QKeySequence(Qt::CTRL | Qt::Key_P));
+  file->addSeparator();
+  file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
+
+  QMenu* view = this->menuBar()->addMenu("&View");
+  for (int count : { 1, 2, 4 })
+  {
+    view->addAction(QString("%1 view%2").arg(count).arg(count > 1 ? "s" : ""), this,
+      [this, count]() { this->SetViewCount(count); }, QKeySequence(Qt::CTRL | (Qt::Key_0 + count)));
+  }
+  view->addSeparator();
+  view->addAction("Level &up", this, [this]() { this->LevelSlider->setValue(this->LevelSlider->value() + 1); },
+    QKeySequence(Qt::Key_Plus));
+  view->addAction("Level &down", this, [this]() { this->LevelSlider->setValue(this->LevelSlider->value() - 1); },
+    QKeySequence(Qt::Key_Minus));
+  view->addAction("Toggle &cage", this, [this]() { this->ShowCage->toggle(); }, QKeySequence(Qt::Key_C));
+  view->addAction("&Reset camera", this,
+    [this]() {
+      this->Scene->ResetCamera();
+      this->UpdateViews();
+    },
+    QKeySequence(Qt::Key_R));
+}
+
+void ExplorerWindow::SetCage(vtkSmartPointer<vtkPolyData> cage, const QString& name)
+{
+  this->Cage = cage;
+  this->CageName = name;
+  const MeshStatistics stats = ComputeMeshStatistics(cage);
+  this->CageLabel->setText(QString("%1\n%2 points, %3 faces, %4 lines, %5 extraordinary")
+                             .arg(name)
+                             .arg(stats.Vertices)
+                             .arg(stats.Faces)
+                             .arg(stats.Lines)
+                             .arg(stats.Extraordinary));
+  this->setWindowTitle("SubD Explorer - " + name);
+  // Curves are often drawn in a plane: look at them from above.
+  this->Scene->SetViewElevation(cage->GetNumberOfPolys() == 0 ? 70.0 : 25.0);
+  this->Scene->ResetCamera();
+  this->UpdateViews();
+}
+
+void ExplorerWindow::LoadBuiltin(const std::string& name)
+{
+  vtkSmartPointer<vtkPolyData> cage = subdapp::MakeBuiltinCage(name);
+  if (cage)
+  {
+    this->SetCage(cage, QString::fromStdString("built-in " + name));
+  }
+}
+
+bool ExplorerWindow::LoadFile(const QString& path, QString& error)
+{
+  std::string message;
+  vtkSmartPointer<vtkPolyData> cage = subdapp::ReadMesh(path.toStdString(), message);
+  if (!cage)
+  {
+    error = QString::fromStdString(message);
+    return false;
+  }
+  this->RememberRecentFile(path);
+  this->SetCage(cage, QFileInfo(path).fileName());
+  return true;
+}
+
+void ExplorerWindow::SetViewCount(int count)
+{
+  this->ViewCount = count == 2 || count == 4 ? count : 1;
+  const bool updating = this->Updating;
+  this->Updating = true;
+  this->Layout->setCurrentIndex(this->ViewCount == 1 ? 0 : (this->ViewCount == 2 ? 1 : 2));
+  this->Updating = updating;
+  for (int v = 0; v < MaxViews; ++v)
+  {
+    this->Views[v].Box->setVisible(v < this->ViewCount);
+  }
+  if (!this->Updating && this->Cage)
+  {
+    this->UpdateViews();
+  }
+}
+
+void ExplorerWindow::SetScheme(int view, const std::string& scheme)
+{
+  if (view >= 0 && view < MaxViews && subdapp::FindScheme(scheme))
+  {
+    this->Views[view].Scheme->setCurrentText(QString::fromStdString(scheme));
+  }
+}
+
+void ExplorerWindow::SetLevels(int levels)
+{
+  this->LevelSlider->setValue(levels);
+}
+
+void ExplorerWindow::SetColoring(const std::string& coloring)
+{
+  const int value = coloring == "none" ? vtkSubDScene::COLOR_NONE
+                                       : (coloring == "gaussian" ? vtkSubDScene::COLOR_GAUSSIAN_CURVATURE
+                                                                 : vtkSubDScene::COLOR_MEAN_CURVATURE);
+  this->Scene->SetColoring(value);
+  const bool updating = this->Updating;
+  this->Updating = true;
+  this->Coloring->setCurrentText(QString::fromStdString(coloring));
+  this->Updating = updating;
+  if (!this->Updating)
+  {
+    this->UpdateViews();
+  }
+}
+
+void ExplorerWindow::SetShowCage(bool show)
+{
+  this->Scene->SetShowCage(show);
+  this->ShowCage->setChecked(show);
+  if (!this->Updating)
+  {
+    this->UpdateViews();
+  }
+}
+
+void ExplorerWindow::SetLimit(bool limit)
+{
+  this->Limit->setChecked(limit);
+  if (!this->Updating)
+  {
+    this->UpdateViews();
+  }
+}
+
+bool ExplorerWindow::Subdivide(int v)
+{
+  ViewControls& view = this->Views[v];
+  const std::string scheme = view.Scheme->currentText().toStdString();
+  const subdapp::SchemeEntry* entry = subdapp::FindScheme(scheme);
+  subdapp::SchemeOptions options;
+  options.Levels = this->LevelSlider->value();
+  options.BoundaryRule = view.Boundary->currentIndex();
+  options.Tension = view.Tension->value();
+  options.TensionGiven = view.Tension->isEnabled();
+  options.ProjectToLimit = this->Limit->isChecked() && HasLimitPositions(scheme);
+  options.LimitCurvature = options.ProjectToLimit && HasLimitCurvature(scheme) &&
+    this->Scene->GetColoring() != vtkSubDScene::COLOR_NONE;
+  vtkSmartPointer<vtkPolyDataAlgorithm> filter = entry->Make(options);
+  MessageCollector messages;
+  vtkNew<vtkCallbackCommand> onMessage;
+  onMessage->SetClientData(&messages);
+  onMessage->SetCallback(&MessageCollector::OnMessage);
+  filter->AddObserver(vtkCommand::ErrorEvent, onMessage);
+  filter->AddObserver(vtkCommand::WarningEvent, onMessage);
+  filter->SetInputData(this->Cage);
+  QElapsedTimer timer;
+  timer.start();
+  filter->Update();
+  const double milliseconds = timer.nsecsElapsed() * 1e-6;
+  view.Statistics->setToolTip(QString::fromStdString(messages.Warnings).trimmed());
+  if (!messages.Errors.empty() || filter->GetOutput()->GetNumberOfCells() == 0)
+  {
+    view.Result = nullptr;
+    view.Statistics->setText(QString("<span style='color:#c0392b'>%1</span>")
+                               .arg(QString::fromStdString(messages.Errors.empty() ? "no output" : messages.Errors)
+                                      .toHtmlEscaped()));
+    return false;
+  }
+  view.Result = vtkSmartPointer<vtkPolyData>::New();
+  view.Result->ShallowCopy(filter->GetOutput());
+  const MeshStatistics stats = ComputeMeshStatistics(view.Result);
+  QString text = entry->Curve
+    ? QString("%1 points on %2 curves").arg(stats.Vertices).arg(stats.Lines)
+    : QString("V %1 · E %2 · F %3 · extraordinary %4").arg(stats.Vertices).arg(stats.Edges).arg(stats.Faces).arg(stats.Extraordinary);
+  text += QString(" · %1 ms").arg(milliseconds, 0, 'f', 1);
+  if (!messages.Warnings.empty())
+  {
+    text += " · <span style='color:#b9770e'>warnings (hover)</span>";
+  }
+  view.Statistics->setText(text);
+  return true;
+}
+
+void ExplorerWindow::UpdateViews()
+{
+  if (!this->Cage)
+  {
+    return;
+  }
+  this->Scene->RemoveAllViews();
+  vtkNew<vtkPolyData> empty;
+  for (int v = 0; v < this->ViewCount; ++v)
+  {
+    this->Subdivide(v);
+    const std::string title = this->Views[v].Scheme->currentText().toStdString() + ", level " +
+      std::to_string(this->LevelSlider->value());
+    this->Scene->AddView(this->Views[v].Result ? this->Views[v].Result.GetPointer() : empty.GetPointer(),
+      this->Cage, title.c_str());
+  }
+  if (this->VTKWidget->isVisible())
+  {
+    this->Scene->Render();
+  }
+  this->VTKWidget->update();
+}
+
+bool ExplorerWindow::SaveViewsImage(const QString& path, QString& error)
+{
+  this->Scene->Render();
+  const QImage image = this->VTKWidget->grabFramebuffer();
+  if (image.isNull() || !image.save(path, "PNG"))
+  {
+    error = "cannot write the image '" + path + "'";
+    return false;
+  }
+  return true;
+}
+
+bool ExplorerWindow::SaveWindowImage(const QString& path, QString& error)
+{
+  this->Scene->Render();
+  // The GL widget's pixels come from its framebuffer; grab() composes them with the rest.
+  const QPixmap pixmap = this->grab();
+  if (pixmap.isNull() || !pixmap.save(path, "PNG"))
+  {
+    error = "cannot write the image '" + path + "'";
+    return false;
+  }
+  return true;
+}
+
+bool ExplorerWindow::ExportSurface(int view, const QString& path, QString& error)
+{
+  if (view < 0 || view >= this->ViewCount || !this->Views[view].Result)
+  {
+    error = "view " + QString::number(view + 1) + " has no surface to export";
+    return false;
+  }
+  std::string message;
+  if (!subdapp::WriteMesh(this->Views[view].Result, path.toStdString(), message))
+  {
+    error = QString::fromStdString(message);
+    return false;
+  }
+  return true;
+}
+
+void ExplorerWindow::OpenDialog()
+{
+  const QString path = QFileDialog::getOpenFileName(this, "Open a mesh", QString(),
+    "Meshes (*.vtp *.vtk *.obj *.ply *.stl *.off);;All files (*)");
+  QString error;
+  if (!path.isEmpty() && !this->LoadFile(path, error))
+  {
+    QMessageBox::warning(this, "Cannot open", error);
+  }
+}
+
+void ExplorerWindow::ExportDialog()
+{
+  const QString path = QFileDialog::getSaveFileName(this, "Export view 1's surface", "surface.vtp",
+    "Meshes (*.vtp *.vtk *.obj *.ply *.stl *.off)");
+  QString error;
+  if (!path.isEmpty() && !this->ExportSurface(0, path, error))
+  {
+    QMessageBox::warning(this, "Cannot export", error);
+  }
+}
+
+void ExplorerWindow::ScreenshotDialog()
+{
+  const QString path = QFileDialog::getSaveFileName(this, "Save the views as an image", "views.png", "PNG (*.png)");
+  QString error;
+  if (!path.isEmpty() && !this->SaveViewsImage(path, error))
+  {
+    QMessageBox::warning(this, "Cannot save", error);
+  }
+}
+
+void ExplorerWindow::RememberRecentFile(const QString& path)
+{
+  QSettings settings;
+  QStringList recent = settings.value("recentFiles").toStringList();
+  recent.removeAll(path);
+  recent.prepend(path);
+  while (recent.size() > 8)
+  {
+    recent.removeLast();
+  }
+  settings.setValue("recentFiles", recent);
+  this->RefreshRecentMenu();
+}
+
+void ExplorerWindow::RefreshRecentMenu()
+{
+  this->RecentMenu->clear();
+  QSettings settings;
+  for (const QString& path : settings.value("recentFiles").toStringList())
+  {
+    this->RecentMenu->addAction(path, this, [this, path]() {
+      QString error;
+      if (!this->LoadFile(path, error))
+      {
+        QMessageBox::warning(this, "Cannot open", error);
+      }
+    });
+  }
+  this->RecentMenu->setEnabled(!this->RecentMenu->isEmpty());
+}
+}

@@ -1,0 +1,100 @@
+// SubD Explorer: the main window. One cage, 1, 2 or 4 views of it subdivided by different
+// schemes, drawn by vtkSubDScene into one VTK widget (so the views share one camera), with
+// the controls around it.
+#ifndef SubDExplorerWindow_h
+#define SubDExplorerWindow_h
+
+#include "vtkNew.h"
+#include "vtkSmartPointer.h"
+
+#include <QMainWindow>
+#include <QString>
+
+#include <array>
+#include <string>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QGroupBox;
+class QLabel;
+class QSlider;
+class QVTKOpenGLNativeWidget;
+class vtkGenericOpenGLRenderWindow;
+class vtkPolyData;
+class vtkSubDScene;
+
+namespace subdexplorer
+{
+class ExplorerWindow : public QMainWindow
+{
+  Q_OBJECT
+
+public:
+  static constexpr int MaxViews = 4;
+
+  explicit ExplorerWindow(QWidget* parent = nullptr);
+  ~ExplorerWindow() override;
+
+  /// Opens a mesh file (any format `subd` reads); false with the reason on failure.
+  bool LoadFile(const QString& path, QString& error);
+  /// Shows a built-in cage or curve (SubDBuiltinCages.h).
+  void LoadBuiltin(const std::string& name);
+
+  void SetViewCount(int count); ///< 1, 2 or 4
+  void SetScheme(int view, const std::string& scheme);
+  void SetLevels(int levels);
+  void SetColoring(const std::string& coloring); ///< none, mean, gaussian
+  void SetShowCage(bool show);
+  void SetLimit(bool limit);
+
+  /// Brings every view up to date and renders (what the controls call).
+  void UpdateViews();
+  /// The views' pixels (the VTK widget) as a PNG.
+  bool SaveViewsImage(const QString& path, QString& error);
+  /// The whole window, controls included, as a PNG.
+  bool SaveWindowImage(const QString& path, QString& error);
+  /// Writes view `view`'s subdivided surface (any format `subd` writes).
+  bool ExportSurface(int view, const QString& path, QString& error);
+
+private:
+  struct ViewControls
+  {
+    QGroupBox* Box = nullptr;
+    QComboBox* Scheme = nullptr;
+    QComboBox* Boundary = nullptr;
+    QDoubleSpinBox* Tension = nullptr;
+    QLabel* Statistics = nullptr;
+    vtkSmartPointer<vtkPolyData> Result;
+  };
+
+  void BuildMenus();
+  QWidget* BuildControls();
+  void SetCage(vtkSmartPointer<vtkPolyData> cage, const QString& name);
+  bool Subdivide(int view);
+  void OpenDialog();
+  void ExportDialog();
+  void ScreenshotDialog();
+  void RememberRecentFile(const QString& path);
+  void RefreshRecentMenu();
+
+  QVTKOpenGLNativeWidget* VTKWidget = nullptr;
+  vtkNew<vtkGenericOpenGLRenderWindow> RenderWindow;
+  vtkNew<vtkSubDScene> Scene;
+  vtkSmartPointer<vtkPolyData> Cage;
+  QString CageName;
+  std::array<ViewControls, MaxViews> Views;
+  int ViewCount = 1;
+  QComboBox* Layout = nullptr;
+  QSlider* LevelSlider = nullptr;
+  QLabel* LevelLabel = nullptr;
+  QComboBox* Coloring = nullptr;
+  QCheckBox* ShowCage = nullptr;
+  QCheckBox* Limit = nullptr;
+  QLabel* CageLabel = nullptr;
+  QMenu* RecentMenu = nullptr;
+  bool Updating = false; ///< controls set programmatically do not trigger updates
+};
+}
+
+#endif
