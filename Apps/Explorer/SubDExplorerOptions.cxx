@@ -1,5 +1,6 @@
 #include "SubDExplorerOptions.h"
 
+#include "SubDArgumentReader.h"
 #include "SubDBuiltinCages.h"
 #include "SubDSchemeRegistry.h"
 
@@ -8,6 +9,8 @@
 
 namespace subdexplorer
 {
+using subdapp::ArgumentReader;
+
 std::string ExplorerUsage()
 {
   std::ostringstream out;
@@ -23,18 +26,10 @@ std::string ExplorerUsage()
 
 bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std::string& error)
 {
-  for (int i = 1; i < argc; ++i)
+  for (ArgumentReader arguments(argc, argv); arguments.Next();)
   {
-    const std::string arg = argv[i];
-    auto value = [&](std::string& out) {
-      if (i + 1 >= argc)
-      {
-        error = "option " + arg + " needs a value";
-        return false;
-      }
-      out = argv[++i];
-      return true;
-    };
+    const std::string arg = arguments.Current();
+    auto value = [&](std::string& out) { return arguments.Value(out, error); };
     std::string text;
     if (arg == "-h" || arg == "--help")
     {

@@ -1,4 +1,5 @@
 #include "SubDCommandLine.h"
+#include "SubDArgumentReader.h"
 #include "SubDBuiltinCages.h"
 #include "SubDMeshIO.h"
 
@@ -165,18 +166,10 @@ std::string UsageText()
 
 bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& error)
 {
-  for (int i = 1; i < argc; ++i)
+  for (ArgumentReader arguments(argc, argv); arguments.Next();)
   {
-    const std::string arg = argv[i];
-    auto value = [&](std::string& out) {
-      if (i + 1 >= argc)
-      {
-        error = "option " + arg + " needs a value";
-        return false;
-      }
-      out = argv[++i];
-      return true;
-    };
+    const std::string arg = arguments.Current();
+    auto value = [&](std::string& out) { return arguments.Value(out, error); };
     std::string text;
     if (arg == "-h" || arg == "--help")
     {
