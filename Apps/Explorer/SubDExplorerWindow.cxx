@@ -20,6 +20,8 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
+#include <QDragEnterEvent>
+#include <QDropEvent>
 #include <QDoubleSpinBox>
 #include <QElapsedTimer>
 #include <QFileDialog>
@@ -29,6 +31,7 @@
 #include <QImage>
 #include <QLabel>
 #include <QMenuBar>
+#include <QMimeData>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSlider>
@@ -79,6 +82,7 @@ ExplorerWindow::ExplorerWindow(QWidget* parent)
   this->Scene->FitWindowToViewsOff(); // the widget's size is the user's
   this->Scene->AutoResetCameraOff();  // a camera the user moved stays put
   this->setCentralWidget(this->VTKWidget);
+  this->setAcceptDrops(true);
 
   auto* dock = new QDockWidget("Schemes", this);
   dock->setObjectName("SchemesDock");
@@ -458,6 +462,25 @@ bool ExplorerWindow::ExportSurface(int view, const QString& path, QString& error
     return false;
   }
   return true;
+}
+
+void ExplorerWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+  if (event->mimeData()->hasUrls() && event->mimeData()->urls().front().isLocalFile())
+  {
+    event->acceptProposedAction();
+  }
+}
+
+void ExplorerWindow::dropEvent(QDropEvent* event)
+{
+  const QString path = event->mimeData()->urls().front().toLocalFile();
+  QString error;
+  if (!this->LoadFile(path, error))
+  {
+    QMessageBox::warning(this, "Cannot open", error);
+  }
+  event->acceptProposedAction();
 }
 
 void ExplorerWindow::OpenDialog()

@@ -15,6 +15,8 @@
 
 class QCheckBox;
 class QComboBox;
+class QDragEnterEvent;
+class QDropEvent;
 class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
@@ -56,6 +58,11 @@ public:
   bool SaveWindowImage(const QString& path, QString& error);
   /// Writes view `view`'s subdivided surface (any format `subd` writes).
   bool ExportSurface(int view, const QString& path, QString& error);
+
+protected:
+  /// Dropping a mesh file on the window opens it.
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
 
 private:
   struct ViewControls

@@ -8,6 +8,8 @@
 #include "vtkPolyData.h"
 
 #include <cmath>
+#include <cstdlib>
+#include <utility>
 
 namespace subdapp
 {
@@ -97,6 +99,100 @@ vtkSmartPointer<vtkPolyData> OpenGrid()
   return MakePolyData(xyz, faces);
 }
 
+vtkSmartPointer<vtkPolyData> Tetrahedron()
+{
+  return MakePolyData({ 1, 1, 1, -1, -1, 1, -1, 1, -1, 1, -1, -1 }, { { 0, 1, 2 }, { 0, 3, 1 }, { 0, 2, 3 }, { 1, 3, 2 } });
+}
+
+vtkSmartPointer<vtkPolyData> Octahedron()
+{
+  return MakePolyData({ 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1 },
+    { { 0, 2, 4 }, { 2, 1, 4 }, { 1, 3, 4 }, { 3, 0, 4 }, { 2, 0, 5 }, { 1, 2, 5 }, { 3, 1, 5 }, { 0, 3, 5 } });
+}
+
+// A torus of 8 x 6 quads: genus one, every vertex regular.
+vtkSmartPointer<vtkPolyData> Torus()
+{
+  const int around = 8, tube = 6;
+  std::vector<double> xyz;
+  for (int i = 0; i < around; ++i)
+  {
+    for (int j = 0; j < tube; ++j)
+    {
+      const double u = 2 * M_PI * i / around, v = 2 * M_PI * j / tube, r = 1.0 + 0.4 * std::cos(v);
+      xyz.insert(xyz.end(), { r * std::cos(u), r * std::sin(u), 0.4 * std::sin(v) });
+    }
+  }
+  std::vector<std::vector<vtkIdType>> faces;
+  for (int i = 0; i < around; ++i)
+  {
+    for (int j = 0; j < tube; ++j)
+    {
+      auto id = [&](int a, int b) { return static_cast<vtkIdType>(((a % around) * tube) + (b % tube)); };
+      faces.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1) });
+    }
+  }
+  return MakePolyData(xyz, faces);
+}
+
+// An open fan of `valence` quads around a raised centre vertex: one extraordinary vertex
+// (regular for 4) inside a boundary.
+vtkSmartPointer<vtkPolyData> ValenceFan(int valence)
+{
+  std::vector<double> xyz{ 0, 0, 0.5 };
+  for (int k = 0; k < valence; ++k)
+  {
+    const double a = 2 * M_PI * k / valence, b = 2 * M_PI * (k + 0.5) / valence;
+    xyz.insert(xyz.end(), { std::cos(a), std::sin(a), 0.1 });
+    xyz.insert(xyz.end(), { 1.6 * std::cos(b), 1.6 * std::sin(b), 0.0 });
+  }
+  std::vector<std::vector<vtkIdType>> faces;
+  for (int k = 0; k < valence; ++k)
+  {
+    const vtkIdType edge = 1 + 2 * k, corner = edge + 1, next = 1 + 2 * ((k + 1) % valence);
+    faces.push_back({ 0, edge, corner, next });
+  }
+  return MakePolyData(xyz, faces);
+}
+
+// The letter L as a closed block of quads: unit squares extruded by 0.6, so concave corners
+// and valence-3/5 vertices appear.
+vtkSmartPointer<vtkPolyData> LetterL()
+{
+  const std::vector<std::pair<int, int>> squares{ { 0, 0 }, { 1, 0 }, { 2, 0 }, { 0, 1 }, { 0, 2 }, { 0, 3 } };
+  auto filled = [&](int x, int y) {
+    for (const auto& sq : squares)
+      if (sq.first == x && sq.second == y)
+        return true;
+    return false;
+  };
+  std::vector<double> xyz;
+  std::vector<std::vector<vtkIdType>> faces;
+  auto point = [&](int x, int y, int z) { // grid corner (x, y) on the bottom (0) or top (1)
+    for (size_t i = 0; i < xyz.size(); i += 3)
+      if (xyz[i] == x && xyz[i + 1] == y && xyz[i + 2] == 0.6 * z)
+        return static_cast<vtkIdType>(i / 3);
+    xyz.insert(xyz.end(), { double(x), double(y), 0.6 * z });
+    return static_cast<vtkIdType>(xyz.size() / 3 - 1);
+  };
+  for (const auto& sq : squares)
+  {
+    const int x = sq.first, y = sq.second;
+    faces.push_back({ point(x, y, 1), point(x + 1, y, 1), point(x + 1, y + 1, 1), point(x, y + 1, 1) });
+    faces.push_back({ point(x, y, 0), point(x, y + 1, 0), point(x + 1, y + 1, 0), point(x + 1, y, 0) });
+    // Walls where the neighbour square is empty, facing outwards.
+    if (!filled(x, y - 1))
+      faces.push_back({ point(x, y, 0), point(x + 1, y, 0), point(x + 1, y, 1), point(x, y, 1) });
+    if (!filled(x + 1, y))
+      faces.push_back({ point(x + 1, y, 0), point(x + 1, y + 1, 0), point(x + 1, y + 1, 1), point(x + 1, y, 1) });
+    if (!filled(x, y + 1))
+      faces.push_back({ point(x + 1, y + 1, 0), point(x, y + 1, 0), point(x, y + 1, 1), point(x + 1, y + 1, 1) });
+    if (!filled(x - 1, y))
+      faces.push_back({ point(x, y + 1, 0), point(x, y, 0), point(x, y, 1), point(x, y + 1, 1) });
+  }
+  return MakePolyData(xyz, faces);
+}
+
 // Control polygons as polylines (for the curve schemes): `closed` repeats the first point.
 vtkSmartPointer<vtkPolyData> MakePolyline(const std::vector<double>& xyz, bool closed)
 {
@@ -157,7 +253,8 @@ std::vector<std::string> BuiltinCurveNames()
 
 std::vector<std::string> BuiltinCageNames()
 {
-  return { "cube", "creased-cube", "pyramid", "open-grid" };
+  return { "cube", "creased-cube", "pyramid", "open-grid", "tetrahedron", "octahedron", "torus", "letter-l",
+    "valence-3", "valence-4", "valence-5", "valence-6", "valence-7", "valence-8" };
 }
 
 vtkSmartPointer<vtkPolyData> MakeBuiltinCage(const std::string& name)
@@ -177,6 +274,27 @@ vtkSmartPointer<vtkPolyData> MakeBuiltinCage(const std::string& name)
   if (name == "open-grid")
   {
     return OpenGrid();
+  }
+  if (name == "tetrahedron")
+  {
+    return Tetrahedron();
+  }
+  if (name == "octahedron")
+  {
+    return Octahedron();
+  }
+  if (name == "torus")
+  {
+    return Torus();
+  }
+  if (name == "letter-l")
+  {
+    return LetterL();
+  }
+  if (name.rfind("valence-", 0) == 0)
+  {
+    const int valence = std::atoi(name.c_str() + 8);
+    return valence >= 3 && valence <= 8 ? ValenceFan(valence) : nullptr;
   }
   if (name == "star")
   {
