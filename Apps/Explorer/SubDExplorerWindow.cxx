@@ -3,11 +3,10 @@
 #include "SubDBuiltinCages.h"
 #include "SubDMeshIO.h"
 #include "SubDMeshStatistics.h"
+#include "SubDMessageCollector.h"
 #include "SubDSchemeRegistry.h"
 
 #include "QVTKOpenGLNativeWidget.h"
-#include "vtkCallbackCommand.h"
-#include "vtkCommand.h"
 #include "vtkGenericOpenGLRenderWindow.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkPolyData.h"
@@ -42,32 +41,8 @@ namespace subdexplorer
 {
 namespace
 {
-// Collects a filter's errors and warnings (shown with its view's statistics, not on the
-// console: a filter with observers does not print).
-struct MessageCollector
-{
-  std::string Errors, Warnings;
-  static void OnMessage(vtkObject*, unsigned long event, void* client, void* callData)
-  {
-    auto* self = static_cast<MessageCollector*>(client);
-    (event == vtkCommand::ErrorEvent ? self->Errors : self->Warnings) +=
-      callData ? static_cast<const char*>(callData) : "(no message)";
-  }
-};
-
 const char* const DefaultSchemes[ExplorerWindow::MaxViews] = { "catmull-clark", "loop", "butterfly", "doo-sabin" };
 
-// Schemes whose limit surface (or curve) the filters can project to and whose exact
-// curvature they compute.
-bool HasLimitPositions(const std::string& scheme)
-{
-  return scheme == "catmull-clark" || scheme == "loop" || scheme == "chaikin" || scheme == "bspline" ||
-    scheme == "four-point";
-}
-bool HasLimitCurvature(const std::string& scheme)
-{
-  return scheme == "catmull-clark" || scheme == "loop";
-}
 }
 
 ExplorerWindow::ExplorerWindow(QWidget* parent)
@@ -361,16 +336,12 @@ bool ExplorerWindow::Subdivide(int v)
   options.BoundaryRule = view.Boundary->currentIndex();
   options.Tension = view.Tension->value();
   options.TensionGiven = view.Tension->isEnabled();
-  options.ProjectToLimit = this->Limit->isChecked() && HasLimitPositions(scheme);
-  options.LimitCurvature = options.ProjectToLimit && HasLimitCurvature(scheme) &&
+  options.ProjectToLimit = this->Limit->isChecked() && entry->LimitPositions;
+  options.LimitCurvature = options.ProjectToLimit && entry->LimitCurvature &&
     this->Scene->GetColoring() != vtkSubDScene::COLOR_NONE;
   vtkSmartPointer<vtkPolyDataAlgorithm> filter = entry->Make(options);
-  MessageCollector messages;
-  vtkNew<vtkCallbackCommand> onMessage;
-  onMessage->SetClientData(&messages);
-  onMessage->SetCallback(&MessageCollector::OnMessage);
-  filter->AddObserver(vtkCommand::ErrorEvent, onMessage);
-  filter->AddObserver(vtkCommand::WarningEvent, onMessage);
+  subdapp::MessageCollector messages; // also keeps the messages off the console
+  messages.Watch(filter);
   filter->SetInputData(this->Cage);
   QElapsedTimer timer;
   timer.start();

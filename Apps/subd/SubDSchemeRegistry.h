@@ -29,7 +29,9 @@ struct SchemeEntry
 {
   std::string Name;
   std::string Summary;
-  bool Curve; ///< refines the input's lines (vtkSubDCurveFilter), not its polygons
+  bool Curve;          ///< refines the input's lines (vtkSubDCurveFilter), not its polygons
+  bool LimitPositions; ///< ProjectToLimit works (limit masks, or interpolating)
+  bool LimitCurvature; ///< exact limit normals and curvature (LimitNormals, LimitCurvature)
   /// A configured filter for the options.
   vtkSmartPointer<vtkPolyDataAlgorithm> (*Make)(const SchemeOptions&);
 };

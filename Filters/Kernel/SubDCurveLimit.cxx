@@ -280,22 +280,6 @@ void AppendCurveTangentMask(const CurveRules& rules, Index n, bool closed, Index
   rows.EndRow();
 }
 
-namespace
-{
-// Appends `local` (rows over a piece's local indices) with the piece's point ids.
-void AppendMapped(const CurveRows& local, IndexSpan piece, CurveRows& rows)
-{
-  for (Index r = 0; r < local.GetNumRows(); ++r)
-  {
-    for (Index k = local.Offsets[r]; k < local.Offsets[r + 1]; ++k)
-    {
-      rows.Add(piece[local.Sources[k]], local.Weights[k]);
-    }
-    rows.EndRow();
-  }
-}
-}
-
 StencilTable CurveLimitStencils(const CurveRules& rules, const CurvePieces& pieces, Index numPoints)
 {
   // Anchors are end points: every scheme interpolates them. Interior points are numbered
@@ -318,7 +302,7 @@ StencilTable CurveLimitStencils(const CurveRules& rules, const CurvePieces& piec
         AppendCurveLimitMask(rules, piece.size(), closed, j, local);
       }
     }
-    AppendMapped(local, piece, rows);
+    rows.AppendRenumbered(local, 0, local.GetNumRows(), piece.Data);
   }
   return rows.ToStencilTable(numPoints);
 }
@@ -336,7 +320,7 @@ StencilTable CurveTangentStencils(const CurveRules& rules, const CurvePieces& pi
       AppendTangent(rules, &masks, piece.size(), pieces.IsClosed(p), j, local);
       local.EndRow();
     }
-    AppendMapped(local, piece, rows);
+    rows.AppendRenumbered(local, 0, local.GetNumRows(), piece.Data);
   }
   return rows.ToStencilTable(numPoints);
 }

@@ -148,26 +148,23 @@ void RefineLevel(const CurveRules& rules, const CurvePieces& parent, StencilTabl
     const bool closed = parent.IsClosed(p);
     local.Clear();
     AppendCurveChildRows(rules, n, closed, local);
+    // An open polygon's first and last children are its anchors (every scheme keeps the end
+    // points); the others are new points of this piece.
     const Index children = local.GetNumRows();
+    const Index first = closed ? 0 : 1, last = closed ? children : std::max<Index>(children - 1, first);
+    rows.AppendRenumbered(local, first, last, piece.Data);
     points.clear();
-    for (Index c = 0; c < children; ++c)
+    if (!closed)
     {
-      if (!closed && c == 0)
-      {
-        points.push_back(piece[0]); // the anchors: every scheme keeps the end points
-        continue;
-      }
-      if (!closed && c == children - 1)
-      {
-        points.push_back(piece[n - 1]);
-        continue;
-      }
-      for (Index k = local.Offsets[c]; k < local.Offsets[c + 1]; ++k)
-      {
-        rows.Add(piece[local.Sources[k]], local.Weights[k]);
-      }
-      rows.EndRow();
+      points.push_back(piece[0]);
+    }
+    for (Index c = first; c < last; ++c)
+    {
       points.push_back(next++);
+    }
+    if (!closed && children > 1)
+    {
+      points.push_back(piece[n - 1]);
     }
     child.AddPiece(points.data(), points.data() + points.size(), closed);
   }

@@ -39,6 +39,18 @@ void CurveRows::Add(Index source, double w)
   this->Weights.push_back(w);
 }
 
+void CurveRows::AppendRenumbered(const CurveRows& local, Index begin, Index end, const Index* ids)
+{
+  for (Index r = begin; r < end; ++r)
+  {
+    for (Index k = local.Offsets[r]; k < local.Offsets[r + 1]; ++k)
+    {
+      this->Add(ids[local.Sources[k]], local.Weights[k]);
+    }
+    this->EndRow();
+  }
+}
+
 StencilTable CurveRows::ToStencilTable(Index numParents) const
 {
   StencilTable table(numParents);

@@ -68,6 +68,9 @@ struct SUBDKERNEL_EXPORT CurveRows
   /// Adds w * p_source to the current row (merging a source already in it).
   void Add(Index source, double w);
   void EndRow() { Offsets.push_back(static_cast<Index>(Sources.size())); }
+  /// Appends rows [begin, end) of `local`, whose sources are indices into `ids`, as rows over
+  /// ids[source] (a polygon's local rows in a level's numbering).
+  void AppendRenumbered(const CurveRows& local, Index begin, Index end, const Index* ids);
   /// The rows as one block of a stencil table over `numParents` points.
   StencilTable ToStencilTable(Index numParents) const;
 };

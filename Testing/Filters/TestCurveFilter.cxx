@@ -46,6 +46,16 @@ std::vector<std::array<double, 3>> Zigzag(int n)
   return points;
 }
 
+// Marks point `corner` of `input` infinitely sharp ("CornerSharpness" 10, the others 0).
+void AddCorner(vtkPolyData* input, vtkIdType corner)
+{
+  vtkNew<vtkFloatArray> sharpness;
+  sharpness->SetName("CornerSharpness");
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    sharpness->InsertNextValue(i == corner ? 10.0f : 0.0f);
+  input->GetPointData()->AddArray(sharpness);
+}
+
 std::vector<vtkIdType> Range(vtkIdType n)
 {
   std::vector<vtkIdType> ids;
@@ -209,11 +219,7 @@ TEST(CurveFilter, CornersSplitTheCurve)
   // Point 3 is a corner: it is kept, and each side is refined on its own, so moving a point
   // on one side does not move the other side's output.
   auto input = Polylines(Zigzag(7), { Range(7) });
-  vtkNew<vtkFloatArray> sharpness;
-  sharpness->SetName("CornerSharpness");
-  for (int i = 0; i < 7; ++i)
-    sharpness->InsertNextValue(i == 3 ? 10.0f : 0.0f);
-  input->GetPointData()->AddArray(sharpness);
+  AddCorner(input, 3);
   for (int scheme : AllSchemes)
   {
     auto out = RunCurveFilter(input, scheme, 3);
@@ -252,11 +258,7 @@ TEST(CurveFilter, ClosedCurveWithACornerStartsThere)
   std::vector<vtkIdType> ring = Range(6);
   ring.push_back(0);
   auto input = Polylines(Zigzag(6), { ring });
-  vtkNew<vtkFloatArray> sharpness;
-  sharpness->SetName("CornerSharpness");
-  for (int i = 0; i < 6; ++i)
-    sharpness->InsertNextValue(i == 2 ? 10.0f : 0.0f);
-  input->GetPointData()->AddArray(sharpness);
+  AddCorner(input, 2);
   auto out = RunCurveFilter(input, vtkSubDCurveFilter::SCHEME_CUBIC_BSPLINE, 2);
   const std::vector<vtkIdType> ids = CellIds(out, 0);
   ASSERT_EQ(ids.size(), 25u);
