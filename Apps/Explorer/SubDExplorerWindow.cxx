@@ -10,7 +10,6 @@
 #include "vtkGenericOpenGLRenderWindow.h"
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataAlgorithm.h"
 #include "vtkRenderWindowInteractor.h"
 #include "vtkSubDScene.h"
 
@@ -232,8 +231,6 @@ void ExplorerWindow::SetCage(vtkSmartPointer<vtkPolyData> cage, const QString& n
                              .arg(stats.Lines)
                              .arg(stats.Extraordinary));
   this->setWindowTitle("SubD Explorer - " + name);
-  // Curves are often drawn in a plane: look at them from above.
-  this->Scene->SetViewElevation(cage->GetNumberOfPolys() == 0 ? 70.0 : 25.0);
   this->Scene->ResetCamera();
   this->UpdateViews();
 }
@@ -339,25 +336,19 @@ bool ExplorerWindow::Subdivide(int v)
   options.ProjectToLimit = this->Limit->isChecked() && entry->LimitPositions;
   options.LimitCurvature = options.ProjectToLimit && entry->LimitCurvature &&
     this->Scene->GetColoring() != vtkSubDScene::COLOR_NONE;
-  vtkSmartPointer<vtkPolyDataAlgorithm> filter = entry->Make(options);
   subdapp::MessageCollector messages; // also keeps the messages off the console
-  messages.Watch(filter);
-  filter->SetInputData(this->Cage);
   QElapsedTimer timer;
   timer.start();
-  filter->Update();
+  view.Result = subdapp::RunScheme(*entry, options, this->Cage, messages);
   const double milliseconds = timer.nsecsElapsed() * 1e-6;
   view.Statistics->setToolTip(QString::fromStdString(messages.Warnings).trimmed());
-  if (!messages.Errors.empty() || filter->GetOutput()->GetNumberOfCells() == 0)
+  if (!view.Result)
   {
-    view.Result = nullptr;
     view.Statistics->setText(QString("<span style='color:#c0392b'>%1</span>")
                                .arg(QString::fromStdString(messages.Errors.empty() ? "no output" : messages.Errors)
                                       .toHtmlEscaped()));
     return false;
   }
-  view.Result = vtkSmartPointer<vtkPolyData>::New();
-  view.Result->ShallowCopy(filter->GetOutput());
   const MeshStatistics stats = ComputeMeshStatistics(view.Result);
   QString text = entry->Curve
     ? QString("%1 points on %2 curves").arg(stats.Vertices).arg(stats.Lines)

@@ -40,10 +40,6 @@ bool RenderImage(const CommandLine& cmd, vtkPolyData* cage, vtkPolyData* result,
   scene->SetColoring(ColoringOf(cmd.Color));
   scene->SetShowCage(cmd.Cage);
   scene->SetViewSize(cmd.ViewSize[0], cmd.ViewSize[1]);
-  if (FindScheme(cmd.Scheme)->Curve)
-  {
-    scene->SetViewElevation(70.0); // curves are often drawn in a plane: look at it from above
-  }
   std::vector<vtkSmartPointer<vtkPolyData>> keep; // the compared results outlive their filters
   if (cmd.Compare.empty())
   {
@@ -56,20 +52,15 @@ bool RenderImage(const CommandLine& cmd, vtkPolyData* cage, vtkPolyData* result,
       scene->AddView(result, cage, TitleOf(name, cmd.Options.Levels).c_str());
       continue;
     }
-    vtkSmartPointer<vtkPolyDataAlgorithm> filter = FindScheme(name)->Make(cmd.Options);
     MessageCollector messages;
-    messages.Watch(filter);
-    filter->SetInputData(cage);
-    filter->Update();
+    vtkSmartPointer<vtkPolyData> copy = RunScheme(*FindScheme(name), cmd.Options, cage, messages);
     warnings += messages.Warnings;
-    if (!messages.Errors.empty() || filter->GetOutput()->GetNumberOfCells() == 0)
+    if (!copy)
     {
       error = "--compare: the " + name + " scheme failed: " +
         (messages.Errors.empty() ? std::string("no output") : messages.Errors);
       return false;
     }
-    auto copy = vtkSmartPointer<vtkPolyData>::New();
-    copy->ShallowCopy(filter->GetOutput());
     keep.push_back(copy);
     scene->AddView(copy, cage, TitleOf(name, cmd.Options.Levels).c_str());
   }

@@ -1,4 +1,7 @@
 #include "SubDSchemeRegistry.h"
+#include "SubDMessageCollector.h"
+
+#include "vtkPolyData.h"
 
 #include "vtkSubDButterflyFilter.h"
 #include "vtkSubDCatmullClarkFilter.h"
@@ -86,6 +89,22 @@ const std::vector<SchemeEntry>& Schemes()
       &MakeCurveFilter<vtkSubDCurveFilter::SCHEME_FOUR_POINT> },
   };
   return schemes;
+}
+
+vtkSmartPointer<vtkPolyData> RunScheme(
+  const SchemeEntry& entry, const SchemeOptions& options, vtkPolyData* input, MessageCollector& messages)
+{
+  vtkSmartPointer<vtkPolyDataAlgorithm> filter = entry.Make(options);
+  messages.Watch(filter);
+  filter->SetInputData(input);
+  filter->Update();
+  if (!messages.Errors.empty() || filter->GetOutput()->GetNumberOfCells() == 0)
+  {
+    return nullptr;
+  }
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(filter->GetOutput());
+  return result;
 }
 
 const SchemeEntry* FindScheme(const std::string& name)

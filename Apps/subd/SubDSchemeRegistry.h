@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+class vtkPolyData;
 class vtkPolyDataAlgorithm;
 
 namespace subdapp
@@ -36,7 +37,14 @@ struct SchemeEntry
   vtkSmartPointer<vtkPolyDataAlgorithm> (*Make)(const SchemeOptions&);
 };
 
+class MessageCollector;
+
 const std::vector<SchemeEntry>& Schemes();
+
+/// Runs `entry`'s filter on `input` with `options`, its messages going to `messages`. Returns
+/// a copy of the output, or nullptr when the filter reported an error or made nothing.
+vtkSmartPointer<vtkPolyData> RunScheme(
+  const SchemeEntry& entry, const SchemeOptions& options, vtkPolyData* input, MessageCollector& messages);
 const SchemeEntry* FindScheme(const std::string& name);
 }
 

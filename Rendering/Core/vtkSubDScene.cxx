@@ -366,7 +366,14 @@ bool vtkSubDScene::Render()
     double center[3];
     box.GetCenter(center);
     const double azimuth = vtkMath::RadiansFromDegrees(this->ViewAzimuth);
-    const double elevation = vtkMath::RadiansFromDegrees(this->ViewElevation);
+    // Curves are usually drawn in a plane: a scene of curves only is seen from higher up.
+    bool curvesOnly = true;
+    for (const View& view : views)
+    {
+      curvesOnly = curvesOnly && view.Surface->GetNumberOfPolys() == 0;
+    }
+    const double elevation =
+      vtkMath::RadiansFromDegrees(curvesOnly ? std::max(this->ViewElevation, 70.0) : this->ViewElevation);
     const double direction[3] = { std::cos(elevation) * std::sin(azimuth),
       -std::cos(elevation) * std::cos(azimuth), std::sin(elevation) };
     camera->SetViewAngle(30.0);

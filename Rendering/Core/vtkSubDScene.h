@@ -99,7 +99,7 @@ public:
   ///@{
   /**
    * Direction the camera looks from, in degrees around +z and above the xy plane (default
-   * 30 and 25).
+   * 30 and 25). A scene whose views are all curves is seen from at least 70 degrees up.
    */
   vtkSetClampMacro(ViewAzimuth, double, -360.0, 360.0);
   vtkGetMacro(ViewAzimuth, double);
