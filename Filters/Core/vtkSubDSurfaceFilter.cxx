@@ -111,6 +111,8 @@ public:
   std::vector<subd::Index> UnmatchedSegments; // crease segments that are not surface edges
   subd::Hierarchy Hierarchy;
   std::unique_ptr<subd::Scheme> Scheme; // the scheme the hierarchy was built with
+  // Schemes LimitEvaluator cannot evaluate: two tangent rows per finest point (normals only).
+  subd::StencilTable LimitTangents;
   int InputDepth = 0;        // the input's "SubDDepth" (0 without it)
   bool WritesDepth = false;  // the scheme depends on the depth: the output records it
   // Which finest faces and points are output. In the common case (no holes, no isolated
@@ -399,11 +401,17 @@ int vtkSubDSurfaceFilter::RequestData(
       cache.Hierarchy.Stencils.push_back(std::move(limit));
     }
     std::string evaluationError;
+    cache.LimitTangents = subd::StencilTable();
     if (limitGeometry && !subd::LimitEvaluator(*scheme, cache.Hierarchy.Finest).IsValid(evaluationError))
     {
-      vtkErrorMacro(<< (this->ComputeLimitNormals ? "ComputeLimitNormals" : "ComputeCurvature") << ": "
-                    << evaluationError << ".");
-      return fail();
+      // Without exact derivatives, normals can still come from tangent masks; curvature not.
+      if (this->ComputeCurvature ||
+        !scheme->BuildLimitTangentStencils(cache.Hierarchy.Finest, cache.LimitTangents, evaluationError))
+      {
+        vtkErrorMacro(<< (this->ComputeCurvature ? "ComputeCurvature" : "ComputeLimitNormals") << ": "
+                      << evaluationError << ".");
+        return fail();
+      }
     }
     ++this->NumberOfStencilBuilds;
 
@@ -489,6 +497,11 @@ int vtkSubDSurfaceFilter::RequestData(
       continue;
     }
     const int attribute = inPD->IsArrayAnAttribute(a);
+    if (this->ComputeLimitNormals &&
+      (attribute == vtkDataSetAttributes::NORMALS || (array->GetName() && std::string(array->GetName()) == "Normals")))
+    {
+      continue; // replaced by the limit normals
+    }
     vtkSmartPointer<vtkDataArray> out = interpolation.Interpolate(
       array, array->GetDataType(), attribute == vtkDataSetAttributes::NORMALS, evaluateProgress(a + 1));
     if (!out)
@@ -610,10 +623,15 @@ bool vtkSubDSurfaceFilter::AddLimitGeometry(const double* basePoints, vtkPointDa
   std::vector<double> control(static_cast<size_t>(hierarchy.GetNumFinestPoints()) * 3);
   hierarchy.Evaluate(basePoints, 3, control.data(), vtkSubDPointDataInterpolation::SMPFor, nullptr, levelTables);
 
-  const subd::LimitEvaluator evaluator(*cache.Scheme, finest);
-  const bool quads = std::string(cache.Scheme->GetName()) == "catmull-clark";
   const vtkIdType numOut =
     cache.CompactPoints ? static_cast<vtkIdType>(cache.FinestPointOfOutput.size()) : topo.GetNumVertices();
+  if (cache.LimitTangents.GetNumRows() > 0)
+  {
+    this->AddTangentMaskNormals(control, numOut, outPD);
+    return true;
+  }
+  const subd::LimitEvaluator evaluator(*cache.Scheme, finest);
+  const bool quads = std::string(cache.Scheme->GetName()) == "catmull-clark";
   vtkSubDLimitGeometry geometry(numOut, this->ComputeLimitNormals, this->ComputeCurvature, false);
   std::mutex errorMutex;
   std::string firstError;
@@ -676,6 +694,34 @@ bool vtkSubDSurfaceFilter::AddLimitGeometry(const double* basePoints, vtkPointDa
   }
   geometry.AddTo(outPD);
   return true;
+}
+
+void vtkSubDSurfaceFilter::AddTangentMaskNormals(
+  const std::vector<double>& control, vtkIdType numOut, vtkPointData* outPD)
+{
+  const vtkInternals& cache = *this->Internals;
+  vtkSubDLimitGeometry geometry(numOut, true, false, false);
+  vtkSMPTools::For(0, numOut, 1024, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType o = begin; o < end; ++o)
+    {
+      const subd::Index v = cache.CompactPoints ? cache.FinestPointOfOutput[o] : static_cast<subd::Index>(o);
+      double d[6][3] = {}; // PatchDerivative order: the tangents stand for Du and Dv
+      for (int t = 0; t < 2; ++t)
+      {
+        const subd::IndexSpan sources = cache.LimitTangents.GetSources(2 * v + t);
+        const double* weights = cache.LimitTangents.GetWeights(2 * v + t);
+        for (subd::Index k = 0; k < sources.size(); ++k)
+        {
+          for (int c = 0; c < 3; ++c)
+          {
+            d[1 + t][c] += weights[k] * control[3 * static_cast<size_t>(sources[k]) + c];
+          }
+        }
+      }
+      geometry.Set(o, d, d);
+    }
+  });
+  geometry.AddTo(outPD);
 }
 
 void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)

@@ -67,6 +67,8 @@
 #include "SubDFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <vector> // AddTangentMaskNormals
+
 namespace subd
 {
 class Scheme;
@@ -151,12 +153,18 @@ public:
   /**
    * Move the output points to the limit surface (default off): after the levels, each
    * vertex is replaced by the point of the limit surface it converges to, by the scheme's
-   * limit masks (SubDLimitRules.h: Catmull-Clark and Loop with their crease, corner and
-   * boundary rules, matching OpenSubdiv's PrimvarRefiner::Limit; the interpolating linear
-   * and butterfly schemes, whose vertices are on their limit already, are left as they
-   * are). Every point-data array is projected with the same masks. Doo-Sabin, midpoint and
-   * sqrt(3) report an error. Catmull-Clark needs quads: with polygons other than quads, ask
-   * for at least one level.
+   * limit masks. Every point-data array is projected with the same masks.
+   * - Catmull-Clark and Loop: with their crease, corner and boundary rules, matching
+   *   OpenSubdiv's PrimvarRefiner::Limit (SubDLimitRules.h). Catmull-Clark needs quads:
+   *   with polygons other than quads, ask for at least one level.
+   * - sqrt(3): Kobbelt's limit mask, the cubic B-spline's along boundaries and creases
+   *   (SubDSqrt3Limit.h).
+   * - Doo-Sabin and midpoint, which do not keep vertices: the centroid of the vertex's
+   *   V-face, a point of the limit surface; along creases and boundaries the point of the
+   *   crease's limit curve (SubDDualLimit.h).
+   * - Linear and butterfly interpolate: their vertices are on the limit already.
+   * Where a scheme has no closed form (darts of sqrt(3), Doo-Sabin and midpoint), the
+   * filter reports an error naming the vertex.
    */
   vtkSetMacro(ProjectToLimit, bool);
   vtkGetMacro(ProjectToLimit, bool);
@@ -167,12 +175,19 @@ public:
   /**
    * Add the exact normals of the limit surface as the point-data array "Normals" (default
    * off): at each output point, the normal of the limit surface at the point its vertex
-   * converges to (where ProjectToLimit puts it). Computed from the limit tangents (first
-   * derivatives of the regular B-spline or box-spline patches, and at extraordinary
-   * vertices, darts, creases and corners from the eigenvectors of the subdivision matrix;
-   * SubDLimitEvaluator.h), not by averaging face normals. On a crease or at a corner the
-   * surface has one normal per side: the point gets their normalized mean. Catmull-Clark and
-   * Loop only (others report an error).
+   * converges to (where ProjectToLimit puts it), from the limit tangents, not by averaging
+   * face normals.
+   * - Catmull-Clark and Loop: first derivatives of the regular B-spline or box-spline
+   *   patches, and at extraordinary vertices, darts, creases and corners the eigenvectors
+   *   of the subdivision matrix (SubDLimitEvaluator.h). On a crease or at a corner the
+   *   surface has one normal per side: the point gets their normalized mean.
+   * - sqrt(3), Doo-Sabin and midpoint at smooth vertices (no crease or boundary edge): the
+   *   Fourier tangent masks of the ring that one step maps onto itself (SubDRingTangents.h).
+   *   At other vertices these schemes have no published tangent masks: an error names the
+   *   vertex.
+   * - Linear and butterfly: not available (an error).
+   * The input's normals (its active normals, or an array named "Normals") are then not
+   * interpolated: the limit normals replace them.
    */
   vtkSetMacro(ComputeLimitNormals, bool);
   vtkGetMacro(ComputeLimitNormals, bool);
@@ -232,6 +247,8 @@ protected:
   /// Adds the limit normals and curvature arrays (ComputeLimitNormals, ComputeCurvature) of the
   /// output points; false (with an error message) if evaluation failed.
   bool AddLimitGeometry(const double* basePoints, vtkPointData* outPD);
+  /// The normals from the scheme's tangent masks (schemes LimitEvaluator does not handle).
+  void AddTangentMaskNormals(const std::vector<double>& control, vtkIdType numOut, vtkPointData* outPD);
 
   /// True for schemes defined on triangles only; polygons are then triangulated first (ear
   /// clipping, correct for concave polygons), with one warning, instead of being refused.

@@ -10,7 +10,7 @@ namespace subd
 {
 namespace
 {
-void AddCyclic(Index k, Index n, double w, CurveRows& rows)
+void AddCyclic(Index k, Index n, double w, StencilRows& rows)
 {
   rows.Add(((k % n) + n) % n, w);
 }
@@ -74,7 +74,7 @@ bool HalfEigenvector(const Eigen::MatrixXd& S, const Eigen::VectorXd& x, Eigen::
 // The child rows of an open polygon of `n` points as a dense matrix (children x n).
 Eigen::MatrixXd ChildMatrix(const CurveRules& rules, Index n)
 {
-  CurveRows rows;
+  StencilRows rows;
   AppendCurveChildRows(rules, n, false, rows);
   Eigen::MatrixXd S = Eigen::MatrixXd::Zero(rows.GetNumRows(), n);
   for (Index r = 0; r < rows.GetNumRows(); ++r)
@@ -102,7 +102,7 @@ struct FourPointTangents
     }
     // Interior: children -3 .. 3 of parents -3 .. 3, read from a long closed polygon.
     const Index n = 16, centre = 8;
-    CurveRows rows;
+    StencilRows rows;
     AppendCurveChildRows(rules, n, true, rows);
     Eigen::MatrixXd S = Eigen::MatrixXd::Zero(7, 7);
     for (Index c = -3; c <= 3; ++c)
@@ -144,7 +144,7 @@ struct FourPointTangents
 // matrix until the descendant of j is the end point of a long enough polygon or an interior
 // point, then apply the stationary mask there (scaled by 2^K for K levels).
 void FourPointNearEndTangent(
-  const CurveRules& rules, const FourPointTangents& masks, Index n, Index j, double sign, bool mirrored, CurveRows& rows)
+  const CurveRules& rules, const FourPointTangents& masks, Index n, Index j, double sign, bool mirrored, StencilRows& rows)
 {
   const Index m = std::min<Index>(n, 12);
   Eigen::MatrixXd R = Eigen::MatrixXd::Identity(m, m);
@@ -178,7 +178,7 @@ void FourPointNearEndTangent(
 }
 
 void AppendFourPointTangent(
-  const CurveRules& rules, const FourPointTangents& masks, Index n, bool closed, Index j, CurveRows& rows)
+  const CurveRules& rules, const FourPointTangents& masks, Index n, bool closed, Index j, StencilRows& rows)
 {
   if (!masks.Valid)
   {
@@ -215,7 +215,7 @@ void AppendFourPointTangent(
   }
 }
 
-void AppendTangent(const CurveRules& rules, const FourPointTangents* masks, Index n, bool closed, Index j, CurveRows& rows)
+void AppendTangent(const CurveRules& rules, const FourPointTangents* masks, Index n, bool closed, Index j, StencilRows& rows)
 {
   if (n < 2)
   {
@@ -247,7 +247,7 @@ void AppendTangent(const CurveRules& rules, const FourPointTangents* masks, Inde
 }
 }
 
-void AppendCurveLimitMask(const CurveRules& rules, Index n, bool closed, Index j, CurveRows& rows)
+void AppendCurveLimitMask(const CurveRules& rules, Index n, bool closed, Index j, StencilRows& rows)
 {
   closed = IsClosedPolygon(n, closed);
   const bool end = !closed && (j == 0 || j == n - 1);
@@ -273,7 +273,7 @@ void AppendCurveLimitMask(const CurveRules& rules, Index n, bool closed, Index j
   rows.EndRow();
 }
 
-void AppendCurveTangentMask(const CurveRules& rules, Index n, bool closed, Index j, CurveRows& rows)
+void AppendCurveTangentMask(const CurveRules& rules, Index n, bool closed, Index j, StencilRows& rows)
 {
   const FourPointTangents masks(rules);
   AppendTangent(rules, &masks, n, closed, j, rows);
@@ -284,7 +284,7 @@ StencilTable CurveLimitStencils(const CurveRules& rules, const CurvePieces& piec
 {
   // Anchors are end points: every scheme interpolates them. Interior points are numbered
   // piece after piece (SubDCurveRefiner.h), so their rows come in point order.
-  CurveRows rows, local;
+  StencilRows rows, local;
   for (Index a = 0; a < pieces.NumAnchors; ++a)
   {
     rows.Add(a, 1.0);
@@ -310,7 +310,7 @@ StencilTable CurveLimitStencils(const CurveRules& rules, const CurvePieces& piec
 StencilTable CurveTangentStencils(const CurveRules& rules, const CurvePieces& pieces, Index numPoints)
 {
   const FourPointTangents masks(rules);
-  CurveRows rows, local;
+  StencilRows rows, local;
   for (Index p = 0; p < pieces.GetNumPieces(); ++p)
   {
     const IndexSpan piece = pieces.GetPiece(p);

@@ -34,8 +34,8 @@ SUBDKERNEL_EXPORT StencilTable CurveTangentStencils(const CurveRules& rules, con
 
 /// The masks for point j of one polygon of n points, over local indices (for tests and the
 /// tables above).
-SUBDKERNEL_EXPORT void AppendCurveLimitMask(const CurveRules& rules, Index n, bool closed, Index j, CurveRows& rows);
-SUBDKERNEL_EXPORT void AppendCurveTangentMask(const CurveRules& rules, Index n, bool closed, Index j, CurveRows& rows);
+SUBDKERNEL_EXPORT void AppendCurveLimitMask(const CurveRules& rules, Index n, bool closed, Index j, StencilRows& rows);
+SUBDKERNEL_EXPORT void AppendCurveTangentMask(const CurveRules& rules, Index n, bool closed, Index j, StencilRows& rows);
 }
 
 #endif

@@ -81,7 +81,7 @@ Index InteriorCount(Index n, bool closed)
 void Gather(Index numBasePoints, const CurvePieces& base, StencilTable& table, CurvePieces& gathered)
 {
   std::vector<Index> anchorOf(static_cast<size_t>(numBasePoints), InvalidIndex);
-  CurveRows rows;
+  StencilRows rows;
   Index next = 0;
   auto anchor = [&](Index id) {
     if (anchorOf[id] == InvalidIndex)
@@ -130,7 +130,7 @@ void Gather(Index numBasePoints, const CurvePieces& base, StencilTable& table, C
 
 void RefineLevel(const CurveRules& rules, const CurvePieces& parent, StencilTable& table, CurvePieces& child)
 {
-  CurveRows rows;
+  StencilRows rows;
   for (Index a = 0; a < parent.NumAnchors; ++a)
   {
     rows.Add(a, 1.0);
@@ -139,7 +139,7 @@ void RefineLevel(const CurveRules& rules, const CurvePieces& parent, StencilTabl
   child = CurvePieces();
   child.NumAnchors = parent.NumAnchors;
   Index next = parent.NumAnchors;
-  CurveRows local;
+  StencilRows local;
   std::vector<Index> points;
   for (Index p = 0; p < parent.GetNumPieces(); ++p)
   {

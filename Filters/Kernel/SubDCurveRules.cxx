@@ -18,60 +18,6 @@ const char* ToString(CurveScheme scheme)
   return "Unknown";
 }
 
-void CurveRows::Clear()
-{
-  this->Offsets.assign(1, 0);
-  this->Sources.clear();
-  this->Weights.clear();
-}
-
-void CurveRows::Add(Index source, double w)
-{
-  for (size_t k = static_cast<size_t>(this->Offsets.back()); k < this->Sources.size(); ++k)
-  {
-    if (this->Sources[k] == source)
-    {
-      this->Weights[k] += w;
-      return;
-    }
-  }
-  this->Sources.push_back(source);
-  this->Weights.push_back(w);
-}
-
-void CurveRows::AppendRenumbered(const CurveRows& local, Index begin, Index end, const Index* ids)
-{
-  for (Index r = begin; r < end; ++r)
-  {
-    for (Index k = local.Offsets[r]; k < local.Offsets[r + 1]; ++k)
-    {
-      this->Add(ids[local.Sources[k]], local.Weights[k]);
-    }
-    this->EndRow();
-  }
-}
-
-StencilTable CurveRows::ToStencilTable(Index numParents) const
-{
-  StencilTable table(numParents);
-  const Index numRows = this->GetNumRows();
-  table.ReserveRows(numRows);
-  for (Index r = 0; r < numRows; ++r)
-  {
-    table.SetRowSize(r, this->Offsets[r + 1] - this->Offsets[r]);
-  }
-  table.FinalizeSizes();
-  for (Index r = 0; r < numRows; ++r)
-  {
-    std::copy(this->Sources.begin() + this->Offsets[r], this->Sources.begin() + this->Offsets[r + 1],
-      table.GetMutableSources(r));
-    std::copy(this->Weights.begin() + this->Offsets[r], this->Weights.begin() + this->Offsets[r + 1],
-      table.GetMutableWeights(r));
-  }
-  table.EndBlock(numRows);
-  return table;
-}
-
 Index CurveChildCount(const CurveRules& rules, Index n, bool closed)
 {
   if (n <= 1)
@@ -93,7 +39,7 @@ namespace
 {
 // Adds w * q, where q is point k of an open polygon of n points and k may be one step past
 // either end: a phantom point on the polynomial through the nearest min(n, 4) points.
-void AddOpenPoint(Index k, Index n, double w, CurveRows& rows)
+void AddOpenPoint(Index k, Index n, double w, StencilRows& rows)
 {
   // Extrapolation one step beyond the end by the polynomial through 2, 3 or 4 points.
   static const double extrapolation[3][4] = { { 2.0, -1.0, 0.0, 0.0 }, { 3.0, -3.0, 1.0, 0.0 },
@@ -111,7 +57,7 @@ void AddOpenPoint(Index k, Index n, double w, CurveRows& rows)
   }
 }
 
-void AddPoint(Index k, Index n, bool closed, double w, CurveRows& rows)
+void AddPoint(Index k, Index n, bool closed, double w, StencilRows& rows)
 {
   if (closed)
   {
@@ -123,7 +69,7 @@ void AddPoint(Index k, Index n, bool closed, double w, CurveRows& rows)
   }
 }
 
-void AppendChaikin(Index n, bool closed, CurveRows& rows)
+void AppendChaikin(Index n, bool closed, StencilRows& rows)
 {
   if (closed)
   {
@@ -164,7 +110,7 @@ void AppendChaikin(Index n, bool closed, CurveRows& rows)
   rows.EndRow();
 }
 
-void AppendCubicBSpline(Index n, bool closed, CurveRows& rows)
+void AppendCubicBSpline(Index n, bool closed, StencilRows& rows)
 {
   const Index edges = closed ? n : n - 1;
   for (Index i = 0; i < n; ++i)
@@ -189,7 +135,7 @@ void AppendCubicBSpline(Index n, bool closed, CurveRows& rows)
   }
 }
 
-void AppendFourPoint(Index n, bool closed, double w, CurveRows& rows)
+void AppendFourPoint(Index n, bool closed, double w, StencilRows& rows)
 {
   const Index edges = closed ? n : n - 1;
   for (Index i = 0; i < n; ++i)
@@ -208,7 +154,7 @@ void AppendFourPoint(Index n, bool closed, double w, CurveRows& rows)
 }
 }
 
-void AppendCurveChildRows(const CurveRules& rules, Index n, bool closed, CurveRows& rows)
+void AppendCurveChildRows(const CurveRules& rules, Index n, bool closed, StencilRows& rows)
 {
   if (n <= 0)
   {

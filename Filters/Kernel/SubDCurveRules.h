@@ -56,25 +56,6 @@ struct CurveRules
   double Tension = 1.0 / 16.0; ///< the 4-point scheme's w
 };
 
-/// Rows of weights over local point indices, in compressed form.
-struct SUBDKERNEL_EXPORT CurveRows
-{
-  std::vector<Index> Offsets{ 0 };
-  std::vector<Index> Sources;
-  std::vector<double> Weights;
-
-  Index GetNumRows() const { return static_cast<Index>(Offsets.size()) - 1; }
-  void Clear();
-  /// Adds w * p_source to the current row (merging a source already in it).
-  void Add(Index source, double w);
-  void EndRow() { Offsets.push_back(static_cast<Index>(Sources.size())); }
-  /// Appends rows [begin, end) of `local`, whose sources are indices into `ids`, as rows over
-  /// ids[source] (a polygon's local rows in a level's numbering).
-  void AppendRenumbered(const CurveRows& local, Index begin, Index end, const Index* ids);
-  /// The rows as one block of a stencil table over `numParents` points.
-  StencilTable ToStencilTable(Index numParents) const;
-};
-
 /// Whether a polygon of n points is refined as closed: closed polygons need three points.
 inline bool IsClosedPolygon(Index n, bool closed)
 {
@@ -85,7 +66,7 @@ inline bool IsClosedPolygon(Index n, bool closed)
 SUBDKERNEL_EXPORT Index CurveChildCount(const CurveRules& rules, Index n, bool closed);
 
 /// Appends one row per child point of a polygon of n points, in child order.
-SUBDKERNEL_EXPORT void AppendCurveChildRows(const CurveRules& rules, Index n, bool closed, CurveRows& rows);
+SUBDKERNEL_EXPORT void AppendCurveChildRows(const CurveRules& rules, Index n, bool closed, StencilRows& rows);
 }
 
 #endif

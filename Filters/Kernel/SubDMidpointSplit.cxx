@@ -2,11 +2,7 @@
 
 namespace subd
 {
-namespace
-{
-// A manifold vertex with faces that stays in place: on a boundary, on a crease (two or
-// more edges acting as boundaries) or sharp.
-bool KeepsVertex(const Level& level, Index v)
+bool MidpointKeepsVertex(const Level& level, Index v)
 {
   const MeshTopology& topo = level.Topology;
   const VertexTag tag = topo.GetVertexTag(v);
@@ -26,6 +22,8 @@ bool KeepsVertex(const Level& level, Index v)
   return creases >= 2;
 }
 
+namespace
+{
 void WriteStencils(const MeshTopology& topo, const std::vector<Index>& keptPoint, Index numChildPoints,
   StencilTable& table)
 {
@@ -193,7 +191,7 @@ LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
   Index numChildPoints = topo.GetNumEdges();
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
-    if (KeepsVertex(parent, v))
+    if (MidpointKeepsVertex(parent, v))
     {
       keptPoint[v] = numChildPoints++;
     }

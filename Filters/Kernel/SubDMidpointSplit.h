@@ -34,6 +34,10 @@
 
 namespace subd
 {
+/// True for a vertex the split keeps (a child point of its own): on a boundary, sharp, or
+/// with two or more crease edges; never a non-manifold or isolated one.
+SUBDKERNEL_EXPORT bool MidpointKeepsVertex(const Level& level, Index v);
+
 /// The split and its stencils together: both depend on which boundary vertices are kept.
 SUBDKERNEL_EXPORT LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth);
 }

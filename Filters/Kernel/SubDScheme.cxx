@@ -3,11 +3,13 @@
 #include "SubDCatmullClarkRules.h"
 #include "SubDButterflyRules.h"
 #include "SubDDooSabinRules.h"
+#include "SubDDualLimit.h"
 #include "SubDDualSplit.h"
 #include "SubDLinearRules.h"
 #include "SubDLoopRules.h"
 #include "SubDMidpointSplit.h"
 #include "SubDQuadSplit.h"
+#include "SubDSqrt3Limit.h"
 #include "SubDSqrt3Rules.h"
 #include "SubDTriangleSplit.h"
 
@@ -148,6 +150,42 @@ bool Scheme::BuildLimitStencils(const Level&, StencilTable&, std::string& error)
 {
   error = std::string("the ") + this->GetName() + " scheme has no limit masks yet";
   return false;
+}
+
+bool Scheme::BuildLimitTangentStencils(const Level&, StencilTable&, std::string& error) const
+{
+  error = std::string("the ") + this->GetName() + " scheme has no limit tangent masks";
+  return false;
+}
+
+bool DooSabinScheme::BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const
+{
+  return BuildDooSabinLimitStencils(level, false, stencils, error);
+}
+
+bool DooSabinScheme::BuildLimitTangentStencils(const Level& level, StencilTable& tangents, std::string& error) const
+{
+  return BuildDooSabinLimitStencils(level, true, tangents, error);
+}
+
+bool MidpointScheme::BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const
+{
+  return BuildMidpointLimitStencils(level, false, stencils, error);
+}
+
+bool MidpointScheme::BuildLimitTangentStencils(const Level& level, StencilTable& tangents, std::string& error) const
+{
+  return BuildMidpointLimitStencils(level, true, tangents, error);
+}
+
+bool Sqrt3Scheme::BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const
+{
+  return BuildSqrt3LimitStencils(level, false, stencils, error);
+}
+
+bool Sqrt3Scheme::BuildLimitTangentStencils(const Level& level, StencilTable& tangents, std::string& error) const
+{
+  return BuildSqrt3LimitStencils(level, true, tangents, error);
 }
 
 bool BilinearScheme::BuildLimitStencils(const Level& level, StencilTable& stencils, std::string&) const

@@ -50,6 +50,12 @@ public:
   /// vertex (SubDLimitRules.h). Returns false and says why in `error` when the scheme has
   /// no limit masks (yet) or the level does not suit them.
   virtual bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const;
+  /// Two rows per vertex of `level` (2v, 2v + 1) spanning the tangent plane of the limit
+  /// surface at the vertex's limit point, their cross product pointing to the side the
+  /// faces are counter-clockwise from. For the schemes whose limit LimitEvaluator cannot
+  /// evaluate (Catmull-Clark and Loop have exact derivatives there). Returns false and says
+  /// why when the scheme, or one vertex, has no tangent masks.
+  virtual bool BuildLimitTangentStencils(const Level& level, StencilTable& tangents, std::string& error) const;
   /// The rule to prepare the base level with for a requested one.
   BoundaryRule EffectiveBoundaryRule(BoundaryRule requested) const
   {
@@ -118,6 +124,9 @@ class SUBDKERNEL_EXPORT DooSabinScheme : public Scheme
 {
 public:
   const char* GetName() const override { return "doo-sabin"; }
+  /// SubDDualLimit.h.
+  bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
+  bool BuildLimitTangentStencils(const Level& level, StencilTable& tangents, std::string& error) const override;
   bool UsesBoundaryRule() const override { return false; }
   Level Split(const Level& parent, ChildTopology depth) const override;
   StencilTable BuildStencils(const Level& parent) const override;
@@ -166,6 +175,9 @@ class SUBDKERNEL_EXPORT Sqrt3Scheme : public JointRefinementScheme
 public:
   bool DependsOnDepth() const override { return true; }
   const char* GetName() const override { return "sqrt3"; }
+  /// SubDSqrt3Limit.h.
+  bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
+  bool BuildLimitTangentStencils(const Level& level, StencilTable& tangents, std::string& error) const override;
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
@@ -176,6 +188,9 @@ class SUBDKERNEL_EXPORT MidpointScheme : public JointRefinementScheme
 {
 public:
   const char* GetName() const override { return "midpoint"; }
+  /// SubDDualLimit.h.
+  bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
+  bool BuildLimitTangentStencils(const Level& level, StencilTable& tangents, std::string& error) const override;
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }

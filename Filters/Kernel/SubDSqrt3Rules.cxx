@@ -1,5 +1,6 @@
 #include "SubDSqrt3Rules.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace subd
@@ -10,25 +11,20 @@ double Sqrt3Alpha(Index n)
   return (4.0 - 2.0 * std::cos(2.0 * pi / n)) / 9.0;
 }
 
-namespace
-{
-// A boundary edge, or a crease between two triangles: refined by the boundary curve rule.
-bool IsCurveEdge(const Level& level, Index e)
+bool IsSqrt3CurveEdge(const Level& level, Index e)
 {
   const MeshTopology& topo = level.Topology;
   const Index faces = topo.GetEdgeFaces(e).size();
   return faces == 1 || (faces == 2 && !topo.GetEdgeTag(e).NonManifold && IsSharp(level.EdgeSharpness[e]));
 }
 
-// The other end of v's curve edge that does not lead to `other`, or v itself when v does
-// not have exactly two curve edges.
-Index CurveNeighbour(const Level& level, Index v, Index other)
+Index Sqrt3CurveNeighbour(const Level& level, Index v, Index other)
 {
   const MeshTopology& topo = level.Topology;
   Index found = v, count = 0;
   for (Index e : topo.GetVertexEdges(v))
   {
-    if (IsCurveEdge(level, e))
+    if (IsSqrt3CurveEdge(level, e))
     {
       ++count;
       const Index w = topo.GetOtherEndpoint(e, v);
@@ -41,6 +37,8 @@ Index CurveNeighbour(const Level& level, Index v, Index other)
   return count == 2 ? found : v;
 }
 
+namespace
+{
 // In even steps, the edge each triangle trisects (or InvalidIndex): every curve edge whose
 // triangles trisect nothing else yet, in edge order.
 std::vector<Index> ChooseTrisectedEdges(const Level& level, bool evenStep)
@@ -53,7 +51,7 @@ std::vector<Index> ChooseTrisectedEdges(const Level& level, bool evenStep)
   }
   for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
-    if (!IsCurveEdge(level, e))
+    if (!IsSqrt3CurveEdge(level, e))
     {
       continue;
     }
@@ -74,13 +72,7 @@ std::vector<Index> ChooseTrisectedEdges(const Level& level, bool evenStep)
   return trisected;
 }
 
-// The vertex rule of each vertex in this step.
-enum class Sqrt3VertexRule : std::uint8_t
-{
-  Relax, // Kobbelt's smoothing, interior smooth or dart vertices
-  Curve, // the boundary rule along the two curve edges (even steps)
-  Fixed  // stays in place
-};
+}
 
 Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep)
 {
@@ -94,7 +86,7 @@ Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep)
   Index curves = 0;
   for (Index e : topo.GetVertexEdges(v))
   {
-    curves += IsCurveEdge(level, e);
+    curves += IsSqrt3CurveEdge(level, e);
   }
   if (!tag.Boundary && curves < 2 && faces == topo.GetVertexEdges(v).size())
   {
@@ -103,6 +95,8 @@ Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep)
   return evenStep && curves == 2 ? Sqrt3VertexRule::Curve : Sqrt3VertexRule::Fixed;
 }
 
+namespace
+{
 // Sets the sharpness of the child pieces of each sharp edge (the unflipped edge, or the
 // three pieces of a trisected one) and of each vertex, one unit down.
 void InheritSqrt3Sharpness(const Level& parent, const std::vector<Index>& firstEdgePoint,
@@ -246,8 +240,8 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
     }
     else if (rules[v] == Sqrt3VertexRule::Curve)
     {
-      const Index p = CurveNeighbour(parent, v, InvalidIndex);
-      const Index q = CurveNeighbour(parent, v, p);
+      const Index p = Sqrt3CurveNeighbour(parent, v, InvalidIndex);
+      const Index q = Sqrt3CurveNeighbour(parent, v, p);
       setRow(row, { { p, 4.0 / 27.0 }, { v, 19.0 / 27.0 }, { q, 4.0 / 27.0 } });
     }
     else
@@ -262,7 +256,7 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
       continue;
     }
     const Index a = topo.GetEdgeVertices(e)[0], b = topo.GetEdgeVertices(e)[1];
-    const Index p = CurveNeighbour(parent, a, b), q = CurveNeighbour(parent, b, a);
+    const Index p = Sqrt3CurveNeighbour(parent, a, b), q = Sqrt3CurveNeighbour(parent, b, a);
     setRow(firstEdgePoint[e], { { p, 1.0 / 27.0 }, { a, 16.0 / 27.0 }, { b, 10.0 / 27.0 } });
     setRow(firstEdgePoint[e] + 1, { { a, 10.0 / 27.0 }, { b, 16.0 / 27.0 }, { q, 1.0 / 27.0 } });
   }
@@ -344,5 +338,11 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
     InheritSqrt3Sharpness(parent, firstEdgePoint, firstVertexPoint, child);
   }
   return result;
+}
+
+Index Sqrt3FirstVertexPoint(const Level& parent)
+{
+  const std::vector<Index> trisected = ChooseTrisectedEdges(parent, (parent.Depth % 2) == 1);
+  return static_cast<Index>(std::count(trisected.begin(), trisected.end(), InvalidIndex));
 }
 }

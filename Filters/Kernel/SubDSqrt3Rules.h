@@ -48,6 +48,25 @@ namespace subd
 /// Kobbelt's alpha_n.
 SUBDKERNEL_EXPORT double Sqrt3Alpha(Index n);
 
+/// A boundary edge, or a crease between two triangles: refined by the boundary curve rule.
+SUBDKERNEL_EXPORT bool IsSqrt3CurveEdge(const Level& level, Index e);
+
+/// The other end of v's curve edge that does not lead to `other`, or v itself when v does
+/// not have exactly two curve edges.
+SUBDKERNEL_EXPORT Index Sqrt3CurveNeighbour(const Level& level, Index v, Index other);
+
+/// The vertex rule of a vertex in one step.
+enum class Sqrt3VertexRule : std::uint8_t
+{
+  Relax, ///< Kobbelt's smoothing, interior smooth or dart vertices
+  Curve, ///< the boundary rule along the two curve edges (even steps)
+  Fixed  ///< stays in place
+};
+SUBDKERNEL_EXPORT Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep);
+
+/// The child point of the old vertex 0 in the step from `parent` (old vertex v: this + v).
+SUBDKERNEL_EXPORT Index Sqrt3FirstVertexPoint(const Level& parent);
+
 /// One step (split and stencils share the point numbering); every face of `parent` must be a
 /// triangle.
 SUBDKERNEL_EXPORT LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth);

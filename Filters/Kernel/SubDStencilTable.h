@@ -77,6 +77,29 @@ private:
   std::vector<Index> BlockEnds;
 };
 
+/// Rows under construction, in compressed form, each a sum of weighted sources merged as they
+/// come (masks composed from other masks: limit and tangent rows, curve levels).
+struct SUBDKERNEL_EXPORT StencilRows
+{
+  std::vector<Index> Offsets{ 0 };
+  std::vector<Index> Sources;
+  std::vector<double> Weights;
+
+  Index GetNumRows() const { return static_cast<Index>(Offsets.size()) - 1; }
+  void Clear();
+  /// Adds w * p_source to the current row (merging a source already in it).
+  void Add(Index source, double w);
+  void EndRow() { Offsets.push_back(static_cast<Index>(Sources.size())); }
+  /// Appends rows [begin, end) of `local`, whose sources are indices into `ids`, as rows over
+  /// ids[source] (a polygon's local rows in a level's numbering).
+  void AppendRenumbered(const StencilRows& local, Index begin, Index end, const Index* ids);
+  /// Adds scale * (row `row` of `table`) to the current row, with the table's references to
+  /// its own earlier rows expanded, so that the sources are the table's parents.
+  void AddRow(const StencilTable& table, Index row, double scale);
+  /// The rows as one block of a stencil table over `numParents` points.
+  StencilTable ToStencilTable(Index numParents) const;
+};
+
 template <typename T>
 void StencilTable::ApplyRows(
   const T* parents, T* children, int components, Index begin, Index end) const

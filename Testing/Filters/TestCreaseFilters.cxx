@@ -700,12 +700,13 @@ TEST(Limit, ErrorsAreClear)
     filter->Update();
     EXPECT_GT(filter->GetOutput()->GetNumberOfPolys(), 0);
   }
-  vtkNew<vtkSubDDooSabinFilter> filter;
+  vtkNew<vtkSubDButterflyFilter> filter;
   Messages messages;
   messages.Watch(filter);
-  filter->SetInputData(ToPolyData(pyramid));
-  filter->ProjectToLimitOn();
+  filter->SetInputData(ToPolyData(pyramid.Triangulated()));
+  filter->ComputeLimitNormalsOn();
   filter->Update();
-  EXPECT_NE(messages.Errors.find("no limit masks"), std::string::npos) << messages.Errors;
+  EXPECT_NE(messages.Errors.find("no limit tangent masks"), std::string::npos) << messages.Errors;
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
 }
 }

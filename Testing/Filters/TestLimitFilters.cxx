@@ -6,9 +6,12 @@
 #include "SubDFilterTestSupport.h"
 #include "vtkSubDButterflyFilter.h"
 #include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDDooSabinFilter.h"
 #include "vtkSubDLimitFilter.h"
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
+#include "vtkSubDMidpointFilter.h"
+#include "vtkSubDSqrt3Filter.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -257,23 +260,41 @@ TEST(LimitFilter, CurvatureNearExtraordinaryVerticesConverges)
   }
 }
 
+template <typename T>
+vtkSmartPointer<vtkSubDSurfaceFilter> NewSurfaceFilter()
+{
+  return vtkSmartPointer<T>::New();
+}
+
+// Every scheme with tangent masks: exact normals are unit length, and the normals of the
+// refined mesh (averaged face normals at the projected points) approach them level by level:
+// everywhere, and at the worst point for the schemes whose curvature stays bounded near
+// extraordinary points. The midpoint scheme is only C1 there and its worst point, next to an
+// extraordinary face, converges too slowly to show it.
 TEST(LimitNormals, UnitAndConvergingToTheRefinedMeshNormals)
 {
   struct Case
   {
     subdtest::TestMesh Mesh;
-    bool Loop;
+    vtkSmartPointer<vtkSubDSurfaceFilter> (*Make)();
+    int MaxLevels;
+    bool WorstPointConverges;
   };
-  for (const Case& c : { Case{ subdtest::Star(5).Jitter(0.1), false }, Case{ subdtest::Bipyramid(7).Jitter(0.1), true } })
+  const Case cases[] = {
+    { subdtest::Star(5).Jitter(0.1), &NewSurfaceFilter<vtkSubDCatmullClarkFilter>, 5, true },
+    { subdtest::Bipyramid(7).Jitter(0.1), &NewSurfaceFilter<vtkSubDLoopFilter>, 5, true },
+    { subdtest::Bipyramid(7).Jitter(0.1), &NewSurfaceFilter<vtkSubDSqrt3Filter>, 6, true },
+    { subdtest::Star(5).Jitter(0.1), &NewSurfaceFilter<vtkSubDDooSabinFilter>, 5, true },
+    { subdtest::Star(5).Jitter(0.1), &NewSurfaceFilter<vtkSubDMidpointFilter>, 7, false },
+  };
+  for (const Case& c : cases)
   {
-    double previous = 1e300;
-    for (int levels = 2; levels <= 5; ++levels)
+    double previousWorst = 1e300, previousMean = 1e300;
+    std::string name;
+    for (int levels = 2; levels <= c.MaxLevels; ++levels)
     {
-      vtkSmartPointer<vtkSubDSurfaceFilter> filter;
-      if (c.Loop)
-        filter = vtkSmartPointer<vtkSubDLoopFilter>::New();
-      else
-        filter = vtkSmartPointer<vtkSubDCatmullClarkFilter>::New();
+      vtkSmartPointer<vtkSubDSurfaceFilter> filter = c.Make();
+      name = std::string(filter->GetClassName()) + " on " + c.Mesh.Name;
       filter->SetInputData(ToPolyData(c.Mesh));
       filter->SetNumberOfSubdivisions(levels);
       filter->ProjectToLimitOn();
@@ -281,7 +302,7 @@ TEST(LimitNormals, UnitAndConvergingToTheRefinedMeshNormals)
       filter->Update();
       vtkPolyData* out = filter->GetOutput();
       vtkDataArray* exact = out->GetPointData()->GetNormals();
-      ASSERT_NE(exact, nullptr);
+      ASSERT_NE(exact, nullptr) << name;
       vtkNew<vtkPolyData> plain;
       plain->SetPoints(out->GetPoints());
       plain->SetPolys(out->GetPolys());
@@ -291,19 +312,30 @@ TEST(LimitNormals, UnitAndConvergingToTheRefinedMeshNormals)
       meshNormals->ConsistencyOff();
       meshNormals->Update();
       vtkDataArray* averaged = meshNormals->GetOutput()->GetPointData()->GetNormals();
-      double worst = 0.0;
+      double worst = 0.0, mean = 0.0;
       for (vtkIdType i = 0; i < exact->GetNumberOfTuples(); ++i)
       {
         const double* n = exact->GetTuple3(i);
-        EXPECT_NEAR(Norm(n), 1.0, 1e-6);
+        EXPECT_NEAR(Norm(n), 1.0, 1e-6) << name;
         double a[3];
         averaged->GetTuple(i, a);
-        worst = std::max(worst, std::acos(std::min(1.0, (n[0] * a[0] + n[1] * a[1] + n[2] * a[2]) / Norm(a))));
+        const double angle = std::acos(std::min(1.0, (n[0] * a[0] + n[1] * a[1] + n[2] * a[2]) / Norm(a)));
+        worst = std::max(worst, angle);
+        mean += angle / exact->GetNumberOfTuples();
       }
-      EXPECT_LT(worst, previous) << c.Mesh.Name << " level " << levels;
-      previous = worst;
+      EXPECT_LT(mean, previousMean) << name << " level " << levels;
+      if (c.WorstPointConverges)
+      {
+        EXPECT_LT(worst, previousWorst) << name << " level " << levels;
+      }
+      previousWorst = worst;
+      previousMean = mean;
     }
-    EXPECT_LT(previous, 0.02) << c.Mesh.Name;
+    EXPECT_LT(previousMean, 0.01) << name;
+    if (c.WorstPointConverges)
+    {
+      EXPECT_LT(previousWorst, 0.05) << name;
+    }
   }
 }
 

@@ -378,7 +378,7 @@ TEST(CurveRules, RowsSumToOneAndCountsMatch)
     for (bool closed : { false, true })
       for (Index n = 1; n <= 9; ++n)
       {
-        subd::CurveRows rows;
+        subd::StencilRows rows;
         subd::AppendCurveChildRows(Rules(scheme), n, closed, rows);
         ASSERT_EQ(rows.GetNumRows(), subd::CurveChildCount(Rules(scheme), n, closed));
         for (Index r = 0; r < rows.GetNumRows(); ++r)
