@@ -11,18 +11,12 @@ namespace
 {
 Index CountCreaseEdges(const Level& level, Index v)
 {
-  Index count = 0;
-  for (Index e : level.Topology.GetVertexEdges(v))
-  {
-    count += ActsAsBoundary(level, e);
-  }
-  return count;
+  return CountVertexEdges(level, v, ActsAsBoundary);
 }
 
 bool Fail(const Level& level, Index v, const char* scheme, bool tangents, std::string& error)
 {
-  error = "vertex " + std::to_string(v) + " (" + DescribeLimitlessVertex(level, v) + ") has no closed-form " +
-    scheme + (tangents ? " limit tangent plane" : " limit point");
+  error = NoClosedFormLimit(level, v, scheme, tangents);
   return false;
 }
 
@@ -46,7 +40,13 @@ void AddIdentity(Index v, bool tangents, StencilRows& rows)
 }
 }
 
-std::string DescribeLimitlessVertex(const Level& level, Index v)
+std::string NoClosedFormLimit(const Level& level, Index v, const char* scheme, bool tangents)
+{
+  return "vertex " + std::to_string(v) + " (" + DescribeVertexForLimit(level, v) + ") has no closed-form " + scheme +
+    (tangents ? " limit tangent plane" : " limit point");
+}
+
+std::string DescribeVertexForLimit(const Level& level, Index v)
 {
   const MeshTopology& topo = level.Topology;
   if (topo.GetVertexTag(v).NonManifold)

@@ -43,9 +43,11 @@ SUBDKERNEL_EXPORT bool BuildDooSabinLimitStencils(
 SUBDKERNEL_EXPORT bool BuildMidpointLimitStencils(
   const Level& level, bool tangents, StencilTable& stencils, std::string& error);
 
-/// The words naming why a vertex has no closed-form limit point or tangent plane in a
-/// scheme that treats creases as boundaries, for error messages ("a dart", ...).
-SUBDKERNEL_EXPORT std::string DescribeLimitlessVertex(const Level& level, Index v);
+/// What kind of vertex v is, in the words of limit errors ("a dart: ...", "on the boundary"),
+/// for the schemes that treat creases as boundaries.
+SUBDKERNEL_EXPORT std::string DescribeVertexForLimit(const Level& level, Index v);
+/// The error for a vertex of `scheme` without a closed-form limit point (or tangent plane).
+SUBDKERNEL_EXPORT std::string NoClosedFormLimit(const Level& level, Index v, const char* scheme, bool tangents);
 }
 
 #endif

@@ -30,6 +30,18 @@ struct SUBDKERNEL_EXPORT Level
 /// non-manifold.
 SUBDKERNEL_EXPORT bool ActsAsBoundary(const Level& level, Index e);
 
+/// The number of edges at vertex v for which isCounted(level, e) holds.
+template <typename Predicate>
+Index CountVertexEdges(const Level& level, Index v, Predicate&& isCounted)
+{
+  Index count = 0;
+  for (Index e : level.Topology.GetVertexEdges(v))
+  {
+    count += isCounted(level, e) ? 1 : 0;
+  }
+  return count;
+}
+
 /// Sharpness of the half of edge e that ends at its end vertex `end` (0 or 1), one level
 /// down, by the level's crease method (SubdivideEdgeSharpnessAtVertex).
 SUBDKERNEL_EXPORT float ChildEdgeSharpness(const Level& level, Index e, int end);

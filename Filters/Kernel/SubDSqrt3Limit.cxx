@@ -1,6 +1,6 @@
 #include "SubDSqrt3Limit.h"
 
-#include "SubDDualLimit.h" // DescribeLimitlessVertex
+#include "SubDDualLimit.h" // NoClosedFormLimit
 #include "SubDRingTangents.h"
 #include "SubDSqrt3Rules.h"
 
@@ -8,15 +8,6 @@ namespace subd
 {
 namespace
 {
-Index CountCurveEdges(const Level& level, Index v)
-{
-  Index count = 0;
-  for (Index e : level.Topology.GetVertexEdges(v))
-  {
-    count += IsSqrt3CurveEdge(level, e);
-  }
-  return count;
-}
 
 // Whether one of v's triangles has a curve edge (an even step could trisect it).
 bool TouchesCurveEdge(const Level& level, Index v)
@@ -37,7 +28,7 @@ bool TouchesCurveEdge(const Level& level, Index v)
 
 bool IsSmoothVertex(const Level& level, Index v)
 {
-  return ClassifySqrt3Vertex(level, v, true) == Sqrt3VertexRule::Relax && CountCurveEdges(level, v) == 0;
+  return ClassifySqrt3Vertex(level, v, true) == Sqrt3VertexRule::Relax && CountVertexEdges(level, v, IsSqrt3CurveEdge) == 0;
 }
 
 // The masks at the level itself; valid when the next step is odd or no smooth vertex
@@ -70,8 +61,7 @@ bool BuildDirectly(const Level& level, bool tangents, StencilRows& rows, std::st
     const bool noSurface = topo.GetVertexFaces(v).empty();
     if (tangents && !noSurface)
     {
-      error = "vertex " + std::to_string(v) + " (" + DescribeLimitlessVertex(level, v) +
-        ") has no closed-form sqrt(3) limit tangent plane";
+      error = NoClosedFormLimit(level, v, "sqrt(3)", true);
       return false;
     }
     if (rule == Sqrt3VertexRule::Curve)
@@ -92,8 +82,7 @@ bool BuildDirectly(const Level& level, bool tangents, StencilRows& rows, std::st
     }
     else
     {
-      error = "vertex " + std::to_string(v) + " (" + DescribeLimitlessVertex(level, v) +
-        ") has no closed-form sqrt(3) limit point";
+      error = NoClosedFormLimit(level, v, "sqrt(3)", false);
       return false;
     }
     rows.EndRow();
@@ -128,8 +117,7 @@ bool BuildSqrt3LimitStencils(const Level& level, bool tangents, StencilTable& st
     const bool dart = ClassifySqrt3Vertex(level, v, true) == Sqrt3VertexRule::Relax && !smooth;
     if (dart || (tangents && !smooth && !topo.GetVertexFaces(v).empty()))
     {
-      error = "vertex " + std::to_string(v) + " (" + DescribeLimitlessVertex(level, v) + ") has no closed-form " +
-        "sqrt(3) limit " + (tangents ? "tangent plane" : "point");
+      error = NoClosedFormLimit(level, v, "sqrt(3)", tangents);
       return false;
     }
   }

@@ -21,6 +21,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 
 using subd::Index;
 
@@ -92,6 +93,32 @@ void PolygonNormal(const std::vector<const double*>& corners, double* n)
   }
 }
 
+// Follows every vertex of `mesh` down `steps` sqrt(3) steps (an old vertex v is child
+// Sqrt3FirstVertexPoint + v) and returns, per step, the worst of measure(stage, vertex,
+// its descendant) over the vertices.
+std::vector<double> FollowSqrt3Vertices(const subdtest::TestMesh& mesh, int steps,
+  const std::function<double(const Stage&, Index, Index)>& measure)
+{
+  const subd::Sqrt3Scheme scheme;
+  Stage stage = Start(mesh);
+  std::vector<Index> descendant(static_cast<size_t>(mesh.NumVertices()));
+  for (Index v = 0; v < mesh.NumVertices(); ++v)
+    descendant[v] = v;
+  std::vector<double> worst;
+  for (int step = 1; step <= steps; ++step)
+  {
+    const Index first = subd::Sqrt3FirstVertexPoint(stage.Level);
+    stage = Step(scheme, stage);
+    worst.push_back(0.0);
+    for (Index v = 0; v < mesh.NumVertices(); ++v)
+    {
+      descendant[v] += first;
+      worst.back() = std::max(worst.back(), measure(stage, v, descendant[v]));
+    }
+  }
+  return worst;
+}
+
 bool IsManifold(const subdtest::TestMesh& mesh)
 {
   return mesh.Name.find("non-manifold") == std::string::npos && mesh.Name.find("pinched") == std::string::npos;
@@ -127,31 +154,16 @@ TEST(Sqrt3LimitMasks, TheLimitOfAVertexIsTheLimitOfItsChild)
 
 TEST(Sqrt3LimitMasks, VerticesApproachTheirLimitPoints)
 {
-  const subd::Sqrt3Scheme scheme;
   for (const subdtest::TestMesh& mesh : { subdtest::Bipyramid(3).Jitter(0.1), subdtest::Bipyramid(8).Jitter(0.1),
          subdtest::Grid(3, 2, false, false).Triangulated().Jitter(0.1) })
   {
-    Stage stage = Start(mesh);
     subd::StencilTable masks;
     std::string error;
-    ASSERT_TRUE(subd::BuildSqrt3LimitStencils(stage.Level, false, masks, error)) << error;
-    const std::vector<double> limit = ApplyTable(masks, stage.Points);
-    std::vector<Index> descendant(static_cast<size_t>(mesh.NumVertices()));
-    for (Index v = 0; v < mesh.NumVertices(); ++v)
-      descendant[v] = v;
-    std::vector<double> errors;
-    for (int step = 1; step <= 6; ++step)
-    {
-      const Index first = subd::Sqrt3FirstVertexPoint(stage.Level);
-      stage = Step(scheme, stage);
-      double worst = 0.0;
-      for (Index v = 0; v < mesh.NumVertices(); ++v)
-      {
-        descendant[v] += first;
-        worst = std::max(worst, Distance(&limit[3 * v], &stage.Points[3 * descendant[v]]));
-      }
-      errors.push_back(worst);
-    }
+    ASSERT_TRUE(subd::BuildSqrt3LimitStencils(Start(mesh).Level, false, masks, error)) << error;
+    const std::vector<double> limit = ApplyTable(masks, mesh.Points);
+    const std::vector<double> errors = FollowSqrt3Vertices(mesh, 6, [&](const Stage& stage, Index v, Index d) {
+      return Distance(&limit[3 * v], &stage.Points[3 * d]);
+    });
     // Boundaries are refined every second step: compare steps two apart.
     for (size_t k = 2; k < errors.size(); ++k)
     {
@@ -164,38 +176,23 @@ TEST(Sqrt3LimitMasks, VerticesApproachTheirLimitPoints)
 // The plane of a vertex's ring of triangles many steps down approaches the mask's plane.
 TEST(Sqrt3LimitMasks, TangentPlanesAreThoseOfTheRefinedRings)
 {
-  const subd::Sqrt3Scheme scheme;
   for (const subdtest::TestMesh& mesh : { subdtest::Bipyramid(3).Jitter(0.1), subdtest::Bipyramid(8).Jitter(0.1),
          subdtest::Star(5).Triangulated().Jitter(0.1) })
   {
-    Stage stage = Start(mesh);
     subd::StencilTable tangents;
     std::string error;
-    ASSERT_TRUE(subd::BuildSqrt3LimitStencils(stage.Level, true, tangents, error)) << error;
-    const std::vector<double> t = ApplyTable(tangents, stage.Points);
-    std::vector<Index> descendant(static_cast<size_t>(mesh.NumVertices()));
-    for (Index v = 0; v < mesh.NumVertices(); ++v)
-      descendant[v] = v;
-    std::vector<double> errors;
-    for (int step = 1; step <= 6; ++step)
-    {
-      const Index first = subd::Sqrt3FirstVertexPoint(stage.Level);
-      stage = Step(scheme, stage);
-      double worst = 0.0;
-      for (Index v = 0; v < mesh.NumVertices(); ++v)
-      {
-        descendant[v] += first;
-        std::vector<Index> faces, corners, ring;
-        ASSERT_TRUE(subd::GetOrderedRing(stage.Level.Topology, descendant[v], faces, corners, ring));
-        std::vector<const double*> polygon;
-        for (Index p : ring)
-          polygon.push_back(&stage.Points[3 * p]);
-        double n[3];
-        PolygonNormal(polygon, n);
-        worst = std::max(worst, AngleTo(&t[6 * v], n));
-      }
-      errors.push_back(worst);
-    }
+    ASSERT_TRUE(subd::BuildSqrt3LimitStencils(Start(mesh).Level, true, tangents, error)) << error;
+    const std::vector<double> t = ApplyTable(tangents, mesh.Points);
+    const std::vector<double> errors = FollowSqrt3Vertices(mesh, 6, [&](const Stage& stage, Index v, Index d) {
+      std::vector<Index> faces, corners, ring;
+      EXPECT_TRUE(subd::GetOrderedRing(stage.Level.Topology, d, faces, corners, ring));
+      std::vector<const double*> polygon;
+      for (Index p : ring)
+        polygon.push_back(&stage.Points[3 * p]);
+      double n[3];
+      PolygonNormal(polygon, n);
+      return AngleTo(&t[6 * v], n);
+    });
     EXPECT_LT(errors.back(), 0.3 * errors[1] + 1e-7) << mesh.Name; // valence 3: exact at once
     EXPECT_LT(errors.back(), 0.02) << mesh.Name;
   }
