@@ -5,6 +5,7 @@
 #include "QVTKOpenGLNativeWidget.h"
 
 #include <QApplication>
+#include <QElapsedTimer>
 #include <QSurfaceFormat>
 #include <QTimer>
 
@@ -59,6 +60,21 @@ int main(int argc, char* argv[])
   int status = 0;
   QTimer::singleShot(0, &window, [&]() {
     window.UpdateViews();
+    QElapsedTimer clock;
+    clock.start();
+    if (options.CancelAfter >= 0)
+    {
+      QTimer::singleShot(options.CancelAfter, &window, [&]() {
+        std::cout << "subd-explorer: cancel pressed after " << clock.elapsed() << " ms" << std::endl;
+        window.CancelUpdate();
+      });
+    }
+    window.WaitForUpdate();
+    if (options.CancelAfter >= 0)
+    {
+      std::cout << "subd-explorer: update " << (window.WasLastUpdateCancelled() ? "cancelled" : "completed")
+                << ", worker done after " << clock.elapsed() << " ms" << std::endl;
+    }
     QString message;
     if (!options.Screenshot.empty() && !window.SaveViewsImage(QString::fromStdString(options.Screenshot), message))
     {

@@ -16,11 +16,14 @@ std::string ExplorerUsage()
   std::ostringstream out;
   out << "usage: subd-explorer [FILE] [--builtin NAME] [--views 1|2|4] [--schemes S1,S2,...]\n"
          "                     [--levels N] [--color none|mean|gaussian] [--no-cage] [--limit]\n"
-         "                     [--size WxH] [--screenshot VIEWS.png] [--window-shot WINDOW.png] [--quit]\n"
+         "                     [--size WxH] [--screenshot VIEWS.png] [--window-shot WINDOW.png]\n"
+         "                     [--cancel-after MS] [--quit]\n"
          "\n"
          "Compares subdivision schemes side by side on a mesh (.vtp .vtk .obj .ply .stl .off)\n"
          "or a built-in cage. --screenshot/--window-shot save pictures once the views are up to\n"
-         "date; with --quit the app then exits (scripted use, e.g. under xvfb-run).\n";
+         "date; with --quit the app then exits (scripted use, e.g. under xvfb-run).\n"
+         "--cancel-after MS presses Cancel MS milliseconds into the first update (as the\n"
+         "Cancel button does) and reports whether the update stopped.\n";
   return out.str();
 }
 
@@ -93,6 +96,21 @@ bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std:
         return false;
       }
       options.Levels = static_cast<int>(levels);
+    }
+    else if (arg == "--cancel-after")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      char* end = nullptr;
+      const long ms = std::strtol(text.c_str(), &end, 10);
+      if (text.empty() || *end != '\0' || ms < 0 || ms > 600000)
+      {
+        error = "--cancel-after wants milliseconds in 0..600000, not '" + text + "'";
+        return false;
+      }
+      options.CancelAfter = static_cast<int>(ms);
     }
     else if (arg == "--color")
     {

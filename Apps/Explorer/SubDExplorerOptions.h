@@ -20,6 +20,7 @@ struct ExplorerOptions
   std::string Screenshot; ///< PNG of the views, written once the views are up to date
   std::string WindowShot; ///< PNG of the whole window (controls included)
   bool Quit = false;      ///< quit after the screenshots
+  int CancelAfter = -1;   ///< >= 0: cancel the first update after this many milliseconds
   int Width = 1100, Height = 750;
   bool Help = false;
 };

@@ -3,7 +3,6 @@
 #include "SubDBuiltinCages.h"
 #include "SubDMeshIO.h"
 #include "SubDMeshStatistics.h"
-#include "SubDMessageCollector.h"
 #include "SubDSchemeRegistry.h"
 
 #include "QVTKOpenGLNativeWidget.h"
@@ -21,7 +20,6 @@
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QDoubleSpinBox>
-#include <QElapsedTimer>
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
@@ -30,6 +28,10 @@
 #include <QLabel>
 #include <QMenuBar>
 #include <QMimeData>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QShortcut>
+#include <QTimer>
 #include <QMessageBox>
 #include <QSettings>
 #include <QSlider>
@@ -64,11 +66,29 @@ ExplorerWindow::ExplorerWindow(QWidget* parent)
   dock->setWidget(this->BuildControls());
   this->addDockWidget(Qt::RightDockWidgetArea, dock);
   this->BuildMenus();
+  this->ProgressBar = new QProgressBar;
+  this->ProgressBar->setRange(0, 1000);
+  this->ProgressBar->setTextVisible(false);
+  this->ProgressBar->setMaximumWidth(200);
+  this->ProgressBar->setVisible(false);
+  this->CancelButton = new QPushButton("Cancel");
+  this->CancelButton->setToolTip("Stop the running subdivision (Esc); the views keep their previous result");
+  this->CancelButton->setVisible(false);
+  connect(this->CancelButton, &QPushButton::clicked, this, &ExplorerWindow::CancelUpdate);
+  auto* cancelShortcut = new QShortcut(QKeySequence(Qt::Key_Escape), this);
+  connect(cancelShortcut, &QShortcut::activated, this, &ExplorerWindow::CancelUpdate);
+  this->statusBar()->addPermanentWidget(this->ProgressBar);
+  this->statusBar()->addPermanentWidget(this->CancelButton);
+  this->ProgressTimer = new QTimer(this);
+  connect(this->ProgressTimer, &QTimer::timeout, this, &ExplorerWindow::ShowProgress);
   this->statusBar()->showMessage("Drag to rotate, right-drag or wheel to zoom, middle-drag to pan; R resets the camera.");
   this->LoadBuiltin("cube");
 }
 
-ExplorerWindow::~ExplorerWindow() = default;
+ExplorerWindow::~ExplorerWindow()
+{
+  this->Job.reset(); // cancels and joins the worker before the widgets go
+}
 
 QWidget* ExplorerWindow::BuildControls()
 {
@@ -84,7 +104,7 @@ QWidget* ExplorerWindow::BuildControls()
   this->Layout->addItems({ "1 view", "2 views", "4 views" });
   form->addRow("Layout", this->Layout);
   this->LevelSlider = new QSlider(Qt::Horizontal);
-  this->LevelSlider->setRange(0, 6);
+  this->LevelSlider->setRange(0, 8);
   this->LevelSlider->setValue(2);
   this->LevelSlider->setTickPosition(QSlider::TicksBelow);
   this->LevelLabel = new QLabel("2");
@@ -323,11 +343,10 @@ void ExplorerWindow::SetLimit(bool limit)
   }
 }
 
-bool ExplorerWindow::Subdivide(int v)
+subdapp::SchemeOptions ExplorerWindow::ViewOptions(int v) const
 {
-  ViewControls& view = this->Views[v];
-  const std::string scheme = view.Scheme->currentText().toStdString();
-  const subdapp::SchemeEntry* entry = subdapp::FindScheme(scheme);
+  const ViewControls& view = this->Views[v];
+  const subdapp::SchemeEntry* entry = subdapp::FindScheme(view.Scheme->currentText().toStdString());
   subdapp::SchemeOptions options;
   options.Levels = this->LevelSlider->value();
   options.BoundaryRule = view.Boundary->currentIndex();
@@ -336,30 +355,32 @@ bool ExplorerWindow::Subdivide(int v)
   options.ProjectToLimit = this->Limit->isChecked() && entry->LimitPositions;
   options.LimitCurvature = options.ProjectToLimit && entry->LimitCurvature &&
     this->Scene->GetColoring() != vtkSubDScene::COLOR_NONE;
-  subdapp::MessageCollector messages; // also keeps the messages off the console
-  QElapsedTimer timer;
-  timer.start();
-  view.Result = subdapp::RunScheme(*entry, options, this->Cage, messages);
-  const double milliseconds = timer.nsecsElapsed() * 1e-6;
-  view.Statistics->setToolTip(QString::fromStdString(messages.Warnings).trimmed());
+  return options;
+}
+
+void ExplorerWindow::ApplyResult(int v, const UpdateJob::ViewResult& result)
+{
+  ViewControls& view = this->Views[v];
+  const subdapp::SchemeEntry* entry = subdapp::FindScheme(view.Scheme->currentText().toStdString());
+  view.Result = result.Surface;
+  view.Statistics->setToolTip(QString::fromStdString(result.Warnings).trimmed());
   if (!view.Result)
   {
     view.Statistics->setText(QString("<span style='color:#c0392b'>%1</span>")
-                               .arg(QString::fromStdString(messages.Errors.empty() ? "no output" : messages.Errors)
+                               .arg(QString::fromStdString(result.Errors.empty() ? "no output" : result.Errors)
                                       .toHtmlEscaped()));
-    return false;
+    return;
   }
   const MeshStatistics stats = ComputeMeshStatistics(view.Result);
   QString text = entry->Curve
     ? QString("%1 points on %2 curves").arg(stats.Vertices).arg(stats.Lines)
     : QString("V %1 · E %2 · F %3 · extraordinary %4").arg(stats.Vertices).arg(stats.Edges).arg(stats.Faces).arg(stats.Extraordinary);
-  text += QString(" · %1 ms").arg(milliseconds, 0, 'f', 1);
-  if (!messages.Warnings.empty())
+  text += QString(" · %1 ms").arg(result.Milliseconds, 0, 'f', 1);
+  if (!result.Warnings.empty())
   {
     text += " · <span style='color:#b9770e'>warnings (hover)</span>";
   }
   view.Statistics->setText(text);
-  return true;
 }
 
 void ExplorerWindow::UpdateViews()
@@ -368,11 +389,68 @@ void ExplorerWindow::UpdateViews()
   {
     return;
   }
+  if (this->Job)
+  {
+    // Restart with the new settings once the running update has stopped.
+    this->Job->Cancel();
+    this->RerunPending = true;
+    return;
+  }
+  std::vector<UpdateJob::ViewTask> tasks;
+  for (int v = 0; v < this->ViewCount; ++v)
+  {
+    tasks.push_back({ subdapp::FindScheme(this->Views[v].Scheme->currentText().toStdString()), this->ViewOptions(v) });
+  }
+  this->Job = std::make_unique<UpdateJob>(this->Cage, std::move(tasks));
+  this->LastUpdateCancelled = false;
+  this->ProgressBar->setValue(0);
+  this->ProgressTimer->start(100);
+  this->Job->Start([this]() { QMetaObject::invokeMethod(this, [this]() { this->FinishUpdate(); }, Qt::QueuedConnection); });
+}
+
+void ExplorerWindow::ShowProgress()
+{
+  if (!this->Job)
+  {
+    return;
+  }
+  // Short updates never show the bar; long ones show it with Cancel.
+  this->ProgressBar->setVisible(true);
+  this->CancelButton->setVisible(true);
+  this->ProgressBar->setValue(static_cast<int>(1000.0 * this->Job->GetProgress()));
+}
+
+void ExplorerWindow::FinishUpdate()
+{
+  if (!this->Job)
+  {
+    return;
+  }
+  this->Job->Wait();
+  const std::unique_ptr<UpdateJob> job = std::move(this->Job);
+  this->ProgressTimer->stop();
+  this->ProgressBar->setVisible(false);
+  this->CancelButton->setVisible(false);
+  if (this->RerunPending)
+  {
+    this->RerunPending = false;
+    this->UpdateViews();
+    return;
+  }
+  if (job->IsCancelled())
+  {
+    this->LastUpdateCancelled = true;
+    this->statusBar()->showMessage("Update cancelled: the views show the previous result.", 8000);
+    return;
+  }
+  for (int v = 0; v < this->ViewCount; ++v)
+  {
+    this->ApplyResult(v, job->GetResults()[static_cast<size_t>(v)]);
+  }
   this->Scene->RemoveAllViews();
   vtkNew<vtkPolyData> empty;
   for (int v = 0; v < this->ViewCount; ++v)
   {
-    this->Subdivide(v);
     const std::string title = this->Views[v].Scheme->currentText().toStdString() + ", level " +
       std::to_string(this->LevelSlider->value());
     this->Scene->AddView(this->Views[v].Result ? this->Views[v].Result.GetPointer() : empty.GetPointer(),
@@ -385,8 +463,30 @@ void ExplorerWindow::UpdateViews()
   this->VTKWidget->update();
 }
 
+void ExplorerWindow::CancelUpdate()
+{
+  if (this->Job)
+  {
+    this->RerunPending = false;
+    this->Job->Cancel();
+  }
+}
+
+void ExplorerWindow::WaitForUpdate()
+{
+  while (this->Job)
+  {
+    QCoreApplication::processEvents(QEventLoop::WaitForMoreEvents);
+  }
+}
+
 bool ExplorerWindow::SaveViewsImage(const QString& path, QString& error)
 {
+  if (this->Scene->GetNumberOfViews() == 0)
+  {
+    error = "no views to save yet (the first update did not complete)";
+    return false;
+  }
   this->Scene->Render();
   const QImage image = this->VTKWidget->grabFramebuffer();
   if (image.isNull() || !image.save(path, "PNG"))

@@ -4,6 +4,8 @@
 #ifndef SubDExplorerWindow_h
 #define SubDExplorerWindow_h
 
+#include "SubDUpdateJob.h"
+
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
 
@@ -11,6 +13,7 @@
 #include <QString>
 
 #include <array>
+#include <memory>
 #include <string>
 
 class QCheckBox;
@@ -20,6 +23,9 @@ class QDropEvent;
 class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
+class QProgressBar;
+class QPushButton;
+class QTimer;
 class QSlider;
 class QVTKOpenGLNativeWidget;
 class vtkGenericOpenGLRenderWindow;
@@ -50,8 +56,16 @@ public:
   void SetShowCage(bool show);
   void SetLimit(bool limit);
 
-  /// Brings every view up to date and renders (what the controls call).
+  /// Brings every view up to date and renders (what the controls call). The subdivision
+  /// runs on a worker thread (UpdateJob); a change while it runs restarts it.
   void UpdateViews();
+  /// Stops the running update (the Cancel button, Esc); the views keep their last result.
+  void CancelUpdate();
+  bool IsUpdating() const { return this->Job != nullptr; }
+  /// Processes events until no update runs (scripts: before screenshots and exports).
+  void WaitForUpdate();
+  /// Whether the last update that ended was cancelled.
+  bool WasLastUpdateCancelled() const { return this->LastUpdateCancelled; }
   /// The views' pixels (the VTK widget) as a PNG.
   bool SaveViewsImage(const QString& path, QString& error);
   /// The whole window, controls included, as a PNG.
@@ -78,7 +92,10 @@ private:
   void BuildMenus();
   QWidget* BuildControls();
   void SetCage(vtkSmartPointer<vtkPolyData> cage, const QString& name);
-  bool Subdivide(int view);
+  subdapp::SchemeOptions ViewOptions(int view) const;
+  void ApplyResult(int view, const UpdateJob::ViewResult& result);
+  void ShowProgress();
+  void FinishUpdate();
   void OpenDialog();
   void ExportDialog();
   void ScreenshotDialog();
@@ -101,6 +118,12 @@ private:
   QLabel* CageLabel = nullptr;
   QMenu* RecentMenu = nullptr;
   bool Updating = false; ///< controls set programmatically do not trigger updates
+  std::unique_ptr<UpdateJob> Job; ///< the running update, if any
+  bool RerunPending = false;      ///< settings changed while Job ran
+  bool LastUpdateCancelled = false;
+  QProgressBar* ProgressBar = nullptr;
+  QPushButton* CancelButton = nullptr;
+  QTimer* ProgressTimer = nullptr;
 };
 }
 

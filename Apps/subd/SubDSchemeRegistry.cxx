@@ -1,6 +1,8 @@
 #include "SubDSchemeRegistry.h"
 #include "SubDMessageCollector.h"
 
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 #include "vtkPolyData.h"
 
 #include "vtkSubDButterflyFilter.h"
@@ -91,14 +93,34 @@ const std::vector<SchemeEntry>& Schemes()
   return schemes;
 }
 
-vtkSmartPointer<vtkPolyData> RunScheme(
-  const SchemeEntry& entry, const SchemeOptions& options, vtkPolyData* input, MessageCollector& messages)
+vtkSmartPointer<vtkPolyData> RunScheme(const SchemeEntry& entry, const SchemeOptions& options, vtkPolyData* input,
+  MessageCollector& messages, const SchemeProgress& progress)
 {
   vtkSmartPointer<vtkPolyDataAlgorithm> filter = entry.Make(options);
   messages.Watch(filter);
+  struct Watcher
+  {
+    const SchemeProgress* Report;
+    vtkAlgorithm* Filter;
+    bool Stopped = false;
+  } watcher{ &progress, filter };
+  if (progress)
+  {
+    vtkNew<vtkCallbackCommand> callback;
+    callback->SetClientData(&watcher);
+    callback->SetCallback([](vtkObject*, unsigned long, void* client, void* callData) {
+      auto* w = static_cast<Watcher*>(client);
+      if (!(*w->Report)(*static_cast<double*>(callData)))
+      {
+        w->Stopped = true;
+        w->Filter->SetAbortExecute(1);
+      }
+    });
+    filter->AddObserver(vtkCommand::ProgressEvent, callback);
+  }
   filter->SetInputData(input);
   filter->Update();
-  if (!messages.Errors.empty() || filter->GetOutput()->GetNumberOfCells() == 0)
+  if (watcher.Stopped || !messages.Errors.empty() || filter->GetOutput()->GetNumberOfCells() == 0)
   {
     return nullptr;
   }

@@ -3,6 +3,7 @@
 #define SubDSchemeRegistry_h
 
 #include "vtkSmartPointer.h"
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -41,10 +42,14 @@ class MessageCollector;
 
 const std::vector<SchemeEntry>& Schemes();
 
+/// Reports a filter's progress in [0, 1]; returning false asks the filter to stop.
+using SchemeProgress = std::function<bool(double)>;
+
 /// Runs `entry`'s filter on `input` with `options`, its messages going to `messages`. Returns
-/// a copy of the output, or nullptr when the filter reported an error or made nothing.
-vtkSmartPointer<vtkPolyData> RunScheme(
-  const SchemeEntry& entry, const SchemeOptions& options, vtkPolyData* input, MessageCollector& messages);
+/// a copy of the output, or nullptr when the filter reported an error, made nothing, or was
+/// stopped by `progress`.
+vtkSmartPointer<vtkPolyData> RunScheme(const SchemeEntry& entry, const SchemeOptions& options, vtkPolyData* input,
+  MessageCollector& messages, const SchemeProgress& progress = nullptr);
 const SchemeEntry* FindScheme(const std::string& name);
 }
 
