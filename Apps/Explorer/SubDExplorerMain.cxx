@@ -55,6 +55,24 @@ int main(int argc, char* argv[])
   {
     window.LoadBuiltin(options.Builtin);
   }
+  for (const subdexplorer::ExplorerOptions::SharpnessEdit& edit : options.Edits)
+  {
+    QString message;
+    if (!window.SetSharpness(edit.A, edit.B, edit.Sharpness, message))
+    {
+      std::cerr << "subd-explorer: " << message.toStdString() << "\n";
+      return 1;
+    }
+  }
+  if (!options.ExportCage.empty())
+  {
+    QString message;
+    if (!window.ExportCage(QString::fromStdString(options.ExportCage), message))
+    {
+      std::cerr << "subd-explorer: " << message.toStdString() << "\n";
+      return 1;
+    }
+  }
   window.show();
 
   int status = 0;

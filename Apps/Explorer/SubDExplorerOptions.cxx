@@ -17,13 +17,15 @@ std::string ExplorerUsage()
   out << "usage: subd-explorer [FILE] [--builtin NAME] [--views 1|2|4] [--schemes S1,S2,...]\n"
          "                     [--levels N] [--color none|mean|gaussian] [--no-cage] [--limit]\n"
          "                     [--size WxH] [--screenshot VIEWS.png] [--window-shot WINDOW.png]\n"
+         "                     [--crease A-B=S]... [--corner V=S]... [--export-cage CAGE.vtp]\n"
          "                     [--cancel-after MS] [--quit]\n"
          "\n"
          "Compares subdivision schemes side by side on a mesh (.vtp .vtk .obj .ply .stl .off)\n"
          "or a built-in cage. --screenshot/--window-shot save pictures once the views are up to\n"
          "date; with --quit the app then exits (scripted use, e.g. under xvfb-run).\n"
          "--cancel-after MS presses Cancel MS milliseconds into the first update (as the\n"
-         "Cancel button does) and reports whether the update stopped.\n";
+         "Cancel button does) and reports whether the update stopped. --crease and --corner\n"
+         "set the sharpness of a cage edge or vertex as the Creases panel does.\n";
   return out.str();
 }
 
@@ -111,6 +113,45 @@ bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std:
         return false;
       }
       options.CancelAfter = static_cast<int>(ms);
+    }
+    else if (arg == "--crease" || arg == "--corner")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      ExplorerOptions::SharpnessEdit edit;
+      char* end = nullptr;
+      edit.A = std::strtoll(text.c_str(), &end, 10);
+      if (arg == "--crease" && end != text.c_str() && *end == '-')
+      {
+        const char* second = end + 1;
+        edit.B = std::strtoll(second, &end, 10);
+        if (end == second)
+        {
+          edit.B = -2; // malformed
+        }
+      }
+      const bool shapeOk = end != text.c_str() && *end == '=' && edit.A >= 0 && (arg == "--corner" || edit.B >= 0);
+      if (shapeOk)
+      {
+        const char* number = end + 1;
+        edit.Sharpness = std::strtod(number, &end);
+      }
+      if (!shapeOk || *end != '\0' || !(edit.Sharpness >= 0.0))
+      {
+        error = arg + (arg == "--crease" ? " wants A-B=S (two vertex ids and a sharpness >= 0), not '"
+                                         : " wants V=S (a vertex id and a sharpness >= 0), not '") + text + "'";
+        return false;
+      }
+      options.Edits.push_back(edit);
+    }
+    else if (arg == "--export-cage")
+    {
+      if (!value(options.ExportCage))
+      {
+        return false;
+      }
     }
     else if (arg == "--color")
     {

@@ -21,6 +21,13 @@ struct ExplorerOptions
   std::string WindowShot; ///< PNG of the whole window (controls included)
   bool Quit = false;      ///< quit after the screenshots
   int CancelAfter = -1;   ///< >= 0: cancel the first update after this many milliseconds
+  struct SharpnessEdit
+  {
+    long long A = -1, B = -1; ///< an edge (A, B), or vertex A when B < 0
+    double Sharpness = 0.0;
+  };
+  std::vector<SharpnessEdit> Edits; ///< --crease A-B=S and --corner V=S, in order
+  std::string ExportCage;           ///< write the (edited) cage here
   int Width = 1100, Height = 750;
   bool Help = false;
 };

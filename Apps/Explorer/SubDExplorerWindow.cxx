@@ -1,6 +1,8 @@
 #include "SubDExplorerWindow.h"
 
 #include "SubDBuiltinCages.h"
+#include "SubDCageEditing.h"
+#include "SubDCagePicking.h"
 #include "SubDMeshIO.h"
 #include "SubDMeshStatistics.h"
 #include "SubDSchemeRegistry.h"
@@ -10,6 +12,7 @@
 #include "vtkInteractorStyleTrackballCamera.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindowInteractor.h"
+#include "vtkRenderer.h"
 #include "vtkSubDScene.h"
 
 #include <QAction>
@@ -44,6 +47,25 @@ namespace
 {
 const char* const DefaultSchemes[ExplorerWindow::MaxViews] = { "catmull-clark", "loop", "butterfly", "doo-sabin" };
 
+// Ctrl+click selects the cage edge or vertex under the mouse (and is not passed on to the
+// camera's interactor style).
+class CagePickCommand : public vtkCommand
+{
+public:
+  static CagePickCommand* New() { return new CagePickCommand; }
+  ExplorerWindow* Window = nullptr;
+  void Execute(vtkObject* caller, unsigned long, void*) override
+  {
+    auto* interactor = static_cast<vtkRenderWindowInteractor*>(caller);
+    if (interactor->GetControlKey() && this->Window)
+    {
+      const int* position = interactor->GetEventPosition();
+      this->Window->SelectCageElementAt(position[0], position[1]);
+      this->SetAbortFlag(1);
+    }
+  }
+};
+
 }
 
 ExplorerWindow::ExplorerWindow(QWidget* parent)
@@ -54,6 +76,9 @@ ExplorerWindow::ExplorerWindow(QWidget* parent)
   this->VTKWidget->setRenderWindow(this->RenderWindow);
   vtkNew<vtkInteractorStyleTrackballCamera> style;
   this->RenderWindow->GetInteractor()->SetInteractorStyle(style);
+  vtkNew<CagePickCommand> pick;
+  pick->Window = this;
+  this->RenderWindow->GetInteractor()->AddObserver(vtkCommand::LeftButtonPressEvent, pick, 1.0f);
   this->Scene->SetRenderWindow(this->RenderWindow);
   this->Scene->FitWindowToViewsOff(); // the widget's size is the user's
   this->Scene->AutoResetCameraOff();  // a camera the user moved stays put
@@ -98,7 +123,6 @@ QWidget* ExplorerWindow::BuildControls()
   auto* global = new QGroupBox("All views");
   auto* form = new QFormLayout(global);
   this->CageLabel = new QLabel;
-  this->CageLabel->setWordWrap(true);
   form->addRow("Cage", this->CageLabel);
   this->Layout = new QComboBox;
   this->Layout->addItems({ "1 view", "2 views", "4 views" });
@@ -124,6 +148,28 @@ QWidget* ExplorerWindow::BuildControls()
   this->Limit = new QCheckBox("Limit (project, exact curvature)");
   form->addRow(this->Limit);
   layout->addWidget(global);
+
+  auto* creases = new QGroupBox("Creases");
+  auto* creaseForm = new QFormLayout(creases);
+  this->SelectionLabel = new QLabel("Ctrl+click an edge or a vertex of the cage");
+  this->SelectionLabel->setWordWrap(true);
+  creaseForm->addRow("Selected", this->SelectionLabel);
+  this->Sharpness = new QDoubleSpinBox;
+  this->Sharpness->setRange(0.0, 10.0);
+  this->Sharpness->setSingleStep(0.5);
+  this->Sharpness->setDecimals(2);
+  this->Sharpness->setEnabled(false);
+  this->Sharpness->setToolTip("OpenSubdiv's scale: 0 smooth, fractions semi-sharp, 10 infinitely sharp. "
+                              "Edges become crease lines, vertices get \"CornerSharpness\".");
+  creaseForm->addRow("Sharpness", this->Sharpness);
+  connect(this->Sharpness, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this](double value) {
+    if (this->Updating || this->SelectedA < 0)
+      return;
+    QString error;
+    if (!this->SetSharpness(this->SelectedA, this->SelectedB, value, error))
+      this->statusBar()->showMessage(error, 8000);
+  });
+  layout->addWidget(creases);
 
   for (int v = 0; v < MaxViews; ++v)
   {
@@ -215,6 +261,7 @@ void ExplorerWindow::BuildMenus()
   this->RefreshRecentMenu();
   file->addSeparator();
   file->addAction("&Export surface...", this, &ExplorerWindow::ExportDialog, QKeySequence(Qt::CTRL | Qt::Key_E));
+  file->addAction("Export &cage with creases...", this, &ExplorerWindow::ExportCageDialog);
   file->addAction("Save views &image...", this, &ExplorerWindow::ScreenshotDialog, QKeySequence(Qt::CTRL | Qt::Key_P));
   file->addSeparator();
   file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
@@ -243,16 +290,24 @@ void ExplorerWindow::SetCage(vtkSmartPointer<vtkPolyData> cage, const QString& n
 {
   this->Cage = cage;
   this->CageName = name;
-  const MeshStatistics stats = ComputeMeshStatistics(cage);
-  this->CageLabel->setText(QString("%1\n%2 points, %3 faces, %4 lines, %5 extraordinary")
-                             .arg(name)
+  this->SelectedA = this->SelectedB = -1;
+  this->SelectionLabel->setText("Ctrl+click an edge or a vertex of the cage");
+  this->Sharpness->setEnabled(false);
+  this->ShowCageStatistics();
+  this->setWindowTitle("SubD Explorer - " + name);
+  this->Scene->ResetCamera();
+  this->UpdateViews();
+}
+
+void ExplorerWindow::ShowCageStatistics()
+{
+  const MeshStatistics stats = ComputeMeshStatistics(this->Cage);
+  this->CageLabel->setText(QString("%1\n%2 points, %3 faces\n%4 crease lines, %5 extraordinary")
+                             .arg(this->CageName)
                              .arg(stats.Vertices)
                              .arg(stats.Faces)
                              .arg(stats.Lines)
                              .arg(stats.Extraordinary));
-  this->setWindowTitle("SubD Explorer - " + name);
-  this->Scene->ResetCamera();
-  this->UpdateViews();
 }
 
 void ExplorerWindow::LoadBuiltin(const std::string& name)
@@ -341,6 +396,66 @@ void ExplorerWindow::SetLimit(bool limit)
   {
     this->UpdateViews();
   }
+}
+
+bool ExplorerWindow::SetSharpness(vtkIdType a, vtkIdType b, double sharpness, QString& error)
+{
+  std::string message;
+  const bool done = b < 0 ? subdapp::SetVertexSharpness(this->Cage, a, sharpness, message)
+                          : subdapp::SetEdgeSharpness(this->Cage, a, b, sharpness, message);
+  if (!done)
+  {
+    error = QString::fromStdString(message);
+    return false;
+  }
+  this->ShowCageStatistics();
+  this->UpdateViews();
+  return true;
+}
+
+bool ExplorerWindow::SelectCageElementAt(int x, int y)
+{
+  vtkRenderer* renderer = this->RenderWindow->GetInteractor()->FindPokedRenderer(x, y);
+  if (!renderer || !this->Cage)
+  {
+    return false;
+  }
+  // The cage's points on the screen, in this view's camera.
+  const vtkIdType numPoints = this->Cage->GetNumberOfPoints();
+  std::vector<double> screen(static_cast<size_t>(2 * numPoints));
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    const double* p = this->Cage->GetPoint(i);
+    renderer->SetWorldPoint(p[0], p[1], p[2], 1.0);
+    renderer->WorldToDisplay();
+    const double* d = renderer->GetDisplayPoint();
+    screen[2 * i] = d[0];
+    screen[2 * i + 1] = d[1];
+  }
+  const PickedElement picked = PickCageElement(this->Cage, screen, x, y);
+  this->SelectedA = picked.A;
+  this->SelectedB = picked.B;
+  const bool updating = this->Updating;
+  this->Updating = true;
+  if (picked.A < 0)
+  {
+    this->SelectionLabel->setText("nothing there: Ctrl+click closer to an edge or a vertex");
+    this->Sharpness->setEnabled(false);
+  }
+  else if (picked.B < 0)
+  {
+    this->SelectionLabel->setText(QString("vertex %1").arg(picked.A));
+    this->Sharpness->setEnabled(true);
+    this->Sharpness->setValue(subdapp::GetVertexSharpness(this->Cage, picked.A));
+  }
+  else
+  {
+    this->SelectionLabel->setText(QString("edge %1 - %2").arg(picked.A).arg(picked.B));
+    this->Sharpness->setEnabled(true);
+    this->Sharpness->setValue(subdapp::GetEdgeSharpness(this->Cage, picked.A, picked.B));
+  }
+  this->Updating = updating;
+  return picked.A >= 0;
 }
 
 subdapp::SchemeOptions ExplorerWindow::ViewOptions(int v) const
@@ -562,6 +677,28 @@ void ExplorerWindow::ExportDialog()
     "Meshes (*.vtp *.vtk *.obj *.ply *.stl *.off)");
   QString error;
   if (!path.isEmpty() && !this->ExportSurface(0, path, error))
+  {
+    QMessageBox::warning(this, "Cannot export", error);
+  }
+}
+
+bool ExplorerWindow::ExportCage(const QString& path, QString& error)
+{
+  std::string message;
+  if (!this->Cage || !subdapp::WriteMesh(this->Cage, path.toStdString(), message))
+  {
+    error = this->Cage ? QString::fromStdString(message) : "no cage";
+    return false;
+  }
+  return true;
+}
+
+void ExplorerWindow::ExportCageDialog()
+{
+  const QString path = QFileDialog::getSaveFileName(this, "Export the cage with its creases", "cage.vtp",
+    "Meshes with creases (*.vtp *.vtk *.obj)");
+  QString error;
+  if (!path.isEmpty() && !this->ExportCage(path, error))
   {
     QMessageBox::warning(this, "Cannot export", error);
   }

@@ -8,6 +8,7 @@
 
 #include "vtkNew.h"
 #include "vtkSmartPointer.h"
+#include "vtkType.h"
 
 #include <QMainWindow>
 #include <QString>
@@ -72,6 +73,15 @@ public:
   bool SaveWindowImage(const QString& path, QString& error);
   /// Writes view `view`'s subdivided surface (any format `subd` writes).
   bool ExportSurface(int view, const QString& path, QString& error);
+  /// Writes the cage with its creases and corners (.vtp, .vtk keep them as data, .obj as tags).
+  bool ExportCage(const QString& path, QString& error);
+
+  /// Sets the sharpness of cage edge (a, b), or of vertex a when b < 0, and updates the
+  /// views: what the Sharpness spin box does (SubDCageEditing.h).
+  bool SetSharpness(vtkIdType a, vtkIdType b, double sharpness, QString& error);
+  /// Selects the cage edge or vertex nearest to display position (x, y) in the view there
+  /// (Ctrl+click); false when none is close enough.
+  bool SelectCageElementAt(int x, int y);
 
 protected:
   /// Dropping a mesh file on the window opens it.
@@ -98,6 +108,8 @@ private:
   void FinishUpdate();
   void OpenDialog();
   void ExportDialog();
+  void ExportCageDialog();
+  void ShowCageStatistics();
   void ScreenshotDialog();
   void RememberRecentFile(const QString& path);
   void RefreshRecentMenu();
@@ -116,6 +128,9 @@ private:
   QCheckBox* ShowCage = nullptr;
   QCheckBox* Limit = nullptr;
   QLabel* CageLabel = nullptr;
+  QLabel* SelectionLabel = nullptr;
+  QDoubleSpinBox* Sharpness = nullptr;
+  vtkIdType SelectedA = -1, SelectedB = -1; ///< the selected cage edge (a, b), or vertex a (b < 0)
   QMenu* RecentMenu = nullptr;
   bool Updating = false; ///< controls set programmatically do not trigger updates
   std::unique_ptr<UpdateJob> Job; ///< the running update, if any

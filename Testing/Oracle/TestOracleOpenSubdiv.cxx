@@ -24,6 +24,16 @@
 #include <opensubdiv/far/ptexIndices.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 
+#include "SubDBuiltinCages.h"
+#include "SubDCageEditing.h"
+#include "SubDMessageCollector.h"
+#include "SubDSchemeRegistry.h"
+
+#include "vtkCellArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPolyData.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -660,4 +670,85 @@ std::vector<OracleCase> LimitCases()
 }
 
 INSTANTIATE_TEST_SUITE_P(Limit, LimitOracle, ::testing::ValuesIn(LimitCases()), CaseName);
+
+// The explorer's crease editing: the functions its sharpness spin box calls
+// (SubDCageEditing.h) edit a built-in cage, the scheme registry runs the filter as the
+// explorer's update job does, and the refined surface must move from the unedited one to
+// exactly what OpenSubdiv computes for the cage with that crease and corner.
+TEST(ExplorerCreaseEditing, TheEditedSurfaceIsOpenSubdivs)
+{
+  vtkSmartPointer<vtkPolyData> cage = subdapp::MakeBuiltinCage("cube");
+  subdtest::TestMesh mesh;
+  for (vtkIdType i = 0; i < cage->GetNumberOfPoints(); ++i)
+  {
+    const double* p = cage->GetPoint(i);
+    mesh.AddPoint(p[0], p[1], p[2]);
+  }
+  vtkCellArray* polys = cage->GetPolys();
+  vtkNew<vtkIdList> cell;
+  for (polys->InitTraversal(); polys->GetNextCell(cell);)
+  {
+    std::vector<Index> face;
+    for (vtkIdType k = 0; k < cell->GetNumberOfIds(); ++k)
+      face.push_back(static_cast<Index>(cell->GetId(k)));
+    mesh.AddFace(face);
+  }
+  const Index a = mesh.Vertices[0], b = mesh.Vertices[1], corner = mesh.Vertices[2];
+  const int levels = 3;
+  subdapp::SchemeOptions options;
+  options.Levels = levels;
+  const subdapp::SchemeEntry& catmullClark = *subdapp::FindScheme("catmull-clark");
+  auto run = [&]() {
+    subdapp::MessageCollector messages;
+    vtkSmartPointer<vtkPolyData> out = subdapp::RunScheme(catmullClark, options, cage, messages);
+    EXPECT_NE(out, nullptr) << messages.Errors;
+    std::vector<double> xyz;
+    for (vtkIdType i = 0; out && i < out->GetNumberOfPoints(); ++i)
+      xyz.insert(xyz.end(), out->GetPoint(i), out->GetPoint(i) + 3);
+    return xyz;
+  };
+  const std::vector<double> before = run();
+  std::string error;
+  ASSERT_TRUE(subdapp::SetEdgeSharpness(cage, a, b, 2.5, error)) << error;
+  ASSERT_TRUE(subdapp::SetVertexSharpness(cage, corner, 3.0, error)) << error;
+  EXPECT_EQ(subdapp::GetEdgeSharpness(cage, b, a), 2.5);
+  EXPECT_EQ(subdapp::GetVertexSharpness(cage, corner), 3.0);
+  const std::vector<double> after = run();
+
+  SharpTags tags;
+  tags.CreasePairs = { a, b };
+  tags.CreaseSharpness = { 2.5f };
+  tags.Corners = { corner };
+  tags.CornerSharpness = { 3.0f };
+  auto refiner = MakeOsdRefiner(mesh, subd::BoundaryRule::EdgeOnly, levels, SchemeKind::CatmullClark, tags);
+  Far::PrimvarRefinerReal<double> primvar(*refiner);
+  std::vector<Point3> points(static_cast<size_t>(mesh.NumVertices()));
+  for (Index v = 0; v < mesh.NumVertices(); ++v)
+    std::copy(&mesh.Points[3 * v], &mesh.Points[3 * v] + 3, points[v].P);
+  for (int l = 1; l <= levels; ++l)
+  {
+    std::vector<Point3> child(static_cast<size_t>(refiner->GetLevel(l).GetNumVertices()));
+    Point3* childPoints = child.data();
+    primvar.Interpolate(l, points.data(), childPoints);
+    points = std::move(child);
+  }
+  ASSERT_EQ(after.size(), 3 * points.size());
+  const double scale = subdtest::Diagonal(mesh.Points);
+  double editedToOsd = 0.0, uneditedToOsd = 0.0;
+  for (const Point3& p : points)
+  {
+    double d;
+    subdtest::NearestPoint(after, p.P, d);
+    editedToOsd = std::max(editedToOsd, d);
+    subdtest::NearestPoint(before, p.P, d);
+    uneditedToOsd = std::max(uneditedToOsd, d);
+  }
+  EXPECT_LT(editedToOsd, 1e-9 * scale);
+  EXPECT_GT(uneditedToOsd, 1e-2 * scale); // the edit changed the surface
+  // Sharpness 0 removes the crease again.
+  ASSERT_TRUE(subdapp::SetEdgeSharpness(cage, a, b, 0.0, error)) << error;
+  EXPECT_EQ(cage->GetNumberOfLines(), 0);
+  EXPECT_FALSE(subdapp::SetEdgeSharpness(cage, a, a, 1.0, error));
+  EXPECT_NE(error.find("not an edge"), std::string::npos) << error;
+}
 }
