@@ -33,6 +33,8 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
+#include <QScrollBar>
 #include <QShortcut>
 #include <QTimer>
 #include <QMessageBox>
@@ -88,7 +90,13 @@ ExplorerWindow::ExplorerWindow(QWidget* parent)
   auto* dock = new QDockWidget("Schemes", this);
   dock->setObjectName("SchemesDock");
   dock->setFeatures(QDockWidget::DockWidgetMovable | QDockWidget::DockWidgetFloatable);
-  dock->setWidget(this->BuildControls());
+  // Scrollable, so that the panel never forces the window above the size asked for.
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(this->BuildControls());
+  scroll->setWidgetResizable(true);
+  scroll->setFrameShape(QFrame::NoFrame);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+  dock->setWidget(scroll);
   this->addDockWidget(Qt::RightDockWidgetArea, dock);
   this->BuildMenus();
   this->ProgressBar = new QProgressBar;
@@ -108,6 +116,8 @@ ExplorerWindow::ExplorerWindow(QWidget* parent)
   connect(this->ProgressTimer, &QTimer::timeout, this, &ExplorerWindow::ShowProgress);
   this->statusBar()->showMessage("Drag to rotate, right-drag or wheel to zoom, middle-drag to pan; R resets the camera.");
   this->LoadBuiltin("cube");
+  // Wide enough for the controls and a vertical scroll bar; long labels wrap.
+  scroll->setMinimumWidth(360 + scroll->verticalScrollBar()->sizeHint().width());
 }
 
 ExplorerWindow::~ExplorerWindow()
@@ -194,6 +204,7 @@ QWidget* ExplorerWindow::BuildControls()
     view.Tension->setToolTip("butterfly: [-0.0625, 0.0625], four-point: [0, 0.125]");
     viewForm->addRow("Tension", view.Tension);
     view.Statistics = new QLabel;
+    view.Statistics->setWordWrap(true);
     view.Statistics->setWordWrap(true);
     view.Statistics->setTextInteractionFlags(Qt::TextSelectableByMouse);
     viewForm->addRow(view.Statistics);
