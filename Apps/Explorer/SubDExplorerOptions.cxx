@@ -11,6 +11,23 @@ namespace subdexplorer
 {
 using subdapp::ArgumentReader;
 
+namespace
+{
+// Parses `text` as an integer in [low, high] into `out`; else says `what` in `error`.
+bool IntegerIn(const std::string& text, long low, long high, const char* what, int& out, std::string& error)
+{
+  char* end = nullptr;
+  const long number = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || number < low || number > high)
+  {
+    error = std::string(what) + ", not '" + text + "'";
+    return false;
+  }
+  out = static_cast<int>(number);
+  return true;
+}
+}
+
 std::string ExplorerUsage()
 {
   std::ostringstream out;
@@ -86,33 +103,18 @@ bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std:
     }
     else if (arg == "--levels")
     {
-      if (!value(text))
+      if (!value(text) || !IntegerIn(text, 0, 8, "--levels wants an integer in 0..8", options.Levels, error))
       {
         return false;
       }
-      char* end = nullptr;
-      const long levels = std::strtol(text.c_str(), &end, 10);
-      if (text.empty() || *end != '\0' || levels < 0 || levels > 8)
-      {
-        error = "--levels wants an integer in 0..8, not '" + text + "'";
-        return false;
-      }
-      options.Levels = static_cast<int>(levels);
     }
     else if (arg == "--cancel-after")
     {
-      if (!value(text))
+      if (!value(text) ||
+        !IntegerIn(text, 0, 600000, "--cancel-after wants milliseconds in 0..600000", options.CancelAfter, error))
       {
         return false;
       }
-      char* end = nullptr;
-      const long ms = std::strtol(text.c_str(), &end, 10);
-      if (text.empty() || *end != '\0' || ms < 0 || ms > 600000)
-      {
-        error = "--cancel-after wants milliseconds in 0..600000, not '" + text + "'";
-        return false;
-      }
-      options.CancelAfter = static_cast<int>(ms);
     }
     else if (arg == "--crease" || arg == "--corner")
     {
