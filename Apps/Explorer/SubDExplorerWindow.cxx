@@ -443,7 +443,7 @@ bool ExplorerWindow::SelectCageElementAt(int x, int y)
     screen[2 * i] = d[0];
     screen[2 * i + 1] = d[1];
   }
-  const PickedElement picked = PickCageElement(this->Cage, screen, x, y);
+  const subdapp::PickedElement picked = subdapp::PickCageElement(this->Cage, screen, x, y);
   this->SelectedA = picked.A;
   this->SelectedB = picked.B;
   const bool updating = this->Updating;

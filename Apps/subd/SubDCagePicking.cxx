@@ -8,7 +8,7 @@
 #include <algorithm>
 #include <cmath>
 
-namespace subdexplorer
+namespace subdapp
 {
 namespace
 {

@@ -1,5 +1,6 @@
 // The explorer's picking of cage elements: given where each cage point lands on the screen,
-// which vertex or polygon edge a click means. Kept apart from the GUI so tests can call it.
+// which vertex or polygon edge a click means. In SubDAppSupport, apart from the GUI, so that
+// tests can call it.
 #ifndef SubDCagePicking_h
 #define SubDCagePicking_h
 
@@ -9,7 +10,7 @@
 
 class vtkPolyData;
 
-namespace subdexplorer
+namespace subdapp
 {
 struct PickedElement
 {

@@ -30,13 +30,13 @@ TEST(CagePicking, NearestVertexFirstThenNearestEdge)
   polys->InsertNextCell(4, square);
   cage->SetPolys(polys);
   const std::vector<double> screen = { 0, 0, 100, 0, 100, 100, 0, 100 };
-  auto picked = subdexplorer::PickCageElement(cage, screen, 103, 96);
+  auto picked = subdapp::PickCageElement(cage, screen, 103, 96);
   EXPECT_EQ(picked.A, 2);
   EXPECT_EQ(picked.B, -1);
-  picked = subdexplorer::PickCageElement(cage, screen, 50, 97);
+  picked = subdapp::PickCageElement(cage, screen, 50, 97);
   EXPECT_EQ(picked.A, 2);
   EXPECT_EQ(picked.B, 3);
-  picked = subdexplorer::PickCageElement(cage, screen, 50, 50);
+  picked = subdapp::PickCageElement(cage, screen, 50, 50);
   EXPECT_EQ(picked.A, -1);
 }
 

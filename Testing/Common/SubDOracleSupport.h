@@ -3,6 +3,7 @@
 #ifndef SubDOracleSupport_h
 #define SubDOracleSupport_h
 
+#include "SubDMeshTopology.h"
 #include "SubDTypes.h"
 
 #include <algorithm>
@@ -56,6 +57,25 @@ inline subd::Index NearestPoint(const std::vector<double>& ours, const double p[
 }
 
 /// A face rotated to start at its smallest vertex, for comparisons that respect orientation.
+/// The largest distance from a boundary vertex of `topology` (its point in `xyz`) to the
+/// nearest of `candidates`, and how many boundary vertices there are.
+inline double FarthestBoundaryPoint(const subd::MeshTopology& topology, const std::vector<double>& xyz,
+  const std::vector<double>& candidates, subd::Index& boundaryPoints)
+{
+  double worst = 0.0;
+  boundaryPoints = 0;
+  for (subd::Index v = 0; v < topology.GetNumVertices(); ++v)
+  {
+    if (!topology.GetVertexTag(v).Boundary)
+      continue;
+    ++boundaryPoints;
+    double best;
+    NearestPoint(candidates, &xyz[3 * static_cast<size_t>(v)], best);
+    worst = std::max(worst, best);
+  }
+  return worst;
+}
+
 inline std::vector<subd::Index> Canonical(std::vector<subd::Index> face)
 {
   std::rotate(face.begin(), std::min_element(face.begin(), face.end()), face.end());

@@ -68,6 +68,14 @@ inline subd::Level BaseLevel(const TestMesh& mesh, subd::BoundaryRule rule = sub
   return subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, rule);
 }
 
+/// The rows of `table` applied to xyz points (one level down, or limit/tangent rows).
+inline std::vector<double> ApplyToPoints(const subd::StencilTable& table, const std::vector<double>& points)
+{
+  std::vector<double> out(static_cast<size_t>(table.GetNumRows()) * 3);
+  table.Apply(points.data(), out.data(), 3);
+  return out;
+}
+
 /// Refines a fixture `levels` times into `h` and returns the finest points (xyz triples).
 inline std::vector<double> RefineFixture(const subd::Scheme& scheme, const TestMesh& mesh, int levels,
   subd::Hierarchy& h, subd::BoundaryRule rule = subd::BoundaryRule::EdgeOnly)

@@ -2,6 +2,8 @@
 #include "vtkSubDOFFReader.h"
 #include "vtkSubDOFFWriter.h"
 
+#include "SubDFilterTestSupport.h"
+
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
@@ -90,15 +92,7 @@ TEST(OFF, RoundTripIsExact)
   vtkPolyData* back = reader->GetOutput();
   ASSERT_EQ(back->GetNumberOfPoints(), 5);
   ASSERT_EQ(back->GetNumberOfPolys(), 2);
-  for (vtkIdType i = 0; i < 5; ++i)
-  {
-    double a[3], b[3];
-    mesh->GetPoint(i, a);
-    back->GetPoint(i, b);
-    EXPECT_EQ(a[0], b[0]);
-    EXPECT_EQ(a[1], b[1]);
-    EXPECT_EQ(a[2], b[2]);
-  }
+  EXPECT_EQ(subdtest::Coordinates(back), subdtest::Coordinates(mesh)); // bit for bit
   vtkIdType n;
   const vtkIdType* pts;
   back->GetPolys()->GetCellAtId(1, n, pts);

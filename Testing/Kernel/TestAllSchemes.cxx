@@ -363,8 +363,7 @@ TEST_P(AllSchemes, SuccessiveLevelsConverge)
   for (int l = 1; l <= 4; ++l)
   {
     subd::LevelRefinement r = scheme->RefineLevel(level, subd::ChildTopology::Full);
-    std::vector<double> child(static_cast<size_t>(r.Stencils.GetNumRows()) * 3);
-    r.Stencils.Apply(points.data(), child.data(), 3);
+    std::vector<double> child = subdtest::ApplyToPoints(r.Stencils, points);
     distances.push_back(std::max(DistanceToSurface(child, level.Topology, points),
       DistanceToSurface(points, r.Child.Topology, child)));
     level = std::move(r.Child);
@@ -452,15 +451,8 @@ TEST(Sqrt3Scheme, KobbeltBoundaryIsTheTernaryCubicBSplineEveryTwoSteps)
       expected = TernaryCubic(expected);
     const std::vector<double> expectedPoints = subdtest::Flatten(expected);
     Index boundaryPoints = 0;
-    for (Index v = 0; v < finest.GetNumVertices(); ++v)
-    {
-      if (!finest.GetVertexTag(v).Boundary)
-        continue;
-      ++boundaryPoints;
-      double best;
-      subdtest::NearestPoint(expectedPoints, &out[3 * v], best);
-      EXPECT_LT(best, 1e-12) << "level " << levels << " boundary point " << v;
-    }
+    EXPECT_LT(subdtest::FarthestBoundaryPoint(finest, out, expectedPoints, boundaryPoints), 1e-12)
+      << "level " << levels;
     EXPECT_EQ(static_cast<size_t>(boundaryPoints), expected.size()) << "level " << levels;
   }
 }
@@ -473,8 +465,7 @@ TEST(Sqrt3Scheme, CentroidAndRelaxationMasksForValences3To64)
     const subdtest::TestMesh mesh = subdtest::Bipyramid(n).Jitter(0.2);
     const subd::Level base = subdtest::BaseLevel(mesh);
     const subd::LevelRefinement r = subd::Sqrt3Scheme().RefineLevel(base, subd::ChildTopology::Full);
-    std::vector<double> child(static_cast<size_t>(r.Stencils.GetNumRows()) * 3);
-    r.Stencils.Apply(mesh.Points.data(), child.data(), 3);
+    const std::vector<double> child = subdtest::ApplyToPoints(r.Stencils, mesh.Points);
     const Index numFaces = base.Topology.GetNumFaces();
     auto P = [&](Index v, int k) { return mesh.Points[3 * v + k]; };
     // Centroids first (closed mesh: one per face), then the old vertices.

@@ -52,8 +52,7 @@ Refined RefineOnce(const subdtest::TestMesh& mesh, subd::BoundaryRule rule)
   subd::Level base = subdtest::BaseLevel(mesh, rule);
   subd::CatmullClarkScheme scheme;
   subd::StencilTable table = scheme.BuildStencils(base);
-  std::vector<double> child(static_cast<size_t>(table.GetNumRows()) * 3);
-  table.Apply(mesh.Points.data(), child.data(), 3);
+  std::vector<double> child = subdtest::ApplyToPoints(table, mesh.Points);
   const subd::QuadSplitNumbering number{ base.Topology.GetNumFaces(), base.Topology.GetNumEdges() };
   return { std::move(base), std::move(child), number };
 }

@@ -58,8 +58,7 @@ RefinedPolygon Refine(const CurveRules& rules, const std::vector<Vec>& polygon, 
   hierarchy.Evaluate(polygon.front().data(), 3, all.data());
   subd::CurveLimitStencils(rules, finest, numPoints).Apply(all.data(), limit.data(), 3);
   const subd::StencilTable tangentRows = subd::CurveTangentStencils(rules, finest, numPoints);
-  std::vector<double> tangents(static_cast<size_t>(tangentRows.GetNumRows()) * 3);
-  tangentRows.Apply(all.data(), tangents.data(), 3);
+  const std::vector<double> tangents = subdtest::ApplyToPoints(tangentRows, all);
   RefinedPolygon out;
   const subd::IndexSpan piece = finest.GetPiece(0);
   for (Index k = 0; k < piece.size(); ++k)

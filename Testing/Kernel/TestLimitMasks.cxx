@@ -38,8 +38,7 @@ Stage Step(const subd::Scheme& scheme, const Stage& parent)
 {
   subd::LevelRefinement r = scheme.RefineLevel(parent.Level, subd::ChildTopology::Full);
   Stage child;
-  child.Points.resize(static_cast<size_t>(r.Stencils.GetNumRows()) * 3);
-  r.Stencils.Apply(parent.Points.data(), child.Points.data(), 3);
+  child.Points = subdtest::ApplyToPoints(r.Stencils, parent.Points);
   child.Level = std::move(r.Child);
   return child;
 }
@@ -47,13 +46,6 @@ Stage Step(const subd::Scheme& scheme, const Stage& parent)
 Stage Start(const subdtest::TestMesh& mesh)
 {
   return { subdtest::BaseLevel(mesh), mesh.Points };
-}
-
-std::vector<double> ApplyTable(const subd::StencilTable& table, const std::vector<double>& points)
-{
-  std::vector<double> out(static_cast<size_t>(table.GetNumRows()) * 3);
-  table.Apply(points.data(), out.data(), 3);
-  return out;
 }
 
 double Distance(const double* a, const double* b)
@@ -139,8 +131,8 @@ TEST(Sqrt3LimitMasks, TheLimitOfAVertexIsTheLimitOfItsChild)
       const Index first = subd::Sqrt3FirstVertexPoint(stage.Level);
       Stage next = Step(scheme, stage);
       ASSERT_TRUE(subd::BuildSqrt3LimitStencils(next.Level, false, below, error)) << mesh.Name << ": " << error;
-      const std::vector<double> limitHere = ApplyTable(here, stage.Points);
-      const std::vector<double> limitBelow = ApplyTable(below, next.Points);
+      const std::vector<double> limitHere = subdtest::ApplyToPoints(here, stage.Points);
+      const std::vector<double> limitBelow = subdtest::ApplyToPoints(below, next.Points);
       for (Index v = 0; v < stage.Level.Topology.GetNumVertices(); ++v)
       {
         EXPECT_NEAR(here.GetRowSum(v), 1.0, 1e-12);
@@ -160,7 +152,7 @@ TEST(Sqrt3LimitMasks, VerticesApproachTheirLimitPoints)
     subd::StencilTable masks;
     std::string error;
     ASSERT_TRUE(subd::BuildSqrt3LimitStencils(Start(mesh).Level, false, masks, error)) << error;
-    const std::vector<double> limit = ApplyTable(masks, mesh.Points);
+    const std::vector<double> limit = subdtest::ApplyToPoints(masks, mesh.Points);
     const std::vector<double> errors = FollowSqrt3Vertices(mesh, 6, [&](const Stage& stage, Index v, Index d) {
       return Distance(&limit[3 * v], &stage.Points[3 * d]);
     });
@@ -182,7 +174,7 @@ TEST(Sqrt3LimitMasks, TangentPlanesAreThoseOfTheRefinedRings)
     subd::StencilTable tangents;
     std::string error;
     ASSERT_TRUE(subd::BuildSqrt3LimitStencils(Start(mesh).Level, true, tangents, error)) << error;
-    const std::vector<double> t = ApplyTable(tangents, mesh.Points);
+    const std::vector<double> t = subdtest::ApplyToPoints(tangents, mesh.Points);
     const std::vector<double> errors = FollowSqrt3Vertices(mesh, 6, [&](const Stage& stage, Index v, Index d) {
       std::vector<Index> faces, corners, ring;
       EXPECT_TRUE(subd::GetOrderedRing(stage.Level.Topology, d, faces, corners, ring));
@@ -216,13 +208,13 @@ TEST(DualLimitMasks, VFaceDescendantsShrinkOntoTheLimitPoint)
       subd::StencilTable masks, tangents;
       std::string error;
       ASSERT_TRUE(scheme->BuildLimitStencils(stage.Level, masks, error)) << mesh.Name << ": " << error;
-      const std::vector<double> limit = ApplyTable(masks, stage.Points);
+      const std::vector<double> limit = subdtest::ApplyToPoints(masks, stage.Points);
       const bool closed = stage.Level.Topology.GetNumBoundaryEdges() == 0;
       if (closed)
       {
         ASSERT_TRUE(scheme->BuildLimitTangentStencils(stage.Level, tangents, error)) << mesh.Name << ": " << error;
       }
-      const std::vector<double> t = closed ? ApplyTable(tangents, stage.Points) : std::vector<double>();
+      const std::vector<double> t = closed ? subdtest::ApplyToPoints(tangents, stage.Points) : std::vector<double>();
       // The V-face of each smooth vertex: the child face holding its corner points.
       const subd::MeshTopology& topo = stage.Level.Topology;
       const subd::DualPoints dual = subd::NumberDualPoints(stage.Level);

@@ -49,8 +49,7 @@ TEST(LoopRules, MasksMatchPublishedRules)
     const subdtest::TestMesh mesh = subdtest::Bipyramid(n).Jitter(0.2);
     const subd::Level base = subdtest::BaseLevel(mesh);
     const subd::StencilTable table = subd::BuildLoopStencils(base);
-    std::vector<double> child(static_cast<size_t>(table.GetNumRows()) * 3);
-    table.Apply(mesh.Points.data(), child.data(), 3);
+    const std::vector<double> child = subdtest::ApplyToPoints(table, mesh.Points);
     const subd::MeshTopology& t = base.Topology;
     const subd::TriangleSplitNumbering number{ t.GetNumEdges() };
     auto P = [&](Index v, int k) { return mesh.Points[3 * v + k]; };

@@ -46,8 +46,7 @@ TEST(Properties, RegularGridReproducesBicubicBSpline)
   for (int l = 1; l <= 3; ++l)
   {
     const subd::StencilTable table = scheme.BuildStencils(level);
-    std::vector<double> child(static_cast<size_t>(table.GetNumRows()) * 3);
-    table.Apply(points.data(), child.data(), 3);
+    std::vector<double> child = subdtest::ApplyToPoints(table, points);
     // Parameters of child points: the same stencils with bilinear weights would average, so
     // compute them directly from the split.
     const subd::MeshTopology& t = level.Topology;

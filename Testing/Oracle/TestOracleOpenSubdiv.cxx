@@ -314,8 +314,7 @@ TEST_P(SchemeOracle, MatchesOpenSubdiv)
     Point3* osdDst = osdChild.data();
     primvar.Interpolate(l, osdSrc, osdDst);
     subd::StencilTable stencils = scheme.BuildStencils(level);
-    std::vector<double> mineChild(static_cast<size_t>(stencils.GetNumRows()) * 3);
-    stencils.Apply(mine.data(), mineChild.data(), 3);
+    std::vector<double> mineChild = subdtest::ApplyToPoints(stencils, mine);
     level = scheme.Split(level, subd::ChildTopology::Full);
 
     double worst = 0.0;
@@ -380,8 +379,7 @@ TEST_P(SchemeOracle, MatchesOpenSubdiv)
     std::string error;
     ASSERT_TRUE(subd::BuildCatmullClarkLimitStencils(level, limit, error)) << error;
   }
-  std::vector<double> mineLimit(static_cast<size_t>(limit.GetNumRows()) * 3);
-  limit.Apply(mine.data(), mineLimit.data(), 3);
+  const std::vector<double> mineLimit = subdtest::ApplyToPoints(limit, mine);
   double worst = 0.0;
   for (size_t i = 0; i < osdLimit.size(); ++i)
   {
