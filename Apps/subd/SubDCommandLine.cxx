@@ -1,7 +1,10 @@
 #include "SubDCommandLine.h"
+
 #include "SubDArgumentReader.h"
 #include "SubDBuiltinCages.h"
 #include "SubDMeshIO.h"
+
+#include "vtkSubDScene.h"
 
 #include <algorithm>
 #include <cmath>
@@ -155,7 +158,8 @@ std::string UsageText()
          "  --image FILE.png   render the result: curvature colours, control cage, creases\n"
          "  --compare S1,S2,.. with --image: a side-by-side grid of these schemes (or 'all') at\n"
          "                     the same level, seen through one camera\n"
-         "  --color C          none, mean or gaussian (discrete curvature; default mean)\n"
+         "  --color C          none, mean, gaussian, k1 or k2 (principal curvatures k1 >= k2):\n"
+         "                     discrete curvature, or the limit's with --curvature (default mean)\n"
          "  --view-size WxH    pixels per view, 64..4096 each (default 500x500)\n"
          "  --no-cage          do not overlay the control cage\n"
          "  -q, --quiet        no summary line\n"
@@ -316,9 +320,9 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
       {
         return false;
       }
-      if (cmd.Color != "none" && cmd.Color != "mean" && cmd.Color != "gaussian")
+      if (vtkSubDScene::ColoringFromName(cmd.Color.c_str()) < 0)
       {
-        error = "--color wants none, mean or gaussian, not '" + cmd.Color + "'";
+        error = "--color wants none, mean, gaussian, k1 or k2, not '" + cmd.Color + "'";
         return false;
       }
     }

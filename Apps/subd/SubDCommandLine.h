@@ -19,7 +19,7 @@ struct CommandLine
   std::vector<std::string> CurveOptions;   ///< options given that only curve schemes take
   std::string Image;                ///< PNG to render the result to (empty: none)
   std::vector<std::string> Compare; ///< with Image: the schemes of a side-by-side grid
-  std::string Color = "mean";       ///< none, mean or gaussian (curvature colouring)
+  std::string Color = "mean";       ///< none, mean, gaussian, k1 or k2 (curvature colouring)
   int ViewSize[2] = { 500, 500 };   ///< pixels per view
   bool Cage = true;                 ///< overlay the control cage
   bool Quiet = false;

@@ -15,15 +15,6 @@ namespace subdapp
 {
 namespace
 {
-int ColoringOf(const std::string& color)
-{
-  if (color == "none")
-  {
-    return vtkSubDScene::COLOR_NONE;
-  }
-  return color == "gaussian" ? vtkSubDScene::COLOR_GAUSSIAN_CURVATURE : vtkSubDScene::COLOR_MEAN_CURVATURE;
-}
-
 std::string TitleOf(const std::string& scheme, int levels)
 {
   return scheme + ", " + std::to_string(levels) + (levels == 1 ? " level" : " levels");
@@ -37,7 +28,7 @@ bool RenderImage(const CommandLine& cmd, vtkPolyData* cage, vtkPolyData* result,
   MessageCollector sceneMessages;
   sceneMessages.Watch(scene);
   sceneMessages.Watch(scene->GetRenderWindow());
-  scene->SetColoring(ColoringOf(cmd.Color));
+  scene->SetColoring(vtkSubDScene::ColoringFromName(cmd.Color.c_str()));
   scene->SetShowCage(cmd.Cage);
   scene->SetViewSize(cmd.ViewSize[0], cmd.ViewSize[1]);
   std::vector<vtkSmartPointer<vtkPolyData>> keep; // the compared results outlive their filters

@@ -1,16 +1,14 @@
 #include "vtkSubDScene.h"
 
+#include "SubDSceneColoring.h"
+#include "SubDSceneOverlays.h"
 #include "vtkSubDOffscreenRenderWindow.h"
 
 #include "vtkActor.h"
 #include "vtkBoundingBox.h"
 #include "vtkCamera.h"
-#include "vtkCellArray.h"
-#include "vtkColorTransferFunction.h"
 #include "vtkCurvatures.h"
 #include "vtkDataArray.h"
-#include "vtkExtractEdges.h"
-#include "vtkGlyph3D.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
 #include "vtkNew.h"
@@ -26,17 +24,15 @@
 #include "vtkRendererCollection.h"
 #include "vtkScalarBarActor.h"
 #include "vtkSmartPointer.h"
-#include "vtkSphereSource.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
 #include "vtkTriangleFilter.h"
-#include "vtkTubeFilter.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
-#include <map>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -44,8 +40,6 @@
 
 namespace
 {
-const double CageColor[3] = { 0.95, 0.75, 0.1 };
-const double CreaseColor[3] = { 0.9, 0.2, 0.85 };
 const double SurfaceColor[3] = { 0.78, 0.8, 0.86 };
 const double Background[3] = { 0.32, 0.34, 0.43 };
 
@@ -55,15 +49,6 @@ struct View
   vtkSmartPointer<vtkPolyData> Cage;
   std::string Title;
 };
-
-// The points and polygons of a mesh (its lines and vertices left out).
-vtkSmartPointer<vtkPolyData> PolygonsOf(vtkPolyData* mesh)
-{
-  auto faces = vtkSmartPointer<vtkPolyData>::New();
-  faces->SetPoints(mesh->GetPoints());
-  faces->SetPolys(mesh->GetPolys());
-  return faces;
-}
 
 // The renderer of cell k of a grid of `columns` x `rows` views, filled from the top left.
 vtkSmartPointer<vtkRenderer> GridRenderer(int k, int columns, int rows)
@@ -76,71 +61,36 @@ vtkSmartPointer<vtkRenderer> GridRenderer(int k, int columns, int rows)
   return renderer;
 }
 
-// |curvature| at the points of a triangle mesh that are not on its boundary (where discrete
-// curvature is meaningless: vtkCurvatures' angle deficit there is about pi).
-void AppendInteriorMagnitudes(vtkPolyData* triangles, vtkDataArray* curvature, std::vector<double>& magnitudes)
-{
-  std::map<std::pair<vtkIdType, vtkIdType>, int> edgeUses;
-  vtkCellArray* cells = triangles->GetPolys();
-  vtkIdType n;
-  const vtkIdType* ids;
-  for (cells->InitTraversal(); cells->GetNextCell(n, ids);)
-  {
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      const vtkIdType a = ids[k], b = ids[(k + 1) % n];
-      ++edgeUses[{ std::min(a, b), std::max(a, b) }];
-    }
-  }
-  std::vector<bool> boundary(static_cast<size_t>(triangles->GetNumberOfPoints()), false);
-  for (const auto& edge : edgeUses)
-  {
-    if (edge.second == 1)
-    {
-      boundary[edge.first.first] = boundary[edge.first.second] = true;
-    }
-  }
-  for (vtkIdType i = 0; i < curvature->GetNumberOfTuples(); ++i)
-  {
-    const double value = std::abs(curvature->GetComponent(i, 0));
-    if (!boundary[i] && std::isfinite(value))
-    {
-      magnitudes.push_back(value);
-    }
-  }
-}
-
 // The surface's polygons as triangles, with the chosen curvature as active point scalars
-// (none for COLOR_NONE), shaded with normals split at 60 degrees. The interior curvature
-// magnitudes are appended to `magnitudes`.
-vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* surface, int coloring, std::vector<double>& magnitudes)
+// (none for COLOR_NONE), shaded with normals split at 60 degrees. The curvature values at
+// interior points are appended to `values`.
+vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* surface, int coloring, std::vector<double>& values)
 {
   if (surface->GetNumberOfPolys() == 0)
   {
     return vtkSmartPointer<vtkPolyData>::New(); // a curve: drawn as tubes (Render)
   }
   vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(PolygonsOf(surface));
+  triangles->SetInputData(subdrender::PolygonsOf(surface));
   triangles->PassLinesOff();
   triangles->PassVertsOff();
   vtkSmartPointer<vtkAlgorithm> last = triangles;
   vtkNew<vtkCurvatures> curvatures;
-  const char* name = coloring == vtkSubDScene::COLOR_MEAN_CURVATURE ? "Mean_Curvature" : "Gauss_Curvature";
+  const char* name = subdrender::CurvatureArrayName(coloring);
   triangles->Update();
-  vtkDataArray* exact = triangles->GetOutput()->GetPointData()->GetArray(name);
-  if (coloring != vtkSubDScene::COLOR_NONE && exact)
+  vtkDataArray* exact = name ? triangles->GetOutput()->GetPointData()->GetArray(name) : nullptr;
+  if (exact)
   {
     // The surface carries its limit surface's curvature (ComputeCurvature): use it.
-    AppendInteriorMagnitudes(triangles->GetOutput(), exact, magnitudes);
+    subdrender::AppendInteriorValues(triangles->GetOutput(), exact, values);
   }
-  else if (coloring != vtkSubDScene::COLOR_NONE)
+  else if (name)
   {
     curvatures->SetInputConnection(triangles->GetOutputPort());
-    curvatures->SetCurvatureType(
-      coloring == vtkSubDScene::COLOR_MEAN_CURVATURE ? VTK_CURVATURE_MEAN : VTK_CURVATURE_GAUSS);
+    curvatures->SetCurvatureType(subdrender::DiscreteCurvatureType(coloring));
     curvatures->Update();
-    AppendInteriorMagnitudes(
-      curvatures->GetOutput(), curvatures->GetOutput()->GetPointData()->GetArray(name), magnitudes);
+    subdrender::AppendInteriorValues(
+      curvatures->GetOutput(), curvatures->GetOutput()->GetPointData()->GetArray(name), values);
     last = curvatures;
   }
   vtkNew<vtkPolyDataNormals> normals;
@@ -151,102 +101,13 @@ vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* surface, int coloring, 
   normals->AutoOrientNormalsOff();
   normals->Update();
   vtkSmartPointer<vtkPolyData> result = normals->GetOutput();
-  if (coloring != vtkSubDScene::COLOR_NONE)
+  if (name)
   {
     result->GetPointData()->SetActiveScalars(name);
   }
   return result;
 }
 
-// The 95th percentile of the magnitudes: a symmetric range robust to the spikes discrete
-// curvature has at corners and creases.
-double SymmetricRange(std::vector<double>& magnitudes)
-{
-  if (magnitudes.empty())
-  {
-    return 1.0;
-  }
-  const size_t k = std::min(magnitudes.size() - 1, static_cast<size_t>(0.95 * magnitudes.size()));
-  std::nth_element(magnitudes.begin(), magnitudes.begin() + static_cast<std::ptrdiff_t>(k), magnitudes.end());
-  return magnitudes[k] > 1e-12 ? magnitudes[k] : 1.0;
-}
-
-// Moreland's cool-to-warm map sampled into a table over [-range, range].
-vtkSmartPointer<vtkLookupTable> DivergingTable(double range)
-{
-  vtkNew<vtkColorTransferFunction> map;
-  map->SetColorSpaceToDiverging();
-  map->AddRGBPoint(-range, 0.230, 0.299, 0.754);
-  map->AddRGBPoint(range, 0.706, 0.016, 0.150);
-  auto table = vtkSmartPointer<vtkLookupTable>::New();
-  table->SetNumberOfTableValues(256);
-  table->SetRange(-range, range);
-  for (int i = 0; i < 256; ++i)
-  {
-    double rgb[3];
-    map->GetColor(-range + 2.0 * range * i / 255.0, rgb);
-    table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
-  }
-  return table;
-}
-
-vtkSmartPointer<vtkActor> TubeActor(vtkPolyData* lines, double radius, const double color[3])
-{
-  vtkNew<vtkTubeFilter> tubes;
-  tubes->SetInputData(lines);
-  tubes->SetRadius(radius);
-  tubes->SetNumberOfSides(8);
-  tubes->CappingOn();
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(tubes->GetOutputPort());
-  mapper->ScalarVisibilityOff();
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(color[0], color[1], color[2]);
-  return actor;
-}
-
-// The points of `mesh` with its lines only.
-vtkSmartPointer<vtkPolyData> LinesOf(vtkPolyData* mesh)
-{
-  auto lines = vtkSmartPointer<vtkPolyData>::New();
-  lines->SetPoints(mesh->GetPoints());
-  lines->SetLines(mesh->GetLines());
-  return lines;
-}
-
-// The edges of the cage's polygons (or, for a curve's control polygon, its lines) as tubes,
-// and its vertices as spheres.
-void AddCage(vtkRenderer* renderer, vtkPolyData* cage, double size)
-{
-  vtkSmartPointer<vtkPolyData> cageEdges = LinesOf(cage);
-  if (cage->GetNumberOfPolys() > 0)
-  {
-    vtkNew<vtkExtractEdges> edges;
-    edges->SetInputData(PolygonsOf(cage));
-    edges->Update();
-    cageEdges = edges->GetOutput();
-  }
-  renderer->AddActor(TubeActor(cageEdges, 0.004 * size, CageColor));
-  vtkNew<vtkSphereSource> sphere;
-  sphere->SetRadius(0.012 * size);
-  sphere->SetThetaResolution(12);
-  sphere->SetPhiResolution(8);
-  vtkNew<vtkPolyData> points;
-  points->SetPoints(cageEdges->GetPoints());
-  vtkNew<vtkGlyph3D> glyphs;
-  glyphs->SetInputData(points);
-  glyphs->SetSourceConnection(sphere->GetOutputPort());
-  glyphs->ScalingOff();
-  glyphs->OrientOff();
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(glyphs->GetOutputPort());
-  mapper->ScalarVisibilityOff();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(CageColor[0] * 0.8, CageColor[1] * 0.8, CageColor[2] * 0.8);
-  renderer->AddActor(actor);
-}
 }
 
 class vtkSubDScene::vtkInternals
@@ -289,10 +150,62 @@ int vtkSubDScene::GetNumberOfViews() const
   return static_cast<int>(this->Internals->Views.size());
 }
 
+namespace
+{
+const char* const ColoringNames[] = { "none", "mean", "gaussian", "k1", "k2" };
+const char* const ColorMapNames[] = { "cool-to-warm", "rainbow", "black-body", "grayscale" };
+
+template <size_t N>
+int IndexOfName(const char* const (&names)[N], const char* name)
+{
+  for (size_t i = 0; name && i < N; ++i)
+  {
+    if (std::strcmp(names[i], name) == 0)
+    {
+      return static_cast<int>(i);
+    }
+  }
+  return -1;
+}
+}
+
 const char* vtkSubDScene::GetColoringAsString()
 {
-  static const char* const names[] = { "none", "mean curvature", "Gaussian curvature" };
-  return names[this->Coloring];
+  return GetColoringName(this->Coloring);
+}
+
+const char* vtkSubDScene::GetColoringName(int coloring)
+{
+  return coloring >= COLOR_NONE && coloring <= COLOR_MINIMUM_CURVATURE ? ColoringNames[coloring] : "";
+}
+
+int vtkSubDScene::ColoringFromName(const char* name)
+{
+  return IndexOfName(ColoringNames, name);
+}
+
+const char* vtkSubDScene::GetColorMapName(int map)
+{
+  return map >= COLORMAP_COOL_TO_WARM && map <= COLORMAP_GRAYSCALE ? ColorMapNames[map] : "";
+}
+
+int vtkSubDScene::ColorMapFromName(const char* name)
+{
+  return IndexOfName(ColorMapNames, name);
+}
+
+void vtkSubDScene::SetCageSelection(vtkIdType a, vtkIdType b)
+{
+  if (a < 0)
+  {
+    a = b = -1;
+  }
+  if (a != this->CageSelection[0] || b != this->CageSelection[1])
+  {
+    this->CageSelection[0] = a;
+    this->CageSelection[1] = b < 0 ? -1 : b;
+    this->Modified();
+  }
 }
 
 void vtkSubDScene::SetViewSize(int width, int height)
@@ -341,11 +254,11 @@ bool vtkSubDScene::Render()
   window->GetRenderers()->RemoveAllItems();
 
   std::vector<vtkSmartPointer<vtkPolyData>> surfaces;
-  std::vector<double> magnitudes; // interior |curvature| of every view, for one colour scale
+  std::vector<double> values; // interior curvature of every view, for one colour scale
   vtkBoundingBox box;
   for (const View& view : views)
   {
-    surfaces.push_back(PrepareSurface(view.Surface, this->Coloring, magnitudes));
+    surfaces.push_back(PrepareSurface(view.Surface, this->Coloring, values));
     double bounds[6];
     view.Surface->GetBounds(bounds);
     box.AddBounds(bounds);
@@ -356,8 +269,12 @@ bool vtkSubDScene::Render()
     }
   }
   const double size = box.IsValid() ? box.GetDiagonalLength() : 1.0;
-  const double range = this->Coloring == COLOR_NONE ? 1.0 : SymmetricRange(magnitudes);
-  vtkSmartPointer<vtkLookupTable> table = DivergingTable(range);
+  const std::array<double, 2> range = this->Coloring == COLOR_NONE
+    ? std::array<double, 2>{ -1.0, 1.0 }
+    : subdrender::ColorRange(values, this->RangeMode == RANGE_SYMMETRIC, this->RangePercentile);
+  this->ColorRange[0] = range[0];
+  this->ColorRange[1] = range[1];
+  vtkSmartPointer<vtkLookupTable> table = subdrender::MakeColorTable(this->ColorMap, range[0], range[1]);
 
   // One camera for all views, looking at the centre of the union of the bounds.
   vtkCamera* camera = this->Internals->Camera;
@@ -418,18 +335,29 @@ bool vtkSubDScene::Render()
     actor->GetProperty()->SetSpecularPower(20.0);
     renderer->AddActor(actor);
 
+    if (this->ShowWireframe && view.Surface->GetNumberOfPolys() > 0)
+    {
+      renderer->AddActor(subdrender::WireframeActor(view.Surface));
+    }
     if (this->ShowCage && view.Cage && view.Cage->GetNumberOfPoints() > 0)
     {
-      AddCage(renderer, view.Cage, size);
+      subdrender::AddCage(renderer, view.Cage, { size, this->CageOpacity });
+    }
+    if (view.Cage && this->CageSelection[0] >= 0)
+    {
+      subdrender::AddCageSelection(renderer, view.Cage, this->CageSelection[0], this->CageSelection[1], size);
     }
     if (view.Surface->GetNumberOfPolys() == 0)
     {
       // A curve: the refined polylines as tubes.
-      renderer->AddActor(TubeActor(LinesOf(view.Surface), 0.008 * size, SurfaceColor));
+      renderer->AddActor(subdrender::TubeActor(subdrender::LinesOf(view.Surface), 0.008 * size, SurfaceColor));
     }
-    else if (this->ShowCreases && view.Surface->GetNumberOfLines() > 0)
+    else if (this->ShowCreases)
     {
-      renderer->AddActor(TubeActor(LinesOf(view.Surface), 0.005 * size, CreaseColor));
+      if (vtkSmartPointer<vtkActor> creases = subdrender::SharpLinesActor(view.Surface, 0.005 * size))
+      {
+        renderer->AddActor(creases);
+      }
     }
     if (!view.Title.empty())
     {
@@ -446,7 +374,9 @@ bool vtkSubDScene::Render()
     {
       vtkNew<vtkScalarBarActor> bar;
       bar->SetLookupTable(table);
-      bar->SetTitle(this->Coloring == COLOR_MEAN_CURVATURE ? "Mean curvature" : "Gaussian curvature");
+      static const char* const titles[] = { "", "Mean curvature", "Gaussian curvature", "Maximum curvature k1",
+        "Minimum curvature k2" };
+      bar->SetTitle(titles[this->Coloring]);
       bar->SetOrientationToHorizontal();
       bar->SetNumberOfLabels(3);
       bar->SetLabelFormat("%-#6.3g");
@@ -529,6 +459,13 @@ void vtkSubDScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ShowCage: " << (this->ShowCage ? "On" : "Off") << "\n";
   os << indent << "ShowCreases: " << (this->ShowCreases ? "On" : "Off") << "\n";
   os << indent << "ShowScalarBar: " << (this->ShowScalarBar ? "On" : "Off") << "\n";
+  os << indent << "RangeMode: " << (this->RangeMode == RANGE_SYMMETRIC ? "Symmetric" : "Percentile") << "\n";
+  os << indent << "RangePercentile: " << this->RangePercentile << "\n";
+  os << indent << "ColorRange: " << this->ColorRange[0] << " " << this->ColorRange[1] << "\n";
+  os << indent << "ColorMap: " << GetColorMapName(this->ColorMap) << "\n";
+  os << indent << "CageOpacity: " << this->CageOpacity << "\n";
+  os << indent << "ShowWireframe: " << (this->ShowWireframe ? "On" : "Off") << "\n";
+  os << indent << "CageSelection: " << this->CageSelection[0] << " " << this->CageSelection[1] << "\n";
   os << indent << "ViewSize: " << this->ViewSize[0] << " x " << this->ViewSize[1] << "\n";
   os << indent << "ViewAzimuth: " << this->ViewAzimuth << "\n";
   os << indent << "ViewElevation: " << this->ViewElevation << "\n";

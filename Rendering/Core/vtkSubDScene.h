@@ -2,17 +2,26 @@
  * @class   vtkSubDScene
  * @brief   SubD's standard picture of one or more subdivided surfaces, rendered offscreen
  *
- * Each view shows a surface, coloured by its curvature (mean or Gaussian): the exact
- * curvature of the limit surface when the surface carries it ("Mean_Curvature" /
- * "Gauss_Curvature" point data, as SubD's filters make with ComputeCurvature), else its
- * discrete curvature (vtkCurvatures on the triangulated surface), with a diverging cool-to-warm colour map
- * (K. Moreland, "Diverging Color Maps for Scientific Visualization", ISVC 2009) over a
- * symmetric range (the 95th percentile of |curvature| over the interior points of all views,
- * so that views are comparable; boundary points, where discrete curvature means nothing,
- * and spikes at corners do not wash out the picture) and a scalar bar; its
- * control cage overlaid (edges as tubes and vertices as spheres, in gold); and the crease
- * lines of the surface (its line cells, as the SubD filters output them) in magenta. Shading
- * uses point normals split at 60 degrees, so sharp creases look sharp.
+ * Each view shows a surface coloured by a curvature (mean, Gaussian, or the principal
+ * curvatures k1 >= k2): the exact curvature of the limit surface when the surface carries it
+ * ("Mean_Curvature", "Gauss_Curvature", "Maximum_Curvature", "Minimum_Curvature" point data,
+ * as SubD's filters make with ComputeCurvature), else the discrete curvature of the refined
+ * mesh (vtkCurvatures on the triangulated surface). The colours span one range for all views
+ * (so that views are comparable), taken over the interior points (boundary points, where
+ * discrete curvature means nothing, are left out) as a percentile, not the extremes, so that
+ * spikes at corners do not wash out the picture: symmetric about zero (RangeMode Symmetric,
+ * the default), or the central RangePercentile percent of the values (Percentile). The colour
+ * map is Moreland's diverging cool-to-warm (K. Moreland, "Diverging Color Maps for Scientific
+ * Visualization", ISVC 2009) by default, or a rainbow, black-body or grey ramp; a scalar bar
+ * shows it.
+ *
+ * Overlays: the control cage (edges as tubes and vertices as spheres, in gold, with
+ * CageOpacity), its crease edges ("Sharpness" line cells) and corners ("CornerSharpness")
+ * coloured by sharpness from orange (barely semi-sharp) to magenta (infinitely sharp); the
+ * surface's own crease lines (its line cells, as SubD's filters output them, with their
+ * decayed sharpness) in the same colours; optionally the refined mesh's edges (ShowWireframe);
+ * and a selected cage edge or vertex in cyan (the explorer's crease editing). Shading uses
+ * point normals split at 60 degrees, so sharp creases look sharp.
  *
  * A view whose "surface" has no polygons is a curve (vtkSubDCurveFilter's output): its lines
  * are drawn as tubes in the surface colour, with its control polygon (the cage's lines)
@@ -57,19 +66,70 @@ public:
   {
     COLOR_NONE = 0,
     COLOR_MEAN_CURVATURE = 1,
-    COLOR_GAUSSIAN_CURVATURE = 2
+    COLOR_GAUSSIAN_CURVATURE = 2,
+    COLOR_MAXIMUM_CURVATURE = 3, ///< k1, the larger principal curvature
+    COLOR_MINIMUM_CURVATURE = 4  ///< k2, the smaller one
   };
 
   ///@{
   /**
-   * What colours the surfaces (default COLOR_MEAN_CURVATURE).
+   * What colours the surfaces (default COLOR_MEAN_CURVATURE). The short names "none",
+   * "mean", "gaussian", "k1" and "k2" are what `subd --color` and the explorer take:
+   * ColoringFromName returns -1 for any other.
    */
-  vtkSetClampMacro(Coloring, int, COLOR_NONE, COLOR_GAUSSIAN_CURVATURE);
+  vtkSetClampMacro(Coloring, int, COLOR_NONE, COLOR_MINIMUM_CURVATURE);
   vtkGetMacro(Coloring, int);
   void SetColoringToNone() { this->SetColoring(COLOR_NONE); }
   void SetColoringToMeanCurvature() { this->SetColoring(COLOR_MEAN_CURVATURE); }
   void SetColoringToGaussianCurvature() { this->SetColoring(COLOR_GAUSSIAN_CURVATURE); }
+  void SetColoringToMaximumCurvature() { this->SetColoring(COLOR_MAXIMUM_CURVATURE); }
+  void SetColoringToMinimumCurvature() { this->SetColoring(COLOR_MINIMUM_CURVATURE); }
   const char* GetColoringAsString();
+  static const char* GetColoringName(int coloring);
+  static int ColoringFromName(const char* name);
+  ///@}
+
+  enum RangeModes
+  {
+    RANGE_SYMMETRIC = 0, ///< [-m, m], m the RangePercentile-th percentile of |curvature|
+    RANGE_PERCENTILE = 1 ///< the central RangePercentile percent of the values
+  };
+
+  ///@{
+  /**
+   * The range the colours span (default RANGE_SYMMETRIC, RangePercentile 95, in [50, 100];
+   * 100 takes the extremes).
+   */
+  vtkSetClampMacro(RangeMode, int, RANGE_SYMMETRIC, RANGE_PERCENTILE);
+  vtkGetMacro(RangeMode, int);
+  void SetRangeModeToSymmetric() { this->SetRangeMode(RANGE_SYMMETRIC); }
+  void SetRangeModeToPercentile() { this->SetRangeMode(RANGE_PERCENTILE); }
+  vtkSetClampMacro(RangePercentile, double, 50.0, 100.0);
+  vtkGetMacro(RangePercentile, double);
+  ///@}
+
+  /**
+   * The range the colours spanned at the last Render() ([-1, 1] before, or without colouring).
+   */
+  vtkGetVector2Macro(ColorRange, double);
+
+  enum ColorMaps
+  {
+    COLORMAP_COOL_TO_WARM = 0,
+    COLORMAP_RAINBOW = 1,
+    COLORMAP_BLACK_BODY = 2,
+    COLORMAP_GRAYSCALE = 3
+  };
+
+  ///@{
+  /**
+   * The colour map (default COLORMAP_COOL_TO_WARM). Short names: "cool-to-warm", "rainbow",
+   * "black-body", "grayscale" (ColorMapFromName returns -1 for any other).
+   */
+  vtkSetClampMacro(ColorMap, int, COLORMAP_COOL_TO_WARM, COLORMAP_GRAYSCALE);
+  vtkGetMacro(ColorMap, int);
+  static const char* GetColorMapName(int map);
+  static int ColorMapFromName(const char* name);
   ///@}
 
   ///@{
@@ -85,6 +145,34 @@ public:
   vtkSetMacro(ShowScalarBar, bool);
   vtkGetMacro(ShowScalarBar, bool);
   vtkBooleanMacro(ShowScalarBar, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Opacity of the cage's edges and vertices, in [0, 1] (default 1); its creases and corners
+   * stay opaque.
+   */
+  vtkSetClampMacro(CageOpacity, double, 0.0, 1.0);
+  vtkGetMacro(CageOpacity, double);
+  ///@}
+
+  ///@{
+  /**
+   * Draw the edges of the refined surface's polygons (default off).
+   */
+  vtkSetMacro(ShowWireframe, bool);
+  vtkGetMacro(ShowWireframe, bool);
+  vtkBooleanMacro(ShowWireframe, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Mark the cage edge (a, b), or the cage vertex a when b < 0, in every view; a < 0 marks
+   * nothing (the default).
+   */
+  void SetCageSelection(vtkIdType a, vtkIdType b);
+  vtkIdType GetCageSelectionA() const { return this->CageSelection[0]; }
+  vtkIdType GetCageSelectionB() const { return this->CageSelection[1]; }
   ///@}
 
   ///@{
@@ -159,6 +247,13 @@ protected:
   bool ShowCage = true;
   bool ShowCreases = true;
   bool ShowScalarBar = true;
+  int RangeMode = RANGE_SYMMETRIC;
+  double RangePercentile = 95.0;
+  double ColorRange[2] = { -1.0, 1.0 };
+  int ColorMap = COLORMAP_COOL_TO_WARM;
+  double CageOpacity = 1.0;
+  bool ShowWireframe = false;
+  vtkIdType CageSelection[2] = { -1, -1 };
   int ViewSize[2] = { 400, 400 };
   double ViewAzimuth = 30.0;
   double ViewElevation = 25.0;
