@@ -3,13 +3,107 @@
 #include "SubDExplorerWindow.h"
 
 #include "QVTKOpenGLNativeWidget.h"
+#include "vtkCellArray.h"
+#include "vtkPolyData.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
+#include <QSettings>
 #include <QSurfaceFormat>
 #include <QTimer>
 
+#include <algorithm>
 #include <iostream>
+#include <vector>
+
+namespace
+{
+using subdexplorer::ExplorerOptions;
+using subdexplorer::ExplorerWindow;
+
+// The command line's settings, over the remembered layout: only the options given.
+void ApplyOptions(const ExplorerOptions& options, ExplorerWindow& window)
+{
+  auto given = [&](const char* name) { return options.Given.count(name) > 0; };
+  for (size_t v = 0; v < options.Schemes.size() && v < ExplorerWindow::MaxViews; ++v)
+  {
+    window.SetScheme(static_cast<int>(v), options.Schemes[v]);
+  }
+  if (given("--views"))
+    window.SetViewCount(options.Views);
+  if (given("--levels"))
+    window.SetLevels(options.Levels);
+  if (given("--color"))
+    window.SetColoring(options.Color);
+  if (given("--colormap"))
+    window.SetColorMap(options.ColorMap);
+  if (given("--range") || given("--percentile"))
+    window.SetColorRange(options.RangeSymmetric, options.RangePercentile);
+  if (given("--no-cage"))
+    window.SetShowCage(false);
+  if (given("--cage-opacity"))
+    window.SetCageOpacity(options.CageOpacity);
+  if (given("--wireframe"))
+    window.SetShowWireframe(true);
+  if (given("--limit"))
+    window.SetLimit(true);
+}
+
+// --time-edits: sets the sharpness of `count` cage edges in turn (2, then back to 0 on the
+// next pass), each through the Creases panel's SetSharpness, waits for the views, and prints
+// the median and worst times of the whole edit, the subdivision and the scene.
+bool TimeEdits(ExplorerWindow& window, int count)
+{
+  vtkPolyData* cage = window.GetCage();
+  std::vector<std::pair<vtkIdType, vtkIdType>> edges;
+  vtkCellArray* polys = cage->GetPolys();
+  const vtkIdType stride = std::max<vtkIdType>(1, polys->GetNumberOfCells() / std::max(1, count));
+  vtkIdType size;
+  const vtkIdType* ids;
+  vtkIdType cell = 0;
+  for (polys->InitTraversal(); polys->GetNextCell(size, ids); ++cell)
+  {
+    if (cell % stride == 0 && static_cast<int>(edges.size()) < count)
+    {
+      edges.emplace_back(ids[0], ids[1]);
+    }
+  }
+  if (edges.empty())
+  {
+    std::cerr << "subd-explorer: --time-edits needs a cage with polygons\n";
+    return false;
+  }
+  std::vector<double> total, subdivision, scene;
+  for (int k = 0; k < count; ++k)
+  {
+    const auto& edge = edges[static_cast<size_t>(k) % edges.size()];
+    const double sharpness = (k / edges.size()) % 2 == 0 ? 2.0 : 0.0;
+    QElapsedTimer clock;
+    clock.start();
+    QString message;
+    if (!window.SetSharpness(edge.first, edge.second, sharpness, message))
+    {
+      std::cerr << "subd-explorer: " << message.toStdString() << "\n";
+      return false;
+    }
+    window.WaitForUpdate();
+    total.push_back(static_cast<double>(clock.nsecsElapsed()) * 1e-6);
+    subdivision.push_back(window.GetLastSubdivisionMilliseconds());
+    scene.push_back(window.GetLastSceneMilliseconds());
+  }
+  auto report = [](const char* what, std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    std::cout << "  " << what << ": median " << values[values.size() / 2] << " ms, worst " << values.back()
+              << " ms\n";
+  };
+  std::cout << "subd-explorer: " << count << " sharpness edits on a cage of " << cage->GetNumberOfPolys()
+            << " faces\n";
+  report("edit to picture", total);
+  report("subdivision (worker)", subdivision);
+  report("scene (colouring, overlays, render)", scene);
+  return true;
+}
+}
 
 int main(int argc, char* argv[])
 {
@@ -18,7 +112,7 @@ int main(int argc, char* argv[])
   QApplication::setOrganizationName("SubD");
   QApplication::setApplicationName("SubD Explorer");
 
-  subdexplorer::ExplorerOptions options;
+  ExplorerOptions options;
   std::string error;
   if (!subdexplorer::ParseExplorerOptions(argc, argv, options, error))
   {
@@ -31,17 +125,18 @@ int main(int argc, char* argv[])
     return 0;
   }
 
-  subdexplorer::ExplorerWindow window;
-  window.resize(options.Width, options.Height);
-  for (size_t v = 0; v < options.Schemes.size() && v < subdexplorer::ExplorerWindow::MaxViews; ++v)
+  ExplorerWindow window;
+  if (!options.NoSettings)
   {
-    window.SetScheme(static_cast<int>(v), options.Schemes[v]);
+    window.UseSettings(options.SettingsFile.empty()
+        ? std::make_unique<QSettings>()
+        : std::make_unique<QSettings>(QString::fromStdString(options.SettingsFile), QSettings::IniFormat));
   }
-  window.SetViewCount(options.Views);
-  window.SetLevels(options.Levels);
-  window.SetColoring(options.Color);
-  window.SetShowCage(options.Cage);
-  window.SetLimit(options.Limit);
+  if (options.Given.count("--size") || options.NoSettings)
+  {
+    window.resize(options.Width, options.Height);
+  }
+  ApplyOptions(options, window);
   if (!options.Load.empty())
   {
     QString message;
@@ -55,7 +150,7 @@ int main(int argc, char* argv[])
   {
     window.LoadBuiltin(options.Builtin);
   }
-  for (const subdexplorer::ExplorerOptions::SharpnessEdit& edit : options.Edits)
+  for (const ExplorerOptions::SharpnessEdit& edit : options.Edits)
   {
     QString message;
     if (!window.SetSharpness(edit.A, edit.B, edit.Sharpness, message))
@@ -63,6 +158,13 @@ int main(int argc, char* argv[])
       std::cerr << "subd-explorer: " << message.toStdString() << "\n";
       return 1;
     }
+  }
+  if (options.SelectA >= 0 && !window.SelectCageElement(options.SelectA, options.SelectB))
+  {
+    std::cerr << "subd-explorer: --select: " << options.SelectA
+              << (options.SelectB >= 0 ? "-" + std::to_string(options.SelectB) : std::string())
+              << " is not a vertex or an edge of the cage\n";
+    return 1;
   }
   if (!options.ExportCage.empty())
   {
@@ -93,6 +195,14 @@ int main(int argc, char* argv[])
       std::cout << "subd-explorer: update " << (window.WasLastUpdateCancelled() ? "cancelled" : "completed")
                 << ", worker done after " << clock.elapsed() << " ms" << std::endl;
     }
+    if (options.TimeEdits > 0 && !TimeEdits(window, options.TimeEdits))
+    {
+      status = 1;
+    }
+    if (options.PrintState)
+    {
+      std::cout << window.DescribeState() << std::flush;
+    }
     QString message;
     if (!options.Screenshot.empty() && !window.SaveViewsImage(QString::fromStdString(options.Screenshot), message))
     {
@@ -111,5 +221,6 @@ int main(int argc, char* argv[])
     }
   });
   const int result = app.exec();
+  window.SaveSettings();
   return status != 0 ? status : result;
 }

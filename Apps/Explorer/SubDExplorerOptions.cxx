@@ -4,6 +4,8 @@
 #include "SubDBuiltinCages.h"
 #include "SubDSchemeRegistry.h"
 
+#include "vtkSubDScene.h"
+
 #include <cstdlib>
 #include <sstream>
 
@@ -32,17 +34,26 @@ std::string ExplorerUsage()
 {
   std::ostringstream out;
   out << "usage: subd-explorer [FILE] [--builtin NAME] [--views 1|2|4] [--schemes S1,S2,...]\n"
-         "                     [--levels N] [--color none|mean|gaussian] [--no-cage] [--limit]\n"
-         "                     [--size WxH] [--screenshot VIEWS.png] [--window-shot WINDOW.png]\n"
-         "                     [--crease A-B=S]... [--corner V=S]... [--export-cage CAGE.vtp]\n"
-         "                     [--cancel-after MS] [--quit]\n"
+         "                     [--levels N] [--color none|mean|gaussian|k1|k2] [--limit]\n"
+         "                     [--colormap cool-to-warm|rainbow|black-body|grayscale]\n"
+         "                     [--range symmetric|percentile] [--percentile P] [--no-cage]\n"
+         "                     [--cage-opacity O] [--wireframe] [--size WxH]\n"
+         "                     [--screenshot VIEWS.png] [--window-shot WINDOW.png]\n"
+         "                     [--crease A-B=S]... [--corner V=S]... [--select A-B|V]\n"
+         "                     [--export-cage CAGE.vtp] [--cancel-after MS] [--time-edits N]\n"
+         "                     [--no-settings | --settings FILE.ini] [--print-state] [--quit]\n"
          "\n"
          "Compares subdivision schemes side by side on a mesh (.vtp .vtk .obj .ply .stl .off)\n"
          "or a built-in cage. --screenshot/--window-shot save pictures once the views are up to\n"
          "date; with --quit the app then exits (scripted use, e.g. under xvfb-run).\n"
          "--cancel-after MS presses Cancel MS milliseconds into the first update (as the\n"
          "Cancel button does) and reports whether the update stopped. --crease and --corner\n"
-         "set the sharpness of a cage edge or vertex as the Creases panel does.\n";
+         "set the sharpness of a cage edge or vertex as the Creases panel does; --select\n"
+         "selects one (marked in the views) as Ctrl+click does. --time-edits N times N\n"
+         "sharpness edits (subdivision and drawing) and prints the figures.\n"
+         "The layout (views, schemes, options, colouring, overlays) is remembered between\n"
+         "runs; options given on the command line override it. --no-settings neither reads\n"
+         "nor writes it; --print-state prints it once the views are up to date.\n";
   return out.str();
 }
 
@@ -53,6 +64,7 @@ bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std:
     const std::string arg = arguments.Current();
     auto value = [&](std::string& out) { return arguments.Value(out, error); };
     std::string text;
+    options.Given.insert(arg);
     if (arg == "-h" || arg == "--help")
     {
       options.Help = true;
@@ -155,17 +167,115 @@ bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std:
         return false;
       }
     }
+    else if (arg == "--select")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      char* end = nullptr;
+      options.SelectA = std::strtoll(text.c_str(), &end, 10);
+      options.SelectB = -1;
+      const bool first = end != text.c_str();
+      if (first && *end == '-')
+      {
+        const char* second = end + 1;
+        options.SelectB = std::strtoll(second, &end, 10);
+        if (end == second)
+        {
+          options.SelectB = -2;
+        }
+      }
+      if (!first || *end != '\0' || options.SelectA < 0 || options.SelectB < -1)
+      {
+        error = "--select wants A-B (an edge's two vertex ids) or V (a vertex id), not '" + text + "'";
+        return false;
+      }
+    }
     else if (arg == "--color")
     {
       if (!value(options.Color))
       {
         return false;
       }
-      if (options.Color != "none" && options.Color != "mean" && options.Color != "gaussian")
+      if (vtkSubDScene::ColoringFromName(options.Color.c_str()) < 0)
       {
-        error = "--color wants none, mean or gaussian, not '" + options.Color + "'";
+        error = "--color wants none, mean, gaussian, k1 or k2, not '" + options.Color + "'";
         return false;
       }
+    }
+    else if (arg == "--colormap")
+    {
+      if (!value(options.ColorMap))
+      {
+        return false;
+      }
+      if (vtkSubDScene::ColorMapFromName(options.ColorMap.c_str()) < 0)
+      {
+        error = "--colormap wants cool-to-warm, rainbow, black-body or grayscale, not '" + options.ColorMap + "'";
+        return false;
+      }
+    }
+    else if (arg == "--range")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      if (text != "symmetric" && text != "percentile")
+      {
+        error = "--range wants symmetric or percentile, not '" + text + "'";
+        return false;
+      }
+      options.RangeSymmetric = text == "symmetric";
+    }
+    else if (arg == "--percentile")
+    {
+      if (!value(text) ||
+        !IntegerIn(text, 50, 100, "--percentile wants an integer in 50..100", options.RangePercentile, error))
+      {
+        return false;
+      }
+    }
+    else if (arg == "--cage-opacity")
+    {
+      if (!value(text))
+      {
+        return false;
+      }
+      char* end = nullptr;
+      options.CageOpacity = std::strtod(text.c_str(), &end);
+      if (text.empty() || *end != '\0' || !(options.CageOpacity >= 0.0 && options.CageOpacity <= 1.0))
+      {
+        error = "--cage-opacity wants a number in [0, 1], not '" + text + "'";
+        return false;
+      }
+    }
+    else if (arg == "--time-edits")
+    {
+      if (!value(text) || !IntegerIn(text, 1, 1000, "--time-edits wants an integer in 1..1000", options.TimeEdits, error))
+      {
+        return false;
+      }
+    }
+    else if (arg == "--settings")
+    {
+      if (!value(options.SettingsFile))
+      {
+        return false;
+      }
+    }
+    else if (arg == "--no-settings")
+    {
+      options.NoSettings = true;
+    }
+    else if (arg == "--print-state")
+    {
+      options.PrintState = true;
+    }
+    else if (arg == "--wireframe")
+    {
+      options.Wireframe = true;
     }
     else if (arg == "--size")
     {
@@ -215,6 +325,11 @@ bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std:
       error = "more than one file ('" + options.Load + "', '" + arg + "')";
       return false;
     }
+  }
+  if (options.NoSettings && !options.SettingsFile.empty())
+  {
+    error = "--no-settings and --settings exclude each other";
+    return false;
   }
   return true;
 }

@@ -2,6 +2,7 @@
 #ifndef SubDExplorerOptions_h
 #define SubDExplorerOptions_h
 
+#include <set>
 #include <string>
 #include <vector>
 
@@ -14,9 +15,15 @@ struct ExplorerOptions
   int Views = 1;                    ///< 1, 2 or 4 linked views
   std::vector<std::string> Schemes; ///< per view (missing ones: catmull-clark, loop, butterfly, doo-sabin)
   int Levels = 2;
-  std::string Color = "mean"; ///< none, mean or gaussian
+  std::string Color = "mean"; ///< none, mean, gaussian, k1 or k2
+  std::string ColorMap = "cool-to-warm";
+  bool RangeSymmetric = true; ///< --range symmetric|percentile
+  int RangePercentile = 95;
   bool Cage = true;
+  double CageOpacity = 1.0;
+  bool Wireframe = false;
   bool Limit = false; ///< project to the limit (and use exact curvature) where the scheme can
+  long long SelectA = -1, SelectB = -1; ///< --select A-B or --select V
   std::string Screenshot; ///< PNG of the views, written once the views are up to date
   std::string WindowShot; ///< PNG of the whole window (controls included)
   bool Quit = false;      ///< quit after the screenshots
@@ -29,7 +36,14 @@ struct ExplorerOptions
   std::vector<SharpnessEdit> Edits; ///< --crease A-B=S and --corner V=S, in order
   std::string ExportCage;           ///< write the (edited) cage here
   int Width = 1100, Height = 750;
+  bool NoSettings = false;  ///< neither read nor write the remembered layout
+  std::string SettingsFile; ///< remember the layout in this INI file instead of the user's
+  bool PrintState = false;  ///< print the layout once the views are up to date
+  int TimeEdits = 0;        ///< > 0: time this many sharpness edits and print the figures
   bool Help = false;
+  /// The options given on the command line ("--levels", ...): only these override the
+  /// remembered layout.
+  std::set<std::string> Given;
 };
 
 /// Parses argv (Qt's own options already removed). On a usage error returns false with `error`.

@@ -22,6 +22,7 @@
 #include <QDockWidget>
 #include <QDragEnterEvent>
 #include <QDropEvent>
+#include <QElapsedTimer>
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFileInfo>
@@ -40,8 +41,12 @@
 #include <QMessageBox>
 #include <QSettings>
 #include <QSlider>
+#include <QSpinBox>
 #include <QStatusBar>
 #include <QVBoxLayout>
+
+#include <cmath>
+#include <sstream>
 
 namespace subdexplorer
 {
@@ -147,16 +152,45 @@ QWidget* ExplorerWindow::BuildControls()
   levelRow->addWidget(this->LevelLabel);
   form->addRow("Level", levelRow);
   this->Coloring = new QComboBox;
-  this->Coloring->addItems({ "none", "mean", "gaussian" });
-  this->Coloring->setCurrentIndex(1);
-  this->Coloring->setToolTip("Curvature colouring: exact limit curvature for Catmull-Clark and Loop with "
-                             "'Limit', discrete curvature of the refined mesh otherwise");
-  form->addRow("Curvature", this->Coloring);
+  for (int c = vtkSubDScene::COLOR_NONE; c <= vtkSubDScene::COLOR_MINIMUM_CURVATURE; ++c)
+  {
+    this->Coloring->addItem(vtkSubDScene::GetColoringName(c));
+  }
+  this->Coloring->setCurrentIndex(vtkSubDScene::COLOR_MEAN_CURVATURE);
+  this->Coloring->setToolTip("Curvature colouring (k1 >= k2 are the principal curvatures, K): the exact limit "
+                             "curvature for Catmull-Clark and Loop with 'Limit', the refined mesh's discrete "
+                             "curvature otherwise");
+  form->addRow("Curvature (K)", this->Coloring);
+  this->ColorMap = new QComboBox;
+  for (int m = vtkSubDScene::COLORMAP_COOL_TO_WARM; m <= vtkSubDScene::COLORMAP_GRAYSCALE; ++m)
+  {
+    this->ColorMap->addItem(vtkSubDScene::GetColorMapName(m));
+  }
+  form->addRow("Colour map", this->ColorMap);
+  this->RangeMode = new QComboBox;
+  this->RangeMode->addItems({ "symmetric", "percentile" });
+  this->RangeMode->setToolTip("symmetric: [-m, m] around zero, m the percentile of |curvature|; percentile: the "
+                              "central percentage of the values. Over all views, interior points only.");
+  this->RangePercentile = new QSpinBox;
+  this->RangePercentile->setRange(50, 100);
+  this->RangePercentile->setValue(95);
+  this->RangePercentile->setSuffix(" %");
+  auto* rangeRow = new QHBoxLayout;
+  rangeRow->addWidget(this->RangeMode, 1);
+  rangeRow->addWidget(this->RangePercentile);
+  form->addRow("Range", rangeRow);
   this->ShowCage = new QCheckBox("Control cage");
   this->ShowCage->setChecked(true);
-  form->addRow(this->ShowCage);
-  this->Limit = new QCheckBox("Limit (project, exact curvature)");
-  form->addRow(this->Limit);
+  this->CageOpacity = new QSlider(Qt::Horizontal);
+  this->CageOpacity->setRange(0, 100);
+  this->CageOpacity->setValue(100);
+  this->CageOpacity->setToolTip("Opacity of the cage's edges and vertices (its creases stay opaque)");
+  auto* cageRow = new QHBoxLayout;
+  cageRow->addWidget(this->ShowCage);
+  cageRow->addWidget(this->CageOpacity, 1);
+  form->addRow(cageRow);
+  this->ShowWireframe = new QCheckBox("Refined wireframe (W)");
+  form->addRow(this->ShowWireframe);
   layout->addWidget(global);
 
   auto* creases = new QGroupBox("Creases");
@@ -203,8 +237,16 @@ QWidget* ExplorerWindow::BuildControls()
     view.Tension->setSingleStep(0.005);
     view.Tension->setToolTip("butterfly: [-0.0625, 0.0625], four-point: [0, 0.125]");
     viewForm->addRow("Tension", view.Tension);
+    view.CreaseMethod = new QComboBox;
+    view.CreaseMethod->addItems({ "uniform", "chaikin" });
+    view.CreaseMethod->setToolTip("How semi-sharp creases decay: one unit per level, or averaged along the "
+                                  "crease first (OpenSubdiv's Chaikin)");
+    viewForm->addRow("Creases", view.CreaseMethod);
+    view.Limit = new QCheckBox("Limit: project, exact curvature (L)");
+    view.Limit->setToolTip("Move the points to the limit surface where the scheme has limit masks; Catmull-Clark "
+                           "and Loop also colour by the limit's exact curvature");
+    viewForm->addRow(view.Limit);
     view.Statistics = new QLabel;
-    view.Statistics->setWordWrap(true);
     view.Statistics->setWordWrap(true);
     view.Statistics->setTextInteractionFlags(Qt::TextSelectableByMouse);
     viewForm->addRow(view.Statistics);
@@ -219,7 +261,10 @@ QWidget* ExplorerWindow::BuildControls()
       changed.Tension->setEnabled(scheme == "butterfly" || fourPoint);
       changed.Tension->setRange(fourPoint ? 0.0 : -0.0625, fourPoint ? 0.125 : 0.0625);
       changed.Tension->setValue(fourPoint ? 0.0625 : 0.0);
-      changed.Boundary->setEnabled(!subdapp::FindScheme(scheme)->Curve);
+      const subdapp::SchemeEntry* entry = subdapp::FindScheme(scheme);
+      changed.Boundary->setEnabled(!entry->Curve);
+      changed.CreaseMethod->setEnabled(!entry->Curve);
+      changed.Limit->setEnabled(entry->LimitPositions);
       this->Updating = updating;
       if (!this->Updating)
       {
@@ -236,6 +281,14 @@ QWidget* ExplorerWindow::BuildControls()
       if (!this->Updating)
         this->UpdateViews();
     });
+    connect(view.CreaseMethod, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this]() {
+      if (!this->Updating)
+        this->UpdateViews();
+    });
+    connect(view.Limit, &QCheckBox::toggled, this, [this]() {
+      if (!this->Updating)
+        this->UpdateViews();
+    });
   }
   layout->addStretch(1);
 
@@ -248,8 +301,20 @@ QWidget* ExplorerWindow::BuildControls()
   });
   connect(this->Coloring, &QComboBox::currentTextChanged, this,
     [this](const QString& text) { this->SetColoring(text.toStdString()); });
+  connect(this->ColorMap, &QComboBox::currentTextChanged, this,
+    [this](const QString& text) { this->SetColorMap(text.toStdString()); });
+  auto rangeChanged = [this]() {
+    if (!this->Updating)
+      this->SetColorRange(this->RangeMode->currentIndex() == 0, this->RangePercentile->value());
+  };
+  connect(this->RangeMode, QOverload<int>::of(&QComboBox::currentIndexChanged), this, rangeChanged);
+  connect(this->RangePercentile, QOverload<int>::of(&QSpinBox::valueChanged), this, rangeChanged);
   connect(this->ShowCage, &QCheckBox::toggled, this, [this](bool show) { this->SetShowCage(show); });
-  connect(this->Limit, &QCheckBox::toggled, this, [this](bool limit) { this->SetLimit(limit); });
+  connect(this->CageOpacity, &QSlider::valueChanged, this, [this](int value) {
+    if (!this->Updating)
+      this->SetCageOpacity(value / 100.0);
+  });
+  connect(this->ShowWireframe, &QCheckBox::toggled, this, [this](bool show) { this->SetShowWireframe(show); });
   this->SetViewCount(1);
   return panel;
 }
@@ -272,7 +337,8 @@ void ExplorerWindow::BuildMenus()
   this->RefreshRecentMenu();
   file->addSeparator();
   file->addAction("&Export surface...", this, &ExplorerWindow::ExportDialog, QKeySequence(Qt::CTRL | Qt::Key_E));
-  file->addAction("Export &cage with creases...", this, &ExplorerWindow::ExportCageDialog);
+  file->addAction("Export &cage with creases...", this, &ExplorerWindow::ExportCageDialog,
+    QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
   file->addAction("Save views &image...", this, &ExplorerWindow::ScreenshotDialog, QKeySequence(Qt::CTRL | Qt::Key_P));
   file->addSeparator();
   file->addAction("&Quit", this, &QWidget::close, QKeySequence::Quit);
@@ -289,25 +355,54 @@ void ExplorerWindow::BuildMenus()
   view->addAction("Level &down", this, [this]() { this->LevelSlider->setValue(this->LevelSlider->value() - 1); },
     QKeySequence(Qt::Key_Minus));
   view->addAction("Toggle &cage", this, [this]() { this->ShowCage->toggle(); }, QKeySequence(Qt::Key_C));
+  view->addAction("Toggle &wireframe", this, [this]() { this->ShowWireframe->toggle(); }, QKeySequence(Qt::Key_W));
+  view->addAction("Toggle &limit (all views)", this, [this]() { this->SetLimit(!this->Views[0].Limit->isChecked()); },
+    QKeySequence(Qt::Key_L));
+  view->addAction("Next curvature &colouring", this,
+    [this]() { this->Coloring->setCurrentIndex((this->Coloring->currentIndex() + 1) % this->Coloring->count()); },
+    QKeySequence(Qt::Key_K));
+  view->addAction("Next colour &map", this,
+    [this]() { this->ColorMap->setCurrentIndex((this->ColorMap->currentIndex() + 1) % this->ColorMap->count()); },
+    QKeySequence(Qt::Key_M));
   view->addAction("&Reset camera", this,
     [this]() {
       this->Scene->ResetCamera();
       this->UpdateViews();
     },
     QKeySequence(Qt::Key_R));
+
+  QMenu* help = this->menuBar()->addMenu("&Help");
+  help->addAction("&Keyboard and mouse", this, [this]() {
+    QMessageBox::information(this, "Keyboard and mouse",
+      "<table>"
+      "<tr><td>Drag / right-drag, wheel / middle-drag</td><td>rotate / zoom / pan</td></tr>"
+      "<tr><td>Ctrl+click</td><td>select a cage edge or vertex (Creases panel)</td></tr>"
+      "<tr><td>+ / -</td><td>level up / down</td></tr>"
+      "<tr><td>Ctrl+1, Ctrl+2, Ctrl+4</td><td>1, 2 or 4 views</td></tr>"
+      "<tr><td>C, W, L</td><td>cage, refined wireframe, limit (all views)</td></tr>"
+      "<tr><td>K, M</td><td>next curvature colouring, next colour map</td></tr>"
+      "<tr><td>R</td><td>reset the camera</td></tr>"
+      "<tr><td>Esc</td><td>cancel the running update</td></tr>"
+      "<tr><td>Ctrl+O, Ctrl+E, Ctrl+Shift+E, Ctrl+P</td><td>open, export surface, export cage, save image</td></tr>"
+      "</table>");
+  }, QKeySequence::HelpContents);
 }
 
 void ExplorerWindow::SetCage(vtkSmartPointer<vtkPolyData> cage, const QString& name)
 {
   this->Cage = cage;
+  ++this->CageRevision;
   this->CageName = name;
-  this->SelectedA = this->SelectedB = -1;
-  this->SelectionLabel->setText("Ctrl+click an edge or a vertex of the cage");
-  this->Sharpness->setEnabled(false);
+  this->SelectCageElement(-1, -1);
   this->ShowCageStatistics();
   this->setWindowTitle("SubD Explorer - " + name);
   this->Scene->ResetCamera();
   this->UpdateViews();
+}
+
+vtkPolyData* ExplorerWindow::GetCage() const
+{
+  return this->Cage;
 }
 
 void ExplorerWindow::ShowCageStatistics()
@@ -374,16 +469,53 @@ void ExplorerWindow::SetLevels(int levels)
   this->LevelSlider->setValue(levels);
 }
 
-void ExplorerWindow::SetColoring(const std::string& coloring)
+template <typename Setter>
+void ExplorerWindow::SetQuietly(Setter&& set)
 {
-  const int value = coloring == "none" ? vtkSubDScene::COLOR_NONE
-                                       : (coloring == "gaussian" ? vtkSubDScene::COLOR_GAUSSIAN_CURVATURE
-                                                                 : vtkSubDScene::COLOR_MEAN_CURVATURE);
-  this->Scene->SetColoring(value);
   const bool updating = this->Updating;
   this->Updating = true;
-  this->Coloring->setCurrentText(QString::fromStdString(coloring));
+  set();
   this->Updating = updating;
+}
+
+void ExplorerWindow::SetColoring(const std::string& coloring)
+{
+  const int value = vtkSubDScene::ColoringFromName(coloring.c_str());
+  if (value < 0)
+  {
+    return;
+  }
+  this->Scene->SetColoring(value);
+  this->SetQuietly([&]() { this->Coloring->setCurrentIndex(value); });
+  if (!this->Updating)
+  {
+    this->UpdateViews(); // exact curvature may now be needed (or no longer)
+  }
+}
+
+void ExplorerWindow::SetColorMap(const std::string& map)
+{
+  const int value = vtkSubDScene::ColorMapFromName(map.c_str());
+  if (value < 0)
+  {
+    return;
+  }
+  this->Scene->SetColorMap(value);
+  this->SetQuietly([&]() { this->ColorMap->setCurrentIndex(value); });
+  if (!this->Updating)
+  {
+    this->UpdateViews();
+  }
+}
+
+void ExplorerWindow::SetColorRange(bool symmetric, double percentile)
+{
+  this->Scene->SetRangeMode(symmetric ? vtkSubDScene::RANGE_SYMMETRIC : vtkSubDScene::RANGE_PERCENTILE);
+  this->Scene->SetRangePercentile(percentile);
+  this->SetQuietly([&]() {
+    this->RangeMode->setCurrentIndex(symmetric ? 0 : 1);
+    this->RangePercentile->setValue(static_cast<int>(std::lround(this->Scene->GetRangePercentile())));
+  });
   if (!this->Updating)
   {
     this->UpdateViews();
@@ -393,7 +525,30 @@ void ExplorerWindow::SetColoring(const std::string& coloring)
 void ExplorerWindow::SetShowCage(bool show)
 {
   this->Scene->SetShowCage(show);
-  this->ShowCage->setChecked(show);
+  this->SetQuietly([&]() {
+    this->ShowCage->setChecked(show);
+    this->CageOpacity->setEnabled(show);
+  });
+  if (!this->Updating)
+  {
+    this->UpdateViews();
+  }
+}
+
+void ExplorerWindow::SetCageOpacity(double opacity)
+{
+  this->Scene->SetCageOpacity(opacity);
+  this->SetQuietly([&]() { this->CageOpacity->setValue(static_cast<int>(std::lround(100.0 * this->Scene->GetCageOpacity()))); });
+  if (!this->Updating)
+  {
+    this->UpdateViews();
+  }
+}
+
+void ExplorerWindow::SetShowWireframe(bool show)
+{
+  this->Scene->SetShowWireframe(show);
+  this->SetQuietly([&]() { this->ShowWireframe->setChecked(show); });
   if (!this->Updating)
   {
     this->UpdateViews();
@@ -402,7 +557,12 @@ void ExplorerWindow::SetShowCage(bool show)
 
 void ExplorerWindow::SetLimit(bool limit)
 {
-  this->Limit->setChecked(limit);
+  this->SetQuietly([&]() {
+    for (ViewControls& view : this->Views)
+    {
+      view.Limit->setChecked(limit);
+    }
+  });
   if (!this->Updating)
   {
     this->UpdateViews();
@@ -419,6 +579,7 @@ bool ExplorerWindow::SetSharpness(vtkIdType a, vtkIdType b, double sharpness, QS
     error = QString::fromStdString(message);
     return false;
   }
+  ++this->CageRevision;
   this->ShowCageStatistics();
   this->UpdateViews();
   return true;
@@ -444,29 +605,46 @@ bool ExplorerWindow::SelectCageElementAt(int x, int y)
     screen[2 * i + 1] = d[1];
   }
   const subdapp::PickedElement picked = subdapp::PickCageElement(this->Cage, screen, x, y);
-  this->SelectedA = picked.A;
-  this->SelectedB = picked.B;
-  const bool updating = this->Updating;
-  this->Updating = true;
-  if (picked.A < 0)
+  if (!this->SelectCageElement(picked.A, picked.B))
   {
     this->SelectionLabel->setText("nothing there: Ctrl+click closer to an edge or a vertex");
-    this->Sharpness->setEnabled(false);
+    return false;
   }
-  else if (picked.B < 0)
+  return true;
+}
+
+bool ExplorerWindow::SelectCageElement(vtkIdType a, vtkIdType b)
+{
+  const vtkIdType n = this->Cage ? this->Cage->GetNumberOfPoints() : 0;
+  if (a >= n || b >= n || (a >= 0 && b >= 0 && !subdapp::IsCageEdge(this->Cage, a, b)))
   {
-    this->SelectionLabel->setText(QString("vertex %1").arg(picked.A));
-    this->Sharpness->setEnabled(true);
-    this->Sharpness->setValue(subdapp::GetVertexSharpness(this->Cage, picked.A));
+    a = b = -1;
   }
-  else
+  this->SelectedA = a;
+  this->SelectedB = a < 0 ? -1 : b;
+  this->SetQuietly([&]() {
+    this->Sharpness->setEnabled(a >= 0);
+    if (a < 0)
+    {
+      this->SelectionLabel->setText("Ctrl+click an edge or a vertex of the cage");
+    }
+    else if (b < 0)
+    {
+      this->SelectionLabel->setText(QString("vertex %1").arg(a));
+      this->Sharpness->setValue(subdapp::GetVertexSharpness(this->Cage, a));
+    }
+    else
+    {
+      this->SelectionLabel->setText(QString("edge %1 - %2").arg(a).arg(b));
+      this->Sharpness->setValue(subdapp::GetEdgeSharpness(this->Cage, a, b));
+    }
+  });
+  this->Scene->SetCageSelection(this->SelectedA, this->SelectedB);
+  if (!this->Updating && !this->Job && this->Scene->GetNumberOfViews() > 0)
   {
-    this->SelectionLabel->setText(QString("edge %1 - %2").arg(picked.A).arg(picked.B));
-    this->Sharpness->setEnabled(true);
-    this->Sharpness->setValue(subdapp::GetEdgeSharpness(this->Cage, picked.A, picked.B));
+    this->RenderScene();
   }
-  this->Updating = updating;
-  return picked.A >= 0;
+  return a >= 0;
 }
 
 subdapp::SchemeOptions ExplorerWindow::ViewOptions(int v) const
@@ -478,7 +656,8 @@ subdapp::SchemeOptions ExplorerWindow::ViewOptions(int v) const
   options.BoundaryRule = view.Boundary->currentIndex();
   options.Tension = view.Tension->value();
   options.TensionGiven = view.Tension->isEnabled();
-  options.ProjectToLimit = this->Limit->isChecked() && entry->LimitPositions;
+  options.CreaseMethod = view.CreaseMethod->currentIndex();
+  options.ProjectToLimit = view.Limit->isChecked() && entry->LimitPositions;
   options.LimitCurvature = options.ProjectToLimit && entry->LimitCurvature &&
     this->Scene->GetColoring() != vtkSubDScene::COLOR_NONE;
   return options;
@@ -522,12 +701,27 @@ void ExplorerWindow::UpdateViews()
     this->RerunPending = true;
     return;
   }
+  // Only the views whose scheme, options or cage changed are subdivided again.
   std::vector<UpdateJob::ViewTask> tasks;
+  bool anyTask = false;
   for (int v = 0; v < this->ViewCount; ++v)
   {
-    tasks.push_back({ subdapp::FindScheme(this->Views[v].Scheme->currentText().toStdString()), this->ViewOptions(v) });
+    const ViewControls& view = this->Views[v];
+    const std::string scheme = view.Scheme->currentText().toStdString();
+    const subdapp::SchemeOptions options = this->ViewOptions(v);
+    const bool current = view.HasResult && view.ResultScheme == scheme && view.ResultOptions == options &&
+      view.ResultCageRevision == this->CageRevision;
+    tasks.push_back({ current ? nullptr : subdapp::FindScheme(scheme), options });
+    anyTask = anyTask || !current;
+  }
+  if (!anyTask)
+  {
+    this->LastSubdivisionMs = 0.0;
+    this->RenderScene();
+    return;
   }
   this->Job = std::make_unique<UpdateJob>(this->Cage, std::move(tasks));
+  this->JobCageRevision = this->CageRevision;
   this->LastUpdateCancelled = false;
   this->ProgressBar->setValue(0);
   this->ProgressTimer->start(100);
@@ -569,24 +763,43 @@ void ExplorerWindow::FinishUpdate()
     this->statusBar()->showMessage("Update cancelled: the views show the previous result.", 8000);
     return;
   }
-  for (int v = 0; v < this->ViewCount; ++v)
+  this->LastSubdivisionMs = 0.0;
+  for (size_t v = 0; v < job->GetTasks().size(); ++v)
   {
-    this->ApplyResult(v, job->GetResults()[static_cast<size_t>(v)]);
+    const UpdateJob::ViewTask& task = job->GetTasks()[v];
+    if (task.Entry) // recomputed (the others kept their result)
+    {
+      ViewControls& view = this->Views[v];
+      view.HasResult = true;
+      view.ResultScheme = task.Entry->Name;
+      view.ResultOptions = task.Options;
+      view.ResultCageRevision = this->JobCageRevision;
+      this->ApplyResult(static_cast<int>(v), job->GetResults()[v]);
+      this->LastSubdivisionMs += job->GetResults()[v].Milliseconds;
+    }
   }
+  this->RenderScene();
+}
+
+void ExplorerWindow::RenderScene()
+{
+  QElapsedTimer clock;
+  clock.start();
   this->Scene->RemoveAllViews();
   vtkNew<vtkPolyData> empty;
   for (int v = 0; v < this->ViewCount; ++v)
   {
-    const std::string title = this->Views[v].Scheme->currentText().toStdString() + ", level " +
-      std::to_string(this->LevelSlider->value());
-    this->Scene->AddView(this->Views[v].Result ? this->Views[v].Result.GetPointer() : empty.GetPointer(),
-      this->Cage, title.c_str());
+    const ViewControls& view = this->Views[v];
+    const std::string title = view.Scheme->currentText().toStdString() + ", level " +
+      std::to_string(this->LevelSlider->value()) + (view.ResultOptions.ProjectToLimit ? ", limit" : "");
+    this->Scene->AddView(view.Result ? view.Result.GetPointer() : empty.GetPointer(), this->Cage, title.c_str());
   }
   if (this->VTKWidget->isVisible())
   {
     this->Scene->Render();
   }
   this->VTKWidget->update();
+  this->LastSceneMs = static_cast<double>(clock.nsecsElapsed()) * 1e-6;
 }
 
 void ExplorerWindow::CancelUpdate()
@@ -727,23 +940,26 @@ void ExplorerWindow::ScreenshotDialog()
 
 void ExplorerWindow::RememberRecentFile(const QString& path)
 {
-  QSettings settings;
-  QStringList recent = settings.value("recentFiles").toStringList();
+  if (!this->Settings)
+  {
+    return;
+  }
+  QStringList recent = this->Settings->value("recentFiles").toStringList();
   recent.removeAll(path);
   recent.prepend(path);
   while (recent.size() > 8)
   {
     recent.removeLast();
   }
-  settings.setValue("recentFiles", recent);
+  this->Settings->setValue("recentFiles", recent);
   this->RefreshRecentMenu();
 }
 
 void ExplorerWindow::RefreshRecentMenu()
 {
   this->RecentMenu->clear();
-  QSettings settings;
-  for (const QString& path : settings.value("recentFiles").toStringList())
+  const QStringList recent = this->Settings ? this->Settings->value("recentFiles").toStringList() : QStringList();
+  for (const QString& path : recent)
   {
     this->RecentMenu->addAction(path, this, [this, path]() {
       QString error;
@@ -754,5 +970,102 @@ void ExplorerWindow::RefreshRecentMenu()
     });
   }
   this->RecentMenu->setEnabled(!this->RecentMenu->isEmpty());
+}
+
+void ExplorerWindow::UseSettings(std::unique_ptr<QSettings> settings)
+{
+  this->Settings = std::move(settings);
+  this->RefreshRecentMenu();
+  if (!this->Settings)
+  {
+    return;
+  }
+  QSettings& in = *this->Settings;
+  this->SetQuietly([&]() {
+    in.beginGroup("layout");
+    for (int v = 0; v < MaxViews; ++v)
+    {
+      ViewControls& view = this->Views[v];
+      in.beginGroup(QString("view%1").arg(v + 1));
+      const QString scheme = in.value("scheme", view.Scheme->currentText()).toString();
+      if (subdapp::FindScheme(scheme.toStdString()))
+      {
+        view.Scheme->setCurrentText(scheme); // resets the tension to the scheme's default
+      }
+      view.Boundary->setCurrentIndex(in.value("boundary", view.Boundary->currentIndex()).toInt());
+      view.Tension->setValue(in.value("tension", view.Tension->value()).toDouble());
+      view.CreaseMethod->setCurrentIndex(in.value("creaseMethod", view.CreaseMethod->currentIndex()).toInt());
+      view.Limit->setChecked(in.value("limit", view.Limit->isChecked()).toBool());
+      in.endGroup();
+    }
+    this->SetViewCount(in.value("views", this->ViewCount).toInt());
+    this->LevelSlider->setValue(in.value("level", this->LevelSlider->value()).toInt());
+    this->SetColoring(in.value("coloring", this->Coloring->currentText()).toString().toStdString());
+    this->SetColorMap(in.value("colorMap", this->ColorMap->currentText()).toString().toStdString());
+    this->SetColorRange(in.value("rangeSymmetric", this->RangeMode->currentIndex() == 0).toBool(),
+      in.value("rangePercentile", this->RangePercentile->value()).toDouble());
+    this->SetShowCage(in.value("cage", this->ShowCage->isChecked()).toBool());
+    this->SetCageOpacity(in.value("cageOpacity", this->Scene->GetCageOpacity()).toDouble());
+    this->SetShowWireframe(in.value("wireframe", this->ShowWireframe->isChecked()).toBool());
+    in.endGroup();
+  });
+  this->restoreGeometry(in.value("window/geometry").toByteArray());
+  this->restoreState(in.value("window/state").toByteArray());
+}
+
+void ExplorerWindow::SaveSettings()
+{
+  if (!this->Settings)
+  {
+    return;
+  }
+  QSettings& out = *this->Settings;
+  out.beginGroup("layout");
+  for (int v = 0; v < MaxViews; ++v)
+  {
+    const ViewControls& view = this->Views[v];
+    out.beginGroup(QString("view%1").arg(v + 1));
+    out.setValue("scheme", view.Scheme->currentText());
+    out.setValue("boundary", view.Boundary->currentIndex());
+    out.setValue("tension", view.Tension->value());
+    out.setValue("creaseMethod", view.CreaseMethod->currentIndex());
+    out.setValue("limit", view.Limit->isChecked());
+    out.endGroup();
+  }
+  out.setValue("views", this->ViewCount);
+  out.setValue("level", this->LevelSlider->value());
+  out.setValue("coloring", this->Coloring->currentText());
+  out.setValue("colorMap", this->ColorMap->currentText());
+  out.setValue("rangeSymmetric", this->RangeMode->currentIndex() == 0);
+  out.setValue("rangePercentile", this->RangePercentile->value());
+  out.setValue("cage", this->ShowCage->isChecked());
+  out.setValue("cageOpacity", this->Scene->GetCageOpacity());
+  out.setValue("wireframe", this->ShowWireframe->isChecked());
+  out.endGroup();
+  out.setValue("window/geometry", this->saveGeometry());
+  out.setValue("window/state", this->saveState());
+  out.sync();
+}
+
+std::string ExplorerWindow::DescribeState() const
+{
+  std::ostringstream out;
+  out << "views " << this->ViewCount << "\n";
+  for (int v = 0; v < this->ViewCount; ++v)
+  {
+    const ViewControls& view = this->Views[v];
+    out << "view " << v + 1 << " " << view.Scheme->currentText().toStdString() << " boundary "
+        << view.Boundary->currentText().toStdString() << " tension " << view.Tension->value() << " creases "
+        << view.CreaseMethod->currentText().toStdString() << " limit " << (view.Limit->isChecked() ? "on" : "off")
+        << "\n";
+  }
+  out << "level " << this->LevelSlider->value() << "\n"
+      << "color " << this->Coloring->currentText().toStdString() << "\n"
+      << "colormap " << this->ColorMap->currentText().toStdString() << "\n"
+      << "range " << this->RangeMode->currentText().toStdString() << " " << this->RangePercentile->value() << "\n"
+      << "cage " << (this->ShowCage->isChecked() ? "on" : "off") << " opacity " << this->Scene->GetCageOpacity()
+      << "\n"
+      << "wireframe " << (this->ShowWireframe->isChecked() ? "on" : "off") << "\n";
+  return out.str();
 }
 }

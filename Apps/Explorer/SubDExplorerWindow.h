@@ -25,6 +25,8 @@ class QDoubleSpinBox;
 class QGroupBox;
 class QLabel;
 class QProgressBar;
+class QSettings;
+class QSpinBox;
 class QPushButton;
 class QTimer;
 class QSlider;
@@ -50,12 +52,27 @@ public:
   /// Shows a built-in cage or curve (SubDBuiltinCages.h).
   void LoadBuiltin(const std::string& name);
 
+  vtkPolyData* GetCage() const;
   void SetViewCount(int count); ///< 1, 2 or 4
   void SetScheme(int view, const std::string& scheme);
   void SetLevels(int levels);
-  void SetColoring(const std::string& coloring); ///< none, mean, gaussian
+  void SetColoring(const std::string& coloring); ///< none, mean, gaussian, k1, k2
+  void SetColorMap(const std::string& map);      ///< cool-to-warm, rainbow, black-body, grayscale
+  /// Symmetric about zero, or the central `percentile` percent of the values (vtkSubDScene).
+  void SetColorRange(bool symmetric, double percentile);
   void SetShowCage(bool show);
-  void SetLimit(bool limit);
+  void SetCageOpacity(double opacity); ///< in [0, 1]
+  void SetShowWireframe(bool show);
+  void SetLimit(bool limit); ///< every view's Limit box
+
+  /// Reads the layout (views, schemes and their options, level, colouring, overlays, window
+  /// geometry) and recent files from `settings`, and writes them there from now on; with
+  /// null, nothing is read or written (--no-settings).
+  void UseSettings(std::unique_ptr<QSettings> settings);
+  /// Writes the layout to the settings (at exit).
+  void SaveSettings();
+  /// One line per setting ("views 2", "scheme 1 loop", ...): what --print-state shows.
+  std::string DescribeState() const;
 
   /// Brings every view up to date and renders (what the controls call). The subdivision
   /// runs on a worker thread (UpdateJob); a change while it runs restarts it.
@@ -82,6 +99,14 @@ public:
   /// Selects the cage edge or vertex nearest to display position (x, y) in the view there
   /// (Ctrl+click); false when none is close enough.
   bool SelectCageElementAt(int x, int y);
+  /// Selects cage edge (a, b), or vertex a when b < 0 (a < 0: nothing): the Creases panel
+  /// then edits it, and the views mark it.
+  bool SelectCageElement(vtkIdType a, vtkIdType b);
+
+  /// Timing of the last completed update, in milliseconds: the subdivision (worker thread,
+  /// the views that had to be recomputed) and the scene (colouring, overlays, rendering).
+  double GetLastSubdivisionMilliseconds() const { return this->LastSubdivisionMs; }
+  double GetLastSceneMilliseconds() const { return this->LastSceneMs; }
 
 protected:
   /// Dropping a mesh file on the window opens it.
@@ -95,8 +120,16 @@ private:
     QComboBox* Scheme = nullptr;
     QComboBox* Boundary = nullptr;
     QDoubleSpinBox* Tension = nullptr;
+    QComboBox* CreaseMethod = nullptr;
+    QCheckBox* Limit = nullptr;
     QLabel* Statistics = nullptr;
     vtkSmartPointer<vtkPolyData> Result;
+    /// What Result was made from: a view whose scheme, options and cage are unchanged is
+    /// not recomputed (colouring and overlays only redraw).
+    bool HasResult = false;
+    std::string ResultScheme;
+    subdapp::SchemeOptions ResultOptions;
+    unsigned long ResultCageRevision = 0;
   };
 
   void BuildMenus();
@@ -104,6 +137,11 @@ private:
   void SetCage(vtkSmartPointer<vtkPolyData> cage, const QString& name);
   subdapp::SchemeOptions ViewOptions(int view) const;
   void ApplyResult(int view, const UpdateJob::ViewResult& result);
+  /// Rebuilds the scene from the views' results and renders it (no subdivision).
+  void RenderScene();
+  /// Sets a control without triggering an update.
+  template <typename Setter>
+  void SetQuietly(Setter&& set);
   void ShowProgress();
   void FinishUpdate();
   void OpenDialog();
@@ -118,15 +156,22 @@ private:
   vtkNew<vtkGenericOpenGLRenderWindow> RenderWindow;
   vtkNew<vtkSubDScene> Scene;
   vtkSmartPointer<vtkPolyData> Cage;
+  unsigned long CageRevision = 0; ///< changes with every new cage and every sharpness edit
+  unsigned long JobCageRevision = 0; ///< the revision the running job subdivides
   QString CageName;
+  std::unique_ptr<QSettings> Settings; ///< null: --no-settings
   std::array<ViewControls, MaxViews> Views;
   int ViewCount = 1;
   QComboBox* Layout = nullptr;
   QSlider* LevelSlider = nullptr;
   QLabel* LevelLabel = nullptr;
   QComboBox* Coloring = nullptr;
+  QComboBox* ColorMap = nullptr;
+  QComboBox* RangeMode = nullptr;
+  QSpinBox* RangePercentile = nullptr;
   QCheckBox* ShowCage = nullptr;
-  QCheckBox* Limit = nullptr;
+  QSlider* CageOpacity = nullptr;
+  QCheckBox* ShowWireframe = nullptr;
   QLabel* CageLabel = nullptr;
   QLabel* SelectionLabel = nullptr;
   QDoubleSpinBox* Sharpness = nullptr;
@@ -139,6 +184,7 @@ private:
   QProgressBar* ProgressBar = nullptr;
   QPushButton* CancelButton = nullptr;
   QTimer* ProgressTimer = nullptr;
+  double LastSubdivisionMs = 0.0, LastSceneMs = 0.0;
 };
 }
 

@@ -41,6 +41,10 @@ void UpdateJob::Run()
   const double count = static_cast<double>(this->Tasks.size());
   for (size_t v = 0; v < this->Tasks.size() && !this->CancelRequested; ++v)
   {
+    if (!this->Tasks[v].Entry)
+    {
+      continue;
+    }
     ViewResult& result = this->Results[v];
     subdapp::MessageCollector messages;
     const auto start = std::chrono::steady_clock::now();

@@ -25,7 +25,7 @@ class UpdateJob
 public:
   struct ViewTask
   {
-    const subdapp::SchemeEntry* Entry = nullptr;
+    const subdapp::SchemeEntry* Entry = nullptr; ///< null: the view keeps its result (skipped)
     subdapp::SchemeOptions Options;
   };
   struct ViewResult
@@ -50,6 +50,7 @@ public:
   bool IsCancelled() const { return this->CancelRequested; }
   /// In [0, 1] over all views.
   double GetProgress() const { return this->Progress; }
+  const std::vector<ViewTask>& GetTasks() const { return this->Tasks; }
   /// One per task; complete once `finished` was called.
   const std::vector<ViewResult>& GetResults() const { return this->Results; }
 

@@ -193,6 +193,32 @@ vtkSmartPointer<vtkPolyData> LetterL()
   return MakePolyData(xyz, faces);
 }
 
+// Mixed triangles and quads: a hexagonal prism (six quads around) whose ends are fans of
+// six triangles around a raised centre. The rim vertices have two quads and two triangles,
+// so every scheme shows what it does where triangles meet quads.
+vtkSmartPointer<vtkPolyData> MixedTriQuad()
+{
+  std::vector<double> xyz;
+  for (int ring = 0; ring < 2; ++ring)
+  {
+    for (int k = 0; k < 6; ++k)
+    {
+      const double angle = 2.0 * 3.14159265358979323846 * k / 6.0;
+      xyz.insert(xyz.end(), { std::cos(angle), std::sin(angle), ring == 0 ? -0.6 : 0.6 });
+    }
+  }
+  xyz.insert(xyz.end(), { 0.0, 0.0, -1.1, 0.0, 0.0, 1.1 }); // the centres: 12 below, 13 above
+  std::vector<std::vector<vtkIdType>> faces;
+  for (vtkIdType k = 0; k < 6; ++k)
+  {
+    const vtkIdType next = (k + 1) % 6;
+    faces.push_back({ k, next, 6 + next, 6 + k });
+    faces.push_back({ 12, next, k });
+    faces.push_back({ 13, 6 + k, 6 + next });
+  }
+  return MakePolyData(xyz, faces);
+}
+
 // Control polygons as polylines (for the curve schemes): `closed` repeats the first point.
 vtkSmartPointer<vtkPolyData> MakePolyline(const std::vector<double>& xyz, bool closed)
 {
@@ -254,7 +280,7 @@ std::vector<std::string> BuiltinCurveNames()
 std::vector<std::string> BuiltinCageNames()
 {
   return { "cube", "creased-cube", "pyramid", "open-grid", "tetrahedron", "octahedron", "torus", "letter-l",
-    "valence-3", "valence-4", "valence-5", "valence-6", "valence-7", "valence-8" };
+    "mixed-tri-quad", "valence-3", "valence-4", "valence-5", "valence-6", "valence-7", "valence-8" };
 }
 
 vtkSmartPointer<vtkPolyData> MakeBuiltinCage(const std::string& name)
@@ -290,6 +316,10 @@ vtkSmartPointer<vtkPolyData> MakeBuiltinCage(const std::string& name)
   if (name == "letter-l")
   {
     return LetterL();
+  }
+  if (name == "mixed-tri-quad")
+  {
+    return MixedTriQuad();
   }
   if (name.rfind("valence-", 0) == 0)
   {

@@ -17,25 +17,6 @@ namespace
 {
 constexpr double InfiniteSharpness = 10.0;
 
-bool IsPolygonEdge(vtkPolyData* cage, vtkIdType a, vtkIdType b)
-{
-  vtkCellArray* polys = cage->GetPolys();
-  vtkNew<vtkIdList> cell;
-  for (polys->InitTraversal(); polys->GetNextCell(cell);)
-  {
-    const vtkIdType n = cell->GetNumberOfIds();
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      const vtkIdType p = cell->GetId(k), q = cell->GetId((k + 1) % n);
-      if ((p == a && q == b) || (p == b && q == a))
-      {
-        return true;
-      }
-    }
-  }
-  return false;
-}
-
 // One crease segment: its ends, sharpness, and the cell its data comes from (-1: none).
 struct Segment
 {
@@ -65,6 +46,25 @@ std::vector<Segment> ReadSegments(vtkPolyData* cage)
 }
 }
 
+bool IsCageEdge(vtkPolyData* cage, vtkIdType a, vtkIdType b)
+{
+  vtkCellArray* polys = cage->GetPolys();
+  vtkNew<vtkIdList> cell;
+  for (polys->InitTraversal(); polys->GetNextCell(cell);)
+  {
+    const vtkIdType n = cell->GetNumberOfIds();
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType p = cell->GetId(k), q = cell->GetId((k + 1) % n);
+      if ((p == a && q == b) || (p == b && q == a))
+      {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 double GetEdgeSharpness(vtkPolyData* cage, vtkIdType a, vtkIdType b)
 {
   for (const Segment& s : ReadSegments(cage))
@@ -84,7 +84,7 @@ bool SetEdgeSharpness(vtkPolyData* cage, vtkIdType a, vtkIdType b, double sharpn
     error = "a sharpness must be a number >= 0";
     return false;
   }
-  if (!IsPolygonEdge(cage, a, b))
+  if (!IsCageEdge(cage, a, b))
   {
     error = "(" + std::to_string(a) + ", " + std::to_string(b) + ") is not an edge of the cage's polygons";
     return false;

@@ -13,6 +13,9 @@ class vtkPolyData;
 
 namespace subdapp
 {
+/// Whether (a, b) is an edge of one of the cage's polygons.
+bool IsCageEdge(vtkPolyData* cage, vtkIdType a, vtkIdType b);
+
 /// The sharpness of edge (a, b) in the cage's crease lines (0 when no line covers it; a line
 /// without a "Sharpness" array is infinitely sharp, 10).
 double GetEdgeSharpness(vtkPolyData* cage, vtkIdType a, vtkIdType b);

@@ -27,6 +27,19 @@ struct SchemeOptions
   bool Closed = false;         // curves: every polyline is closed
 };
 
+/// Whether two option sets configure a filter alike (the explorer reuses a view's result).
+inline bool operator==(const SchemeOptions& a, const SchemeOptions& b)
+{
+  return a.Levels == b.Levels && a.BoundaryRule == b.BoundaryRule && a.Tension == b.Tension &&
+    a.TensionGiven == b.TensionGiven && a.CreaseMethod == b.CreaseMethod && a.FeatureAngle == b.FeatureAngle &&
+    a.ProjectToLimit == b.ProjectToLimit && a.LimitNormals == b.LimitNormals &&
+    a.LimitCurvature == b.LimitCurvature && a.Tangents == b.Tangents && a.Closed == b.Closed;
+}
+inline bool operator!=(const SchemeOptions& a, const SchemeOptions& b)
+{
+  return !(a == b);
+}
+
 struct SchemeEntry
 {
   std::string Name;

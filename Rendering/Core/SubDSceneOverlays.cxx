@@ -125,6 +125,7 @@ vtkSmartPointer<vtkPolyData> PolygonsOf(vtkPolyData* mesh)
   auto faces = vtkSmartPointer<vtkPolyData>::New();
   faces->SetPoints(mesh->GetPoints());
   faces->SetPolys(mesh->GetPolys());
+  faces->GetPointData()->ShallowCopy(mesh->GetPointData());
   return faces;
 }
 
@@ -197,25 +198,75 @@ vtkSmartPointer<vtkActor> SharpLinesActor(vtkPolyData* mesh, double radius)
   return actor;
 }
 
-void AddCage(vtkRenderer* renderer, vtkPolyData* cage, const CageStyle& style)
+namespace
 {
-  vtkSmartPointer<vtkPolyData> cageEdges = LinesOf(cage);
+vtkMTimeType TimeOf(vtkObject* object)
+{
+  return object ? object->GetMTime() : 0;
+}
+}
+
+void CageOverlayCache::AddCage(vtkRenderer* renderer, vtkPolyData* cage, const CageStyle& style)
+{
   const bool surfaceCage = cage->GetNumberOfPolys() > 0;
-  if (surfaceCage)
+  Key key{ cage, TimeOf(cage->GetPoints()), TimeOf(cage->GetPolys()), surfaceCage ? 0 : TimeOf(cage->GetLines()),
+    style.Size };
+  if (!(key == this->Built))
   {
-    vtkNew<vtkExtractEdges> edges;
-    edges->SetInputData(PolygonsOf(cage));
-    edges->Update();
-    cageEdges = edges->GetOutput();
+    vtkSmartPointer<vtkPolyData> cageEdges = LinesOf(cage);
+    if (surfaceCage)
+    {
+      vtkNew<vtkExtractEdges> edges;
+      edges->SetInputData(PolygonsOf(cage));
+      edges->Update();
+      cageEdges = edges->GetOutput();
+    }
+    vtkNew<vtkPolyData> points;
+    points->SetPoints(cageEdges->GetPoints());
+    this->Large = cageEdges->GetNumberOfLines() > LargeCageEdges;
+    this->Edges = vtkSmartPointer<vtkPolyDataMapper>::New();
+    this->Vertices = vtkSmartPointer<vtkPolyDataMapper>::New();
+    if (this->Large)
+    {
+      this->Edges->SetInputData(cageEdges);
+      vtkNew<vtkCellArray> vertexCells;
+      for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+      {
+        vertexCells->InsertNextCell(1, &i);
+      }
+      points->SetVerts(vertexCells);
+      this->Vertices->SetInputData(points);
+    }
+    else
+    {
+      vtkNew<vtkTubeFilter> tubes;
+      tubes->SetInputData(cageEdges);
+      tubes->SetRadius(0.004 * style.Size);
+      tubes->SetNumberOfSides(8);
+      tubes->CappingOn();
+      this->Edges->SetInputConnection(tubes->GetOutputPort());
+      this->Vertices->SetInputConnection(SphereGlyphs(points, 0.012 * style.Size)->GetOutputPort());
+    }
+    this->Edges->ScalarVisibilityOff();
+    this->Vertices->ScalarVisibilityOff();
+    this->Built = key;
   }
-  vtkSmartPointer<vtkActor> edgeActor = TubeActor(cageEdges, 0.004 * style.Size, CageColor);
+  vtkNew<vtkActor> edgeActor;
+  edgeActor->SetMapper(this->Edges);
+  edgeActor->GetProperty()->SetColor(CageColor[0], CageColor[1], CageColor[2]);
   edgeActor->GetProperty()->SetOpacity(style.Opacity);
-  renderer->AddActor(edgeActor);
-  vtkNew<vtkPolyData> points;
-  points->SetPoints(cageEdges->GetPoints());
-  const double vertexColor[3] = { CageColor[0] * 0.8, CageColor[1] * 0.8, CageColor[2] * 0.8 };
-  vtkSmartPointer<vtkActor> vertexActor = SphereActor(points, 0.012 * style.Size, vertexColor);
+  vtkNew<vtkActor> vertexActor;
+  vertexActor->SetMapper(this->Vertices);
+  vertexActor->GetProperty()->SetColor(CageColor[0] * 0.8, CageColor[1] * 0.8, CageColor[2] * 0.8);
   vertexActor->GetProperty()->SetOpacity(style.Opacity);
+  if (this->Large)
+  {
+    edgeActor->GetProperty()->RenderLinesAsTubesOn();
+    edgeActor->GetProperty()->SetLineWidth(2.5);
+    vertexActor->GetProperty()->RenderPointsAsSpheresOn();
+    vertexActor->GetProperty()->SetPointSize(5.0);
+  }
+  renderer->AddActor(edgeActor);
   renderer->AddActor(vertexActor);
   if (surfaceCage) // a curve's control polygon is its lines: no crease among them
   {

@@ -8,12 +8,13 @@
 #include "vtkType.h"
 
 class vtkActor;
+class vtkPolyDataMapper;
 class vtkPolyData;
 class vtkRenderer;
 
 namespace subdrender
 {
-/// The points and polygons of a mesh (its lines and vertices left out).
+/// The points, point data and polygons of a mesh (its lines and vertices left out).
 vtkSmartPointer<vtkPolyData> PolygonsOf(vtkPolyData* mesh);
 
 /// The points of a mesh with its lines only.
@@ -37,10 +38,37 @@ struct CageStyle
   double Opacity = 1.0; ///< of the cage's edges and vertices (its creases stay opaque)
 };
 
-/// Adds the cage: the edges of its polygons (or, for a curve's control polygon, its lines) as
-/// gold tubes, its vertices as spheres, its crease lines by sharpness (SharpLinesActor) and
-/// its corners ("CornerSharpness" > 0) as larger spheres in the same colours.
-void AddCage(vtkRenderer* renderer, vtkPolyData* cage, const CageStyle& style);
+/**
+ * Draws control cages: the edges of its polygons (or, for a curve's control polygon, its
+ * lines) as gold tubes, its vertices as spheres, its crease lines by sharpness
+ * (SharpLinesActor) and its corners ("CornerSharpness" > 0) as larger spheres in the same
+ * colours. The edges and vertices, the costly part on a large cage, are built once per cage
+ * geometry (points and polygons) and size: a sharpness edit rebuilds only the creases. Above
+ * LargeCageEdges edges they are drawn as lines and points shaded as tubes and spheres on the
+ * GPU, not as geometry.
+ */
+class CageOverlayCache
+{
+public:
+  static constexpr vtkIdType LargeCageEdges = 4000;
+  void AddCage(vtkRenderer* renderer, vtkPolyData* cage, const CageStyle& style);
+
+private:
+  struct Key
+  {
+    vtkSmartPointer<vtkPolyData> Cage; // held, so that its address is not reused
+    vtkMTimeType Points = 0, Polys = 0, Lines = 0;
+    double Size = 0.0;
+    bool operator==(const Key& other) const
+    {
+      return this->Cage == other.Cage && this->Points == other.Points && this->Polys == other.Polys &&
+        this->Lines == other.Lines && this->Size == other.Size;
+    }
+  };
+  Key Built;
+  bool Large = false;
+  vtkSmartPointer<vtkPolyDataMapper> Edges, Vertices;
+};
 
 /// Adds a marker on the cage's edge (a, b), or on its vertex a when b < 0 (the explorer's
 /// selection). Ids out of range add nothing.

@@ -6,6 +6,7 @@
 
 #include "vtkActor.h"
 #include "vtkBoundingBox.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCurvatures.h"
 #include "vtkDataArray.h"
@@ -61,51 +62,68 @@ vtkSmartPointer<vtkRenderer> GridRenderer(int k, int columns, int rows)
   return renderer;
 }
 
-// The surface's polygons as triangles, with the chosen curvature as active point scalars
-// (none for COLOR_NONE), shaded with normals split at 60 degrees. The curvature values at
-// interior points are appended to `values`.
-vtkSmartPointer<vtkPolyData> PrepareSurface(vtkPolyData* surface, int coloring, std::vector<double>& values)
+// A surface made ready to draw: its polygons with the chosen curvature as active point
+// scalars (none for COLOR_NONE) and normals split at 60 degrees, and the curvature values at
+// its interior points (for the colour range).
+struct PreparedSurface
 {
+  vtkSmartPointer<vtkPolyData> Mesh;
+  std::vector<double> Values;
+  // What it was made from: a surface that did not change is not prepared again (a toggle of
+  // the cage, the wireframe or the colour map only redraws).
+  vtkSmartPointer<vtkPolyData> Source; // held, so that its address is not reused
+  vtkMTimeType SourceTime = 0;
+  int Coloring = -1;
+};
+
+PreparedSurface PrepareSurface(vtkPolyData* surface, int coloring)
+{
+  PreparedSurface prepared;
+  prepared.Source = surface;
+  prepared.SourceTime = surface->GetMTime();
+  prepared.Coloring = coloring;
   if (surface->GetNumberOfPolys() == 0)
   {
-    return vtkSmartPointer<vtkPolyData>::New(); // a curve: drawn as tubes (Render)
+    prepared.Mesh = vtkSmartPointer<vtkPolyData>::New(); // a curve: drawn as tubes (Render)
+    return prepared;
   }
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(subdrender::PolygonsOf(surface));
-  triangles->PassLinesOff();
-  triangles->PassVertsOff();
-  vtkSmartPointer<vtkAlgorithm> last = triangles;
-  vtkNew<vtkCurvatures> curvatures;
+  vtkSmartPointer<vtkPolyData> mesh = subdrender::PolygonsOf(surface);
   const char* name = subdrender::CurvatureArrayName(coloring);
-  triangles->Update();
-  vtkDataArray* exact = name ? triangles->GetOutput()->GetPointData()->GetArray(name) : nullptr;
-  if (exact)
+  if (vtkDataArray* exact = name ? mesh->GetPointData()->GetArray(name) : nullptr)
   {
     // The surface carries its limit surface's curvature (ComputeCurvature): use it.
-    subdrender::AppendInteriorValues(triangles->GetOutput(), exact, values);
+    subdrender::AppendInteriorValues(mesh, exact, prepared.Values);
   }
   else if (name)
   {
+    vtkNew<vtkTriangleFilter> triangles; // vtkCurvatures wants triangles
+    triangles->SetInputData(mesh);
+    triangles->PassLinesOff();
+    triangles->PassVertsOff();
+    vtkNew<vtkCurvatures> curvatures;
+    // vtkCurvatures warns at every point where the discrete H^2 < K (it then takes
+    // k1 = k2 = H): common on coarse meshes, and no news to someone looking at colours.
+    vtkNew<vtkCallbackCommand> quiet;
+    curvatures->AddObserver(vtkCommand::WarningEvent, quiet);
     curvatures->SetInputConnection(triangles->GetOutputPort());
     curvatures->SetCurvatureType(subdrender::DiscreteCurvatureType(coloring));
     curvatures->Update();
-    subdrender::AppendInteriorValues(
-      curvatures->GetOutput(), curvatures->GetOutput()->GetPointData()->GetArray(name), values);
-    last = curvatures;
+    mesh = curvatures->GetOutput();
+    subdrender::AppendInteriorValues(mesh, mesh->GetPointData()->GetArray(name), prepared.Values);
   }
   vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputConnection(last->GetOutputPort());
+  normals->SetInputData(mesh);
   normals->SetFeatureAngle(60.0);
   normals->SplittingOn();
   normals->ConsistencyOff();
   normals->AutoOrientNormalsOff();
   normals->Update();
-  vtkSmartPointer<vtkPolyData> result = normals->GetOutput();
+  prepared.Mesh = normals->GetOutput();
   if (name)
   {
-    result->GetPointData()->SetActiveScalars(name);
+    prepared.Mesh->GetPointData()->SetActiveScalars(name);
   }
-  return result;
+  return prepared;
 }
 
 }
@@ -114,6 +132,8 @@ class vtkSubDScene::vtkInternals
 {
 public:
   std::vector<View> Views;
+  std::vector<PreparedSurface> Prepared; ///< of the views at the last Render()
+  subdrender::CageOverlayCache CageOverlay;
   vtkSmartPointer<vtkRenderWindow> Window;
   vtkNew<vtkCamera> Camera;
   bool CameraPlaced = false;
@@ -253,12 +273,20 @@ bool vtkSubDScene::Render()
   }
   window->GetRenderers()->RemoveAllItems();
 
-  std::vector<vtkSmartPointer<vtkPolyData>> surfaces;
+  std::vector<PreparedSurface>& prepared = this->Internals->Prepared;
+  prepared.resize(views.size());
   std::vector<double> values; // interior curvature of every view, for one colour scale
   vtkBoundingBox box;
-  for (const View& view : views)
+  for (size_t k = 0; k < views.size(); ++k)
   {
-    surfaces.push_back(PrepareSurface(view.Surface, this->Coloring, values));
+    const View& view = views[k];
+    PreparedSurface& surface = prepared[k];
+    if (surface.Source != view.Surface || surface.SourceTime != view.Surface->GetMTime() ||
+      surface.Coloring != this->Coloring)
+    {
+      surface = PrepareSurface(view.Surface, this->Coloring);
+    }
+    values.insert(values.end(), surface.Values.begin(), surface.Values.end());
     double bounds[6];
     view.Surface->GetBounds(bounds);
     box.AddBounds(bounds);
@@ -316,7 +344,7 @@ bool vtkSubDScene::Render()
     renderer->SetActiveCamera(camera);
 
     vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(surfaces[k]);
+    mapper->SetInputData(prepared[k].Mesh);
     vtkNew<vtkActor> actor;
     actor->SetMapper(mapper);
     if (this->Coloring == COLOR_NONE)
@@ -341,7 +369,7 @@ bool vtkSubDScene::Render()
     }
     if (this->ShowCage && view.Cage && view.Cage->GetNumberOfPoints() > 0)
     {
-      subdrender::AddCage(renderer, view.Cage, { size, this->CageOpacity });
+      this->Internals->CageOverlay.AddCage(renderer, view.Cage, { size, this->CageOpacity });
     }
     if (view.Cage && this->CageSelection[0] >= 0)
     {

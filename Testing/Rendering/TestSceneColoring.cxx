@@ -1,0 +1,129 @@
+// vtkSubDScene's colouring: which curvature it reads and the range its colours span, checked
+// against closed forms (planted exact curvature arrays, the curvature of a sphere).
+#include "vtkDoubleArray.h"
+#include "vtkPointData.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+#include "vtkSphereSource.h"
+#include "vtkSubDScene.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <string>
+
+namespace
+{
+constexpr double Radius = 2.0;
+
+vtkSmartPointer<vtkPolyData> Sphere()
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(Radius);
+  sphere->SetThetaResolution(64);
+  sphere->SetPhiResolution(64);
+  sphere->Update();
+  vtkSmartPointer<vtkPolyData> mesh = sphere->GetOutput();
+  mesh->GetPointData()->SetNormals(nullptr);
+  return mesh;
+}
+
+void Plant(vtkPolyData* mesh, const char* name, double (*value)(vtkIdType, vtkIdType))
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  const vtkIdType n = mesh->GetNumberOfPoints();
+  array->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    array->SetValue(i, value(i, n));
+  }
+  mesh->GetPointData()->AddArray(array);
+}
+
+// The colour range after rendering `mesh` alone with `coloring`.
+std::array<double, 2> RangeOf(vtkPolyData* mesh, int coloring, int mode = vtkSubDScene::RANGE_SYMMETRIC,
+  double percentile = 95.0)
+{
+  vtkNew<vtkSubDScene> scene;
+  scene->SetViewSize(64, 64);
+  scene->SetColoring(coloring);
+  scene->SetRangeMode(mode);
+  scene->SetRangePercentile(percentile);
+  scene->AddView(mesh, nullptr, nullptr);
+  EXPECT_TRUE(scene->Render());
+  return { scene->GetColorRange()[0], scene->GetColorRange()[1] };
+}
+}
+
+TEST(SceneColoring, NamesRoundTrip)
+{
+  for (int c = vtkSubDScene::COLOR_NONE; c <= vtkSubDScene::COLOR_MINIMUM_CURVATURE; ++c)
+  {
+    EXPECT_EQ(vtkSubDScene::ColoringFromName(vtkSubDScene::GetColoringName(c)), c);
+  }
+  for (int m = vtkSubDScene::COLORMAP_COOL_TO_WARM; m <= vtkSubDScene::COLORMAP_GRAYSCALE; ++m)
+  {
+    EXPECT_EQ(vtkSubDScene::ColorMapFromName(vtkSubDScene::GetColorMapName(m)), m);
+  }
+  EXPECT_EQ(vtkSubDScene::ColoringFromName("curvy"), -1);
+  EXPECT_EQ(vtkSubDScene::ColorMapFromName(nullptr), -1);
+}
+
+// A surface that carries its limit curvature (as the filters' ComputeCurvature makes it) is
+// coloured by it, each colouring by its own array: constant planted values give the range.
+TEST(SceneColoring, ExactCurvatureArraysAreUsed)
+{
+  vtkSmartPointer<vtkPolyData> mesh = Sphere();
+  Plant(mesh, "Mean_Curvature", [](vtkIdType, vtkIdType) { return 0.7; });
+  Plant(mesh, "Gauss_Curvature", [](vtkIdType, vtkIdType) { return -6.0; });
+  Plant(mesh, "Maximum_Curvature", [](vtkIdType, vtkIdType) { return 3.0; });
+  Plant(mesh, "Minimum_Curvature", [](vtkIdType, vtkIdType) { return -2.0; });
+  EXPECT_DOUBLE_EQ(RangeOf(mesh, vtkSubDScene::COLOR_MEAN_CURVATURE)[1], 0.7);
+  EXPECT_DOUBLE_EQ(RangeOf(mesh, vtkSubDScene::COLOR_GAUSSIAN_CURVATURE)[1], 6.0);
+  EXPECT_DOUBLE_EQ(RangeOf(mesh, vtkSubDScene::COLOR_MAXIMUM_CURVATURE)[1], 3.0);
+  const std::array<double, 2> k2 = RangeOf(mesh, vtkSubDScene::COLOR_MINIMUM_CURVATURE);
+  EXPECT_DOUBLE_EQ(k2[0], -2.0);
+  EXPECT_DOUBLE_EQ(k2[1], 2.0);
+  // One value only: the percentile range is widened around it, not empty.
+  const std::array<double, 2> flat =
+    RangeOf(mesh, vtkSubDScene::COLOR_MAXIMUM_CURVATURE, vtkSubDScene::RANGE_PERCENTILE);
+  EXPECT_DOUBLE_EQ(flat[0], 2.0);
+  EXPECT_DOUBLE_EQ(flat[1], 4.0);
+}
+
+// Without the arrays, the discrete curvature of a sphere of radius r: H = k1 = k2 = 1/r,
+// K = 1/r^2 (vtkCurvatures' convention: convex is positive).
+TEST(SceneColoring, DiscreteCurvatureOfASphere)
+{
+  vtkSmartPointer<vtkPolyData> mesh = Sphere();
+  const double k = 1.0 / Radius;
+  EXPECT_NEAR(RangeOf(mesh, vtkSubDScene::COLOR_MEAN_CURVATURE)[1], k, 0.05 * k);
+  EXPECT_NEAR(RangeOf(mesh, vtkSubDScene::COLOR_GAUSSIAN_CURVATURE)[1], k * k, 0.05 * k * k);
+  EXPECT_NEAR(RangeOf(mesh, vtkSubDScene::COLOR_MAXIMUM_CURVATURE)[1], k, 0.1 * k);
+  EXPECT_NEAR(RangeOf(mesh, vtkSubDScene::COLOR_MINIMUM_CURVATURE)[1], k, 0.1 * k);
+  const std::array<double, 2> mean =
+    RangeOf(mesh, vtkSubDScene::COLOR_MEAN_CURVATURE, vtkSubDScene::RANGE_PERCENTILE, 90.0);
+  EXPECT_GT(mean[0], 0.9 * k); // both ends near 1/r: not symmetric about zero
+  EXPECT_LT(mean[1], 1.1 * k);
+}
+
+// Values spread evenly over [0, 1) with 1% of spikes at 1000: the percentile range is the
+// central part of the spread and ignores the spikes.
+TEST(SceneColoring, PercentileRangeClipsTheTails)
+{
+  vtkSmartPointer<vtkPolyData> mesh = Sphere();
+  Plant(mesh, "Mean_Curvature", [](vtkIdType i, vtkIdType n) {
+    return i % 100 == 0 ? 1000.0 : static_cast<double>((i * 7919) % n) / static_cast<double>(n);
+  });
+  const std::array<double, 2> central =
+    RangeOf(mesh, vtkSubDScene::COLOR_MEAN_CURVATURE, vtkSubDScene::RANGE_PERCENTILE, 90.0);
+  EXPECT_NEAR(central[0], 0.05, 0.02);
+  EXPECT_NEAR(central[1], 0.95, 0.02);
+  const std::array<double, 2> symmetric = RangeOf(mesh, vtkSubDScene::COLOR_MEAN_CURVATURE);
+  EXPECT_NEAR(symmetric[1], 0.96, 0.02);
+  EXPECT_DOUBLE_EQ(symmetric[0], -symmetric[1]);
+  // 100 takes the extremes: the spikes.
+  EXPECT_DOUBLE_EQ(
+    RangeOf(mesh, vtkSubDScene::COLOR_MEAN_CURVATURE, vtkSubDScene::RANGE_PERCENTILE, 100.0)[1], 1000.0);
+}
