@@ -28,6 +28,29 @@ bool IntegerIn(const std::string& text, long low, long high, const char* what, i
   out = static_cast<int>(number);
   return true;
 }
+
+// Reads "A" or "A-B" (vertex ids >= 0) at the start of `text` into a and b (b = -1 for "A").
+// Returns where the ids end, or nullptr when they are malformed.
+const char* ReadVertexIds(const char* text, long long& a, long long& b)
+{
+  char* end = nullptr;
+  a = std::strtoll(text, &end, 10);
+  b = -1;
+  if (end == text || a < 0)
+  {
+    return nullptr;
+  }
+  if (*end == '-')
+  {
+    const char* second = end + 1;
+    b = std::strtoll(second, &end, 10);
+    if (end == second || b < 0)
+    {
+      return nullptr;
+    }
+  }
+  return end;
+}
 }
 
 std::string ExplorerUsage()
@@ -135,24 +158,14 @@ bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std:
         return false;
       }
       ExplorerOptions::SharpnessEdit edit;
+      const char* ids = ReadVertexIds(text.c_str(), edit.A, edit.B);
+      const bool shapeOk = ids && *ids == '=' && (arg == "--corner") == (edit.B < 0);
       char* end = nullptr;
-      edit.A = std::strtoll(text.c_str(), &end, 10);
-      if (arg == "--crease" && end != text.c_str() && *end == '-')
-      {
-        const char* second = end + 1;
-        edit.B = std::strtoll(second, &end, 10);
-        if (end == second)
-        {
-          edit.B = -2; // malformed
-        }
-      }
-      const bool shapeOk = end != text.c_str() && *end == '=' && edit.A >= 0 && (arg == "--corner" || edit.B >= 0);
       if (shapeOk)
       {
-        const char* number = end + 1;
-        edit.Sharpness = std::strtod(number, &end);
+        edit.Sharpness = std::strtod(ids + 1, &end);
       }
-      if (!shapeOk || *end != '\0' || !(edit.Sharpness >= 0.0))
+      if (!shapeOk || *end != '\0' || end == ids + 1 || !(edit.Sharpness >= 0.0))
       {
         error = arg + (arg == "--crease" ? " wants A-B=S (two vertex ids and a sharpness >= 0), not '"
                                          : " wants V=S (a vertex id and a sharpness >= 0), not '") + text + "'";
@@ -173,20 +186,8 @@ bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std:
       {
         return false;
       }
-      char* end = nullptr;
-      options.SelectA = std::strtoll(text.c_str(), &end, 10);
-      options.SelectB = -1;
-      const bool first = end != text.c_str();
-      if (first && *end == '-')
-      {
-        const char* second = end + 1;
-        options.SelectB = std::strtoll(second, &end, 10);
-        if (end == second)
-        {
-          options.SelectB = -2;
-        }
-      }
-      if (!first || *end != '\0' || options.SelectA < 0 || options.SelectB < -1)
+      const char* end = ReadVertexIds(text.c_str(), options.SelectA, options.SelectB);
+      if (!end || *end != '\0')
       {
         error = "--select wants A-B (an edge's two vertex ids) or V (a vertex id), not '" + text + "'";
         return false;
