@@ -2,17 +2,13 @@
 
 #include "vtkSubDScene.h"
 
-#include "vtkCellArray.h"
 #include "vtkColorTransferFunction.h"
-#include "vtkCurvatures.h"
 #include "vtkDataArray.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
-#include "vtkPolyData.h"
 
 #include <algorithm>
 #include <cmath>
-#include <unordered_map>
 
 namespace subdrender
 {
@@ -33,47 +29,10 @@ const char* CurvatureArrayName(int coloring)
   }
 }
 
-int DiscreteCurvatureType(int coloring)
+void AppendInteriorValues(const std::vector<bool>& boundary, vtkDataArray* curvature, std::vector<double>& values)
 {
-  switch (coloring)
-  {
-    case vtkSubDScene::COLOR_GAUSSIAN_CURVATURE:
-      return VTK_CURVATURE_GAUSS;
-    case vtkSubDScene::COLOR_MAXIMUM_CURVATURE:
-      return VTK_CURVATURE_MAXIMUM;
-    case vtkSubDScene::COLOR_MINIMUM_CURVATURE:
-      return VTK_CURVATURE_MINIMUM;
-    default:
-      return VTK_CURVATURE_MEAN;
-  }
-}
-
-void AppendInteriorValues(vtkPolyData* triangles, vtkDataArray* curvature, std::vector<double>& values)
-{
-  // An edge used by one triangle is a boundary edge: count uses by the key a * n + b.
-  const vtkIdType n = triangles->GetNumberOfPoints();
-  std::unordered_map<long long, int> edgeUses;
-  vtkCellArray* cells = triangles->GetPolys();
-  edgeUses.reserve(static_cast<size_t>(cells->GetNumberOfConnectivityIds()));
-  vtkIdType size;
-  const vtkIdType* ids;
-  for (cells->InitTraversal(); cells->GetNextCell(size, ids);)
-  {
-    for (vtkIdType k = 0; k < size; ++k)
-    {
-      const vtkIdType a = ids[k], b = ids[(k + 1) % size];
-      ++edgeUses[static_cast<long long>(std::min(a, b)) * n + std::max(a, b)];
-    }
-  }
-  std::vector<bool> boundary(static_cast<size_t>(n), false);
-  for (const auto& edge : edgeUses)
-  {
-    if (edge.second == 1)
-    {
-      boundary[static_cast<size_t>(edge.first / n)] = boundary[static_cast<size_t>(edge.first % n)] = true;
-    }
-  }
-  for (vtkIdType i = 0; i < curvature->GetNumberOfTuples() && i < n; ++i)
+  const vtkIdType n = std::min(curvature->GetNumberOfTuples(), static_cast<vtkIdType>(boundary.size()));
+  for (vtkIdType i = 0; i < n; ++i)
   {
     const double value = curvature->GetComponent(i, 0);
     if (!boundary[static_cast<size_t>(i)] && std::isfinite(value))

@@ -18,13 +18,10 @@ namespace subdrender
 /// and vtkCurvatures both name it; nullptr for COLOR_NONE.
 const char* CurvatureArrayName(int coloring);
 
-/// vtkCurvatures' curvature type for a colouring (VTK_CURVATURE_MEAN, ...).
-int DiscreteCurvatureType(int coloring);
-
-/// Appends the finite values of `curvature` at the points of the triangle mesh that are not
-/// on its boundary: discrete curvature is meaningless there (vtkCurvatures' angle deficit at
-/// a boundary point is about pi), and the exact one should not dominate the range either.
-void AppendInteriorValues(vtkPolyData* triangles, vtkDataArray* curvature, std::vector<double>& values);
+/// Appends the finite values of `curvature` at the points not on the boundary (`boundary`,
+/// per point): discrete curvature is meaningless there (the angle deficit at a boundary point
+/// is about pi), and the exact one should not dominate the range either.
+void AppendInteriorValues(const std::vector<bool>& boundary, vtkDataArray* curvature, std::vector<double>& values);
 
 /**
  * The range colours span for `values` (which are reordered):

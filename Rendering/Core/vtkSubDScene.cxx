@@ -1,14 +1,14 @@
 #include "vtkSubDScene.h"
 
+#include "SubDDiscreteCurvature.h"
 #include "SubDSceneColoring.h"
 #include "SubDSceneOverlays.h"
 #include "vtkSubDOffscreenRenderWindow.h"
 
 #include "vtkActor.h"
 #include "vtkBoundingBox.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
-#include "vtkCurvatures.h"
+#include "vtkDoubleArray.h"
 #include "vtkDataArray.h"
 #include "vtkLookupTable.h"
 #include "vtkMath.h"
@@ -27,7 +27,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextActor.h"
 #include "vtkTextProperty.h"
-#include "vtkTriangleFilter.h"
 #include "vtkWindowToImageFilter.h"
 
 #include <algorithm>
@@ -89,27 +88,18 @@ PreparedSurface PrepareSurface(vtkPolyData* surface, int coloring)
   }
   vtkSmartPointer<vtkPolyData> mesh = subdrender::PolygonsOf(surface);
   const char* name = subdrender::CurvatureArrayName(coloring);
-  if (vtkDataArray* exact = name ? mesh->GetPointData()->GetArray(name) : nullptr)
+  if (name)
   {
-    // The surface carries its limit surface's curvature (ComputeCurvature): use it.
-    subdrender::AppendInteriorValues(mesh, exact, prepared.Values);
-  }
-  else if (name)
-  {
-    vtkNew<vtkTriangleFilter> triangles; // vtkCurvatures wants triangles
-    triangles->SetInputData(mesh);
-    triangles->PassLinesOff();
-    triangles->PassVertsOff();
-    vtkNew<vtkCurvatures> curvatures;
-    // vtkCurvatures warns at every point where the discrete H^2 < K (it then takes
-    // k1 = k2 = H): common on coarse meshes, and no news to someone looking at colours.
-    vtkNew<vtkCallbackCommand> quiet;
-    curvatures->AddObserver(vtkCommand::WarningEvent, quiet);
-    curvatures->SetInputConnection(triangles->GetOutputPort());
-    curvatures->SetCurvatureType(subdrender::DiscreteCurvatureType(coloring));
-    curvatures->Update();
-    mesh = curvatures->GetOutput();
-    subdrender::AppendInteriorValues(mesh, mesh->GetPointData()->GetArray(name), prepared.Values);
+    const subdrender::TriangleAdjacency adjacency(mesh);
+    vtkDataArray* curvature = mesh->GetPointData()->GetArray(name);
+    if (!curvature)
+    {
+      // No limit curvature on the surface (ComputeCurvature): the discrete one of the mesh.
+      vtkSmartPointer<vtkDoubleArray> discrete = subdrender::DiscreteCurvature(mesh, adjacency, coloring);
+      mesh->GetPointData()->AddArray(discrete);
+      curvature = discrete;
+    }
+    subdrender::AppendInteriorValues(adjacency.Boundary, curvature, prepared.Values);
   }
   vtkNew<vtkPolyDataNormals> normals;
   normals->SetInputData(mesh);

@@ -6,7 +6,8 @@
  * curvatures k1 >= k2): the exact curvature of the limit surface when the surface carries it
  * ("Mean_Curvature", "Gauss_Curvature", "Maximum_Curvature", "Minimum_Curvature" point data,
  * as SubD's filters make with ComputeCurvature), else the discrete curvature of the refined
- * mesh (vtkCurvatures on the triangulated surface). The colours span one range for all views
+ * mesh (angle deficits and dihedral angles, vtkCurvatures' definitions, computed on flat
+ * arrays several times faster). The colours span one range for all views
  * (so that views are comparable), taken over the interior points (boundary points, where
  * discrete curvature means nothing, are left out) as a percentile, not the extremes, so that
  * spikes at corners do not wash out the picture: symmetric about zero (RangeMode Symmetric,
@@ -33,7 +34,8 @@
  * window size is the grid size times ViewSize. Rendering happens in a
  * vtkSubDOffscreenRenderWindow (no display server needed) unless another window is set.
  *
- * Both curvatures share vtkCurvatures' sign convention (a convex closed surface is positive).
+ * Exact and discrete curvature share vtkCurvatures' sign convention (a convex closed surface
+ * is positive).
  */
 #ifndef vtkSubDScene_h
 #define vtkSubDScene_h

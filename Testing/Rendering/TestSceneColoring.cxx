@@ -1,6 +1,9 @@
 // vtkSubDScene's colouring: which curvature it reads and the range its colours span, checked
 // against closed forms (planted exact curvature arrays, the curvature of a sphere).
+#include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
+#include "vtkMath.h"
+#include "vtkPoints.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
@@ -10,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <string>
 
 namespace
@@ -25,6 +29,36 @@ vtkSmartPointer<vtkPolyData> Sphere()
   sphere->Update();
   vtkSmartPointer<vtkPolyData> mesh = sphere->GetOutput();
   mesh->GetPointData()->SetNormals(nullptr);
+  return mesh;
+}
+
+// An open cylinder of radius r around z (quads, outward normals): k1 = 1/r, k2 = 0,
+// H = 1/(2r), K = 0 inside; its two rims are boundary.
+vtkSmartPointer<vtkPolyData> Cylinder()
+{
+  constexpr int around = 64, along = 24;
+  vtkNew<vtkPoints> points;
+  for (int j = 0; j <= along; ++j)
+  {
+    for (int i = 0; i < around; ++i)
+    {
+      const double angle = 2.0 * vtkMath::Pi() * i / around;
+      points->InsertNextPoint(Radius * std::cos(angle), Radius * std::sin(angle), 0.25 * j);
+    }
+  }
+  vtkNew<vtkCellArray> quads;
+  for (int j = 0; j < along; ++j)
+  {
+    for (int i = 0; i < around; ++i)
+    {
+      const vtkIdType next = (i + 1) % around;
+      const vtkIdType quad[4] = { j * around + i, j * around + next, (j + 1) * around + next, (j + 1) * around + i };
+      quads->InsertNextCell(4, quad);
+    }
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(quads);
   return mesh;
 }
 
@@ -106,6 +140,26 @@ TEST(SceneColoring, DiscreteCurvatureOfASphere)
     RangeOf(mesh, vtkSubDScene::COLOR_MEAN_CURVATURE, vtkSubDScene::RANGE_PERCENTILE, 90.0);
   EXPECT_GT(mean[0], 0.9 * k); // both ends near 1/r: not symmetric about zero
   EXPECT_LT(mean[1], 1.1 * k);
+}
+
+// A surface with a boundary: the rims (where the angle deficit is about pi) stay out of the
+// range, and the principal curvatures come apart with the right signs.
+TEST(SceneColoring, DiscreteCurvatureOfACylinder)
+{
+  vtkSmartPointer<vtkPolyData> mesh = Cylinder();
+  const double k = 1.0 / Radius;
+  const int percentile = vtkSubDScene::RANGE_PERCENTILE;
+  const std::array<double, 2> k1 = RangeOf(mesh, vtkSubDScene::COLOR_MAXIMUM_CURVATURE, percentile, 100.0);
+  EXPECT_NEAR(k1[0], k, 0.02 * k);
+  EXPECT_NEAR(k1[1], k, 0.02 * k);
+  // k2 and K are zero everywhere inside: a range of one value, widened by 1 around it.
+  const std::array<double, 2> k2 = RangeOf(mesh, vtkSubDScene::COLOR_MINIMUM_CURVATURE, percentile, 100.0);
+  EXPECT_NEAR(0.5 * (k2[0] + k2[1]), 0.0, 0.02 * k);
+  const std::array<double, 2> mean = RangeOf(mesh, vtkSubDScene::COLOR_MEAN_CURVATURE, percentile, 100.0);
+  EXPECT_NEAR(mean[0], 0.5 * k, 0.01 * k);
+  EXPECT_NEAR(mean[1], 0.5 * k, 0.01 * k);
+  const std::array<double, 2> gauss = RangeOf(mesh, vtkSubDScene::COLOR_GAUSSIAN_CURVATURE, percentile, 100.0);
+  EXPECT_NEAR(0.5 * (gauss[0] + gauss[1]), 0.0, 1e-3 * k * k);
 }
 
 // Values spread evenly over [0, 1) with 1% of spikes at 1000: the percentile range is the
