@@ -157,10 +157,10 @@ QWidget* ExplorerWindow::BuildControls()
     this->Coloring->addItem(vtkSubDScene::GetColoringName(c));
   }
   this->Coloring->setCurrentIndex(vtkSubDScene::COLOR_MEAN_CURVATURE);
-  this->Coloring->setToolTip("Curvature colouring (k1 >= k2 are the principal curvatures, K): the exact limit "
-                             "curvature for Catmull-Clark and Loop with 'Limit', the refined mesh's discrete "
-                             "curvature otherwise");
-  form->addRow("Curvature (K)", this->Coloring);
+  this->Coloring->setToolTip("Curvature colouring (k1 >= k2 are the principal curvatures; the K key cycles): "
+                             "the exact limit curvature for Catmull-Clark and Loop with 'Limit', the refined "
+                             "mesh's discrete curvature otherwise");
+  form->addRow("Curvature", this->Coloring);
   this->ColorMap = new QComboBox;
   for (int m = vtkSubDScene::COLORMAP_COOL_TO_WARM; m <= vtkSubDScene::COLORMAP_GRAYSCALE; ++m)
   {
