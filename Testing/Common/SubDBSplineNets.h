@@ -4,6 +4,7 @@
 #ifndef SubDBSplineNets_h
 #define SubDBSplineNets_h
 
+#include "SubDScheme.h"
 #include "SubDTestMeshes.h"
 
 #include <algorithm>
@@ -88,6 +89,34 @@ double MaxSurfaceDifference(Basis basis, const std::vector<double>& net0, const 
         worst = std::max(worst, std::abs(a[c] - b[c]));
     }
   return worst;
+}
+
+/**
+ * Refines `mesh`, a WavyGrid(n), `levels` times with `scheme`, carrying the points' (u, v)
+ * parameters along: `childParameters(topology, param)` gives those of the next level's points
+ * from the current level's topology and parameters. Returns, per level, how far the level's
+ * net is from describing the level-0 net's B-spline surface (`basis`), over [3, n - 3]^2,
+ * away from the boundary, whose rules differ from the infinite grid's.
+ */
+template <typename Basis, typename ChildParameters>
+std::vector<double> GridBSplineDifferences(const subd::Scheme& scheme, const TestMesh& mesh, int n, int levels,
+  Basis basis, ChildParameters childParameters)
+{
+  std::vector<double> param = GridParameters(n);
+  const std::vector<double> level0Param = param;
+  subd::Level level = BaseLevel(mesh);
+  std::vector<double> points = mesh.Points;
+  std::vector<double> differences;
+  for (int l = 1; l <= levels; ++l)
+  {
+    std::vector<double> child = ApplyToPoints(scheme.BuildStencils(level), points);
+    std::vector<double> childParam = childParameters(level.Topology, param);
+    level = scheme.Split(level, subd::ChildTopology::Full);
+    points.swap(child);
+    param.swap(childParam);
+    differences.push_back(MaxSurfaceDifference(basis, mesh.Points, level0Param, points, param, l, 3.0, n - 3.0));
+  }
+  return differences;
 }
 }
 

@@ -75,19 +75,9 @@ TEST(DooSabinProperties, RegularGridReproducesBiquadraticBSpline)
 {
   const int n = 10;
   const subdtest::TestMesh mesh = subdtest::WavyGrid(n, 0.6, 0.5, 0.02);
-  std::vector<double> param = subdtest::GridParameters(n);
-  const std::vector<double> level0Param = param;
-
-  subd::DooSabinScheme scheme;
-  subd::Level level = subdtest::BaseLevel(mesh);
-  std::vector<double> points = mesh.Points;
-  for (int l = 1; l <= 3; ++l)
-  {
-    const subd::StencilTable table = scheme.BuildStencils(level);
-    std::vector<double> child = subdtest::ApplyToPoints(table, points);
-    // The point of a corner sits halfway between its vertex and the face centre (in the
-    // parameter domain of a regular grid).
-    const subd::MeshTopology& t = level.Topology;
+  // The point of a corner sits halfway between its vertex and the face centre (in the
+  // parameter domain of a regular grid).
+  auto childParameters = [](const subd::MeshTopology& t, const std::vector<double>& param) {
     std::vector<double> childParam(static_cast<size_t>(t.GetNumFaceCorners()) * 2);
     for (Index f = 0; f < t.GetNumFaces(); ++f)
     {
@@ -99,13 +89,12 @@ TEST(DooSabinProperties, RegularGridReproducesBiquadraticBSpline)
         for (int k = 0; k < 2; ++k)
           childParam[2 * (t.GetFaceOffset(f) + j) + k] = 0.5 * (param[2 * t.GetFaceVertices(f)[j] + k] + centre[k]);
     }
-    level = scheme.Split(level, subd::ChildTopology::Full);
-    points.swap(child);
-    param.swap(childParam);
-    const double worst = subdtest::MaxSurfaceDifference(
-      subdtest::QuadraticBSpline, mesh.Points, level0Param, points, param, l, 3.0, n - 3.0);
-    EXPECT_LT(worst, 1e-12) << "level " << l;
-  }
+    return childParam;
+  };
+  const std::vector<double> differences = subdtest::GridBSplineDifferences(
+    subd::DooSabinScheme(), mesh, n, 3, subdtest::QuadraticBSpline, childParameters);
+  for (size_t l = 0; l < differences.size(); ++l)
+    EXPECT_LT(differences[l], 1e-12) << "level " << l + 1;
 }
 
 namespace
