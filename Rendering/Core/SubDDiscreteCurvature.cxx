@@ -29,63 +29,57 @@ TriangleAdjacency::TriangleAdjacency(vtkPolyData* mesh)
     }
   }
   const vtkIdType numTriangles = static_cast<vtkIdType>(Corners.size() / 3);
-  PointOffsets.assign(static_cast<size_t>(numPoints + 1), 0);
+  // The triangles around each point, as compressed rows.
+  std::vector<vtkIdType> offsets(static_cast<size_t>(numPoints + 1), 0);
   for (vtkIdType corner : Corners)
   {
-    ++PointOffsets[static_cast<size_t>(corner + 1)];
+    ++offsets[static_cast<size_t>(corner + 1)];
   }
   for (vtkIdType p = 0; p < numPoints; ++p)
   {
-    PointOffsets[p + 1] += PointOffsets[p];
+    offsets[p + 1] += offsets[p];
   }
-  PointTriangles.resize(Corners.size());
-  std::vector<vtkIdType> fill(PointOffsets.begin(), PointOffsets.end() - 1);
+  std::vector<vtkIdType> pointTriangles(Corners.size());
+  std::vector<vtkIdType> fill(offsets.begin(), offsets.end() - 1);
   for (vtkIdType t = 0; t < numTriangles; ++t)
   {
     for (int k = 0; k < 3; ++k)
     {
-      PointTriangles[static_cast<size_t>(fill[Corners[3 * t + k]]++)] = t;
+      pointTriangles[static_cast<size_t>(fill[Corners[3 * t + k]]++)] = t;
     }
   }
-  // A half edge a -> b without a twin b -> a is on the boundary (or where orientation flips,
-  // which is as meaningless for curvature).
+  // The twin of half edge a -> b is b -> a in one of b's triangles. Without one (or with more
+  // than one) the edge is boundary or non-manifold, and curvature means little at its ends.
+  Across.assign(Corners.size(), -1);
   Boundary.assign(static_cast<size_t>(numPoints), false);
   for (vtkIdType t = 0; t < numTriangles; ++t)
   {
     for (int k = 0; k < 3; ++k)
     {
       const vtkIdType a = Corners[3 * t + k], b = Corners[3 * t + (k + 1) % 3];
-      if (this->Across(t, a, b) < 0)
+      vtkIdType found = -1, count = 0;
+      for (vtkIdType i = offsets[b]; i < offsets[b + 1]; ++i)
+      {
+        const vtkIdType s = pointTriangles[i];
+        for (int j = 0; j < 3 && s != t; ++j)
+        {
+          if (Corners[3 * s + j] == b && Corners[3 * s + (j + 1) % 3] == a)
+          {
+            found = s;
+            ++count;
+          }
+        }
+      }
+      if (count == 1)
+      {
+        Across[static_cast<size_t>(3 * t + k)] = found;
+      }
+      else
       {
         Boundary[static_cast<size_t>(a)] = Boundary[static_cast<size_t>(b)] = true;
       }
     }
   }
-}
-
-vtkIdType TriangleAdjacency::Across(vtkIdType t, vtkIdType a, vtkIdType b) const
-{
-  vtkIdType found = -1;
-  for (vtkIdType i = PointOffsets[b]; i < PointOffsets[b + 1]; ++i)
-  {
-    const vtkIdType s = PointTriangles[i];
-    if (s == t)
-    {
-      continue;
-    }
-    for (int k = 0; k < 3; ++k)
-    {
-      if (Corners[3 * s + k] == b && Corners[3 * s + (k + 1) % 3] == a)
-      {
-        if (found >= 0)
-        {
-          return -1; // more than one: non-manifold
-        }
-        found = s;
-      }
-    }
-  }
-  return found;
 }
 
 vtkSmartPointer<vtkDoubleArray> DiscreteCurvature(vtkPolyData* mesh, const TriangleAdjacency& adjacency, int coloring)
@@ -135,7 +129,7 @@ vtkSmartPointer<vtkDoubleArray> DiscreteCurvature(vtkPolyData* mesh, const Trian
     for (int k = 0; k < 3; ++k)
     {
       const vtkIdType a = corners[3 * t + k], b = corners[3 * t + (k + 1) % 3];
-      const vtkIdType s = adjacency.Across(t, a, b);
+      const vtkIdType s = adjacency.Across[static_cast<size_t>(3 * t + k)];
       if (s < t) // each interior edge once (from its lower-numbered triangle); none on the boundary
       {
         continue;

@@ -14,20 +14,19 @@ class vtkPolyData;
 namespace subdrender
 {
 /**
- * The triangles of a polygon mesh (each polygon fanned from its first corner) with, for each
- * point, the triangles around it (compressed rows) and whether it lies on the boundary (an
- * edge from it with a triangle on one side only, or a non-manifold edge).
+ * The triangles of a polygon mesh (each polygon fanned from its first corner), the triangle
+ * across each of their edges, and whether each point lies on the boundary (an edge from it
+ * with a triangle on one side only, or a non-manifold edge).
  */
 struct TriangleAdjacency
 {
-  std::vector<vtkIdType> Corners;       ///< 3 per triangle
-  std::vector<vtkIdType> PointOffsets;  ///< point p's triangles: [PointOffsets[p], PointOffsets[p + 1])
-  std::vector<vtkIdType> PointTriangles;
-  std::vector<bool> Boundary;           ///< per point
+  std::vector<vtkIdType> Corners; ///< 3 per triangle
+  /// Per half edge 3 t + k (corner k to corner k + 1 of triangle t): the triangle with the
+  /// opposite half edge, or -1 on the boundary and at non-manifold edges.
+  std::vector<vtkIdType> Across;
+  std::vector<bool> Boundary; ///< per point
 
   explicit TriangleAdjacency(vtkPolyData* mesh);
-  /// The triangle other than t with the edge (b, a), or -1 (b -> a: consistently oriented).
-  vtkIdType Across(vtkIdType t, vtkIdType a, vtkIdType b) const;
 };
 
 /**
