@@ -14,65 +14,65 @@
 
 namespace subdrender
 {
-TriangleAdjacency::TriangleAdjacency(vtkPolyData* mesh)
+PolygonAdjacency::PolygonAdjacency(vtkPolyData* mesh)
 {
   const vtkIdType numPoints = mesh->GetNumberOfPoints();
   vtkCellArray* polys = mesh->GetPolys();
-  Corners.reserve(static_cast<size_t>(3 * polys->GetNumberOfConnectivityIds()));
+  Offsets.reserve(static_cast<size_t>(polys->GetNumberOfCells() + 1));
+  Corners.reserve(static_cast<size_t>(polys->GetNumberOfConnectivityIds()));
+  Offsets.push_back(0);
   vtkIdType size;
   const vtkIdType* ids;
   for (polys->InitTraversal(); polys->GetNextCell(size, ids);)
   {
-    for (vtkIdType k = 1; k + 1 < size; ++k)
-    {
-      Corners.insert(Corners.end(), { ids[0], ids[k], ids[k + 1] });
-    }
+    Corners.insert(Corners.end(), ids, ids + size);
+    Offsets.push_back(static_cast<vtkIdType>(Corners.size()));
   }
-  const vtkIdType numTriangles = static_cast<vtkIdType>(Corners.size() / 3);
-  // The triangles around each point, as compressed rows.
-  std::vector<vtkIdType> offsets(static_cast<size_t>(numPoints + 1), 0);
+  const vtkIdType numPolygons = this->GetNumberOfPolygons();
+  // The polygons around each point, as compressed rows.
+  std::vector<vtkIdType> rows(static_cast<size_t>(numPoints + 1), 0);
   for (vtkIdType corner : Corners)
   {
-    ++offsets[static_cast<size_t>(corner + 1)];
+    ++rows[static_cast<size_t>(corner + 1)];
   }
   for (vtkIdType p = 0; p < numPoints; ++p)
   {
-    offsets[p + 1] += offsets[p];
+    rows[p + 1] += rows[p];
   }
-  std::vector<vtkIdType> pointTriangles(Corners.size());
-  std::vector<vtkIdType> fill(offsets.begin(), offsets.end() - 1);
-  for (vtkIdType t = 0; t < numTriangles; ++t)
+  std::vector<vtkIdType> pointPolygons(Corners.size());
+  std::vector<vtkIdType> fill(rows.begin(), rows.end() - 1);
+  for (vtkIdType f = 0; f < numPolygons; ++f)
   {
-    for (int k = 0; k < 3; ++k)
+    for (vtkIdType c = Offsets[f]; c < Offsets[f + 1]; ++c)
     {
-      pointTriangles[static_cast<size_t>(fill[Corners[3 * t + k]]++)] = t;
+      pointPolygons[static_cast<size_t>(fill[Corners[c]]++)] = f;
     }
   }
-  // The twin of half edge a -> b is b -> a in one of b's triangles. Without one (or with more
-  // than one) the edge is boundary or non-manifold, and curvature means little at its ends.
+  // The twin of edge a -> b is b -> a in one of b's polygons. Without one (or with more than
+  // one) the edge is boundary or non-manifold, and curvature means little at its ends.
   Across.assign(Corners.size(), -1);
   Boundary.assign(static_cast<size_t>(numPoints), false);
-  for (vtkIdType t = 0; t < numTriangles; ++t)
+  for (vtkIdType f = 0; f < numPolygons; ++f)
   {
-    for (int k = 0; k < 3; ++k)
+    for (vtkIdType c = Offsets[f]; c < Offsets[f + 1]; ++c)
     {
-      const vtkIdType a = Corners[3 * t + k], b = Corners[3 * t + (k + 1) % 3];
+      const vtkIdType a = Corners[c], b = Corners[this->Next(f, c)];
       vtkIdType found = -1, count = 0;
-      for (vtkIdType i = offsets[b]; i < offsets[b + 1]; ++i)
+      for (vtkIdType i = rows[b]; i < rows[b + 1]; ++i)
       {
-        const vtkIdType s = pointTriangles[i];
-        for (int j = 0; j < 3 && s != t; ++j)
+        const vtkIdType g = pointPolygons[i];
+        for (vtkIdType d = Offsets[g]; d < Offsets[g + 1] && g != f; ++d)
         {
-          if (Corners[3 * s + j] == b && Corners[3 * s + (j + 1) % 3] == a)
+          if (Corners[d] == b && Corners[this->Next(g, d)] == a)
           {
-            found = s;
+            found = g;
             ++count;
           }
         }
       }
       if (count == 1)
       {
-        Across[static_cast<size_t>(3 * t + k)] = found;
+        Across[static_cast<size_t>(c)] = found;
       }
       else
       {
@@ -82,11 +82,11 @@ TriangleAdjacency::TriangleAdjacency(vtkPolyData* mesh)
   }
 }
 
-vtkSmartPointer<vtkDoubleArray> DiscreteCurvature(vtkPolyData* mesh, const TriangleAdjacency& adjacency, int coloring)
+vtkSmartPointer<vtkDoubleArray> DiscreteCurvature(vtkPolyData* mesh, const PolygonAdjacency& adjacency, int coloring)
 {
   const vtkIdType numPoints = mesh->GetNumberOfPoints();
   const std::vector<vtkIdType>& corners = adjacency.Corners;
-  const vtkIdType numTriangles = static_cast<vtkIdType>(corners.size() / 3);
+  const vtkIdType numPolygons = adjacency.GetNumberOfPolygons();
   std::vector<double> xyz(static_cast<size_t>(3 * numPoints));
   for (vtkIdType p = 0; p < numPoints; ++p)
   {
@@ -94,52 +94,57 @@ vtkSmartPointer<vtkDoubleArray> DiscreteCurvature(vtkPolyData* mesh, const Trian
   }
   auto point = [&xyz](vtkIdType p) { return &xyz[static_cast<size_t>(3 * p)]; };
 
-  // Per triangle: unit normal and area; per point: area share, angle sum, sum |e| b_e / 4.
-  std::vector<double> normals(static_cast<size_t>(3 * numTriangles));
-  std::vector<double> area(static_cast<size_t>(numPoints), 0.0), angles(static_cast<size_t>(numPoints), 0.0),
+  // Per polygon: unit normal (Newell's); per point: area share, angle sum, sum |e| b_e / 4.
+  std::vector<double> normals(static_cast<size_t>(3 * numPolygons));
+  std::vector<double> share(static_cast<size_t>(numPoints), 0.0), angles(static_cast<size_t>(numPoints), 0.0),
     bending(static_cast<size_t>(numPoints), 0.0);
-  for (vtkIdType t = 0; t < numTriangles; ++t)
+  for (vtkIdType f = 0; f < numPolygons; ++f)
   {
-    const double* p[3] = { point(corners[3 * t]), point(corners[3 * t + 1]), point(corners[3 * t + 2]) };
-    double u[3], v[3], n[3];
-    vtkMath::Subtract(p[1], p[0], u);
-    vtkMath::Subtract(p[2], p[0], v);
-    vtkMath::Cross(u, v, n);
+    const vtkIdType first = adjacency.Offsets[f], size = adjacency.Offsets[f + 1] - first;
+    double n[3] = { 0.0, 0.0, 0.0 };
+    for (vtkIdType c = first; c < first + size; ++c)
+    {
+      const double* p = point(corners[c]);
+      const double* q = point(corners[adjacency.Next(f, c)]);
+      n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+      n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+      n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
     const double twiceArea = vtkMath::Norm(n);
     if (twiceArea > 0.0)
     {
       vtkMath::MultiplyScalar(n, 1.0 / twiceArea);
     }
-    std::copy(n, n + 3, &normals[static_cast<size_t>(3 * t)]);
-    for (int k = 0; k < 3; ++k)
+    std::copy(n, n + 3, &normals[static_cast<size_t>(3 * f)]);
+    for (vtkIdType c = first; c < first + size; ++c)
     {
-      const vtkIdType c = corners[3 * t + k];
-      double e1[3], e2[3];
-      vtkMath::Subtract(p[(k + 1) % 3], p[k], e1);
-      vtkMath::Subtract(p[(k + 2) % 3], p[k], e2);
-      double cross[3];
+      const vtkIdType previous = c == first ? first + size - 1 : c - 1;
+      const double* p = point(corners[c]);
+      double e1[3], e2[3], cross[3];
+      vtkMath::Subtract(point(corners[adjacency.Next(f, c)]), p, e1);
+      vtkMath::Subtract(point(corners[previous]), p, e2);
       vtkMath::Cross(e1, e2, cross);
-      angles[static_cast<size_t>(c)] += std::atan2(vtkMath::Norm(cross), vtkMath::Dot(e1, e2));
-      area[static_cast<size_t>(c)] += 0.5 * twiceArea;
+      angles[static_cast<size_t>(corners[c])] += std::atan2(vtkMath::Norm(cross), vtkMath::Dot(e1, e2));
+      share[static_cast<size_t>(corners[c])] += 0.5 * twiceArea / static_cast<double>(size);
     }
   }
   const bool needMean = coloring != vtkSubDScene::COLOR_GAUSSIAN_CURVATURE;
-  for (vtkIdType t = 0; t < numTriangles && needMean; ++t)
+  for (vtkIdType f = 0; f < numPolygons && needMean; ++f)
   {
-    for (int k = 0; k < 3; ++k)
+    for (vtkIdType c = adjacency.Offsets[f]; c < adjacency.Offsets[f + 1]; ++c)
     {
-      const vtkIdType a = corners[3 * t + k], b = corners[3 * t + (k + 1) % 3];
-      const vtkIdType s = adjacency.Across[static_cast<size_t>(3 * t + k)];
-      if (s < t) // each interior edge once (from its lower-numbered triangle); none on the boundary
+      const vtkIdType a = corners[c], b = corners[adjacency.Next(f, c)];
+      const vtkIdType g = adjacency.Across[static_cast<size_t>(c)];
+      if (g < f) // each interior edge once (from its lower-numbered polygon); none on the boundary
       {
         continue;
       }
-      const double* n1 = &normals[static_cast<size_t>(3 * t)];
-      const double* n2 = &normals[static_cast<size_t>(3 * s)];
+      const double* n1 = &normals[static_cast<size_t>(3 * f)];
+      const double* n2 = &normals[static_cast<size_t>(3 * g)];
       double e[3], cross[3];
       vtkMath::Subtract(point(b), point(a), e);
       vtkMath::Cross(n1, n2, cross);
-      // Signed dihedral angle: the normals turn about the edge a -> b (t on its left) when
+      // Signed dihedral angle: the normals turn about the edge a -> b (f on its left) when
       // the surface is convex there.
       const double length = vtkMath::Norm(e);
       const double beta = length > 0.0 ? std::atan2(vtkMath::Dot(cross, e) / length, vtkMath::Dot(n1, n2)) : 0.0;
@@ -153,12 +158,12 @@ vtkSmartPointer<vtkDoubleArray> DiscreteCurvature(vtkPolyData* mesh, const Trian
   curvature->SetNumberOfTuples(numPoints);
   for (vtkIdType p = 0; p < numPoints; ++p)
   {
-    const double share = area[static_cast<size_t>(p)] / 3.0;
+    const double pointShare = share[static_cast<size_t>(p)];
     double value = 0.0;
-    if (share > 0.0)
+    if (pointShare > 0.0)
     {
-      const double K = (2.0 * vtkMath::Pi() - angles[static_cast<size_t>(p)]) / share;
-      const double H = bending[static_cast<size_t>(p)] / share;
+      const double K = (2.0 * vtkMath::Pi() - angles[static_cast<size_t>(p)]) / pointShare;
+      const double H = bending[static_cast<size_t>(p)] / pointShare;
       const double spread = std::sqrt(std::max(0.0, H * H - K));
       switch (coloring)
       {

@@ -14,35 +14,40 @@ class vtkPolyData;
 namespace subdrender
 {
 /**
- * The triangles of a polygon mesh (each polygon fanned from its first corner), the triangle
- * across each of their edges, and whether each point lies on the boundary (an edge from it
- * with a triangle on one side only, or a non-manifold edge).
+ * The polygons of a mesh, the polygon across each of their edges, and whether each point lies
+ * on the boundary (an edge from it with a polygon on one side only, or a non-manifold edge).
  */
-struct TriangleAdjacency
+struct PolygonAdjacency
 {
-  std::vector<vtkIdType> Corners; ///< 3 per triangle
-  /// Per half edge 3 t + k (corner k to corner k + 1 of triangle t): the triangle with the
-  /// opposite half edge, or -1 on the boundary and at non-manifold edges.
+  std::vector<vtkIdType> Offsets; ///< polygon f's corners: [Offsets[f], Offsets[f + 1])
+  std::vector<vtkIdType> Corners; ///< point ids
+  /// Per corner c (the edge from c to the next corner of its polygon): the polygon with the
+  /// opposite edge, or -1 on the boundary and at non-manifold edges.
   std::vector<vtkIdType> Across;
   std::vector<bool> Boundary; ///< per point
 
-  explicit TriangleAdjacency(vtkPolyData* mesh);
+  explicit PolygonAdjacency(vtkPolyData* mesh);
+  vtkIdType GetNumberOfPolygons() const { return static_cast<vtkIdType>(Offsets.size()) - 1; }
+  /// The corner after c in its polygon f.
+  vtkIdType Next(vtkIdType f, vtkIdType c) const { return c + 1 < Offsets[f + 1] ? c + 1 : Offsets[f]; }
 };
 
 /**
  * The discrete curvature `coloring` (vtkSubDScene::Colorings, not COLOR_NONE) at every point
- * of `mesh`, as an array named as vtkCurvatures names it. With A the area of the triangles
- * around a point (a third of it is the point's share):
- * - Gaussian: the angle deficit, K = (2 pi - sum of the angles at the point) / (A / 3);
- * - mean: the dihedral angles b_e of the edges e at the point, H = (sum |e| b_e / 4) / (A / 3),
+ * of `mesh`, as an array named as vtkCurvatures names it, on its polygons as they are (no
+ * triangulation, whose diagonals would add a chequered pattern to a quad mesh). A polygon's
+ * normal and area are Newell's; a point's share of the area around it is, per polygon, the
+ * polygon's area over its number of corners (A / 3 for triangles):
+ * - Gaussian: the angle deficit, K = (2 pi - sum of the corner angles at the point) / share;
+ * - mean: the dihedral angles b_e of the edges e at the point, H = (sum |e| b_e / 4) / share,
  *   positive where the surface is convex (its normals diverge);
  * - principal: k1,2 = H +- sqrt(max(0, H^2 - K)).
  * (N. Dyn, K. Hormann, S.-J. Kim, D. Levin, "Optimizing 3D triangulations using discrete
- * curvature analysis", 2001; the same definitions as vtkCurvatures.) Points without area get 0.
+ * curvature analysis", 2001; on triangles, the definitions of vtkCurvatures.) Points without area get 0.
  * Boundary values are computed with what is there and mean little.
  */
 vtkSmartPointer<vtkDoubleArray> DiscreteCurvature(
-  vtkPolyData* mesh, const TriangleAdjacency& adjacency, int coloring);
+  vtkPolyData* mesh, const PolygonAdjacency& adjacency, int coloring);
 }
 
 #endif

@@ -90,7 +90,7 @@ PreparedSurface PrepareSurface(vtkPolyData* surface, int coloring)
   const char* name = subdrender::CurvatureArrayName(coloring);
   if (name)
   {
-    const subdrender::TriangleAdjacency adjacency(mesh);
+    const subdrender::PolygonAdjacency adjacency(mesh);
     vtkDataArray* curvature = mesh->GetPointData()->GetArray(name);
     if (!curvature)
     {
