@@ -383,7 +383,8 @@ int vtkSubDSurfaceFilter::RequestData(
     const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy, refineProgress,
           sharpFeatures || this->ProjectToLimit || limitGeometry ? subd::ChildTopology::Full
-                                                                 : subd::ChildTopology::FacesOnly))
+                                                                 : subd::ChildTopology::FacesOnly,
+          subd::FinestRows::Written))
     {
       return aborted();
     }

@@ -1,88 +1,95 @@
 #include "SubDCatmullClarkRules.h"
 #include "SubDCrease.h"
-#include "SubDQuadSplit.h"
+#include "SubDRowWriting.h"
+
+#include <algorithm>
 
 namespace subd
 {
 StencilTable BuildCatmullClarkStencils(const Level& parent)
 {
   const MeshTopology& topo = parent.Topology;
-  const Index numFaces = topo.GetNumFaces();
-  const Index numEdges = topo.GetNumEdges();
-  const Index numVertices = topo.GetNumVertices();
-  const QuadSplitNumbering number{ numFaces, numEdges };
-  // Sources >= numParents name child points of this level.
-  const Index numParents = numVertices;
-  auto childSource = [numParents](Index childPoint) { return numParents + childPoint; };
+  // Face rows hold a face's corners; smooth edge rows 4 entries, smooth vertex rows 1 + 2n.
+  const size_t expected = static_cast<size_t>(topo.GetNumFaceCorners()) * 3 + 4 * static_cast<size_t>(topo.GetNumEdges()) +
+    static_cast<size_t>(topo.GetNumVertices());
+  return WriteStencilTable(CatmullClarkRowWriter(parent), expected);
+}
 
-  const std::vector<VertexRulePlan> plans = PlanVertexRules(parent);
-  const std::vector<float> creaseWeights = EdgeCreaseWeights(parent);
+CatmullClarkRowWriter::CatmullClarkRowWriter(const Level& parent)
+  : Parent(parent)
+  , Topology(parent.Topology)
+  , Number{ parent.Topology.GetNumFaces(), parent.Topology.GetNumEdges() }
+{
+  const MeshTopology& topo = this->Topology;
+  for (Index f = 0; f < topo.GetNumFaces(); ++f)
+  {
+    this->MaxRowSize = std::max(this->MaxRowSize, topo.GetFaceSize(f));
+  }
+  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+  {
+    this->MaxRowSize = std::max(this->MaxRowSize, 1 + 2 * topo.GetVertexFaces(v).size());
+  }
+}
 
-  StencilTable table(numParents);
-  table.ReserveRows(numFaces + numEdges + numVertices);
-  for (Index f = 0; f < numFaces; ++f)
+Index CatmullClarkRowWriter::WriteRow(Index row, Index* sources, double* weights) const
+{
+  const Index numFaces = this->Number.NumFaces;
+  if (row < numFaces)
   {
-    table.SetRowSize(number.FacePoint(f), topo.GetFaceSize(f));
-  }
-  for (Index e = 0; e < numEdges; ++e)
-  {
-    table.SetRowSize(number.EdgePoint(e), PrimalEdgeRowSize(creaseWeights[e]));
-  }
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    table.SetRowSize(number.VertexPoint(v), PrimalVertexRowSize(plans[v], 1 + 2 * topo.GetVertexFaces(v).size()));
-  }
-  table.FinalizeSizes();
-
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    const IndexSpan fv = topo.GetFaceVertices(f);
+    const IndexSpan fv = this->Topology.GetFaceVertices(row);
     const double w = 1.0 / fv.size();
-    Index* src = table.GetMutableSources(number.FacePoint(f));
-    double* wts = table.GetMutableWeights(number.FacePoint(f));
     for (Index j = 0; j < fv.size(); ++j)
     {
-      src[j] = fv[j];
-      wts[j] = w;
+      sources[j] = fv[j];
+      weights[j] = w;
     }
+    return fv.size();
   }
-  table.EndBlock(numFaces);
-
-  for (Index e = 0; e < numEdges; ++e)
+  if (row < this->Number.VertexPoint(0))
   {
-    WritePrimalEdgeRow(topo.GetEdgeVertices(e), creaseWeights[e], 0.25, 0.25,
-      table.GetMutableSources(number.EdgePoint(e)), table.GetMutableWeights(number.EdgePoint(e)),
-      [&](Index* sides) {
-        const IndexSpan ef = topo.GetEdgeFaces(e);
-        sides[0] = childSource(number.FacePoint(ef[0]));
-        sides[1] = childSource(number.FacePoint(ef[1]));
-      });
+    return this->WriteEdgeRow(row - numFaces, sources, weights);
   }
+  return this->WriteVertexRow(row - this->Number.VertexPoint(0), sources, weights);
+}
 
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    Index* src = table.GetMutableSources(number.VertexPoint(v));
-    double* wts = table.GetMutableWeights(number.VertexPoint(v));
-    const IndexSpan edges = topo.GetVertexEdges(v);
-    const IndexSpan faces = topo.GetVertexFaces(v);
-    WritePrimalVertexRow(topo, plans[v], v, 1 + 2 * faces.size(), src, wts, [&](Index* src, double* wts) {
-      src[0] = v;
-      const double n = faces.size();
-      const double ringWeight = 1.0 / (n * n);
-      wts[0] = (n - 2.0) / n;
-      for (Index i = 0; i < edges.size(); ++i)
-      {
-        src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
-        wts[1 + i] = ringWeight;
-      }
-      for (Index i = 0; i < faces.size(); ++i)
-      {
-        src[1 + edges.size() + i] = childSource(number.FacePoint(faces[i]));
-        wts[1 + edges.size() + i] = ringWeight;
-      }
+Index CatmullClarkRowWriter::WriteEdgeRow(Index e, Index* sources, double* weights) const
+{
+  // Sources >= numParents name child points of this level: here the face points.
+  const Index numParents = this->GetNumParents();
+  const float creaseWeight = EdgeCreaseWeight(this->Parent, e);
+  WritePrimalEdgeRow(this->Topology.GetEdgeVertices(e), creaseWeight, 0.25, 0.25, sources, weights,
+    [&](Index* sides) {
+      const IndexSpan ef = this->Topology.GetEdgeFaces(e);
+      sides[0] = numParents + this->Number.FacePoint(ef[0]);
+      sides[1] = numParents + this->Number.FacePoint(ef[1]);
     });
-  }
-  table.EndBlock(numFaces + numEdges + numVertices);
-  return table;
+  return PrimalEdgeRowSize(creaseWeight);
+}
+
+Index CatmullClarkRowWriter::WriteVertexRow(Index v, Index* sources, double* weights) const
+{
+  const MeshTopology& topo = this->Topology;
+  const Index numParents = this->GetNumParents();
+  const VertexRulePlan plan = PlanVertexRule(this->Parent, v);
+  const IndexSpan edges = topo.GetVertexEdges(v);
+  const IndexSpan faces = topo.GetVertexFaces(v);
+  const Index smoothSize = 1 + 2 * faces.size();
+  WritePrimalVertexRow(topo, plan, v, smoothSize, sources, weights, [&](Index* src, double* wts) {
+    src[0] = v;
+    const double n = faces.size();
+    const double ringWeight = 1.0 / (n * n);
+    wts[0] = (n - 2.0) / n;
+    for (Index i = 0; i < edges.size(); ++i)
+    {
+      src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
+      wts[1 + i] = ringWeight;
+    }
+    for (Index i = 0; i < faces.size(); ++i)
+    {
+      src[1 + edges.size() + i] = numParents + this->Number.FacePoint(faces[i]);
+      wts[1 + edges.size() + i] = ringWeight;
+    }
+  });
+  return PrimalVertexRowSize(plan, smoothSize);
 }
 }

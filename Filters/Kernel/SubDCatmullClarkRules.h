@@ -19,11 +19,35 @@
 #define SubDCatmullClarkRules_h
 
 #include "SubDLevel.h"
+#include "SubDQuadSplit.h"
 #include "SubDStencilTable.h"
 
 namespace subd
 {
 SUBDKERNEL_EXPORT StencilTable BuildCatmullClarkStencils(const Level& parent);
+
+/// The same rows written one at a time (SubDRowWriting.h), each vertex's rule planned as its
+/// row is written: what BuildCatmullClarkStencils stores, and what the finest level applies
+/// without storing.
+class SUBDKERNEL_EXPORT CatmullClarkRowWriter
+{
+public:
+  explicit CatmullClarkRowWriter(const Level& parent);
+  Index GetNumParents() const { return this->Topology.GetNumVertices(); }
+  Index GetNumRows() const { return this->Number.VertexPoint(this->Topology.GetNumVertices()); }
+  std::vector<Index> GetBlockEnds() const { return { this->Number.EdgePoint(0), this->GetNumRows() }; }
+  Index GetMaxRowSize() const { return this->MaxRowSize; }
+  Index WriteRow(Index row, Index* sources, double* weights) const;
+
+private:
+  Index WriteEdgeRow(Index e, Index* sources, double* weights) const;
+  Index WriteVertexRow(Index v, Index* sources, double* weights) const;
+
+  const Level& Parent;
+  const MeshTopology& Topology;
+  QuadSplitNumbering Number;
+  Index MaxRowSize = 4;
+};
 }
 
 #endif

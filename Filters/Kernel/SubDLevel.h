@@ -187,9 +187,24 @@ void WritePrimalVertexRow(const MeshTopology& topo, const VertexRulePlan& plan, 
 
 /// Sets the child's topology from its faces: faces only, or the full topology with smooth
 /// edge and vertex tags (primal splits then inherit sharpness, InheritPrimalSharpness); and
-/// its depth, one more than the parent's.
+/// its depth, one more than the parent's. A split that knows the child's adjacency passes
+/// it (`known`, used only for the full topology) to spare the searches.
 SUBDKERNEL_EXPORT void SetChildTopology(const Level& parent, Level& child, Index numPoints,
-  std::vector<Index> offsets, std::vector<Index> vertices, ChildTopology depth);
+  std::vector<Index> offsets, std::vector<Index> vertices, ChildTopology depth,
+  const KnownAdjacency* known = nullptr);
+
+/// The adjacency a primal split (quad or triangle split) knows of its child: the tags of the
+/// edge points (their edge's: boundary, non-manifold) and of the vertex points (their
+/// vertex's), new points inside faces being interior and manifold; the caller fills the
+/// corner keys.
+SUBDKERNEL_EXPORT KnownAdjacency PrimalChildTags(const MeshTopology& parent, Index numFacePoints);
+
+/// The edge key of the half of parent edge e that ends at its vertex v (0 .. 2E-1): keys
+/// that primal splits give the two halves of every parent edge.
+inline Index HalfEdgeKey(const MeshTopology& parent, Index e, Index v)
+{
+  return 2 * e + (parent.GetEdgeVertices(e)[0] == v ? 0 : 1);
+}
 
 /// Gives the child faces of each parent face f, [firstChild(f), firstChild(f + 1)), the hole
 /// flag and origin of f. Shared by every split.

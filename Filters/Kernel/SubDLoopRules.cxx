@@ -1,6 +1,7 @@
 #include "SubDLoopRules.h"
-#include "SubDTriangleSplit.h"
+#include "SubDRowWriting.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace subd
@@ -15,53 +16,47 @@ double LoopBeta(Index n)
 StencilTable BuildLoopStencils(const Level& parent)
 {
   const MeshTopology& topo = parent.Topology;
-  const Index numEdges = topo.GetNumEdges();
-  const Index numVertices = topo.GetNumVertices();
-  const TriangleSplitNumbering number{ numEdges };
+  // Smooth edge rows have 4 entries, smooth vertex rows 1 + n (7 where regular).
+  const size_t expected = 4 * static_cast<size_t>(topo.GetNumEdges()) + 7 * static_cast<size_t>(topo.GetNumVertices());
+  return WriteStencilTable(LoopRowWriter(parent), expected);
+}
 
-  const std::vector<VertexRulePlan> plans = PlanVertexRules(parent);
-  const std::vector<float> creaseWeights = EdgeCreaseWeights(parent);
+LoopRowWriter::LoopRowWriter(const Level& parent)
+  : Parent(parent)
+  , Topology(parent.Topology)
+  , Number{ parent.Topology.GetNumEdges() }
+  , MaxRowSize(std::max<Index>(4, 1 + parent.Topology.GetMaxValence()))
+{
+}
 
-  StencilTable table(numVertices);
-  table.ReserveRows(numEdges + numVertices);
-  for (Index e = 0; e < numEdges; ++e)
+Index LoopRowWriter::WriteRow(Index row, Index* sources, double* weights) const
+{
+  const MeshTopology& topo = this->Topology;
+  if (row < this->Number.VertexPoint(0))
   {
-    table.SetRowSize(number.EdgePoint(e), PrimalEdgeRowSize(creaseWeights[e]));
-  }
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    table.SetRowSize(number.VertexPoint(v), PrimalVertexRowSize(plans[v], 1 + topo.GetVertexEdges(v).size()));
-  }
-  table.FinalizeSizes();
-
-  for (Index e = 0; e < numEdges; ++e)
-  {
-    WritePrimalEdgeRow(topo.GetEdgeVertices(e), creaseWeights[e], 0.375, 0.125,
-      table.GetMutableSources(number.EdgePoint(e)), table.GetMutableWeights(number.EdgePoint(e)),
-      [&](Index* sides) {
-        const IndexSpan ef = topo.GetEdgeFaces(e);
-        sides[0] = topo.GetTriangleOppositeVertex(ef[0], e);
-        sides[1] = topo.GetTriangleOppositeVertex(ef[1], e);
-      });
-  }
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    Index* src = table.GetMutableSources(number.VertexPoint(v));
-    double* wts = table.GetMutableWeights(number.VertexPoint(v));
-    const IndexSpan edges = topo.GetVertexEdges(v);
-    WritePrimalVertexRow(topo, plans[v], v, 1 + edges.size(), src, wts, [&](Index* src, double* wts) {
-      const Index n = edges.size();
-      src[0] = v;
-      const double beta = n == 6 ? 0.0625 : LoopBeta(n);
-      wts[0] = 1.0 - n * beta;
-      for (Index i = 0; i < n; ++i)
-      {
-        src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
-        wts[1 + i] = beta;
-      }
+    const Index e = row;
+    const float creaseWeight = EdgeCreaseWeight(this->Parent, e);
+    WritePrimalEdgeRow(topo.GetEdgeVertices(e), creaseWeight, 0.375, 0.125, sources, weights, [&](Index* sides) {
+      const IndexSpan ef = topo.GetEdgeFaces(e);
+      sides[0] = topo.GetTriangleOppositeVertex(ef[0], e);
+      sides[1] = topo.GetTriangleOppositeVertex(ef[1], e);
     });
+    return PrimalEdgeRowSize(creaseWeight);
   }
-  table.EndBlock(numEdges + numVertices);
-  return table;
+  const Index v = row - this->Number.VertexPoint(0);
+  const VertexRulePlan plan = PlanVertexRule(this->Parent, v);
+  const IndexSpan edges = topo.GetVertexEdges(v);
+  WritePrimalVertexRow(topo, plan, v, 1 + edges.size(), sources, weights, [&](Index* src, double* wts) {
+    const Index n = edges.size();
+    src[0] = v;
+    const double beta = n == 6 ? 0.0625 : LoopBeta(n);
+    wts[0] = 1.0 - n * beta;
+    for (Index i = 0; i < n; ++i)
+    {
+      src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
+      wts[1 + i] = beta;
+    }
+  });
+  return PrimalVertexRowSize(plan, 1 + edges.size());
 }
 }

@@ -18,6 +18,7 @@
 
 #include "SubDLevel.h"
 #include "SubDStencilTable.h"
+#include "SubDTriangleSplit.h"
 
 namespace subd
 {
@@ -26,6 +27,26 @@ SUBDKERNEL_EXPORT double LoopBeta(Index n);
 
 /// Requires every face of `parent` to be a triangle.
 SUBDKERNEL_EXPORT StencilTable BuildLoopStencils(const Level& parent);
+
+/// The same rows written one at a time (SubDRowWriting.h), each vertex's rule planned as its
+/// row is written: what BuildLoopStencils stores, and what the finest level applies without
+/// storing.
+class SUBDKERNEL_EXPORT LoopRowWriter
+{
+public:
+  explicit LoopRowWriter(const Level& parent);
+  Index GetNumParents() const { return this->Topology.GetNumVertices(); }
+  Index GetNumRows() const { return this->Number.VertexPoint(this->Topology.GetNumVertices()); }
+  std::vector<Index> GetBlockEnds() const { return { this->GetNumRows() }; }
+  Index GetMaxRowSize() const { return this->MaxRowSize; }
+  Index WriteRow(Index row, Index* sources, double* weights) const;
+
+private:
+  const Level& Parent;
+  const MeshTopology& Topology;
+  TriangleSplitNumbering Number;
+  Index MaxRowSize;
+};
 }
 
 #endif

@@ -11,7 +11,7 @@ void SerialFor(Index begin, Index end, const RangeTask& task)
 }
 
 bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
-  const ProgressCallback& progress, ChildTopology finest)
+  const ProgressCallback& progress, ChildTopology finest, FinestRows finestRows)
 {
   out.NumBasePoints = base.Topology.GetNumVertices();
   out.Stencils.clear();
@@ -19,10 +19,28 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   Level current = std::move(base);
   for (int l = 0; l < levels; ++l)
   {
-    LevelRefinement refinement =
-      scheme.RefineLevel(current, l + 1 < levels ? ChildTopology::Full : finest);
-    out.Stencils.push_back(std::move(refinement.Stencils));
-    current = std::move(refinement.Child);
+    const bool last = l + 1 == levels;
+    std::shared_ptr<const RowSource> writtenRows;
+    if (last && finestRows == FinestRows::Written)
+    {
+      auto parent = std::make_shared<Level>(std::move(current));
+      writtenRows = scheme.MakeRowSource(parent);
+      if (writtenRows)
+      {
+        out.Stencils.push_back(StencilTable::FromSource(writtenRows));
+        current = scheme.Split(*parent, finest);
+      }
+      else
+      {
+        current = std::move(*parent); // the scheme stores its rows: refined below
+      }
+    }
+    if (!writtenRows)
+    {
+      LevelRefinement refinement = scheme.RefineLevel(current, last ? finest : ChildTopology::Full);
+      out.Stencils.push_back(std::move(refinement.Stencils));
+      current = std::move(refinement.Child);
+    }
     if (progress && !progress(static_cast<double>(l + 1) / levels))
     {
       out.Finest = std::move(current);

@@ -47,11 +47,20 @@ struct SUBDKERNEL_EXPORT Hierarchy
     const ProgressCallback& progress = nullptr, int numTables = -1) const;
 };
 
+/// How the finest level's stencils are kept.
+enum class FinestRows
+{
+  Stored,  ///< a StencilTable like every other level's (its rows can be inspected)
+  Written, ///< written as they are applied, from the level above, where the scheme can
+           ///< (Scheme::MakeRowSource): a fraction of the memory and time of storing them
+};
+
 /// Refines `base` `levels` times. The finest level has faces only unless `finest` asks
 /// for its full topology and tags (to read its sharp edges). Returns false if progress
 /// asked to stop (out is then incomplete).
 SUBDKERNEL_EXPORT bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
-  const ProgressCallback& progress = nullptr, ChildTopology finest = ChildTopology::FacesOnly);
+  const ProgressCallback& progress = nullptr, ChildTopology finest = ChildTopology::FacesOnly,
+  FinestRows finestRows = FinestRows::Stored);
 
 template <typename T>
 bool Hierarchy::Evaluate(const T* base, int components, T* finest, const ParallelFor& parallelFor,

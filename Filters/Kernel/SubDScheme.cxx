@@ -9,6 +9,7 @@
 #include "SubDLoopRules.h"
 #include "SubDMidpointSplit.h"
 #include "SubDQuadSplit.h"
+#include "SubDRowWriting.h"
 #include "SubDSqrt3Limit.h"
 #include "SubDSqrt3Rules.h"
 #include "SubDTriangleSplit.h"
@@ -23,6 +24,11 @@ Level QuadSplitScheme::Split(const Level& parent, ChildTopology depth) const
 StencilTable CatmullClarkScheme::BuildStencils(const Level& parent) const
 {
   return BuildCatmullClarkStencils(parent);
+}
+
+std::shared_ptr<const RowSource> CatmullClarkScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
+{
+  return std::make_shared<WrittenRows<CatmullClarkRowWriter>>(std::move(parent));
 }
 
 MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const
@@ -45,6 +51,11 @@ Level TriangleSplitScheme::Split(const Level& parent, ChildTopology depth) const
 StencilTable LoopScheme::BuildStencils(const Level& parent) const
 {
   return BuildLoopStencils(parent);
+}
+
+std::shared_ptr<const RowSource> LoopScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
+{
+  return std::make_shared<WrittenRows<LoopRowWriter>>(std::move(parent));
 }
 
 MeshCounts TriangleSplitScheme::PredictChildCounts(const MeshCounts& parent) const

@@ -9,6 +9,7 @@
 #include "SubDLevel.h"
 #include "SubDStencilTable.h"
 
+#include <memory>
 #include <string>
 
 namespace subd
@@ -36,6 +37,14 @@ public:
     r.Stencils = this->BuildStencils(parent);
     r.Child = this->Split(parent, depth);
     return r;
+  }
+  /// The next level's stencils as rows written when they are applied (SubDRowWriting.h),
+  /// which keep `parent` instead of storing the rows; nullptr (the default) for schemes
+  /// that only store their rows. Refine uses it for the finest level when asked.
+  virtual std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const
+  {
+    (void)parent;
+    return nullptr;
   }
   /// The counts of the next level of a mesh with the given counts (for size guards).
   virtual MeshCounts PredictChildCounts(const MeshCounts& parent) const = 0;
@@ -85,6 +94,7 @@ class SUBDKERNEL_EXPORT CatmullClarkScheme : public QuadSplitScheme
 public:
   const char* GetName() const override { return "catmull-clark"; }
   StencilTable BuildStencils(const Level& parent) const override;
+  std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 
@@ -105,6 +115,7 @@ class SUBDKERNEL_EXPORT LoopScheme : public TriangleSplitScheme
 public:
   const char* GetName() const override { return "loop"; }
   StencilTable BuildStencils(const Level& parent) const override;
+  std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 

@@ -4,6 +4,14 @@
 
 namespace subd
 {
+StencilTable StencilTable::FromSource(std::shared_ptr<const RowSource> source)
+{
+  StencilTable table(source->GetNumParents());
+  table.BlockEnds = source->GetBlockEnds();
+  table.Source = std::move(source);
+  return table;
+}
+
 void StencilTable::FinalizeSizes()
 {
   for (size_t i = 1; i < this->Offsets.size(); ++i)

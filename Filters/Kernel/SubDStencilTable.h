@@ -12,10 +12,28 @@
 #define SubDStencilTable_h
 
 #include "SubDTypes.h"
+#include <memory>
+#include <type_traits>
 #include <vector>
 
 namespace subd
 {
+/// Rows that are written when they are applied instead of being stored (SubDRowWriting.h):
+/// a level's stencils cost as much memory as its points several times over, so the finest
+/// level of a refinement, the largest by far, evaluates straight from its parent's topology.
+class SUBDKERNEL_EXPORT RowSource
+{
+public:
+  virtual ~RowSource() = default;
+  virtual Index GetNumParents() const = 0;
+  virtual Index GetNumRows() const = 0;
+  /// The rows' blocks, as in StencilTable.
+  virtual std::vector<Index> GetBlockEnds() const = 0;
+  /// As StencilTable::ApplyRows.
+  virtual void ApplyRows(const double* parents, double* children, int components, Index begin, Index end) const = 0;
+  virtual void ApplyRows(const float* parents, float* children, int components, Index begin, Index end) const = 0;
+};
+
 class SUBDKERNEL_EXPORT StencilTable
 {
 public:
@@ -24,9 +42,16 @@ public:
     : NumParents(numParents)
   {
   }
+  /// A table whose rows `source` writes when applied: it stores no rows, so GetSources,
+  /// GetWeights and GetRowSum must not be called on it (IsStored() is false).
+  static StencilTable FromSource(std::shared_ptr<const RowSource> source);
+  bool IsStored() const { return !this->Source; }
 
   Index GetNumParents() const { return NumParents; }
-  Index GetNumRows() const { return static_cast<Index>(Offsets.size()) - 1; }
+  Index GetNumRows() const
+  {
+    return this->Source ? this->Source->GetNumRows() : static_cast<Index>(Offsets.size()) - 1;
+  }
   size_t GetNumEntries() const { return Sources.size(); }
 
   IndexSpan GetSources(Index row) const
@@ -50,6 +75,20 @@ public:
   double* GetMutableWeights(Index row) { return Weights.data() + Offsets[row]; }
   /// Ends the current block at `rowEnd` (exclusive).
   void EndBlock(Index rowEnd) { BlockEnds.push_back(rowEnd); }
+  /// Appends a row of `size` entries (builders that write rows one after the other).
+  void AppendRow(const Index* sources, const double* weights, Index size)
+  {
+    this->Sources.insert(this->Sources.end(), sources, sources + size);
+    this->Weights.insert(this->Weights.end(), weights, weights + size);
+    this->Offsets.push_back(static_cast<Index>(this->Sources.size()));
+  }
+  /// Reserves room for rows and entries before AppendRow.
+  void Reserve(Index numRows, size_t numEntries)
+  {
+    this->Offsets.reserve(static_cast<size_t>(numRows) + 1);
+    this->Sources.reserve(numEntries);
+    this->Weights.reserve(numEntries);
+  }
 
   /// Sum of the weights of a row (1 for an affine-invariant scheme).
   double GetRowSum(Index row) const;
@@ -71,6 +110,7 @@ public:
 
 private:
   Index NumParents = 0;
+  std::shared_ptr<const RowSource> Source;
   std::vector<Index> Offsets{ 0 };
   std::vector<Index> Sources;
   std::vector<double> Weights;
@@ -100,43 +140,69 @@ struct SUBDKERNEL_EXPORT StencilRows
   StencilTable ToStencilTable(Index numParents) const;
 };
 
+/// Evaluates one row: dst = sum_k weights[k] * (value of sources[k]), a source below
+/// numParents naming a parent, one above a child (see StencilTable). `sum` is scratch for
+/// `components` doubles. Three components (points) take an unrolled path.
+template <typename T>
+inline void ApplyRow(const Index* sources, const double* weights, Index size, Index numParents, const T* parents,
+  const T* children, int components, double* sum, T* dst)
+{
+  auto valuesOf = [&](Index s) {
+    return s < numParents ? parents + static_cast<size_t>(s) * components
+                          : children + static_cast<size_t>(s - numParents) * components;
+  };
+  if (components == 3)
+  {
+    double x = 0.0, y = 0.0, z = 0.0;
+    for (Index k = 0; k < size; ++k)
+    {
+      const T* src = valuesOf(sources[k]);
+      const double w = weights[k];
+      x += w * static_cast<double>(src[0]);
+      y += w * static_cast<double>(src[1]);
+      z += w * static_cast<double>(src[2]);
+    }
+    dst[0] = static_cast<T>(x);
+    dst[1] = static_cast<T>(y);
+    dst[2] = static_cast<T>(z);
+    return;
+  }
+  for (int c = 0; c < components; ++c)
+  {
+    sum[c] = 0.0;
+  }
+  for (Index k = 0; k < size; ++k)
+  {
+    const T* src = valuesOf(sources[k]);
+    const double w = weights[k];
+    for (int c = 0; c < components; ++c)
+    {
+      sum[c] += w * static_cast<double>(src[c]);
+    }
+  }
+  for (int c = 0; c < components; ++c)
+  {
+    dst[c] = static_cast<T>(sum[c]);
+  }
+}
+
 template <typename T>
 void StencilTable::ApplyRows(
   const T* parents, T* children, int components, Index begin, Index end) const
 {
-  constexpr int MaxStackComponents = 16;
-  double stackSum[MaxStackComponents];
-  std::vector<double> heapSum;
-  double* sum = stackSum;
-  if (components > MaxStackComponents)
+  if (this->Source)
   {
-    heapSum.resize(static_cast<size_t>(components));
-    sum = heapSum.data();
+    static_assert(std::is_same<T, double>::value || std::is_same<T, float>::value,
+      "rows written on demand apply to double or float values");
+    this->Source->ApplyRows(parents, children, components, begin, end);
+    return;
   }
-  const Index numParents = this->NumParents;
+  std::vector<double> sum(static_cast<size_t>(components));
   for (Index row = begin; row < end; ++row)
   {
-    for (int c = 0; c < components; ++c)
-    {
-      sum[c] = 0.0;
-    }
-    const Index first = this->Offsets[row], last = this->Offsets[row + 1];
-    for (Index k = first; k < last; ++k)
-    {
-      const Index s = this->Sources[k];
-      const double w = this->Weights[k];
-      const T* src = s < numParents ? parents + static_cast<size_t>(s) * components
-                                    : children + static_cast<size_t>(s - numParents) * components;
-      for (int c = 0; c < components; ++c)
-      {
-        sum[c] += w * static_cast<double>(src[c]);
-      }
-    }
-    T* dst = children + static_cast<size_t>(row) * components;
-    for (int c = 0; c < components; ++c)
-    {
-      dst[c] = static_cast<T>(sum[c]);
-    }
+    const Index first = this->Offsets[row];
+    ApplyRow(this->Sources.data() + first, this->Weights.data() + first, this->Offsets[row + 1] - first,
+      this->NumParents, parents, children, components, sum.data(), children + static_cast<size_t>(row) * components);
   }
 }
 }

@@ -50,7 +50,7 @@ std::pair<double, double> RunKernel(const Mesh& mesh, int level)
     subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), std::move(offsets),
                           std::vector<subd::Index>(mesh.Corners.begin(), mesh.Corners.end())),
       {}, subd::BoundaryRule::EdgeOnly),
-    level, h);
+    level, h, nullptr, subd::ChildTopology::FacesOnly, subd::FinestRows::Written);
   std::vector<double> finest(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
   h.Evaluate(mesh.Points.data(), 3, finest.data());
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();

@@ -1,7 +1,9 @@
 // Kernel unit tests: topology construction, tags, and face screening.
 #include "SubDMeshTopology.h"
 #include "SubDMeshValidation.h"
+#include "SubDQuadSplit.h"
 #include "SubDTestMeshes.h"
+#include "SubDTriangleSplit.h"
 
 #include <gtest/gtest.h>
 
@@ -111,6 +113,98 @@ TEST(MeshTopology, HighValenceHubAndIsolatedVertex)
   EXPECT_EQ(t.GetNumNonManifoldVertices(), 0);
   EXPECT_EQ(t.GetVertexFaces(n + 1).size(), 0);
   EXPECT_EQ(t.GetNumEdges(), 2 * n);
+}
+
+namespace
+{
+bool SameSpan(subd::IndexSpan a, subd::IndexSpan b)
+{
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
+}
+
+// Every relation and tag of `known` (a split's child, built from its KnownAdjacency) equals
+// that of `searched` (the same faces through the general builder).
+void ExpectSameTopology(const MeshTopology& known, const MeshTopology& searched, const std::string& what)
+{
+  SCOPED_TRACE(what);
+  ASSERT_EQ(known.GetNumVertices(), searched.GetNumVertices());
+  ASSERT_EQ(known.GetNumEdges(), searched.GetNumEdges());
+  ASSERT_EQ(known.GetNumFaces(), searched.GetNumFaces());
+  EXPECT_EQ(known.GetNumBoundaryEdges(), searched.GetNumBoundaryEdges());
+  EXPECT_EQ(known.GetNumNonManifoldEdges(), searched.GetNumNonManifoldEdges());
+  EXPECT_EQ(known.GetNumNonManifoldVertices(), searched.GetNumNonManifoldVertices());
+  EXPECT_EQ(known.GetMaxValence(), searched.GetMaxValence());
+  for (Index f = 0; f < known.GetNumFaces(); ++f)
+  {
+    EXPECT_TRUE(SameSpan(known.GetFaceEdges(f), searched.GetFaceEdges(f))) << "face " << f;
+  }
+  for (Index e = 0; e < known.GetNumEdges(); ++e)
+  {
+    EXPECT_EQ(known.GetEdgeVertices(e)[0], searched.GetEdgeVertices(e)[0]) << "edge " << e;
+    EXPECT_EQ(known.GetEdgeVertices(e)[1], searched.GetEdgeVertices(e)[1]) << "edge " << e;
+    EXPECT_TRUE(SameSpan(known.GetEdgeFaces(e), searched.GetEdgeFaces(e))) << "edge " << e;
+    EXPECT_EQ(known.GetEdgeTag(e).Boundary, searched.GetEdgeTag(e).Boundary) << "edge " << e;
+    EXPECT_EQ(known.GetEdgeTag(e).NonManifold, searched.GetEdgeTag(e).NonManifold) << "edge " << e;
+  }
+  for (Index v = 0; v < known.GetNumVertices(); ++v)
+  {
+    EXPECT_TRUE(SameSpan(known.GetVertexFaces(v), searched.GetVertexFaces(v))) << "vertex " << v;
+    EXPECT_TRUE(SameSpan(known.GetVertexFaceCorners(v), searched.GetVertexFaceCorners(v))) << "vertex " << v;
+    EXPECT_TRUE(SameSpan(known.GetVertexEdges(v), searched.GetVertexEdges(v))) << "vertex " << v;
+    EXPECT_EQ(known.GetVertexTag(v).Boundary, searched.GetVertexTag(v).Boundary) << "vertex " << v;
+    EXPECT_EQ(known.GetVertexTag(v).NonManifold, searched.GetVertexTag(v).NonManifold) << "vertex " << v;
+  }
+}
+
+// Splits `mesh` twice with `split` and checks each child's known-adjacency topology against
+// the general builder on the same faces.
+template <typename Split>
+void ExpectSplitKnowsItsChild(const subdtest::TestMesh& mesh, Split split, const std::string& what)
+{
+  subd::Level level = subdtest::BaseLevel(mesh);
+  for (int l = 1; l <= 2; ++l)
+  {
+    subd::Level child = split(level, subd::ChildTopology::Full);
+    const MeshTopology& t = child.Topology;
+    const MeshTopology searched =
+      MeshTopology::Build(t.GetNumVertices(), t.GetFaceOffsetArray(), t.GetFaceVertexArray());
+    ExpectSameTopology(t, searched, what + " level " + std::to_string(l));
+    level = std::move(child);
+  }
+}
+
+// Meshes with every kind of vertex the tags distinguish: boundary, non-manifold edges,
+// bow-ties, pinched fans, inconsistent orientation, an isolated vertex.
+std::vector<subdtest::TestMesh> TagFixtures()
+{
+  std::vector<subdtest::TestMesh> meshes = subdtest::StandardMeshes();
+  subdtest::TestMesh flipped;
+  flipped.Points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, -1, 0, 5, 5, 5 };
+  flipped.Offsets = { 0, 3, 6 };
+  flipped.Vertices = { 0, 1, 2, 0, 1, 3 }; // both run along 0->1; point 4 unused
+  meshes.push_back(flipped);
+  return meshes;
+}
+}
+
+TEST(MeshTopology, QuadSplitChildEqualsSearchedTopology)
+{
+  int i = 0;
+  for (const subdtest::TestMesh& mesh : TagFixtures())
+  {
+    ExpectSplitKnowsItsChild(mesh, subd::SplitQuads, "mesh " + std::to_string(i++));
+  }
+}
+
+TEST(MeshTopology, TriangleSplitChildEqualsSearchedTopology)
+{
+  int i = 0;
+  std::vector<subdtest::TestMesh> meshes = subdtest::TriangleMeshes();
+  meshes.push_back(TagFixtures().back());
+  for (const subdtest::TestMesh& mesh : meshes)
+  {
+    ExpectSplitKnowsItsChild(mesh, subd::SplitTriangles, "mesh " + std::to_string(i++));
+  }
 }
 
 TEST(MeshValidation, CollapsesDropsAndReports)

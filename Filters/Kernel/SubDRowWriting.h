@@ -1,0 +1,90 @@
+// SubD kernel: stencil rows written one at a time by a scheme's row writer, then either stored
+// in a StencilTable (WriteStencilTable) or applied as they are written (WrittenRows).
+//
+// A row writer is a small class with
+//   Index GetNumParents() const;            // points of the parent level
+//   Index GetNumRows() const;               // child points
+//   std::vector<Index> GetBlockEnds() const; // as StencilTable's blocks
+//   Index GetMaxRowSize() const;            // bound on any row's size
+//   Index WriteRow(Index row, Index* sources, double* weights) const; // returns the size
+// Writing a row costs little next to reading its sources: its weights come from the
+// topology around the row's point, which is small and read in order. Applying rows as they
+// are written therefore spares storing the finest level's table, which is several times the
+// size of the points it makes (12 bytes per entry, about six entries per point).
+#ifndef SubDRowWriting_h
+#define SubDRowWriting_h
+
+#include "SubDLevel.h"
+#include "SubDStencilTable.h"
+
+#include <memory>
+#include <vector>
+
+namespace subd
+{
+/// The rows of `writer` in a table; `expectedEntries` (a guess) spares reallocations.
+template <typename Writer>
+StencilTable WriteStencilTable(const Writer& writer, size_t expectedEntries)
+{
+  StencilTable table(writer.GetNumParents());
+  const Index numRows = writer.GetNumRows();
+  table.Reserve(numRows, expectedEntries);
+  std::vector<Index> sources(static_cast<size_t>(writer.GetMaxRowSize()));
+  std::vector<double> weights(sources.size());
+  for (Index row = 0; row < numRows; ++row)
+  {
+    const Index size = writer.WriteRow(row, sources.data(), weights.data());
+    table.AppendRow(sources.data(), weights.data(), size);
+  }
+  for (Index end : writer.GetBlockEnds())
+  {
+    table.EndBlock(end);
+  }
+  return table;
+}
+
+/// The rows of a Writer over `parent`, applied as they are written. Keeps the parent level
+/// alive: it is what the rows are written from.
+template <typename Writer>
+class WrittenRows final : public RowSource
+{
+public:
+  explicit WrittenRows(std::shared_ptr<const Level> parent)
+    : Parent(std::move(parent))
+    , RowWriter(*this->Parent)
+  {
+  }
+  Index GetNumParents() const override { return this->RowWriter.GetNumParents(); }
+  Index GetNumRows() const override { return this->RowWriter.GetNumRows(); }
+  std::vector<Index> GetBlockEnds() const override { return this->RowWriter.GetBlockEnds(); }
+  void ApplyRows(const double* parents, double* children, int components, Index begin, Index end) const override
+  {
+    this->Apply(parents, children, components, begin, end);
+  }
+  void ApplyRows(const float* parents, float* children, int components, Index begin, Index end) const override
+  {
+    this->Apply(parents, children, components, begin, end);
+  }
+
+private:
+  template <typename T>
+  void Apply(const T* parents, T* children, int components, Index begin, Index end) const
+  {
+    std::vector<Index> sources(static_cast<size_t>(this->RowWriter.GetMaxRowSize()));
+    std::vector<double> weights(sources.size());
+    std::vector<double> sum(static_cast<size_t>(components));
+    const Index numParents = this->RowWriter.GetNumParents();
+    for (Index row = begin; row < end; ++row)
+    {
+      const Index size = this->RowWriter.WriteRow(row, sources.data(), weights.data());
+      ApplyRow(sources.data(), weights.data(), size, numParents, parents, children, components, sum.data(),
+        children + static_cast<size_t>(row) * components);
+    }
+  }
+
+  std::shared_ptr<const Level> Parent;
+  Writer RowWriter;
+};
+}
+
+#endif
