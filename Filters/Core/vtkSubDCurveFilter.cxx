@@ -1,4 +1,5 @@
 #include "vtkSubDCurveFilter.h"
+#include "vtkSubDMemoryBudget.h"
 
 #include "SubDCurveLimit.h"
 #include "SubDCurveRefiner.h"
@@ -181,7 +182,10 @@ vtkSmartPointer<vtkDataArray> Concatenate(vtkDataArray* input, vtkDataArray* cur
 }
 }
 
-vtkSubDCurveFilter::vtkSubDCurveFilter() = default;
+vtkSubDCurveFilter::vtkSubDCurveFilter()
+  : MaximumMemory(vtkSubDDefaultMemoryBudget())
+{
+}
 vtkSubDCurveFilter::~vtkSubDCurveFilter() = default;
 
 const char* vtkSubDCurveFilter::GetSchemeAsString()

@@ -141,7 +141,8 @@ public:
 
   ///@{
   /**
-   * Refuse requests whose predicted output needs more than this many MiB (default 16384).
+   * Refuse requests whose predicted output needs more than this many MiB (default: half the
+   * physical memory), with an error naming the estimate, before allocating anything.
    */
   vtkSetClampMacro(MaximumMemory, double, 1.0, 1.0e9);
   vtkGetMacro(MaximumMemory, double);
@@ -160,7 +161,7 @@ protected:
   bool ProjectToLimit = false;
   bool ComputeTangents = false;
   int OutputPointsPrecision = DEFAULT_PRECISION;
-  double MaximumMemory = 16384.0;
+  double MaximumMemory; // half the physical memory (vtkSubDMemoryBudget.h)
 
 private:
   vtkSubDCurveFilter(const vtkSubDCurveFilter&) = delete;

@@ -1,4 +1,5 @@
 #include "vtkSubDSurfaceFilter.h"
+#include "vtkSubDMemoryBudget.h"
 
 #include "SubDLimitEvaluator.h"
 #include "SubDMeshValidation.h"
@@ -26,6 +27,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkTypeInt32Array.h"
 
 #include <algorithm>
 #include <cmath>
@@ -179,7 +181,8 @@ void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
 }
 
 vtkSubDSurfaceFilter::vtkSubDSurfaceFilter()
-  : Internals(new vtkInternals)
+  : MaximumMemory(vtkSubDDefaultMemoryBudget())
+  , Internals(new vtkInternals)
 {
 }
 
@@ -348,6 +351,15 @@ int vtkSubDSurfaceFilter::RequestData(
     // topology's relations and the last stencil table.
     const double bytes = counts.Vertices * (24.0 * 3 + pointDataBytes + 40.0) +
       counts.Corners * (8.0 + 20.0 + 12.0) + counts.Faces * 24.0 + counts.Edges * 24.0;
+    const double indexLimit = 2147483647.0; // the kernel's and the output's 32-bit indices
+    if (std::max({ counts.Corners, counts.Vertices, counts.Edges }) > indexLimit)
+    {
+      vtkErrorMacro("Refusing " << this->NumberOfSubdivisions << " subdivision level(s): the output "
+                                << "would have about " << counts.Faces << " faces and " << counts.Vertices
+                                << " points, more corners or points than 32-bit indices can number (2^31 - 1).");
+      return fail();
+    }
+
     const double limit = this->MaximumMemory * 1024.0 * 1024.0;
     if (bytes > limit)
     {
@@ -358,7 +370,6 @@ int vtkSubDSurfaceFilter::RequestData(
                                 << this->MaximumMemory << " MiB).");
       return fail();
     }
-
     bool someBaseVertexUnused = false;
     for (subd::Index v = 0; v < topology.GetNumVertices() && !someBaseVertexUnused; ++v)
     {
@@ -528,32 +539,8 @@ int vtkSubDSurfaceFilter::RequestData(
   const vtkIdType numLines = static_cast<vtkIdType>(lineSharpness.size());
 
   // Faces, straight into offsets/connectivity.
-  const subd::MeshTopology& topo = finest.Topology;
+  output->SetPolys(this->MakeOutputFaces());
   const vtkIdType numOut = cache.GetNumberOfOutputFaces();
-  vtkNew<vtkIdTypeArray> offsets;
-  offsets->SetNumberOfTuples(numOut + 1);
-  vtkIdType* off = offsets->GetPointer(0);
-  off[0] = 0;
-  for (vtkIdType c = 0; c < numOut; ++c)
-  {
-    off[c + 1] = off[c] + topo.GetFaceSize(cache.FinestFace(c));
-  }
-  vtkNew<vtkIdTypeArray> connectivity;
-  connectivity->SetNumberOfTuples(off[numOut]);
-  vtkIdType* conn = connectivity->GetPointer(0);
-  vtkSMPTools::For(0, numOut, 4096, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType c = begin; c < end; ++c)
-    {
-      vtkIdType* out = conn + off[c];
-      for (subd::Index v : topo.GetFaceVertices(cache.FinestFace(c)))
-      {
-        *out++ = cache.OutputPoint(v);
-      }
-    }
-  });
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
-  output->SetPolys(polys);
 
   // Cell data: each face inherits its input cell's; lines get zeros, and their sharpness.
   if (input->GetCellData()->GetNumberOfArrays() == 0 && !this->GenerateParentCellIds && numLines == 0)
@@ -723,6 +710,39 @@ void vtkSubDSurfaceFilter::AddTangentMaskNormals(
     }
   });
   geometry.AddTo(outPD);
+}
+
+// The output faces in 32-bit offsets/connectivity arrays: the kernel's own index width
+// (the size guard refuses outputs beyond it), half the memory of vtkIdType's.
+vtkSmartPointer<vtkCellArray> vtkSubDSurfaceFilter::MakeOutputFaces() const
+{
+  const vtkInternals& cache = *this->Internals;
+  const subd::MeshTopology& topo = cache.Hierarchy.Finest.Topology;
+  const vtkIdType numOut = cache.GetNumberOfOutputFaces();
+  vtkNew<vtkTypeInt32Array> offsets;
+  offsets->SetNumberOfTuples(numOut + 1);
+  vtkTypeInt32* off = offsets->GetPointer(0);
+  off[0] = 0;
+  for (vtkIdType c = 0; c < numOut; ++c)
+  {
+    off[c + 1] = off[c] + topo.GetFaceSize(cache.FinestFace(c));
+  }
+  vtkNew<vtkTypeInt32Array> connectivity;
+  connectivity->SetNumberOfTuples(off[numOut]);
+  vtkTypeInt32* conn = connectivity->GetPointer(0);
+  vtkSMPTools::For(0, numOut, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      vtkTypeInt32* out = conn + off[c];
+      for (subd::Index v : topo.GetFaceVertices(cache.FinestFace(c)))
+      {
+        *out++ = static_cast<vtkTypeInt32>(cache.OutputPoint(v));
+      }
+    }
+  });
+  vtkNew<vtkCellArray> polys;
+  polys->SetData(offsets, connectivity);
+  return polys;
 }
 
 void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)

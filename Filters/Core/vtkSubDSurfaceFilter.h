@@ -66,6 +66,7 @@
 
 #include "SubDFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // MakeOutputFaces
 
 #include <vector> // AddTangentMaskNormals
 
@@ -73,6 +74,7 @@ namespace subd
 {
 class Scheme;
 }
+class vtkCellArray;
 class vtkPointData;
 
 class SUBDFILTERS_EXPORT vtkSubDSurfaceFilter : public vtkPolyDataAlgorithm
@@ -222,7 +224,8 @@ public:
 
   ///@{
   /**
-   * Refuse requests whose predicted output needs more than this many MiB (default 16384).
+   * Refuse requests whose predicted output needs more than this many MiB (default: half the
+   * physical memory), with an error naming the estimate, before allocating anything.
    */
   vtkSetClampMacro(MaximumMemory, double, 1.0, 1.0e9);
   vtkGetMacro(MaximumMemory, double);
@@ -247,6 +250,7 @@ protected:
   /// Adds the limit normals and curvature arrays (ComputeLimitNormals, ComputeCurvature) of the
   /// output points; false (with an error message) if evaluation failed.
   bool AddLimitGeometry(const double* basePoints, vtkPointData* outPD);
+  vtkSmartPointer<vtkCellArray> MakeOutputFaces() const;
   /// The normals from the scheme's tangent masks (schemes LimitEvaluator does not handle).
   void AddTangentMaskNormals(const std::vector<double>& control, vtkIdType numOut, vtkPointData* outPD);
 
@@ -264,7 +268,7 @@ protected:
   bool ProjectToLimit = false;
   bool ComputeLimitNormals = false;
   bool ComputeCurvature = false;
-  double MaximumMemory = 16384.0;
+  double MaximumMemory; // half the physical memory (vtkSubDMemoryBudget.h)
   int NumberOfStencilBuilds = 0;
 
 private:

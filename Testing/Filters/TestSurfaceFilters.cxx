@@ -28,6 +28,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -443,8 +445,48 @@ TYPED_TEST(AnySurfaceFilter, ErrorHugeLevelCountRefusedBeforeAllocating)
   filter->SetNumberOfSubdivisions(1000); // clamped to 30, still far too large
   EXPECT_EQ(filter->GetNumberOfSubdivisions(), 30);
   filter->Update();
-  EXPECT_NE(messages.Errors.find("MaximumMemory"), std::string::npos) << messages.Errors;
+  EXPECT_NE(messages.Errors.find("Refusing 30 subdivision level(s)"), std::string::npos) << messages.Errors;
   EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0);
+}
+
+// Past 2^31 corners or points the 32-bit indices of the kernel and of the output cannot
+// number them: refused whatever the memory budget.
+TYPED_TEST(AnySurfaceFilter, ErrorOutputBeyond32BitIndicesRefused)
+{
+  vtkNew<TypeParam> filter;
+  Messages messages;
+  messages.Watch(filter);
+  filter->SetInputData(Cube());
+  filter->SetNumberOfSubdivisions(30);
+  filter->SetMaximumMemory(1.0e9);
+  filter->Update();
+  EXPECT_NE(messages.Errors.find("32-bit indices"), std::string::npos) << messages.Errors;
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0);
+}
+
+// Within 32-bit indices, the memory budget decides: 24k quads need more than 1 MiB.
+TEST(CatmullClarkFilter, ErrorOutputAboveMemoryBudgetRefused)
+{
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  Messages messages;
+  messages.Watch(filter);
+  filter->SetInputData(Cube());
+  filter->SetNumberOfSubdivisions(6);
+  filter->SetMaximumMemory(1.0);
+  filter->Update();
+  EXPECT_NE(messages.Errors.find("more than MaximumMemory (1 MiB)"), std::string::npos) << messages.Errors;
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0);
+  filter->SetMaximumMemory(64.0);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPolys(), 6 * 4096);
+}
+
+// The default budget is half the machine's physical memory.
+TEST(CatmullClarkFilter, DefaultMemoryBudgetIsHalfThePhysicalMemory)
+{
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  const double physicalMiB = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * sysconf(_SC_PAGE_SIZE) / 1048576.0;
+  EXPECT_NEAR(filter->GetMaximumMemory(), 0.5 * physicalMiB, 1.0);
 }
 
 TYPED_TEST(AnySurfaceFilter, ProgressIsReportedAndAbortLeavesEmptyOutput)
