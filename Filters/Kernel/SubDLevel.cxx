@@ -76,6 +76,19 @@ VertexRulePlan PlanVertexRule(const Level& level, Index v)
   const MeshTopology& topo = level.Topology;
   VertexRulePlan plan{ VertexRule::Corner, VertexRule::Corner, { 0, 0 }, { 0, 0 }, 1.0f };
   const IndexSpan edges = topo.GetVertexEdges(v);
+  // The common case first, without buffers: nothing sharp at or around v. Such a vertex is
+  // smooth now and one level down, or a corner when its faces do not close (as below).
+  bool anySharp = IsSharp(level.VertexSharpness[v]);
+  for (Index i = 0; i < edges.size() && !anySharp; ++i)
+  {
+    anySharp = IsSharp(level.EdgeSharpness[edges[i]]);
+  }
+  if (!anySharp)
+  {
+    const Index numFaces = topo.GetVertexFaces(v).size();
+    plan.Rule = plan.ChildRule = numFaces > 0 && numFaces == edges.size() ? VertexRule::Smooth : VertexRule::Corner;
+    return plan;
+  }
   // Small valences use the stack; a pole of any valence still works.
   constexpr Index stackSize = 32;
   float stackBuffer[2 * stackSize];
