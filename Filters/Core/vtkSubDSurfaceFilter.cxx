@@ -123,6 +123,7 @@ public:
   std::vector<subd::Index> EmittedFaces;      // when holes exist: finest faces that are not holes
   std::vector<vtkIdType> OutputPointOfFinest; // when compacting: -1 where a finest point is unused
   std::vector<vtkIdType> FinestPointOfOutput;
+  vtkSmartPointer<vtkCellArray> OutputFaces; // made once per topology, shared by the outputs
 
   vtkIdType GetNumberOfOutputFaces() const
   {
@@ -312,6 +313,7 @@ int vtkSubDSurfaceFilter::RequestData(
   if (!reuse)
   {
     cache.Valid = false;
+    cache.OutputFaces = nullptr;
     bool allTriangles = true;
     for (size_t f = 0; f + 1 < screened.Offsets.size() && allTriangles; ++f)
     {
@@ -539,7 +541,12 @@ int vtkSubDSurfaceFilter::RequestData(
   const vtkIdType numLines = static_cast<vtkIdType>(lineSharpness.size());
 
   // Faces, straight into offsets/connectivity.
-  output->SetPolys(this->MakeOutputFaces());
+  // The faces depend on the topology only: re-applied stencils reuse them.
+  if (!cache.OutputFaces)
+  {
+    cache.OutputFaces = this->MakeOutputFaces();
+  }
+  output->SetPolys(cache.OutputFaces);
   const vtkIdType numOut = cache.GetNumberOfOutputFaces();
 
   // Cell data: each face inherits its input cell's; lines get zeros, and their sharpness.

@@ -2,7 +2,10 @@
 // OpenSubdiv's Far (TopologyRefinerFactory + RefineUniform + PrimvarRefinerReal<double>,
 // i.e. topology and interpolation) measured in the same run. Each measurement runs in a
 // forked child so its peak RSS is its own. Prints seconds, output faces per second, peak
-// RSS and the ratio OpenSubdiv time / SubD time.
+// RSS, the ratio OpenSubdiv time / SubD time, and for the filter the peak RSS over the
+// output's bytes and the time over the bandwidth bound (writing the output once). The last
+// row of a level re-applies the cached stencils after the points moved (the explorer's and
+// an animation's case), in output points per second.
 //
 //   usage: BenchCatmullClark mesh.off [maxLevel=4] [repeats=3]
 #include "SubDRefiner.h"
@@ -34,11 +37,12 @@ namespace
 using subdbench::Clock;
 using subdbench::Measure;
 using subdbench::Result;
+using subdbench::Work;
 using namespace OpenSubdiv;
 
 using Mesh = subdbench::BenchMesh;
 
-std::pair<double, double> RunKernel(const Mesh& mesh, int level)
+Work RunKernel(const Mesh& mesh, int level)
 {
   const Clock::time_point start = Clock::now();
   std::vector<subd::Index> offsets{ 0 };
@@ -57,7 +61,7 @@ std::pair<double, double> RunKernel(const Mesh& mesh, int level)
   return { seconds, double(h.Finest.Topology.GetNumFaces()) };
 }
 
-std::pair<double, double> RunFilter(const Mesh& mesh, int level, int threads)
+Work RunFilter(const Mesh& mesh, int level, int threads)
 {
   vtkSMPTools::Initialize(threads);
   vtkNew<vtkSubDCatmullClarkFilter> filter;
@@ -65,8 +69,33 @@ std::pair<double, double> RunFilter(const Mesh& mesh, int level, int threads)
   filter->SetNumberOfSubdivisions(level);
   const Clock::time_point start = Clock::now();
   filter->Update();
-  const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  return { seconds, double(filter->GetOutput()->GetNumberOfPolys()) };
+  const double seconds = subdbench::SecondsSince(start);
+  return { seconds, double(filter->GetOutput()->GetNumberOfPolys()), subdbench::OutputBytes(filter->GetOutput()) };
+}
+
+// Refines once, then moves the input points and times the second update, which only
+// re-applies the cached stencils; "faces" are the output points here.
+Work RunReapply(const Mesh& mesh, int level, int threads)
+{
+  vtkSMPTools::Initialize(threads);
+  vtkNew<vtkPolyData> input;
+  input->DeepCopy(mesh.PolyData);
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(input);
+  filter->SetNumberOfSubdivisions(level);
+  filter->Update();
+  vtkPoints* points = input->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    points->SetPoint(i, 1.01 * p[0], p[1], p[2]);
+  }
+  points->Modified();
+  const Clock::time_point start = Clock::now();
+  filter->Update();
+  const double seconds = subdbench::SecondsSince(start);
+  return { seconds, double(filter->GetOutput()->GetNumberOfPoints()), subdbench::OutputBytes(filter->GetOutput()) };
 }
 }
 
@@ -83,22 +112,31 @@ int main(int argc, char* argv[])
   const Mesh& mesh = args.Mesh;
   std::printf("Catmull-Clark on %s: %d points, %zu faces; best of %d runs each\n", argv[1],
     mesh.NumVertices(), mesh.Sizes.size(), repeats);
-  std::printf("%-5s %-28s %10s %12s %10s %9s\n", "level", "implementation", "seconds", "faces/s",
-    "peak MiB", "OSD/this");
+  std::printf("%-5s %-28s %10s %12s %10s %9s %9s %9s\n", "level", "implementation", "seconds", "faces/s",
+    "peak MiB", "OSD/this", "peak/out", "x bound");
   for (int level = 1; level <= maxLevel; ++level)
   {
     const Result osd = Measure([&] { return subdbench::RunOpenSubdiv(mesh, level, Sdc::SCHEME_CATMARK); }, repeats);
     const Result kernel = Measure([&] { return RunKernel(mesh, level); }, repeats);
     const Result filter1 = Measure([&] { return RunFilter(mesh, level, 1); }, repeats);
     const Result filter2 = Measure([&] { return RunFilter(mesh, level, 2); }, repeats);
+    const Result reapply = Measure([&] { return RunReapply(mesh, level, 2); }, repeats);
     auto row = [&](const char* name, const Result& r) {
-      std::printf("%-5d %-28s %10.4f %12.3g %10.1f %9.2f\n", level, name, r.Seconds,
-        r.Faces / r.Seconds, r.PeakMiB, osd.Seconds / r.Seconds);
+      std::printf("%-5d %-28s %10.4f %12.3g %10.1f %9.2f", level, name, r.Seconds, r.Faces / r.Seconds, r.PeakMiB,
+        osd.Seconds / r.Seconds);
+      if (r.OutputBytes > 0)
+      {
+        std::printf(" %9.2f %9.1f", r.PeakMiB * 1048576.0 / r.OutputBytes,
+          r.Seconds / (r.OutputBytes / subdbench::WriteBandwidth));
+      }
+      std::printf("\n");
     };
     row("OpenSubdiv Far (1 thread)", osd);
     row("SubD kernel (1 thread)", kernel);
     row("SubD filter (1 thread)", filter1);
     row("SubD filter (2 threads)", filter2);
+    std::printf("%-5d %-28s %10.4f %12.3g points/s (re-applied stencils, points moved)\n", level,
+      "SubD re-apply (2 threads)", reapply.Seconds, reapply.Faces / reapply.Seconds);
     if (kernel.Faces != osd.Faces || filter2.Faces != osd.Faces)
     {
       std::fprintf(stderr, "bench: face counts differ (%g, %g, %g)\n", osd.Faces, kernel.Faces, filter2.Faces);

@@ -7,7 +7,7 @@
 // a forked child (own peak RSS), best of `repeats`. Prints seconds, output faces per second,
 // peak RSS and, per scheme, the ratio fastest peer time / SubD time (2 threads).
 //
-//   usage: BenchSchemes mesh.off [maxLevel=3] [repeats=3]
+//   usage: BenchSchemes mesh.off [maxLevel=3] [repeats=3] [scheme,scheme,...]
 #include "SubDBenchOpenSubdiv.h"
 
 #include "vtkSubDButterflyFilter.h"
@@ -49,7 +49,7 @@ using subdbench::Clock;
 using subdbench::Measure;
 using subdbench::Result;
 using subdbench::SecondsSince;
-using Work = std::pair<double, double>;
+using subdbench::Work;
 
 using Mesh = subdbench::BenchMesh;
 
@@ -61,7 +61,8 @@ Work RunFilter(const Mesh& mesh, int level)
   filter->SetInputData(mesh.PolyData);
   filter->SetNumberOfSubdivisions(level);
   filter->Update();
-  return { SecondsSince(start), double(filter->GetOutput()->GetNumberOfPolys()) };
+  return { SecondsSince(start), double(filter->GetOutput()->GetNumberOfPolys()),
+    subdbench::OutputBytes(filter->GetOutput()) };
 }
 
 template <typename Filter>
@@ -173,14 +174,26 @@ int main(int argc, char* argv[])
 
   std::printf("Surface schemes on %s: %d points, %zu faces; best of %d runs each\n", argv[1], mesh.NumVertices(),
     mesh.Sizes.size(), repeats);
-  std::printf("%-10s %-5s %-22s %10s %12s %10s\n", "scheme", "level", "implementation", "seconds", "faces/s", "peak MiB");
+  const std::string only = argc > 4 ? "," + std::string(argv[4]) + "," : "";
+  std::printf("%-10s %-5s %-22s %10s %12s %10s %9s %9s\n", "scheme", "level", "implementation", "seconds", "faces/s",
+    "peak MiB", "peak/out", "x bound");
   for (const SchemeBench& scheme : schemes)
   {
+    if (!only.empty() && only.find("," + scheme.Name + ",") == std::string::npos)
+    {
+      continue;
+    }
     for (int level = 1; level <= maxLevel; ++level)
     {
       auto row = [&](const std::string& name, const Result& r) {
-        std::printf("%-10s %-5d %-22s %10.4f %12.3g %10.1f\n", scheme.Name.c_str(), level, name.c_str(), r.Seconds,
+        std::printf("%-10s %-5d %-22s %10.4f %12.3g %10.1f", scheme.Name.c_str(), level, name.c_str(), r.Seconds,
           r.Faces / r.Seconds, r.PeakMiB);
+        if (r.OutputBytes > 0)
+        {
+          std::printf(" %9.2f %9.1f", r.PeakMiB * 1048576.0 / r.OutputBytes,
+            r.Seconds / (r.OutputBytes / subdbench::WriteBandwidth));
+        }
+        std::printf("\n");
       };
       const Result one = Measure([&] { return scheme.SubD(mesh, level, 1); }, repeats);
       const Result two = Measure([&] { return scheme.SubD(mesh, level, 2); }, repeats);

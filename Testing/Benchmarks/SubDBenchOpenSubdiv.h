@@ -27,7 +27,7 @@ struct OsdPoint
 };
 
 /// Seconds and output faces of `level` levels of `scheme` (SCHEME_CATMARK, SCHEME_LOOP).
-inline std::pair<double, double> RunOpenSubdiv(const BenchMesh& mesh, int level, OpenSubdiv::Sdc::SchemeType scheme)
+inline Work RunOpenSubdiv(const BenchMesh& mesh, int level, OpenSubdiv::Sdc::SchemeType scheme)
 {
   using namespace OpenSubdiv;
   const Clock::time_point start = Clock::now();

@@ -28,16 +28,32 @@ inline double SecondsSince(Clock::time_point start)
   return std::chrono::duration<double>(Clock::now() - start).count();
 }
 
+/// What one run reports: its time, the faces it made and, for SubD's filters, the bytes of
+/// the output vtkPolyData (points, cells and arrays; 0 when not measured).
+struct Work
+{
+  double Seconds = 0;
+  double Faces = 0;
+  double OutputBytes = 0;
+};
+
 struct Result
 {
   double Seconds = 0;
   double Faces = 0;
+  double OutputBytes = 0;
   double PeakMiB = 0;
 };
 
-// Runs `work` (returning seconds and output faces) in a child process `repeats` times and
-// keeps the fastest; the peak RSS is the child's own.
-inline Result Measure(const std::function<std::pair<double, double>()>& work, int repeats)
+/// The bytes of a filter's output, as VTK counts them.
+inline double OutputBytes(vtkPolyData* output)
+{
+  return 1024.0 * static_cast<double>(output->GetActualMemorySize());
+}
+
+// Runs `work` in a child process `repeats` times and keeps the fastest; the peak RSS is
+// the child's own.
+inline Result Measure(const std::function<Work()>& work, int repeats)
 {
   Result best;
   best.Seconds = 1e300;
@@ -50,14 +66,14 @@ inline Result Measure(const std::function<std::pair<double, double>()>& work, in
     if (pid == 0)
     {
       close(pipeFd[0]);
-      const auto [seconds, faces] = work();
-      const double message[2] = { seconds, faces };
+      const Work w = work();
+      const double message[3] = { w.Seconds, w.Faces, w.OutputBytes };
       if (write(pipeFd[1], message, sizeof(message)) != sizeof(message))
         _exit(1);
       _exit(0);
     }
     close(pipeFd[1]);
-    double message[2] = { 0, 0 };
+    double message[3] = { 0, 0, 0 };
     const bool ok = read(pipeFd[0], message, sizeof(message)) == sizeof(message);
     close(pipeFd[0]);
     int status = 0;
@@ -72,12 +88,16 @@ inline Result Measure(const std::function<std::pair<double, double>()>& work, in
     {
       best.Seconds = message[0];
       best.Faces = message[1];
+      best.OutputBytes = message[2];
       best.PeakMiB = usage.ru_maxrss / 1024.0;
     }
   }
   return best;
 }
 
+/// This machine's measured write bandwidth (the figure, bytes/s): writing the output
+/// once at this rate is the bound no implementation can beat.
+constexpr double WriteBandwidth = 23.0e9;
 
 /// A benchmark mesh as flat arrays (for the peers) and as vtkPolyData (for the filters).
 struct BenchMesh
