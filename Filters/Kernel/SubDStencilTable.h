@@ -197,12 +197,22 @@ void StencilTable::ApplyRows(
     this->Source->ApplyRows(parents, children, components, begin, end);
     return;
   }
-  std::vector<double> sum(static_cast<size_t>(components));
+  // Small tables are applied many times (local refinements of the limit evaluator): no heap
+  // allocation unless the values are wide.
+  constexpr int MaxStackComponents = 16;
+  double stackSum[MaxStackComponents];
+  std::vector<double> heapSum;
+  double* sum = stackSum;
+  if (components > MaxStackComponents)
+  {
+    heapSum.resize(static_cast<size_t>(components));
+    sum = heapSum.data();
+  }
   for (Index row = begin; row < end; ++row)
   {
     const Index first = this->Offsets[row];
     ApplyRow(this->Sources.data() + first, this->Weights.data() + first, this->Offsets[row + 1] - first,
-      this->NumParents, parents, children, components, sum.data(), children + static_cast<size_t>(row) * components);
+      this->NumParents, parents, children, components, sum, children + static_cast<size_t>(row) * components);
   }
 }
 }
