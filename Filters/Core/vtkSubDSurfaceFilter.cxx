@@ -397,7 +397,7 @@ int vtkSubDSurfaceFilter::RequestData(
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy, refineProgress,
           sharpFeatures || this->ProjectToLimit || limitGeometry ? subd::ChildTopology::Full
                                                                  : subd::ChildTopology::FacesOnly,
-          subd::FinestRows::Written))
+          subd::LevelRows::Written))
     {
       return aborted();
     }

@@ -11,7 +11,7 @@ void SerialFor(Index begin, Index end, const RangeTask& task)
 }
 
 bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
-  const ProgressCallback& progress, ChildTopology finest, FinestRows finestRows)
+  const ProgressCallback& progress, ChildTopology finest, LevelRows levelRows)
 {
   out.NumBasePoints = base.Topology.GetNumVertices();
   out.Stencils.clear();
@@ -21,14 +21,14 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   {
     const bool last = l + 1 == levels;
     std::shared_ptr<const RowSource> writtenRows;
-    if (last && finestRows == FinestRows::Written)
+    if (levelRows == LevelRows::Written)
     {
       auto parent = std::make_shared<Level>(std::move(current));
       writtenRows = scheme.MakeRowSource(parent);
       if (writtenRows)
       {
         out.Stencils.push_back(StencilTable::FromSource(writtenRows));
-        current = scheme.Split(*parent, finest);
+        current = scheme.Split(*parent, last ? finest : ChildTopology::Full);
       }
       else
       {

@@ -47,12 +47,14 @@ struct SUBDKERNEL_EXPORT Hierarchy
     const ProgressCallback& progress = nullptr, int numTables = -1) const;
 };
 
-/// How the finest level's stencils are kept.
-enum class FinestRows
+/// How each level's stencils are kept.
+enum class LevelRows
 {
-  Stored,  ///< a StencilTable like every other level's (its rows can be inspected)
+  Stored,  ///< a StencilTable per level (its rows can be inspected)
   Written, ///< written as they are applied, from the level above, where the scheme can
-           ///< (Scheme::MakeRowSource): a fraction of the memory and time of storing them
+           ///< (Scheme::MakeRowSource): a fraction of the memory and time of storing them,
+           ///< and applied in parallel where building a table is serial. Each level's
+           ///< topology is then kept (a third of the finest parent's, summed over levels).
 };
 
 /// Refines `base` `levels` times. The finest level has faces only unless `finest` asks
@@ -60,7 +62,7 @@ enum class FinestRows
 /// asked to stop (out is then incomplete).
 SUBDKERNEL_EXPORT bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   const ProgressCallback& progress = nullptr, ChildTopology finest = ChildTopology::FacesOnly,
-  FinestRows finestRows = FinestRows::Stored);
+  LevelRows levelRows = LevelRows::Stored);
 
 template <typename T>
 bool Hierarchy::Evaluate(const T* base, int components, T* finest, const ParallelFor& parallelFor,

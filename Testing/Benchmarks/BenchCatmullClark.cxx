@@ -54,7 +54,7 @@ Work RunKernel(const Mesh& mesh, int level)
     subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), std::move(offsets),
                           std::vector<subd::Index>(mesh.Corners.begin(), mesh.Corners.end())),
       {}, subd::BoundaryRule::EdgeOnly),
-    level, h, nullptr, subd::ChildTopology::FacesOnly, subd::FinestRows::Written);
+    level, h, nullptr, subd::ChildTopology::FacesOnly, subd::LevelRows::Written);
   std::vector<double> finest(static_cast<size_t>(h.GetNumFinestPoints()) * 3);
   h.Evaluate(mesh.Points.data(), 3, finest.data());
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();

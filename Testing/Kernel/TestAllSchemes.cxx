@@ -491,10 +491,10 @@ TEST(Sqrt3Scheme, CentroidAndRelaxationMasksForValences3To64)
   }
 }
 
-// The finest level's rows written as they are applied (FinestRows::Written, what the filters
-// use) give bit for bit the points the stored table gives, with semi-sharp and sharp creases
+// Every level's rows written as they are applied (LevelRows::Written, what the filters use)
+// give bit for bit the points the stored table gives, with semi-sharp and sharp creases
 // and corners under both crease methods, for 3 double and 5 float components.
-TEST_P(AllSchemes, WrittenFinestRowsEqualStoredRows)
+TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
 {
   const auto scheme = GetParam().Make();
   const subd::BoundaryRule rule = scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly);
@@ -518,9 +518,10 @@ TEST_P(AllSchemes, WrittenFinestRowsEqualStoredRows)
         subd::Hierarchy stored, written;
         subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, stored);
         subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, written, nullptr,
-          subd::ChildTopology::FacesOnly, subd::FinestRows::Written);
+          subd::ChildTopology::FacesOnly, subd::LevelRows::Written);
         const bool writes = scheme->MakeRowSource(std::make_shared<subd::Level>()) != nullptr;
-        EXPECT_EQ(written.Stencils.back().IsStored(), !writes);
+        for (const subd::StencilTable& table : written.Stencils)
+          EXPECT_EQ(table.IsStored(), !writes);
         ASSERT_EQ(written.GetNumFinestPoints(), stored.GetNumFinestPoints());
         ASSERT_EQ(written.Finest.Topology.GetFaceVertexArray(), stored.Finest.Topology.GetFaceVertexArray());
         EXPECT_EQ(Evaluate(written, mesh.Points), Evaluate(stored, mesh.Points)) << mesh.Name << " L" << levels;
