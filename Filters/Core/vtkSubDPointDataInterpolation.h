@@ -31,12 +31,12 @@ public:
   vtkSmartPointer<vtkDataArray> Interpolate(vtkDataArray* base, int outputType, bool normalize,
     const subd::ProgressCallback& progress) const;
 
-  /// Stores `n` tuples of double values (rows `selection`[i] of `values`, or the first n)
-  /// into `out` (already sized) by the rules above: integers rounded and clamped, vectors
-  /// re-normalized when `normalize`.
   /// Runs the kernel's row loops with vtkSMPTools (a subd::ParallelFor).
   static void SMPFor(subd::Index begin, subd::Index end, const subd::RangeTask& task);
 
+  /// Stores `n` tuples of double values (rows `selection`[i] of `values`, or the first n)
+  /// into `out` (already sized) by the rules above: integers rounded and clamped, vectors
+  /// re-normalized when `normalize`.
   static bool Store(const double* values, int components, const std::vector<vtkIdType>* selection, vtkIdType n,
     bool normalize, vtkDataArray* out);
 

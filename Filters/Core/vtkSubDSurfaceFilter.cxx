@@ -320,6 +320,7 @@ int vtkSubDSurfaceFilter::RequestData(
       allTriangles = screened.Offsets[f + 1] - screened.Offsets[f] == 3;
     }
     cache.Scheme.reset(this->NewScheme(allTriangles));
+    cache.Scheme->SetParallelFor(&vtkSubDPointDataInterpolation::SMPFor);
     const subd::Scheme* scheme = cache.Scheme.get();
     subd::MeshTopology topology =
       subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices);

@@ -38,6 +38,8 @@ public:
   std::vector<Index> GetBlockEnds() const { return { this->Number.EdgePoint(0), this->GetNumRows() }; }
   Index GetMaxRowSize() const { return this->MaxRowSize; }
   Index WriteRow(Index row, Index* sources, double* weights) const;
+  template <typename T>
+  bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
 
 private:
   Index WriteEdgeRow(Index e, Index* sources, double* weights) const;
@@ -48,6 +50,71 @@ private:
   QuadSplitNumbering Number;
   Index MaxRowSize = 4;
 };
+
+// Face points always; edge points of smooth edges; vertex points of vertices with nothing
+// sharp at or around them and a closed fan (PlanVertexRule's smooth case). Sources and
+// weights in WriteRow's order.
+template <typename T>
+bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
+{
+  const MeshTopology& topo = this->Topology;
+  PointSum point;
+  if (row < this->Number.NumFaces)
+  {
+    const IndexSpan fv = topo.GetFaceVertices(row);
+    const double w = 1.0 / fv.size();
+    for (Index v : fv)
+    {
+      point.Add(w, parents + 3 * static_cast<size_t>(v));
+    }
+    point.Store(dst);
+    return true;
+  }
+  const Index firstVertexPoint = this->Number.VertexPoint(0);
+  if (row < firstVertexPoint)
+  {
+    const Index e = row - this->Number.NumFaces;
+    const IndexSpan ef = topo.GetEdgeFaces(e);
+    if (IsSharp(this->Parent.EdgeSharpness[e]) || ef.size() != 2)
+    {
+      return false;
+    }
+    const Index* ev = topo.GetEdgeVertices(e);
+    point.Add(0.25, parents + 3 * static_cast<size_t>(ev[0]));
+    point.Add(0.25, parents + 3 * static_cast<size_t>(ev[1]));
+    point.Add(0.25, children + 3 * static_cast<size_t>(this->Number.FacePoint(ef[0])));
+    point.Add(0.25, children + 3 * static_cast<size_t>(this->Number.FacePoint(ef[1])));
+    point.Store(dst);
+    return true;
+  }
+  const Index v = row - firstVertexPoint;
+  const IndexSpan edges = topo.GetVertexEdges(v);
+  const IndexSpan faces = topo.GetVertexFaces(v);
+  if (IsSharp(this->Parent.VertexSharpness[v]) || faces.size() != edges.size() || faces.empty())
+  {
+    return false;
+  }
+  for (Index e : edges)
+  {
+    if (IsSharp(this->Parent.EdgeSharpness[e]))
+    {
+      return false;
+    }
+  }
+  const double n = faces.size();
+  const double ringWeight = 1.0 / (n * n);
+  point.Add((n - 2.0) / n, parents + 3 * static_cast<size_t>(v));
+  for (Index e : edges)
+  {
+    point.Add(ringWeight, parents + 3 * static_cast<size_t>(topo.GetOtherEndpoint(e, v)));
+  }
+  for (Index f : faces)
+  {
+    point.Add(ringWeight, children + 3 * static_cast<size_t>(this->Number.FacePoint(f)));
+  }
+  point.Store(dst);
+  return true;
+}
 }
 
 #endif

@@ -165,7 +165,7 @@ std::vector<VertexRulePlan> PlanVertexRules(const Level& level)
 }
 
 void SetChildTopology(const Level& parent, Level& child, Index numPoints, std::vector<Index> offsets,
-  std::vector<Index> vertices, ChildTopology depth, const KnownAdjacency* known)
+  std::vector<Index> vertices, ChildTopology depth)
 {
   child.Depth = parent.Depth + 1;
   child.Creasing = parent.Creasing;
@@ -174,30 +174,9 @@ void SetChildTopology(const Level& parent, Level& child, Index numPoints, std::v
     child.Topology = MeshTopology::BuildFacesOnly(numPoints, std::move(offsets), std::move(vertices));
     return;
   }
-  child.Topology = known ? MeshTopology::Build(numPoints, std::move(offsets), std::move(vertices), *known)
-                         : MeshTopology::Build(numPoints, std::move(offsets), std::move(vertices));
+  child.Topology = MeshTopology::Build(numPoints, std::move(offsets), std::move(vertices));
   child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), SharpnessSmooth);
   child.VertexSharpness.assign(static_cast<size_t>(numPoints), SharpnessSmooth);
-}
-
-KnownAdjacency PrimalChildTags(const MeshTopology& parent, Index numFacePoints)
-{
-  const Index numEdges = parent.GetNumEdges();
-  const Index numVertices = parent.GetNumVertices();
-  KnownAdjacency known;
-  known.VertexTags.assign(static_cast<size_t>(numFacePoints + numEdges + numVertices), VertexTag{ 0, 0 });
-  VertexTag* edgePoints = known.VertexTags.data() + numFacePoints;
-  for (Index e = 0; e < numEdges; ++e)
-  {
-    const EdgeTag tag = parent.GetEdgeTag(e);
-    edgePoints[e] = VertexTag{ tag.Boundary, tag.NonManifold };
-  }
-  VertexTag* vertexPoints = edgePoints + numEdges;
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    vertexPoints[v] = parent.GetVertexTag(v);
-  }
-  return known;
 }
 
 void InheritPrimalSharpness(const Level& parent, Level& child, Index firstEdgePoint, Index firstVertexPoint)

@@ -5,6 +5,7 @@
 
 #include "SubDCrease.h"
 #include "SubDMeshTopology.h"
+#include "SubDParallel.h"
 #include "SubDStencilTable.h"
 #include <algorithm>
 #include <vector>
@@ -186,18 +187,9 @@ void WritePrimalVertexRow(const MeshTopology& topo, const VertexRulePlan& plan, 
 }
 
 /// Sets the child's topology from its faces: faces only, or the full topology with smooth
-/// edge and vertex tags (primal splits then inherit sharpness, InheritPrimalSharpness); and
-/// its depth, one more than the parent's. A split that knows the child's adjacency passes
-/// it (`known`, used only for the full topology) to spare the searches.
+/// edge and vertex tags; and its depth, one more than the parent's.
 SUBDKERNEL_EXPORT void SetChildTopology(const Level& parent, Level& child, Index numPoints,
-  std::vector<Index> offsets, std::vector<Index> vertices, ChildTopology depth,
-  const KnownAdjacency* known = nullptr);
-
-/// The adjacency a primal split (quad or triangle split) knows of its child: the tags of the
-/// edge points (their edge's: boundary, non-manifold) and of the vertex points (their
-/// vertex's), new points inside faces being interior and manifold; the caller fills the
-/// corner keys.
-SUBDKERNEL_EXPORT KnownAdjacency PrimalChildTags(const MeshTopology& parent, Index numFacePoints);
+  std::vector<Index> offsets, std::vector<Index> vertices, ChildTopology depth);
 
 /// The edge key of the half of parent edge e that ends at its vertex v (0 .. 2E-1): keys
 /// that primal splits give the two halves of every parent edge.
@@ -209,20 +201,22 @@ inline Index HalfEdgeKey(const MeshTopology& parent, Index e, Index v)
 /// Gives the child faces of each parent face f, [firstChild(f), firstChild(f + 1)), the hole
 /// flag and origin of f. Shared by every split.
 template <typename FirstChild>
-void InheritFaceTags(const Level& parent, Level& child, FirstChild firstChild)
+void InheritFaceTags(const Level& parent, Level& child, FirstChild firstChild, const ParallelFor& parallelFor = SerialFor)
 {
   const Index numFaces = parent.Topology.GetNumFaces();
   const Index numChildFaces = firstChild(numFaces);
   child.FaceIsHole.resize(static_cast<size_t>(numChildFaces));
   child.FaceOrigin.resize(static_cast<size_t>(numChildFaces));
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    for (Index c = firstChild(f); c < firstChild(f + 1); ++c)
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
     {
-      child.FaceIsHole[c] = parent.FaceIsHole[f];
-      child.FaceOrigin[c] = parent.FaceOrigin[f];
+      for (Index c = firstChild(f); c < firstChild(f + 1); ++c)
+      {
+        child.FaceIsHole[c] = parent.FaceIsHole[f];
+        child.FaceOrigin[c] = parent.FaceOrigin[f];
+      }
     }
-  }
+  });
 }
 
 /// For primal splits (each edge gets an edge point, each vertex a vertex point): the two

@@ -27,6 +27,11 @@ LoopRowWriter::LoopRowWriter(const Level& parent)
   , Number{ parent.Topology.GetNumEdges() }
   , MaxRowSize(std::max<Index>(4, 1 + parent.Topology.GetMaxValence()))
 {
+  this->Betas.resize(64);
+  for (Index n = 1; n < 64; ++n)
+  {
+    this->Betas[n] = n == 6 ? 0.0625 : LoopBeta(n);
+  }
 }
 
 Index LoopRowWriter::WriteRow(Index row, Index* sources, double* weights) const
@@ -49,7 +54,7 @@ Index LoopRowWriter::WriteRow(Index row, Index* sources, double* weights) const
   WritePrimalVertexRow(topo, plan, v, 1 + edges.size(), sources, weights, [&](Index* src, double* wts) {
     const Index n = edges.size();
     src[0] = v;
-    const double beta = n == 6 ? 0.0625 : LoopBeta(n);
+    const double beta = this->Beta(n);
     wts[0] = 1.0 - n * beta;
     for (Index i = 0; i < n; ++i)
     {

@@ -40,13 +40,69 @@ public:
   std::vector<Index> GetBlockEnds() const { return { this->GetNumRows() }; }
   Index GetMaxRowSize() const { return this->MaxRowSize; }
   Index WriteRow(Index row, Index* sources, double* weights) const;
+  template <typename T>
+  bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
 
 private:
+  double Beta(Index n) const
+  {
+    return n < static_cast<Index>(this->Betas.size()) ? this->Betas[n] : LoopBeta(n);
+  }
+
   const Level& Parent;
   const MeshTopology& Topology;
   TriangleSplitNumbering Number;
   Index MaxRowSize;
+  std::vector<double> Betas; // Beta(n) for small valences (6: 1/16 exactly)
 };
+
+// Edge points of smooth edges; vertex points of vertices with nothing sharp at or around
+// them and a closed fan (PlanVertexRule's smooth case). Sources and weights in WriteRow's order.
+template <typename T>
+bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
+{
+  const MeshTopology& topo = this->Topology;
+  PointSum point;
+  const Index firstVertexPoint = this->Number.VertexPoint(0);
+  if (row < firstVertexPoint)
+  {
+    const Index e = row;
+    const IndexSpan ef = topo.GetEdgeFaces(e);
+    if (IsSharp(this->Parent.EdgeSharpness[e]) || ef.size() != 2)
+    {
+      return false;
+    }
+    const Index* ev = topo.GetEdgeVertices(e);
+    point.Add(0.375, parents + 3 * static_cast<size_t>(ev[0]));
+    point.Add(0.375, parents + 3 * static_cast<size_t>(ev[1]));
+    point.Add(0.125, parents + 3 * static_cast<size_t>(topo.GetTriangleOppositeVertex(ef[0], e)));
+    point.Add(0.125, parents + 3 * static_cast<size_t>(topo.GetTriangleOppositeVertex(ef[1], e)));
+    point.Store(dst);
+    return true;
+  }
+  const Index v = row - firstVertexPoint;
+  const IndexSpan edges = topo.GetVertexEdges(v);
+  const Index n = edges.size();
+  if (IsSharp(this->Parent.VertexSharpness[v]) || topo.GetVertexFaces(v).size() != n || n == 0)
+  {
+    return false;
+  }
+  for (Index e : edges)
+  {
+    if (IsSharp(this->Parent.EdgeSharpness[e]))
+    {
+      return false;
+    }
+  }
+  const double beta = this->Beta(n);
+  point.Add(1.0 - n * beta, parents + 3 * static_cast<size_t>(v));
+  for (Index e : edges)
+  {
+    point.Add(beta, parents + 3 * static_cast<size_t>(topo.GetOtherEndpoint(e, v)));
+  }
+  point.Store(dst);
+  return true;
+}
 }
 
 #endif

@@ -44,49 +44,6 @@ MeshTopology MeshTopology::Build(
   return topology;
 }
 
-MeshTopology MeshTopology::Build(Index numVertices, std::vector<Index> faceOffsets,
-  std::vector<Index> faceVertices, const KnownAdjacency& known)
-{
-  MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), std::move(faceVertices));
-  topology.BuildEdgesFromKeys(known.CornerEdgeKeys, known.NumEdgeKeys);
-  topology.BuildEdgeFaces();
-  topology.BuildVertexRelations();
-  topology.TagEdges();
-  topology.VertexTags = known.VertexTags;
-  topology.NumNonManifoldVertices = 0;
-  for (const VertexTag& tag : topology.VertexTags)
-  {
-    topology.NumNonManifoldVertices += tag.NonManifold;
-  }
-  return topology;
-}
-
-// The first corner met with a key gets the next edge number: the order BuildEdges gives.
-void MeshTopology::BuildEdgesFromKeys(const std::vector<Index>& cornerKeys, Index numKeys)
-{
-  const Index numFaces = this->GetNumFaces();
-  std::vector<Index> edgeOfKey(static_cast<size_t>(numKeys), InvalidIndex);
-  this->FaceEdges.resize(this->FaceVertices.size());
-  this->EdgeVertices.resize(2 * static_cast<size_t>(numKeys));
-  Index numEdges = 0;
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    const Index begin = this->FaceOffsets[f], end = this->FaceOffsets[f + 1];
-    for (Index h = begin; h < end; ++h)
-    {
-      Index& edge = edgeOfKey[cornerKeys[h]];
-      if (edge == InvalidIndex)
-      {
-        edge = numEdges++;
-        this->EdgeVertices[2 * static_cast<size_t>(edge)] = this->FaceVertices[h];
-        this->EdgeVertices[2 * static_cast<size_t>(edge) + 1] = this->FaceVertices[h + 1 < end ? h + 1 : begin];
-      }
-      this->FaceEdges[h] = edge;
-    }
-  }
-  this->EdgeVertices.resize(2 * static_cast<size_t>(numEdges));
-}
-
 // Edges are found by bucketing every half-edge under its lower vertex and sorting each
 // (small) bucket by the upper vertex: linear in the mesh size for bounded valence, and
 // O(k log k) for a vertex of valence k, so even a 100k-valent hub stays fast.

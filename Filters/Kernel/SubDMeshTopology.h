@@ -33,18 +33,6 @@ struct VertexTag
   std::uint8_t NonManifold : 1; ///< on a non-manifold edge, or faces form several fans
 };
 
-/// What a split knows about the mesh it makes, which spares MeshTopology::Build its searches:
-/// which face corners start the same edge, and every vertex's tags (a split preserves the
-/// fans around its parent's vertices, so it knows them without looking).
-struct KnownAdjacency
-{
-  /// One per face corner, in [0, NumEdgeKeys): equal for two corners exactly when the edges
-  /// leaving them (to the next corner) join the same two vertices.
-  std::vector<Index> CornerEdgeKeys;
-  Index NumEdgeKeys = 0;
-  std::vector<VertexTag> VertexTags; ///< one per vertex, as TagVertices would find them
-};
-
 class SUBDKERNEL_EXPORT MeshTopology
 {
 public:
@@ -55,12 +43,6 @@ public:
   /// `faceOffsets` has numFaces+1 entries, the last one equal to the size of `faceVertices`.
   static MeshTopology Build(Index numVertices, std::vector<Index> faceOffsets,
     std::vector<Index> faceVertices);
-
-  /// The same topology, numbered identically, built in linear time from what the caller
-  /// already knows (a split's child: SubDQuadSplit, SubDTriangleSplit) instead of sorting
-  /// vertex pairs and walking fans.
-  static MeshTopology Build(Index numVertices, std::vector<Index> faceOffsets,
-    std::vector<Index> faceVertices, const KnownAdjacency& known);
 
   Index GetNumVertices() const { return NumVertices; }
   Index GetNumFaces() const { return static_cast<Index>(FaceOffsets.size()) - 1; }
@@ -123,12 +105,14 @@ public:
   Index FindEdge(Index a, Index b) const;
 
 private:
+  // Splits that know their child's relations write them directly (SubDPrimalChildTopology).
+  friend struct PrimalChildAssembly;
+
   static IndexSpan Span(const std::vector<Index>& data, const std::vector<Index>& offsets, Index i)
   {
     return IndexSpan{ data.data() + offsets[i], offsets[i + 1] - offsets[i] };
   }
   void BuildEdges();
-  void BuildEdgesFromKeys(const std::vector<Index>& cornerKeys, Index numKeys);
   void BuildEdgeFaces();
   void BuildVertexRelations();
   void TagEdges();

@@ -1,9 +1,10 @@
 #include "SubDQuadSplit.h"
 #include "SubDCrease.h"
+#include "SubDPrimalChildTopology.h"
 
 namespace subd
 {
-Level SplitQuads(const Level& parent, ChildTopology depth)
+Level SplitQuads(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
@@ -14,54 +15,39 @@ Level SplitQuads(const Level& parent, ChildTopology depth)
 
   std::vector<Index> childOffsets(static_cast<size_t>(numCorners) + 1);
   std::vector<Index> childVertices(static_cast<size_t>(numCorners) * 4);
-  for (Index i = 0; i <= numCorners; ++i)
-  {
-    childOffsets[i] = 4 * i;
-  }
-  // Child edges, keyed for MeshTopology: the halves of parent edge e (HalfEdgeKey), then
-  // the edge from the edge point of corner c's leaving edge to the face point (2E + c).
-  const bool full = depth == ChildTopology::Full;
-  KnownAdjacency known;
-  if (full)
-  {
-    known = PrimalChildTags(topo, numFaces);
-    known.CornerEdgeKeys.resize(childVertices.size());
-    known.NumEdgeKeys = 2 * numEdges + numCorners;
-  }
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    const IndexSpan fv = topo.GetFaceVertices(f);
-    const IndexSpan fe = topo.GetFaceEdges(f);
-    const Index n = fv.size();
-    const Index firstCorner = topo.GetFaceOffset(f);
-    Index* out = childVertices.data() + 4 * static_cast<size_t>(firstCorner);
-    for (Index j = 0; j < n; ++j, out += 4)
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
     {
-      const Index previous = j == 0 ? n - 1 : j - 1;
-      out[0] = number.VertexPoint(fv[j]);
-      out[1] = number.EdgePoint(fe[j]);
-      out[2] = number.FacePoint(f);
-      out[3] = number.EdgePoint(fe[previous]);
-      if (full)
+      const IndexSpan fv = topo.GetFaceVertices(f);
+      const IndexSpan fe = topo.GetFaceEdges(f);
+      const Index n = fv.size();
+      const Index firstCorner = topo.GetFaceOffset(f);
+      Index* out = childVertices.data() + 4 * static_cast<size_t>(firstCorner);
+      for (Index j = 0; j < n; ++j, out += 4)
       {
-        Index* keys = known.CornerEdgeKeys.data() + (out - childVertices.data());
-        keys[0] = HalfEdgeKey(topo, fe[j], fv[j]);
-        keys[1] = 2 * numEdges + firstCorner + j;
-        keys[2] = 2 * numEdges + firstCorner + previous;
-        keys[3] = HalfEdgeKey(topo, fe[previous], fv[j]);
+        childOffsets[firstCorner + j] = 4 * (firstCorner + j);
+        out[0] = number.VertexPoint(fv[j]);
+        out[1] = number.EdgePoint(fe[j]);
+        out[2] = number.FacePoint(f);
+        out[3] = number.EdgePoint(fe[j == 0 ? n - 1 : j - 1]);
       }
     }
-  }
+  });
+  childOffsets[numCorners] = 4 * numCorners;
 
   Level child;
-  InheritFaceTags(parent, child, [&topo](Index f) { return topo.GetFaceOffset(f); });
+  InheritFaceTags(parent, child, [&topo](Index f) { return topo.GetFaceOffset(f); }, parallelFor);
   const Index numChildVertices = numFaces + numEdges + numVertices;
-  SetChildTopology(
-    parent, child, numChildVertices, std::move(childOffsets), std::move(childVertices), depth, &known);
-  if (depth == ChildTopology::Full)
+  if (depth == ChildTopology::FacesOnly)
   {
-    InheritPrimalSharpness(parent, child, number.EdgePoint(0), number.VertexPoint(0));
+    SetChildTopology(parent, child, numChildVertices, std::move(childOffsets), std::move(childVertices), depth);
+    return child;
   }
+  child.Depth = parent.Depth + 1;
+  child.Creasing = parent.Creasing;
+  child.Topology =
+    PrimalChildTopology::OfQuadSplit(topo, std::move(childOffsets), std::move(childVertices), parallelFor);
+  InheritPrimalSharpness(parent, child, number.EdgePoint(0), number.VertexPoint(0));
   return child;
 }
 }

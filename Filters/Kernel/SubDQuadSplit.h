@@ -18,7 +18,8 @@
 
 namespace subd
 {
-SUBDKERNEL_EXPORT Level SplitQuads(const Level& parent, ChildTopology depth);
+SUBDKERNEL_EXPORT Level SplitQuads(
+  const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
 
 /// Child point numbering of the quad split (see above).
 struct QuadSplitNumbering

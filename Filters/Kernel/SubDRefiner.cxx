@@ -2,14 +2,6 @@
 
 namespace subd
 {
-void SerialFor(Index begin, Index end, const RangeTask& task)
-{
-  if (begin < end)
-  {
-    task(begin, end);
-  }
-}
-
 bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   const ProgressCallback& progress, ChildTopology finest, LevelRows levelRows)
 {

@@ -6,6 +6,7 @@
 #ifndef SubDRefiner_h
 #define SubDRefiner_h
 
+#include "SubDParallel.h"
 #include "SubDScheme.h"
 
 #include <algorithm>
@@ -14,12 +15,6 @@
 
 namespace subd
 {
-/// Runs task(begin, end) over [begin, end), possibly split among threads. The kernel is
-/// thread-agnostic; the VTK layer passes a vtkSMPTools-backed implementation.
-using RangeTask = std::function<void(Index, Index)>;
-using ParallelFor = std::function<void(Index, Index, const RangeTask&)>;
-SUBDKERNEL_EXPORT void SerialFor(Index begin, Index end, const RangeTask& task);
-
 /// Reports progress in [0, 1]; returning false asks the work to stop.
 using ProgressCallback = std::function<bool(double)>;
 

@@ -7,6 +7,12 @@
 //   std::vector<Index> GetBlockEnds() const; // as StencilTable's blocks
 //   Index GetMaxRowSize() const;            // bound on any row's size
 //   Index WriteRow(Index row, Index* sources, double* weights) const; // returns the size
+//   template <typename T>                   // evaluates a point's row if it is smooth
+//   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+// ApplySmoothRow evaluates the rows the writer knows in closed form (most of a mesh: away
+// from creases and boundaries) without writing them, summing the same weighted points in
+// the same order as the written row, so that both give the same bits; it returns false for
+// the others.
 // Writing a row costs little next to reading its sources: its weights come from the
 // topology around the row's point, which is small and read in order. Applying rows as they
 // are written therefore spares storing the finest level's table, which is several times the
@@ -76,9 +82,13 @@ private:
     const Index numParents = this->RowWriter.GetNumParents();
     for (Index row = begin; row < end; ++row)
     {
+      T* dst = children + static_cast<size_t>(row) * components;
+      if (components == 3 && this->RowWriter.ApplySmoothRow(row, parents, children, dst))
+      {
+        continue;
+      }
       const Index size = this->RowWriter.WriteRow(row, sources.data(), weights.data());
-      ApplyRow(sources.data(), weights.data(), size, numParents, parents, children, components, sum.data(),
-        children + static_cast<size_t>(row) * components);
+      ApplyRow(sources.data(), weights.data(), size, numParents, parents, children, components, sum.data(), dst);
     }
   }
 

@@ -18,7 +18,7 @@ namespace subd
 {
 Level QuadSplitScheme::Split(const Level& parent, ChildTopology depth) const
 {
-  return SplitQuads(parent, depth);
+  return SplitQuads(parent, depth, this->GetParallelFor());
 }
 
 StencilTable CatmullClarkScheme::BuildStencils(const Level& parent) const
@@ -45,7 +45,7 @@ MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const
 
 Level TriangleSplitScheme::Split(const Level& parent, ChildTopology depth) const
 {
-  return SplitTriangles(parent, depth);
+  return SplitTriangles(parent, depth, this->GetParallelFor());
 }
 
 StencilTable LoopScheme::BuildStencils(const Level& parent) const

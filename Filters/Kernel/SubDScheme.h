@@ -7,6 +7,7 @@
 #define SubDScheme_h
 
 #include "SubDLevel.h"
+#include "SubDParallel.h"
 #include "SubDStencilTable.h"
 
 #include <memory>
@@ -28,6 +29,11 @@ public:
   virtual const char* GetName() const = 0;
   /// The next level's topology and tags (with FacesOnly: faces, holes and origins only).
   virtual Level Split(const Level& parent, ChildTopology depth) const = 0;
+  /// How the splits run their loops: SerialFor unless a caller with threads sets its own.
+  /// Splits that derive the child topology in closed form (the quad and triangle splits) use
+  /// it; results are the same for any number of threads.
+  void SetParallelFor(ParallelFor parallelFor) { this->Parallel = std::move(parallelFor); }
+  const ParallelFor& GetParallelFor() const { return this->Parallel; }
   /// The stencils of the next level's points, rows numbered like Split's child points.
   virtual StencilTable BuildStencils(const Level& parent) const = 0;
   /// Both at once (schemes whose split and stencils share work override it).
@@ -40,7 +46,7 @@ public:
   }
   /// The next level's stencils as rows written when they are applied (SubDRowWriting.h),
   /// which keep `parent` instead of storing the rows; nullptr (the default) for schemes
-  /// that only store their rows. Refine uses it for the finest level when asked.
+  /// that only store their rows. Refine uses it for every level when asked.
   virtual std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const
   {
     (void)parent;
@@ -70,6 +76,9 @@ public:
   {
     return this->UsesBoundaryRule() ? requested : BoundaryRule::EdgeOnly;
   }
+
+private:
+  ParallelFor Parallel = SerialFor;
 };
 
 /// Schemes on the quad split (SubDQuadSplit.h): any polygons in, quads out.

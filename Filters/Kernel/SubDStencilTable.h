@@ -140,6 +140,28 @@ struct SUBDKERNEL_EXPORT StencilRows
   StencilTable ToStencilTable(Index numParents) const;
 };
 
+/// A point (three values) summed in double as ApplyRow sums it: adding the same weighted
+/// points in the same order gives the same bits, which lets a row writer evaluate a row it
+/// knows in closed form without writing it (SubDRowWriting.h).
+struct PointSum
+{
+  double X = 0.0, Y = 0.0, Z = 0.0;
+  template <typename T>
+  void Add(double w, const T* p)
+  {
+    this->X += w * static_cast<double>(p[0]);
+    this->Y += w * static_cast<double>(p[1]);
+    this->Z += w * static_cast<double>(p[2]);
+  }
+  template <typename T>
+  void Store(T* dst) const
+  {
+    dst[0] = static_cast<T>(this->X);
+    dst[1] = static_cast<T>(this->Y);
+    dst[2] = static_cast<T>(this->Z);
+  }
+};
+
 /// Evaluates one row: dst = sum_k weights[k] * (value of sources[k]), a source below
 /// numParents naming a parent, one above a child (see StencilTable). `sum` is scratch for
 /// `components` doubles. Three components (points) take an unrolled path.
@@ -153,18 +175,12 @@ inline void ApplyRow(const Index* sources, const double* weights, Index size, In
   };
   if (components == 3)
   {
-    double x = 0.0, y = 0.0, z = 0.0;
+    PointSum point;
     for (Index k = 0; k < size; ++k)
     {
-      const T* src = valuesOf(sources[k]);
-      const double w = weights[k];
-      x += w * static_cast<double>(src[0]);
-      y += w * static_cast<double>(src[1]);
-      z += w * static_cast<double>(src[2]);
+      point.Add(weights[k], valuesOf(sources[k]));
     }
-    dst[0] = static_cast<T>(x);
-    dst[1] = static_cast<T>(y);
-    dst[2] = static_cast<T>(z);
+    point.Store(dst);
     return;
   }
   for (int c = 0; c < components; ++c)

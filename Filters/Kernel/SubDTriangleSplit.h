@@ -17,7 +17,8 @@
 namespace subd
 {
 /// Requires every face of `parent` to be a triangle.
-SUBDKERNEL_EXPORT Level SplitTriangles(const Level& parent, ChildTopology depth);
+SUBDKERNEL_EXPORT Level SplitTriangles(
+  const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
 
 /// Child point numbering of the triangle split (see above).
 struct TriangleSplitNumbering

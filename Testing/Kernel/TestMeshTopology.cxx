@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <thread>
+
 using subd::Index;
 using subd::MeshTopology;
 
@@ -122,8 +125,8 @@ bool SameSpan(subd::IndexSpan a, subd::IndexSpan b)
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin());
 }
 
-// Every relation and tag of `known` (a split's child, built from its KnownAdjacency) equals
-// that of `searched` (the same faces through the general builder).
+// Every relation and tag of `known` (a split's child, derived from its parent) equals that
+// of `searched` (the same faces through the general builder).
 void ExpectSameTopology(const MeshTopology& known, const MeshTopology& searched, const std::string& what)
 {
   SCOPED_TRACE(what);
@@ -156,20 +159,43 @@ void ExpectSameTopology(const MeshTopology& known, const MeshTopology& searched,
   }
 }
 
-// Splits `mesh` twice with `split` and checks each child's known-adjacency topology against
-// the general builder on the same faces.
+// A ParallelFor on three threads, each taking ranges of two items in turn: results must not
+// depend on how a loop is split.
+void ThreeThreadFor(Index begin, Index end, const subd::RangeTask& task)
+{
+  std::vector<std::thread> threads;
+  for (Index t = 0; t < 3; ++t)
+  {
+    threads.emplace_back([=, &task]() {
+      for (Index b = begin + 2 * t; b < end; b += 6)
+      {
+        task(b, std::min(end, b + 2));
+      }
+    });
+  }
+  for (std::thread& thread : threads)
+  {
+    thread.join();
+  }
+}
+
+// Splits `mesh` twice with `split`, serially and on threads, and checks each child's
+// topology, derived from its parent, against the general builder on the same faces.
 template <typename Split>
 void ExpectSplitKnowsItsChild(const subdtest::TestMesh& mesh, Split split, const std::string& what)
 {
-  subd::Level level = subdtest::BaseLevel(mesh);
-  for (int l = 1; l <= 2; ++l)
+  for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(ThreeThreadFor) })
   {
-    subd::Level child = split(level, subd::ChildTopology::Full);
-    const MeshTopology& t = child.Topology;
-    const MeshTopology searched =
-      MeshTopology::Build(t.GetNumVertices(), t.GetFaceOffsetArray(), t.GetFaceVertexArray());
-    ExpectSameTopology(t, searched, what + " level " + std::to_string(l));
-    level = std::move(child);
+    subd::Level level = subdtest::BaseLevel(mesh);
+    for (int l = 1; l <= 2; ++l)
+    {
+      subd::Level child = split(level, subd::ChildTopology::Full, parallelFor);
+      const MeshTopology& t = child.Topology;
+      const MeshTopology searched =
+        MeshTopology::Build(t.GetNumVertices(), t.GetFaceOffsetArray(), t.GetFaceVertexArray());
+      ExpectSameTopology(t, searched, what + " level " + std::to_string(l));
+      level = std::move(child);
+    }
   }
 }
 

@@ -1,0 +1,28 @@
+// SubD kernel: how the kernel runs its loops in parallel without depending on a threading
+// library. Loops are written as tasks over index ranges; the caller supplies the ParallelFor
+// that splits a range among threads (the VTK layer passes one backed by vtkSMPTools).
+// Every parallel loop of the kernel writes disjoint outputs, so results do not depend on
+// the number of threads.
+#ifndef SubDParallel_h
+#define SubDParallel_h
+
+#include "SubDTypes.h"
+#include <functional>
+
+namespace subd
+{
+/// Runs task(begin, end) over [begin, end), possibly split among threads.
+using RangeTask = std::function<void(Index, Index)>;
+using ParallelFor = std::function<void(Index, Index, const RangeTask&)>;
+
+/// The ParallelFor of a single thread: runs the whole range at once.
+inline void SerialFor(Index begin, Index end, const RangeTask& task)
+{
+  if (begin < end)
+  {
+    task(begin, end);
+  }
+}
+}
+
+#endif
