@@ -1,8 +1,10 @@
 #include "SubDButterflyRules.h"
+#include "SubDRowWriting.h"
 #include "SubDTriangleSplit.h"
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 
 namespace subd
 {
@@ -21,91 +23,122 @@ double ButterflyExtraordinaryWeight(Index K, Index j)
   return (0.25 + std::cos(2.0 * pi * j / K) + 0.5 * std::cos(4.0 * pi * j / K)) / K;
 }
 
-namespace
+StencilTable BuildButterflyStencils(const Level& parent, double tension, const ParallelFor& parallelFor)
 {
-// A stencil row under construction: weights accumulated per source.
-class RowBuilder
-{
-public:
-  void Add(Index source, double weight)
-  {
-    for (auto& entry : this->Entries)
-    {
-      if (entry.first == source)
-      {
-        entry.second += weight;
-        return;
-      }
-    }
-    this->Entries.emplace_back(source, weight);
-  }
-  void Scale(double factor)
-  {
-    for (auto& entry : this->Entries)
-    {
-      entry.second *= factor;
-    }
-  }
-  std::vector<std::pair<Index, double>> Entries;
-};
+  const MeshTopology& topo = parent.Topology;
+  // Regular edge rows have 10 entries.
+  const size_t expected = 10 * static_cast<size_t>(topo.GetNumEdges()) + static_cast<size_t>(topo.GetNumVertices());
+  return WriteStencilTable(ButterflyRowWriter(parent, tension, parallelFor), expected);
+}
 
-// Rings of the vertices that take the butterfly's interior rules: manifold, not on the
-// boundary, and on no crease (fewer than two sharp edges: a dart keeps its ring).
-// Neighbours in counter-clockwise order.
-class Rings
+void ButterflyRowWriter::Row::Add(Index source, double weight)
 {
-public:
-  explicit Rings(const Level& level)
-    : Offsets(static_cast<size_t>(level.Topology.GetNumVertices()) + 1, 0)
+  for (Index k = 0; k < this->Size; ++k)
   {
-    const MeshTopology& topo = level.Topology;
-    std::vector<Index> faces, corners;
-    for (Index v = 0; v < topo.GetNumVertices(); ++v)
+    if (this->Sources[k] == source)
     {
-      if (!topo.GetVertexTag(v).Boundary && level.GetNumSharpEdges(v) < 2 &&
-        topo.GetOrderedVertexFaces(v, faces, corners))
-      {
-        for (size_t i = 0; i < faces.size(); ++i)
-        {
-          this->Neighbours.push_back(topo.GetFaceVertices(faces[i])[(corners[i] + 1) % 3]);
-        }
-      }
-      this->Offsets[v + 1] = static_cast<Index>(this->Neighbours.size());
+      this->Weights[k] += weight;
+      return;
     }
   }
-  bool Has(Index v) const { return this->Offsets[v + 1] > this->Offsets[v]; }
-  Index Valence(Index v) const { return this->Offsets[v + 1] - this->Offsets[v]; }
-  /// Neighbour j of v counted from `first` (which must be a neighbour).
-  Index From(Index v, Index first, Index j) const
-  {
-    const Index* ring = this->Neighbours.data() + this->Offsets[v];
-    const Index K = this->Valence(v);
-    Index start = 0;
-    while (start < K && ring[start] != first)
-    {
-      ++start;
-    }
-    return ring[(start + j) % K];
-  }
+  this->Sources[this->Size] = source;
+  this->Weights[this->Size] = weight;
+  ++this->Size;
+}
 
-private:
-  std::vector<Index> Offsets;
-  std::vector<Index> Neighbours;
-};
+ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, const ParallelFor& parallelFor)
+  : Parent(parent)
+  , Topology(parent.Topology)
+  , Tension(tension)
+{
+  const Index numVertices = this->Topology.GetNumVertices();
+  this->RingOffsets.assign(static_cast<size_t>(numVertices) + 1, 0);
+  parallelFor(0, numVertices, [this](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v)
+    {
+      this->RingOffsets[v + 1] = this->WalkRing(v, nullptr);
+    }
+  });
+  std::partial_sum(this->RingOffsets.begin(), this->RingOffsets.end(), this->RingOffsets.begin());
+  this->RingNeighbours.resize(static_cast<size_t>(this->RingOffsets.back()));
+  parallelFor(0, numVertices, [this](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v)
+    {
+      this->WalkRing(v, this->RingNeighbours.data() + this->RingOffsets[v]);
+    }
+  });
+  // A row holds at most the crease rule's 4 sources and the smooth rule's: 10 for the
+  // butterfly, K + 1 for each extraordinary end.
+  this->RowBound = std::max<Index>(16, 6 + 2 * this->Topology.GetMaxValence());
+  this->ExtraordinaryWeights.resize(32);
+  for (Index K = 3; K < 32; ++K)
+  {
+    for (Index j = 0; j < K; ++j)
+    {
+      this->ExtraordinaryWeights[K].push_back(ButterflyExtraordinaryWeight(K, j));
+    }
+  }
+}
+
+double ButterflyRowWriter::ExtraordinaryWeight(Index K, Index j) const
+{
+  return K < static_cast<Index>(this->ExtraordinaryWeights.size()) ? this->ExtraordinaryWeights[K][j]
+                                                                   : ButterflyExtraordinaryWeight(K, j);
+}
+
+// Walks the faces around v counter-clockwise (each next face across the edge entering v in
+// the previous one), writing the neighbour after v in each face when `neighbours` is given.
+// Returns the valence, or 0 when v takes no interior rule.
+Index ButterflyRowWriter::WalkRing(Index v, Index* neighbours) const
+{
+  const MeshTopology& topo = this->Topology;
+  const VertexTag tag = topo.GetVertexTag(v);
+  const IndexSpan faces = topo.GetVertexFaces(v);
+  if (tag.Boundary || tag.NonManifold || faces.empty() || this->Parent.GetNumSharpEdges(v) >= 2)
+  {
+    return 0;
+  }
+  Index face = faces[0];
+  Index corner = topo.GetVertexFaceCorners(v)[0];
+  for (Index step = 0; step < faces.size(); ++step)
+  {
+    const IndexSpan fv = topo.GetFaceVertices(face);
+    if (neighbours)
+    {
+      neighbours[step] = fv[corner == 2 ? 0 : corner + 1];
+    }
+    const IndexSpan across = topo.GetEdgeFaces(topo.GetFaceEdges(face)[corner == 0 ? 2 : corner - 1]);
+    face = across[0] == face ? across[1] : across[0];
+    const IndexSpan next = topo.GetFaceVertices(face);
+    corner = next[0] == v ? 0 : (next[1] == v ? 1 : 2);
+  }
+  return faces.size();
+}
+
+Index ButterflyRowWriter::RingFrom(Index v, Index first, Index j) const
+{
+  const Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
+  const Index K = this->RingValence(v);
+  Index start = 0;
+  while (start < K && ring[start] != first)
+  {
+    ++start;
+  }
+  return ring[(start + j) % K];
+}
 
 // The neighbour of v along its crease other than `other`, when v has exactly two sharp
 // edges (boundary edges are sharp), or InvalidIndex.
-Index OtherCreaseNeighbour(const Level& level, Index v, Index other)
+Index ButterflyRowWriter::OtherCreaseNeighbour(Index v, Index other) const
 {
-  const MeshTopology& topo = level.Topology;
   Index found = InvalidIndex;
   Index count = 0;
-  for (Index e : topo.GetVertexEdges(v))
+  for (Index e : this->Topology.GetVertexEdges(v))
   {
-    if (IsSharp(level.EdgeSharpness[e]))
+    if (IsSharp(this->Parent.EdgeSharpness[e]))
     {
       ++count;
-      const Index w = topo.GetOtherEndpoint(e, v);
+      const Index w = this->Topology.GetOtherEndpoint(e, v);
       if (w != other)
       {
         found = w;
@@ -115,15 +148,23 @@ Index OtherCreaseNeighbour(const Level& level, Index v, Index other)
   return count == 2 ? found : InvalidIndex;
 }
 
-// The vertex across edge (x, b) from the triangle (x, b, y), or its parallelogram
+// The vertex across edge (x, b) of triangle `face` = (x, b, y), or its parallelogram
 // completion x + b - y when the edge has no second face or is a crease (the other side of
 // a crease is as good as missing).
-void AddWing(const Level& level, Index x, Index b, Index y, double weight, RowBuilder& row)
+void ButterflyRowWriter::AddWing(Index x, Index b, Index y, Index face, double weight, Row& row) const
 {
-  const MeshTopology& topo = level.Topology;
-  const Index e = topo.FindEdge(x, b);
+  const MeshTopology& topo = this->Topology;
+  Index e = InvalidIndex;
+  for (Index candidate : topo.GetFaceEdges(face))
+  {
+    const Index* ev = topo.GetEdgeVertices(candidate);
+    if ((ev[0] == x && ev[1] == b) || (ev[0] == b && ev[1] == x))
+    {
+      e = candidate;
+    }
+  }
   const IndexSpan ef = topo.GetEdgeFaces(e);
-  if (ef.size() == 2 && !topo.GetEdgeTag(e).NonManifold && !IsSharp(level.EdgeSharpness[e]))
+  if (ef.size() == 2 && !topo.GetEdgeTag(e).NonManifold && !IsSharp(this->Parent.EdgeSharpness[e]))
   {
     for (Index f : ef)
     {
@@ -140,15 +181,15 @@ void AddWing(const Level& level, Index x, Index b, Index y, double weight, RowBu
   row.Add(y, -weight);
 }
 
-void AddTip(const Rings& rings, Index x, Index y, double weight, RowBuilder& row)
+void ButterflyRowWriter::AddTip(Index x, Index y, double weight, Row& row) const
 {
   if (weight == 0.0)
   {
     return;
   }
-  if (rings.Has(x) && rings.Valence(x) == 6)
+  if (this->HasRing(x) && this->RingValence(x) == 6)
   {
-    row.Add(rings.From(x, y, 3), weight);
+    row.Add(this->RingFrom(x, y, 3), weight);
     return;
   }
   row.Add(x, 2.0 * weight); // reflection of y through x
@@ -157,10 +198,10 @@ void AddTip(const Rings& rings, Index x, Index y, double weight, RowBuilder& row
 
 // The crease rule of edge e: the 4-point rule along the crease (or boundary) when both
 // ends continue it, else the midpoint.
-void AddCreaseRule(const Level& level, Index e, double scale, RowBuilder& row)
+void ButterflyRowWriter::AddCreaseRule(Index e, double scale, Row& row) const
 {
-  const Index a0 = level.Topology.GetEdgeVertices(e)[0], a1 = level.Topology.GetEdgeVertices(e)[1];
-  const Index p = OtherCreaseNeighbour(level, a0, a1), q = OtherCreaseNeighbour(level, a1, a0);
+  const Index a0 = this->Topology.GetEdgeVertices(e)[0], a1 = this->Topology.GetEdgeVertices(e)[1];
+  const Index p = this->OtherCreaseNeighbour(a0, a1), q = this->OtherCreaseNeighbour(a1, a0);
   if (p != InvalidIndex && q != InvalidIndex)
   {
     row.Add(a0, scale * 9.0 / 16.0);
@@ -175,114 +216,86 @@ void AddCreaseRule(const Level& level, Index e, double scale, RowBuilder& row)
 
 // The smooth rule of an edge with two triangles: the (10-point) butterfly, or the
 // extraordinary-vertex stencils.
-void AddSmoothRule(const Level& level, const Rings& rings, Index e, double w, double scale, RowBuilder& row)
+void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
 {
-  const MeshTopology& topo = level.Topology;
+  const MeshTopology& topo = this->Topology;
+  const double w = this->Tension;
   const Index a0 = topo.GetEdgeVertices(e)[0], a1 = topo.GetEdgeVertices(e)[1];
   const IndexSpan ef = topo.GetEdgeFaces(e);
-  const bool ring0 = rings.Has(a0), ring1 = rings.Has(a1);
-  const bool regular0 = ring0 && rings.Valence(a0) == 6, regular1 = ring1 && rings.Valence(a1) == 6;
+  const bool ring0 = this->HasRing(a0), ring1 = this->HasRing(a1);
+  const bool regular0 = ring0 && this->RingValence(a0) == 6, regular1 = ring1 && this->RingValence(a1) == 6;
   const bool butterfly = (regular0 && regular1) || (!ring0 && regular1) || (!ring1 && regular0) || (!ring0 && !ring1);
-  RowBuilder smooth;
   if (butterfly)
   {
-    const Index b0 = topo.GetTriangleOppositeVertex(ef[0], e);
-    const Index b1 = topo.GetTriangleOppositeVertex(ef[1], e);
+    const Index b[2] = { topo.GetTriangleOppositeVertex(ef[0], e), topo.GetTriangleOppositeVertex(ef[1], e) };
     smooth.Add(a0, 0.5 - w);
     smooth.Add(a1, 0.5 - w);
-    smooth.Add(b0, 0.125 + 2.0 * w);
-    smooth.Add(b1, 0.125 + 2.0 * w);
-    for (Index b : { b0, b1 })
+    smooth.Add(b[0], 0.125 + 2.0 * w);
+    smooth.Add(b[1], 0.125 + 2.0 * w);
+    for (int side = 0; side < 2; ++side)
     {
-      AddWing(level, a0, b, a1, -0.0625 - w, smooth);
-      AddWing(level, a1, b, a0, -0.0625 - w, smooth);
+      this->AddWing(a0, b[side], a1, ef[side], -0.0625 - w, smooth);
+      this->AddWing(a1, b[side], a0, ef[side], -0.0625 - w, smooth);
     }
-    AddTip(rings, a0, a1, w, smooth);
-    AddTip(rings, a1, a0, w, smooth);
+    this->AddTip(a0, a1, w, smooth);
+    this->AddTip(a1, a0, w, smooth);
+    return;
   }
-  else
+  int ends = 0;
+  for (const auto& end : { std::make_pair(a0, a1), std::make_pair(a1, a0) })
   {
-    int ends = 0;
-    for (const auto& end : { std::make_pair(a0, a1), std::make_pair(a1, a0) })
+    const Index v = end.first;
+    if (!this->HasRing(v) || this->RingValence(v) == 6)
     {
-      const Index v = end.first;
-      if (!rings.Has(v) || rings.Valence(v) == 6)
-      {
-        continue;
-      }
-      const Index K = rings.Valence(v);
-      double sum = 0.0;
-      for (Index j = 0; j < K; ++j)
-      {
-        const double s = ButterflyExtraordinaryWeight(K, j);
-        smooth.Add(rings.From(v, end.second, j), s);
-        sum += s;
-      }
-      smooth.Add(v, 1.0 - sum);
-      ++ends;
+      continue;
     }
-    smooth.Scale(1.0 / ends);
+    const Index K = this->RingValence(v);
+    double sum = 0.0;
+    for (Index j = 0; j < K; ++j)
+    {
+      const double s = this->ExtraordinaryWeight(K, j);
+      smooth.Add(this->RingFrom(v, end.second, j), s);
+      sum += s;
+    }
+    smooth.Add(v, 1.0 - sum);
+    ++ends;
   }
-  for (const auto& entry : smooth.Entries)
+  const double scale = 1.0 / ends;
+  for (Index k = 0; k < smooth.Size; ++k)
   {
-    row.Add(entry.first, scale * entry.second);
+    smooth.Weights[k] *= scale;
   }
-}
 }
 
-StencilTable BuildButterflyStencils(const Level& parent, double tension)
+Index ButterflyRowWriter::WriteRow(Index row, Index* sources, double* weights) const
 {
-  const MeshTopology& topo = parent.Topology;
+  const MeshTopology& topo = this->Topology;
   const Index numEdges = topo.GetNumEdges();
-  const Index numVertices = topo.GetNumVertices();
-  const TriangleSplitNumbering number{ numEdges };
-  const Rings rings(parent);
-
-  std::vector<RowBuilder> rows(static_cast<size_t>(numEdges));
-  for (Index e = 0; e < numEdges; ++e)
+  if (row >= numEdges)
   {
-    RowBuilder& row = rows[e];
-    const bool twoFaces = topo.GetEdgeFaces(e).size() == 2 && !topo.GetEdgeTag(e).NonManifold;
-    // Sharpness s >= 1 (boundaries, non-manifold edges: infinite) takes the crease rule;
-    // a semi-sharp edge below 1 mixes s of it with 1 - s of the smooth rule.
-    const double crease = twoFaces ? std::min(1.0, static_cast<double>(parent.EdgeSharpness[e])) : 1.0;
-    if (crease > 0.0)
-    {
-      AddCreaseRule(parent, e, crease, row);
-    }
-    if (crease < 1.0)
-    {
-      AddSmoothRule(parent, rings, e, tension, 1.0 - crease, row);
-    }
+    sources[0] = row - numEdges;
+    weights[0] = 1.0;
+    return 1;
   }
-
-  StencilTable table(numVertices);
-  table.ReserveRows(numEdges + numVertices);
-  for (Index e = 0; e < numEdges; ++e)
+  const Index e = row;
+  Row out{ sources, weights };
+  const bool twoFaces = topo.GetEdgeFaces(e).size() == 2 && !topo.GetEdgeTag(e).NonManifold;
+  // Sharpness s >= 1 (boundaries, non-manifold edges: infinite) takes the crease rule;
+  // a semi-sharp edge below 1 mixes s of it with 1 - s of the smooth rule.
+  const double crease = twoFaces ? std::min(1.0, static_cast<double>(this->Parent.EdgeSharpness[e])) : 1.0;
+  if (crease > 0.0)
   {
-    table.SetRowSize(number.EdgePoint(e), static_cast<Index>(rows[e].Entries.size()));
+    this->AddCreaseRule(e, crease, out);
   }
-  for (Index v = 0; v < numVertices; ++v)
+  if (crease < 1.0)
   {
-    table.SetRowSize(number.VertexPoint(v), 1);
-  }
-  table.FinalizeSizes();
-  for (Index e = 0; e < numEdges; ++e)
-  {
-    Index* src = table.GetMutableSources(number.EdgePoint(e));
-    double* wts = table.GetMutableWeights(number.EdgePoint(e));
-    for (const auto& entry : rows[e].Entries)
+    Row smooth{ sources + this->RowBound, weights + this->RowBound };
+    this->AddSmoothRule(e, smooth);
+    for (Index k = 0; k < smooth.Size; ++k)
     {
-      *src++ = entry.first;
-      *wts++ = entry.second;
+      out.Add(smooth.Sources[k], (1.0 - crease) * smooth.Weights[k]);
     }
   }
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    *table.GetMutableSources(number.VertexPoint(v)) = v;
-    *table.GetMutableWeights(number.VertexPoint(v)) = 1.0;
-  }
-  table.EndBlock(numEdges + numVertices);
-  return table;
+  return out.Size;
 }
 }

@@ -32,7 +32,10 @@
 #define SubDButterflyRules_h
 
 #include "SubDLevel.h"
+#include "SubDParallel.h"
 #include "SubDStencilTable.h"
+
+#include <vector>
 
 namespace subd
 {
@@ -41,7 +44,72 @@ namespace subd
 SUBDKERNEL_EXPORT double ButterflyExtraordinaryWeight(Index K, Index j);
 
 /// Requires every face of `parent` to be a triangle.
-SUBDKERNEL_EXPORT StencilTable BuildButterflyStencils(const Level& parent, double tension);
+SUBDKERNEL_EXPORT StencilTable BuildButterflyStencils(
+  const Level& parent, double tension, const ParallelFor& parallelFor = SerialFor);
+
+/// The same rows written one at a time (SubDRowWriting.h), rows numbered like the triangle
+/// split's child points: edge points, then the vertex points (copies). The rings of the
+/// vertices that have one are found once, in parallel, when the writer is made.
+class SUBDKERNEL_EXPORT ButterflyRowWriter
+{
+public:
+  ButterflyRowWriter(const Level& parent, double tension, const ParallelFor& parallelFor);
+  Index GetNumParents() const { return this->Topology.GetNumVertices(); }
+  Index GetNumRows() const { return this->Topology.GetNumEdges() + this->Topology.GetNumVertices(); }
+  std::vector<Index> GetBlockEnds() const { return { this->GetNumRows() }; }
+  /// Twice the longest row: WriteRow builds the smooth rule in the second half of its
+  /// buffers before blending it into the row.
+  Index GetMaxRowSize() const { return 2 * this->RowBound; }
+  Index WriteRow(Index row, Index* sources, double* weights) const;
+  /// Vertex points (copies of the parent's vertices); edge points are written.
+  template <typename T>
+  bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+
+  /// A row under construction in caller storage: weights accumulated per source.
+  struct Row
+  {
+    Index* Sources;
+    double* Weights;
+    Index Size = 0;
+    void Add(Index source, double weight);
+  };
+
+private:
+  bool HasRing(Index v) const { return this->RingOffsets[v + 1] > this->RingOffsets[v]; }
+  Index RingValence(Index v) const { return this->RingOffsets[v + 1] - this->RingOffsets[v]; }
+  Index RingFrom(Index v, Index first, Index j) const;
+  Index WalkRing(Index v, Index* neighbours) const;
+  Index OtherCreaseNeighbour(Index v, Index other) const;
+  void AddCreaseRule(Index e, double scale, Row& row) const;
+  void AddSmoothRule(Index e, Row& row) const;
+  void AddWing(Index x, Index b, Index y, Index face, double weight, Row& row) const;
+  void AddTip(Index x, Index y, double weight, Row& row) const;
+  double ExtraordinaryWeight(Index K, Index j) const;
+
+  const Level& Parent;
+  const MeshTopology& Topology;
+  double Tension;
+  Index RowBound = 16;
+  // Counter-clockwise neighbours of the vertices that take the interior rules: manifold,
+  // not on the boundary, on no crease (fewer than two sharp edges: a dart keeps its ring).
+  std::vector<Index> RingOffsets;
+  std::vector<Index> RingNeighbours;
+  std::vector<std::vector<double>> ExtraordinaryWeights; // [K][j] for small K
+};
+
+template <typename T>
+bool ButterflyRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
+{
+  const Index numEdges = this->Topology.GetNumEdges();
+  if (row < numEdges)
+  {
+    return false;
+  }
+  PointSum point;
+  point.Add(1.0, parents + 3 * static_cast<size_t>(row - numEdges));
+  point.Store(dst);
+  return true;
+}
 }
 
 #endif

@@ -55,9 +55,11 @@ template <typename Writer>
 class WrittenRows final : public RowSource
 {
 public:
-  explicit WrittenRows(std::shared_ptr<const Level> parent)
+  /// `writerOptions` follow the parent level in the Writer's constructor.
+  template <typename... WriterOptions>
+  explicit WrittenRows(std::shared_ptr<const Level> parent, WriterOptions... writerOptions)
     : Parent(std::move(parent))
-    , RowWriter(*this->Parent)
+    , RowWriter(*this->Parent, writerOptions...)
   {
   }
   Index GetNumParents() const override { return this->RowWriter.GetNumParents(); }

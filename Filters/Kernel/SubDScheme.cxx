@@ -53,6 +53,21 @@ StencilTable LoopScheme::BuildStencils(const Level& parent) const
   return BuildLoopStencils(parent);
 }
 
+std::shared_ptr<const RowSource> LinearTriangleScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
+{
+  return std::make_shared<WrittenRows<LinearRowWriter>>(std::move(parent), false);
+}
+
+std::shared_ptr<const RowSource> BilinearScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
+{
+  return std::make_shared<WrittenRows<LinearRowWriter>>(std::move(parent), true);
+}
+
+std::shared_ptr<const RowSource> ButterflyScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
+{
+  return std::make_shared<WrittenRows<ButterflyRowWriter>>(std::move(parent), this->Tension, this->GetParallelFor());
+}
+
 std::shared_ptr<const RowSource> LoopScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
 {
   return std::make_shared<WrittenRows<LoopRowWriter>>(std::move(parent));
@@ -134,7 +149,7 @@ MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
 
 StencilTable ButterflyScheme::BuildStencils(const Level& parent) const
 {
-  return BuildButterflyStencils(parent, this->Tension);
+  return BuildButterflyStencils(parent, this->Tension, this->GetParallelFor());
 }
 
 LevelRefinement Sqrt3Scheme::RefineLevel(const Level& parent, ChildTopology depth) const

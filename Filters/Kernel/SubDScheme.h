@@ -113,6 +113,7 @@ class SUBDKERNEL_EXPORT BilinearScheme : public QuadSplitScheme
 public:
   const char* GetName() const override { return "bilinear"; }
   StencilTable BuildStencils(const Level& parent) const override;
+  std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   /// Interpolating: the identity (SubDLimitRules.h).
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
   bool UsesBoundaryRule() const override { return false; }
@@ -134,6 +135,7 @@ class SUBDKERNEL_EXPORT LinearTriangleScheme : public TriangleSplitScheme
 public:
   const char* GetName() const override { return "linear-triangles"; }
   StencilTable BuildStencils(const Level& parent) const override;
+  std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   /// Interpolating: the identity (SubDLimitRules.h).
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
   bool UsesBoundaryRule() const override { return false; }
@@ -164,6 +166,7 @@ public:
   }
   const char* GetName() const override { return "butterfly"; }
   StencilTable BuildStencils(const Level& parent) const override;
+  std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   /// Interpolating: the identity (SubDLimitRules.h).
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
   bool UsesBoundaryRule() const override { return false; }
