@@ -31,6 +31,16 @@ StencilTable BuildButterflyStencils(const Level& parent, double tension, const P
   return WriteStencilTable(ButterflyRowWriter(parent, tension, parallelFor), expected);
 }
 
+namespace
+{
+// The corner of triangle f that is neither x nor y (reads the face's vertices only).
+Index ThirdVertex(const MeshTopology& topo, Index f, Index x, Index y)
+{
+  const IndexSpan fv = topo.GetFaceVertices(f);
+  return fv[0] != x && fv[0] != y ? fv[0] : (fv[1] != x && fv[1] != y ? fv[1] : fv[2]);
+}
+}
+
 void ButterflyRowWriter::Row::Add(Index source, double weight)
 {
   for (Index k = 0; k < this->Size; ++k)
@@ -56,7 +66,7 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
   parallelFor(0, numVertices, [this](Index begin, Index end) {
     for (Index v = begin; v < end; ++v)
     {
-      this->RingOffsets[v + 1] = this->WalkRing(v, nullptr);
+      this->RingOffsets[v + 1] = this->HasInteriorRule(v) ? this->Topology.GetVertexFaces(v).size() : 0;
     }
   });
   std::partial_sum(this->RingOffsets.begin(), this->RingOffsets.end(), this->RingOffsets.begin());
@@ -86,33 +96,35 @@ double ButterflyRowWriter::ExtraordinaryWeight(Index K, Index j) const
                                                                    : ButterflyExtraordinaryWeight(K, j);
 }
 
+// Manifold, not on the boundary, not isolated, on no crease: then v's faces form one closed fan.
+bool ButterflyRowWriter::HasInteriorRule(Index v) const
+{
+  const VertexTag tag = this->Topology.GetVertexTag(v);
+  return !tag.Boundary && !tag.NonManifold && !this->Topology.GetVertexFaces(v).empty() &&
+    this->Parent.GetNumSharpEdges(v) < 2;
+}
+
 // Walks the faces around v counter-clockwise (each next face across the edge entering v in
-// the previous one), writing the neighbour after v in each face when `neighbours` is given.
-// Returns the valence, or 0 when v takes no interior rule.
-Index ButterflyRowWriter::WalkRing(Index v, Index* neighbours) const
+// the previous one), writing the neighbour after v in each face.
+void ButterflyRowWriter::WalkRing(Index v, Index* neighbours) const
 {
   const MeshTopology& topo = this->Topology;
-  const VertexTag tag = topo.GetVertexTag(v);
   const IndexSpan faces = topo.GetVertexFaces(v);
-  if (tag.Boundary || tag.NonManifold || faces.empty() || this->Parent.GetNumSharpEdges(v) >= 2)
+  if (!this->HasRing(v))
   {
-    return 0;
+    return;
   }
   Index face = faces[0];
   Index corner = topo.GetVertexFaceCorners(v)[0];
   for (Index step = 0; step < faces.size(); ++step)
   {
     const IndexSpan fv = topo.GetFaceVertices(face);
-    if (neighbours)
-    {
-      neighbours[step] = fv[corner == 2 ? 0 : corner + 1];
-    }
+    neighbours[step] = fv[corner == 2 ? 0 : corner + 1];
     const IndexSpan across = topo.GetEdgeFaces(topo.GetFaceEdges(face)[corner == 0 ? 2 : corner - 1]);
     face = across[0] == face ? across[1] : across[0];
     const IndexSpan next = topo.GetFaceVertices(face);
     corner = next[0] == v ? 0 : (next[1] == v ? 1 : 2);
   }
-  return faces.size();
 }
 
 Index ButterflyRowWriter::RingFrom(Index v, Index first, Index j) const
@@ -154,26 +166,19 @@ Index ButterflyRowWriter::OtherCreaseNeighbour(Index v, Index other) const
 void ButterflyRowWriter::AddWing(Index x, Index b, Index y, Index face, double weight, Row& row) const
 {
   const MeshTopology& topo = this->Topology;
-  Index e = InvalidIndex;
-  for (Index candidate : topo.GetFaceEdges(face))
-  {
-    const Index* ev = topo.GetEdgeVertices(candidate);
-    if ((ev[0] == x && ev[1] == b) || (ev[0] == b && ev[1] == x))
-    {
-      e = candidate;
-    }
-  }
+  // Edge i of a face joins its corners i and i + 1.
+  const IndexSpan fv = topo.GetFaceVertices(face);
+  const Index ix = fv[0] == x ? 0 : (fv[1] == x ? 1 : 2);
+  const Index e = topo.GetFaceEdges(face)[fv[(ix + 1) % 3] == b ? ix : (ix + 2) % 3];
   const IndexSpan ef = topo.GetEdgeFaces(e);
   if (ef.size() == 2 && !topo.GetEdgeTag(e).NonManifold && !IsSharp(this->Parent.EdgeSharpness[e]))
   {
-    for (Index f : ef)
+    const Index other = ef[0] == face ? ef[1] : ef[0];
+    const Index opposite = ThirdVertex(topo, other, x, b);
+    if (opposite != y)
     {
-      const Index opposite = topo.GetTriangleOppositeVertex(f, e);
-      if (opposite != y)
-      {
-        row.Add(opposite, weight);
-        return;
-      }
+      row.Add(opposite, weight);
+      return;
     }
   }
   row.Add(x, weight);
@@ -227,7 +232,7 @@ void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
   const bool butterfly = (regular0 && regular1) || (!ring0 && regular1) || (!ring1 && regular0) || (!ring0 && !ring1);
   if (butterfly)
   {
-    const Index b[2] = { topo.GetTriangleOppositeVertex(ef[0], e), topo.GetTriangleOppositeVertex(ef[1], e) };
+    const Index b[2] = { ThirdVertex(topo, ef[0], a0, a1), ThirdVertex(topo, ef[1], a0, a1) };
     smooth.Add(a0, 0.5 - w);
     smooth.Add(a1, 0.5 - w);
     smooth.Add(b[0], 0.125 + 2.0 * w);

@@ -78,7 +78,8 @@ private:
   bool HasRing(Index v) const { return this->RingOffsets[v + 1] > this->RingOffsets[v]; }
   Index RingValence(Index v) const { return this->RingOffsets[v + 1] - this->RingOffsets[v]; }
   Index RingFrom(Index v, Index first, Index j) const;
-  Index WalkRing(Index v, Index* neighbours) const;
+  bool HasInteriorRule(Index v) const;
+  void WalkRing(Index v, Index* neighbours) const;
   Index OtherCreaseNeighbour(Index v, Index other) const;
   void AddCreaseRule(Index e, double scale, Row& row) const;
   void AddSmoothRule(Index e, Row& row) const;
