@@ -71,10 +71,12 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
   });
   std::partial_sum(this->RingOffsets.begin(), this->RingOffsets.end(), this->RingOffsets.begin());
   this->RingNeighbours.resize(static_cast<size_t>(this->RingOffsets.back()));
+  this->SmoothRing.resize(static_cast<size_t>(numVertices));
   parallelFor(0, numVertices, [this](Index begin, Index end) {
     for (Index v = begin; v < end; ++v)
     {
       this->WalkRing(v, this->RingNeighbours.data() + this->RingOffsets[v]);
+      this->SmoothRing[v] = this->HasRing(v) && this->Parent.GetNumSharpEdges(v) == 0;
     }
   });
   // A row holds at most the crease rule's 4 sources and the smooth rule's: 10 for the
@@ -104,27 +106,65 @@ bool ButterflyRowWriter::HasInteriorRule(Index v) const
     this->Parent.GetNumSharpEdges(v) < 2;
 }
 
-// Walks the faces around v counter-clockwise (each next face across the edge entering v in
-// the previous one), writing the neighbour after v in each face.
+// The neighbours of v counter-clockwise, starting at the one after v in its first face.
+// In the face where v is at corner c, the neighbour after v (corner c + 1) is followed, in
+// the ring, by the one before v (corner c + 2): chaining these pairs orders the ring
+// reading only v's faces, which are independent loads (a walk from face to face across
+// edges would wait on each).
 void ButterflyRowWriter::WalkRing(Index v, Index* neighbours) const
 {
-  const MeshTopology& topo = this->Topology;
-  const IndexSpan faces = topo.GetVertexFaces(v);
   if (!this->HasRing(v))
   {
     return;
   }
-  Index face = faces[0];
-  Index corner = topo.GetVertexFaceCorners(v)[0];
-  for (Index step = 0; step < faces.size(); ++step)
+  const MeshTopology& topo = this->Topology;
+  const IndexSpan faces = topo.GetVertexFaces(v);
+  const IndexSpan corners = topo.GetVertexFaceCorners(v);
+  const Index K = faces.size();
+  constexpr Index stackValence = 32;
+  Index stackPairs[2 * stackValence];
+  std::vector<Index> heapPairs;
+  Index* pairs = stackPairs;
+  if (K > stackValence)
   {
-    const IndexSpan fv = topo.GetFaceVertices(face);
-    neighbours[step] = fv[corner == 2 ? 0 : corner + 1];
-    const IndexSpan across = topo.GetEdgeFaces(topo.GetFaceEdges(face)[corner == 0 ? 2 : corner - 1]);
-    face = across[0] == face ? across[1] : across[0];
-    const IndexSpan next = topo.GetFaceVertices(face);
-    corner = next[0] == v ? 0 : (next[1] == v ? 1 : 2);
+    heapPairs.resize(2 * static_cast<size_t>(K));
+    pairs = heapPairs.data();
   }
+  for (Index k = 0; k < K; ++k)
+  {
+    const IndexSpan fv = topo.GetFaceVertices(faces[k]);
+    const Index c = corners[k];
+    pairs[2 * k] = fv[c == 2 ? 0 : c + 1];
+    pairs[2 * k + 1] = fv[c == 0 ? 2 : c - 1];
+  }
+  neighbours[0] = pairs[0];
+  for (Index step = 1; step < K; ++step)
+  {
+    const Index current = pairs[2 * (step - 1) + 1];
+    neighbours[step] = current;
+    // Move the pair starting at `current` to slot `step` (the ring is one cycle).
+    Index k = step;
+    while (pairs[2 * k] != current)
+    {
+      ++k;
+    }
+    std::swap(pairs[2 * k], pairs[2 * step]);
+    std::swap(pairs[2 * k + 1], pairs[2 * step + 1]);
+  }
+}
+
+// Neighbour of v next to b on the side away from y, where y and b are consecutive in v's
+// ring: the vertex across edge (v, b) from the triangle (v, y, b).
+Index ButterflyRowWriter::RingBeyond(Index v, Index y, Index b) const
+{
+  const Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
+  const Index K = this->RingValence(v);
+  Index i = 0;
+  while (ring[i] != y)
+  {
+    ++i;
+  }
+  return ring[(i + 1) % K] == b ? ring[(i + 2) % K] : ring[(i + K - 2) % K];
 }
 
 Index ButterflyRowWriter::RingFrom(Index v, Index first, Index j) const
@@ -165,6 +205,12 @@ Index ButterflyRowWriter::OtherCreaseNeighbour(Index v, Index other) const
 // a crease is as good as missing).
 void ButterflyRowWriter::AddWing(Index x, Index b, Index y, Index face, double weight, Row& row) const
 {
+  if (this->SmoothRing[x])
+  {
+    // All of x's edges are smooth, manifold and have two faces: its ring has the wing.
+    row.Add(this->RingBeyond(x, y, b), weight);
+    return;
+  }
   const MeshTopology& topo = this->Topology;
   // Edge i of a face joins its corners i and i + 1.
   const IndexSpan fv = topo.GetFaceVertices(face);

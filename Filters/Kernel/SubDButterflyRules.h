@@ -78,6 +78,7 @@ private:
   bool HasRing(Index v) const { return this->RingOffsets[v + 1] > this->RingOffsets[v]; }
   Index RingValence(Index v) const { return this->RingOffsets[v + 1] - this->RingOffsets[v]; }
   Index RingFrom(Index v, Index first, Index j) const;
+  Index RingBeyond(Index v, Index y, Index b) const;
   bool HasInteriorRule(Index v) const;
   void WalkRing(Index v, Index* neighbours) const;
   Index OtherCreaseNeighbour(Index v, Index other) const;
@@ -95,6 +96,7 @@ private:
   // not on the boundary, on no crease (fewer than two sharp edges: a dart keeps its ring).
   std::vector<Index> RingOffsets;
   std::vector<Index> RingNeighbours;
+  std::vector<std::uint8_t> SmoothRing; // has a ring and no sharp edge
   std::vector<std::vector<double>> ExtraordinaryWeights; // [K][j] for small K
 };
 
