@@ -31,16 +31,6 @@ StencilTable BuildButterflyStencils(const Level& parent, double tension, const P
   return WriteStencilTable(ButterflyRowWriter(parent, tension, parallelFor), expected);
 }
 
-namespace
-{
-// The corner of triangle f that is neither x nor y (reads the face's vertices only).
-Index ThirdVertex(const MeshTopology& topo, Index f, Index x, Index y)
-{
-  const IndexSpan fv = topo.GetFaceVertices(f);
-  return fv[0] != x && fv[0] != y ? fv[0] : (fv[1] != x && fv[1] != y ? fv[1] : fv[2]);
-}
-}
-
 void ButterflyRowWriter::Row::Add(Index source, double weight)
 {
   for (Index k = 0; k < this->Size; ++k)
@@ -220,7 +210,7 @@ void ButterflyRowWriter::AddWing(Index x, Index b, Index y, Index face, double w
   if (ef.size() == 2 && !topo.GetEdgeTag(e).NonManifold && !IsSharp(this->Parent.EdgeSharpness[e]))
   {
     const Index other = ef[0] == face ? ef[1] : ef[0];
-    const Index opposite = ThirdVertex(topo, other, x, b);
+    const Index opposite = topo.GetTriangleThirdVertex(other, x, b);
     if (opposite != y)
     {
       row.Add(opposite, weight);
@@ -278,7 +268,7 @@ void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
   const bool butterfly = (regular0 && regular1) || (!ring0 && regular1) || (!ring1 && regular0) || (!ring0 && !ring1);
   if (butterfly)
   {
-    const Index b[2] = { ThirdVertex(topo, ef[0], a0, a1), ThirdVertex(topo, ef[1], a0, a1) };
+    const Index b[2] = { topo.GetTriangleThirdVertex(ef[0], a0, a1), topo.GetTriangleThirdVertex(ef[1], a0, a1) };
     smooth.Add(a0, 0.5 - w);
     smooth.Add(a1, 0.5 - w);
     smooth.Add(b[0], 0.125 + 2.0 * w);

@@ -75,8 +75,8 @@ bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst
     const Index* ev = topo.GetEdgeVertices(e);
     point.Add(0.375, parents + 3 * static_cast<size_t>(ev[0]));
     point.Add(0.375, parents + 3 * static_cast<size_t>(ev[1]));
-    point.Add(0.125, parents + 3 * static_cast<size_t>(topo.GetTriangleOppositeVertex(ef[0], e)));
-    point.Add(0.125, parents + 3 * static_cast<size_t>(topo.GetTriangleOppositeVertex(ef[1], e)));
+    point.Add(0.125, parents + 3 * static_cast<size_t>(topo.GetTriangleThirdVertex(ef[0], ev[0], ev[1])));
+    point.Add(0.125, parents + 3 * static_cast<size_t>(topo.GetTriangleThirdVertex(ef[1], ev[0], ev[1])));
     point.Store(dst);
     return true;
   }

@@ -278,16 +278,8 @@ void MeshTopology::TagVertices()
 
 Index MeshTopology::GetTriangleOppositeVertex(Index f, Index e) const
 {
-  const IndexSpan fe = this->GetFaceEdges(f);
-  const IndexSpan fv = this->GetFaceVertices(f);
-  for (Index j = 0; j < 3; ++j)
-  {
-    if (fe[j] == e)
-    {
-      return fv[(j + 2) % 3]; // edge j joins corners j and j+1
-    }
-  }
-  return InvalidIndex;
+  const Index* ev = this->GetEdgeVertices(e);
+  return this->GetTriangleThirdVertex(f, ev[0], ev[1]);
 }
 
 Index MeshTopology::FindCorner(Index v, Index f) const

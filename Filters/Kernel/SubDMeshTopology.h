@@ -100,6 +100,21 @@ public:
 
   /// For a triangle f and one of its edges e: the vertex of f not on e.
   Index GetTriangleOppositeVertex(Index f, Index e) const;
+  /// For a triangle f with corners a and b: its third corner (InvalidIndex if a or b is not
+  /// one). Reads the face's corners only: rules call it for every edge of a level.
+  Index GetTriangleThirdVertex(Index f, Index a, Index b) const
+  {
+    const Index* fv = this->FaceVertices.data() + this->FaceOffsets[f];
+    Index third = InvalidIndex;
+    int matches = 0;
+    for (Index j = 0; j < 3; ++j)
+    {
+      const bool onEdge = fv[j] == a || fv[j] == b;
+      matches += onEdge;
+      third = onEdge ? third : fv[j];
+    }
+    return matches == 2 ? third : InvalidIndex;
+  }
 
   /// Returns the edge joining a and b, or InvalidIndex.
   Index FindEdge(Index a, Index b) const;
