@@ -269,21 +269,39 @@ MeshTopology PrimalChildAssembly::Assemble(
   const size_t numSlots = static_cast<size_t>(numChildVertices) + 1;
   child.VertexFaceOffsets.assign(numSlots, 0);
   child.VertexEdgeOffsets.assign(numSlots, 0);
-  for (Index f = 0; f < firstEdgePoint; ++f)
-  {
-    child.VertexFaceOffsets[f + 1] = child.VertexEdgeOffsets[f + 1] = shape.GetFacePointSize(f);
-  }
-  for (Index e = 0; e < numEdges; ++e)
-  {
-    const Index faces = parent.GetEdgeFaces(e).size();
-    child.VertexFaceOffsets[firstEdgePoint + e + 1] = Shape::EdgePointFacesPerFace * faces;
-    child.VertexEdgeOffsets[firstEdgePoint + e + 1] = 2 + Shape::EdgePointEdgesPerFace * faces;
-  }
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    child.VertexFaceOffsets[firstVertexPoint + v + 1] = parent.GetVertexFaces(v).size();
-    child.VertexEdgeOffsets[firstVertexPoint + v + 1] = parent.GetVertexEdges(v).size();
-  }
+  child.VertexTags.resize(static_cast<size_t>(numChildVertices));
+  // Counts at [point + 1], and the tags: face points are interior, edge points take their
+  // edge's, vertex points their vertex's.
+  parallelFor(0, numChildVertices, [&](Index begin, Index end) {
+    for (Index point = begin; point < end; ++point)
+    {
+      Index faces, edges;
+      VertexTag tag{ 0, 0 };
+      if (point < firstEdgePoint)
+      {
+        faces = edges = shape.GetFacePointSize(point);
+      }
+      else if (point < firstVertexPoint)
+      {
+        const Index e = point - firstEdgePoint;
+        const Index parentFaces = parent.GetEdgeFaces(e).size();
+        faces = Shape::EdgePointFacesPerFace * parentFaces;
+        edges = 2 + Shape::EdgePointEdgesPerFace * parentFaces;
+        tag = VertexTag{ parent.GetEdgeTag(e).Boundary, parent.GetEdgeTag(e).NonManifold };
+      }
+      else
+      {
+        const Index v = point - firstVertexPoint;
+        faces = parent.GetVertexFaces(v).size();
+        edges = parent.GetVertexEdges(v).size();
+        tag = parent.GetVertexTag(v);
+      }
+      child.VertexFaceOffsets[point + 1] = faces;
+      child.VertexEdgeOffsets[point + 1] = edges;
+      child.VertexTags[point] = tag;
+    }
+  });
+  child.NumNonManifoldVertices = parent.GetNumNonManifoldEdges() + parent.GetNumNonManifoldVertices();
   child.MaxValence = 0;
   for (size_t v = 1; v < numSlots; ++v)
   {
@@ -352,18 +370,6 @@ MeshTopology PrimalChildAssembly::Assemble(
     }
   });
 
-  // Tags: face points are interior, edge points take their edge's, vertex points their vertex's.
-  child.VertexTags.assign(static_cast<size_t>(numChildVertices), VertexTag{ 0, 0 });
-  for (Index e = 0; e < numEdges; ++e)
-  {
-    const EdgeTag tag = parent.GetEdgeTag(e);
-    child.VertexTags[firstEdgePoint + e] = VertexTag{ tag.Boundary, tag.NonManifold };
-  }
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    child.VertexTags[firstVertexPoint + v] = parent.GetVertexTag(v);
-  }
-  child.NumNonManifoldVertices = parent.GetNumNonManifoldEdges() + parent.GetNumNonManifoldVertices();
   return child;
 }
 
