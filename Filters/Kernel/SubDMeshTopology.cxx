@@ -320,7 +320,38 @@ bool MeshTopology::GetOrderedVertexFaces(
       }
     }
   }
-  for (Index step = 0; step < vf.size(); ++step)
+  const IndexSpan vc = this->GetVertexFaceCorners(v);
+  const Index K = vf.size();
+  constexpr Index chainValence = 64;
+  if (K <= chainValence)
+  {
+    // The next face is the one whose edge leaving v is the edge entering v in this one
+    // (the two faces of a manifold edge at a manifold vertex run it in opposite directions):
+    // match them among v's faces, whose edges are independent loads, instead of walking
+    // across edges, where each step waits on the one before.
+    Index leaving[chainValence], entering[chainValence];
+    Index current = 0;
+    for (Index k = 0; k < K; ++k)
+    {
+      const IndexSpan fe = this->GetFaceEdges(vf[k]);
+      leaving[k] = fe[vc[k]];
+      entering[k] = fe[vc[k] == 0 ? fe.size() - 1 : vc[k] - 1];
+      current = vf[k] == face ? k : current;
+    }
+    for (Index step = 0; step < K && current != InvalidIndex; ++step)
+    {
+      faces.push_back(vf[current]);
+      corners.push_back(vc[current]);
+      Index next = InvalidIndex;
+      for (Index j = 0; j < K; ++j)
+      {
+        next = j != current && leaving[j] == entering[current] ? j : next;
+      }
+      current = next;
+    }
+    return static_cast<Index>(faces.size()) == K;
+  }
+  for (Index step = 0; step < K; ++step)
   {
     faces.push_back(face);
     corners.push_back(corner);
@@ -335,7 +366,7 @@ bool MeshTopology::GetOrderedVertexFaces(
     face = ef[0] == face ? ef[1] : ef[0];
     corner = this->FindCorner(v, face);
   }
-  return static_cast<Index>(faces.size()) == vf.size();
+  return static_cast<Index>(faces.size()) == K;
 }
 
 Index MeshTopology::FindEdge(Index a, Index b) const
