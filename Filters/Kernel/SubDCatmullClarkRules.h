@@ -74,11 +74,11 @@ bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T*
   if (row < firstVertexPoint)
   {
     const Index e = row - this->Number.NumFaces;
-    const IndexSpan ef = topo.GetEdgeFaces(e);
-    if (IsSharp(this->Parent.EdgeSharpness[e]) || ef.size() != 2)
+    if (!IsSmoothEdge(this->Parent, e))
     {
       return false;
     }
+    const IndexSpan ef = topo.GetEdgeFaces(e);
     const Index* ev = topo.GetEdgeVertices(e);
     point.Add(0.25, parents + 3 * static_cast<size_t>(ev[0]));
     point.Add(0.25, parents + 3 * static_cast<size_t>(ev[1]));
@@ -88,19 +88,12 @@ bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T*
     return true;
   }
   const Index v = row - firstVertexPoint;
-  const IndexSpan edges = topo.GetVertexEdges(v);
-  const IndexSpan faces = topo.GetVertexFaces(v);
-  if (IsSharp(this->Parent.VertexSharpness[v]) || faces.size() != edges.size() || faces.empty())
+  if (!IsSmoothClosedVertex(this->Parent, v))
   {
     return false;
   }
-  for (Index e : edges)
-  {
-    if (IsSharp(this->Parent.EdgeSharpness[e]))
-    {
-      return false;
-    }
-  }
+  const IndexSpan edges = topo.GetVertexEdges(v);
+  const IndexSpan faces = topo.GetVertexFaces(v);
   const double n = faces.size();
   const double ringWeight = 1.0 / (n * n);
   point.Add((n - 2.0) / n, parents + 3 * static_cast<size_t>(v));

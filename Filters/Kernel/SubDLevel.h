@@ -75,6 +75,32 @@ SUBDKERNEL_EXPORT std::vector<VertexRulePlan> PlanVertexRules(const Level& level
 /// sharpness above 1, which then extrapolates past the crease rule.
 SUBDKERNEL_EXPORT float EdgeCreaseWeight(const Level& level, Index e);
 
+/// True for an edge with two faces and no sharpness: the smooth edge rule applies.
+inline bool IsSmoothEdge(const Level& level, Index e)
+{
+  return !IsSharp(level.EdgeSharpness[e]) && level.Topology.GetEdgeFaces(e).size() == 2;
+}
+
+/// True when nothing is sharp at or around v and its faces close around it (as many faces
+/// as edges): the smooth vertex rule applies at this level and the next (the common case
+/// of PlanVertexRule).
+inline bool IsSmoothClosedVertex(const Level& level, Index v)
+{
+  const IndexSpan edges = level.Topology.GetVertexEdges(v);
+  if (IsSharp(level.VertexSharpness[v]) || edges.empty() || level.Topology.GetVertexFaces(v).size() != edges.size())
+  {
+    return false;
+  }
+  for (Index e : edges)
+  {
+    if (IsSharp(level.EdgeSharpness[e]))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 /// The crease weight of every edge of `level`.
 SUBDKERNEL_EXPORT std::vector<float> EdgeCreaseWeights(const Level& level);
 

@@ -67,11 +67,11 @@ bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst
   if (row < firstVertexPoint)
   {
     const Index e = row;
-    const IndexSpan ef = topo.GetEdgeFaces(e);
-    if (IsSharp(this->Parent.EdgeSharpness[e]) || ef.size() != 2)
+    if (!IsSmoothEdge(this->Parent, e))
     {
       return false;
     }
+    const IndexSpan ef = topo.GetEdgeFaces(e);
     const Index* ev = topo.GetEdgeVertices(e);
     point.Add(0.375, parents + 3 * static_cast<size_t>(ev[0]));
     point.Add(0.375, parents + 3 * static_cast<size_t>(ev[1]));
@@ -81,19 +81,12 @@ bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst
     return true;
   }
   const Index v = row - firstVertexPoint;
-  const IndexSpan edges = topo.GetVertexEdges(v);
-  const Index n = edges.size();
-  if (IsSharp(this->Parent.VertexSharpness[v]) || topo.GetVertexFaces(v).size() != n || n == 0)
+  if (!IsSmoothClosedVertex(this->Parent, v))
   {
     return false;
   }
-  for (Index e : edges)
-  {
-    if (IsSharp(this->Parent.EdgeSharpness[e]))
-    {
-      return false;
-    }
-  }
+  const IndexSpan edges = topo.GetVertexEdges(v);
+  const Index n = edges.size();
   const double beta = this->Beta(n);
   point.Add(1.0 - n * beta, parents + 3 * static_cast<size_t>(v));
   for (Index e : edges)

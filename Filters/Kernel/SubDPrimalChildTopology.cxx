@@ -385,4 +385,21 @@ MeshTopology PrimalChildTopology::OfTriangleSplit(const MeshTopology& parent, st
   return PrimalChildAssembly::Assemble(
     TriangleSplitShape{ parent }, std::move(offsets), std::move(vertices), parallelFor);
 }
+
+void PrimalChildTopology::SetChildLevel(const Level& parent, Level& child, Split split, Index numChildVertices,
+  std::vector<Index> offsets, std::vector<Index> vertices, ChildTopology depth, Index firstEdgePoint,
+  Index firstVertexPoint, const ParallelFor& parallelFor)
+{
+  if (depth == ChildTopology::FacesOnly)
+  {
+    SetChildTopology(parent, child, numChildVertices, std::move(offsets), std::move(vertices), depth);
+    return;
+  }
+  child.Depth = parent.Depth + 1;
+  child.Creasing = parent.Creasing;
+  child.Topology = split == Split::Quads
+    ? OfQuadSplit(parent.Topology, std::move(offsets), std::move(vertices), parallelFor)
+    : OfTriangleSplit(parent.Topology, std::move(offsets), std::move(vertices), parallelFor);
+  InheritPrimalSharpness(parent, child, firstEdgePoint, firstVertexPoint);
+}
 }

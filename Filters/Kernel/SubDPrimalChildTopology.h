@@ -20,6 +20,7 @@
 #ifndef SubDPrimalChildTopology_h
 #define SubDPrimalChildTopology_h
 
+#include "SubDLevel.h"
 #include "SubDMeshTopology.h"
 #include "SubDParallel.h"
 
@@ -38,6 +39,17 @@ public:
   /// The child of the triangle split of the all-triangle `parent` (SubDTriangleSplit.h).
   static MeshTopology OfTriangleSplit(const MeshTopology& parent, std::vector<Index> offsets,
     std::vector<Index> vertices, const ParallelFor& parallelFor);
+
+  enum class Split
+  {
+    Quads,
+    Triangles
+  };
+  /// Finishes a primal split's child level from its faces: faces only, or the full topology
+  /// derived from the parent's with the sharpness the child inherits (InheritPrimalSharpness).
+  static void SetChildLevel(const Level& parent, Level& child, Split split, Index numChildVertices,
+    std::vector<Index> offsets, std::vector<Index> vertices, ChildTopology depth, Index firstEdgePoint,
+    Index firstVertexPoint, const ParallelFor& parallelFor);
 };
 }
 

@@ -37,17 +37,8 @@ Level SplitQuads(const Level& parent, ChildTopology depth, const ParallelFor& pa
 
   Level child;
   InheritFaceTags(parent, child, [&topo](Index f) { return topo.GetFaceOffset(f); }, parallelFor);
-  const Index numChildVertices = numFaces + numEdges + numVertices;
-  if (depth == ChildTopology::FacesOnly)
-  {
-    SetChildTopology(parent, child, numChildVertices, std::move(childOffsets), std::move(childVertices), depth);
-    return child;
-  }
-  child.Depth = parent.Depth + 1;
-  child.Creasing = parent.Creasing;
-  child.Topology =
-    PrimalChildTopology::OfQuadSplit(topo, std::move(childOffsets), std::move(childVertices), parallelFor);
-  InheritPrimalSharpness(parent, child, number.EdgePoint(0), number.VertexPoint(0));
+  PrimalChildTopology::SetChildLevel(parent, child, PrimalChildTopology::Split::Quads, numFaces + numEdges + numVertices,
+    std::move(childOffsets), std::move(childVertices), depth, number.EdgePoint(0), number.VertexPoint(0), parallelFor);
   return child;
 }
 }

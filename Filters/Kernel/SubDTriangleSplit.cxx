@@ -37,17 +37,8 @@ Level SplitTriangles(const Level& parent, ChildTopology depth, const ParallelFor
 
   Level child;
   InheritFaceTags(parent, child, [](Index f) { return 4 * f; }, parallelFor);
-  const Index numChildVertices = numEdges + topo.GetNumVertices();
-  if (depth == ChildTopology::FacesOnly)
-  {
-    SetChildTopology(parent, child, numChildVertices, std::move(childOffsets), std::move(childVertices), depth);
-    return child;
-  }
-  child.Depth = parent.Depth + 1;
-  child.Creasing = parent.Creasing;
-  child.Topology =
-    PrimalChildTopology::OfTriangleSplit(topo, std::move(childOffsets), std::move(childVertices), parallelFor);
-  InheritPrimalSharpness(parent, child, number.EdgePoint(0), number.VertexPoint(0));
+  PrimalChildTopology::SetChildLevel(parent, child, PrimalChildTopology::Split::Triangles, numEdges + topo.GetNumVertices(),
+    std::move(childOffsets), std::move(childVertices), depth, number.EdgePoint(0), number.VertexPoint(0), parallelFor);
   return child;
 }
 }
