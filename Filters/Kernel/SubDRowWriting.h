@@ -5,7 +5,7 @@
 //   Index GetNumParents() const;            // points of the parent level
 //   Index GetNumRows() const;               // child points
 //   std::vector<Index> GetBlockEnds() const; // as StencilTable's blocks
-//   Index GetMaxRowSize() const;            // bound on any row's size
+//   Index GetMaxRowSize() const;            // room WriteRow uses in its buffers (>= any row)
 //   Index WriteRow(Index row, Index* sources, double* weights) const; // returns the size
 //   template <typename T>                   // evaluates a point's row if it is smooth
 //   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
