@@ -51,22 +51,37 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
   , Topology(parent.Topology)
   , Tension(tension)
 {
-  const Index numVertices = this->Topology.GetNumVertices();
+  const MeshTopology& topo = this->Topology;
+  const Index numVertices = topo.GetNumVertices();
+  // Vertices that take the interior rules: manifold, not on the boundary, not isolated, on
+  // no crease (a dart, one sharp edge, keeps its ring); their faces form one closed fan.
   this->RingOffsets.assign(static_cast<size_t>(numVertices) + 1, 0);
-  parallelFor(0, numVertices, [this](Index begin, Index end) {
+  this->SmoothRing.resize(static_cast<size_t>(numVertices));
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v)
     {
-      this->RingOffsets[v + 1] = this->HasInteriorRule(v) ? this->Topology.GetVertexFaces(v).size() : 0;
+      const VertexTag tag = topo.GetVertexTag(v);
+      const Index sharpEdges = this->Parent.GetNumSharpEdges(v);
+      const bool ring = !tag.Boundary && !tag.NonManifold && sharpEdges < 2;
+      this->RingOffsets[v + 1] = ring ? topo.GetVertexFaces(v).size() : 0;
+      this->SmoothRing[v] = ring && sharpEdges == 0 && this->RingOffsets[v + 1] > 0;
     }
   });
   std::partial_sum(this->RingOffsets.begin(), this->RingOffsets.end(), this->RingOffsets.begin());
+  // Each ring counter-clockwise: the vertex after v in each face of its ordered fan.
   this->RingNeighbours.resize(static_cast<size_t>(this->RingOffsets.back()));
-  this->SmoothRing.resize(static_cast<size_t>(numVertices));
-  parallelFor(0, numVertices, [this](Index begin, Index end) {
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
+    std::vector<Index> faces, corners;
     for (Index v = begin; v < end; ++v)
     {
-      this->WalkRing(v, this->RingNeighbours.data() + this->RingOffsets[v]);
-      this->SmoothRing[v] = this->HasRing(v) && this->Parent.GetNumSharpEdges(v) == 0;
+      if (this->HasRing(v) && topo.GetOrderedVertexFaces(v, faces, corners))
+      {
+        Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
+        for (size_t k = 0; k < faces.size(); ++k)
+        {
+          ring[k] = topo.GetFaceVertices(faces[k])[corners[k] == 2 ? 0 : corners[k] + 1];
+        }
+      }
     }
   });
   // A row holds at most the crease rule's 4 sources and the smooth rule's: 10 for the
@@ -86,61 +101,6 @@ double ButterflyRowWriter::ExtraordinaryWeight(Index K, Index j) const
 {
   return K < static_cast<Index>(this->ExtraordinaryWeights.size()) ? this->ExtraordinaryWeights[K][j]
                                                                    : ButterflyExtraordinaryWeight(K, j);
-}
-
-// Manifold, not on the boundary, not isolated, on no crease: then v's faces form one closed fan.
-bool ButterflyRowWriter::HasInteriorRule(Index v) const
-{
-  const VertexTag tag = this->Topology.GetVertexTag(v);
-  return !tag.Boundary && !tag.NonManifold && !this->Topology.GetVertexFaces(v).empty() &&
-    this->Parent.GetNumSharpEdges(v) < 2;
-}
-
-// The neighbours of v counter-clockwise, starting at the one after v in its first face.
-// In the face where v is at corner c, the neighbour after v (corner c + 1) is followed, in
-// the ring, by the one before v (corner c + 2): chaining these pairs orders the ring
-// reading only v's faces, which are independent loads (a walk from face to face across
-// edges would wait on each).
-void ButterflyRowWriter::WalkRing(Index v, Index* neighbours) const
-{
-  if (!this->HasRing(v))
-  {
-    return;
-  }
-  const MeshTopology& topo = this->Topology;
-  const IndexSpan faces = topo.GetVertexFaces(v);
-  const IndexSpan corners = topo.GetVertexFaceCorners(v);
-  const Index K = faces.size();
-  constexpr Index stackValence = 32;
-  Index stackPairs[2 * stackValence];
-  std::vector<Index> heapPairs;
-  Index* pairs = stackPairs;
-  if (K > stackValence)
-  {
-    heapPairs.resize(2 * static_cast<size_t>(K));
-    pairs = heapPairs.data();
-  }
-  for (Index k = 0; k < K; ++k)
-  {
-    const IndexSpan fv = topo.GetFaceVertices(faces[k]);
-    const Index c = corners[k];
-    pairs[2 * k] = fv[c == 2 ? 0 : c + 1];
-    pairs[2 * k + 1] = fv[c == 0 ? 2 : c - 1];
-  }
-  neighbours[0] = pairs[0];
-  for (Index step = 1; step < K; ++step)
-  {
-    const Index current = pairs[2 * (step - 1) + 1];
-    neighbours[step] = current;
-    // Move the pair starting at `current` to slot `step` (the ring is one cycle).
-    Index k = step;
-    while (pairs[2 * k] != current)
-    {
-      ++k;
-    }
-    std::swap(pairs[2 * k], pairs[2 * step]);
-    std::swap(pairs[2 * k + 1], pairs[2 * step + 1]);
-  }
 }
 
 // Neighbour of v next to b on the side away from y, where y and b are consecutive in v's

@@ -49,7 +49,7 @@ SUBDKERNEL_EXPORT StencilTable BuildButterflyStencils(
 
 /// The same rows written one at a time (SubDRowWriting.h), rows numbered like the triangle
 /// split's child points: edge points, then the vertex points (copies). The rings of the
-/// vertices that have one are found once, in parallel, when the writer is made.
+/// vertices that have one are ordered once, in parallel, when the writer is made.
 class SUBDKERNEL_EXPORT ButterflyRowWriter
 {
 public:
@@ -79,8 +79,6 @@ private:
   Index RingValence(Index v) const { return this->RingOffsets[v + 1] - this->RingOffsets[v]; }
   Index RingFrom(Index v, Index first, Index j) const;
   Index RingBeyond(Index v, Index y, Index b) const;
-  bool HasInteriorRule(Index v) const;
-  void WalkRing(Index v, Index* neighbours) const;
   Index OtherCreaseNeighbour(Index v, Index other) const;
   void AddCreaseRule(Index e, double scale, Row& row) const;
   void AddSmoothRule(Index e, Row& row) const;
@@ -92,8 +90,8 @@ private:
   const MeshTopology& Topology;
   double Tension;
   Index RowBound = 16;
-  // Counter-clockwise neighbours of the vertices that take the interior rules: manifold,
-  // not on the boundary, on no crease (fewer than two sharp edges: a dart keeps its ring).
+  // Counter-clockwise neighbours of the vertices that take the interior rules (see the
+  // constructor); none for the others.
   std::vector<Index> RingOffsets;
   std::vector<Index> RingNeighbours;
   std::vector<std::uint8_t> SmoothRing; // has a ring and no sharp edge

@@ -78,15 +78,9 @@ VertexRulePlan PlanVertexRule(const Level& level, Index v)
   const IndexSpan edges = topo.GetVertexEdges(v);
   // The common case first, without buffers: nothing sharp at or around v. Such a vertex is
   // smooth now and one level down, or a corner when its faces do not close (as below).
-  bool anySharp = IsSharp(level.VertexSharpness[v]);
-  for (Index i = 0; i < edges.size() && !anySharp; ++i)
+  if (NothingSharpAt(level, v))
   {
-    anySharp = IsSharp(level.EdgeSharpness[edges[i]]);
-  }
-  if (!anySharp)
-  {
-    const Index numFaces = topo.GetVertexFaces(v).size();
-    plan.Rule = plan.ChildRule = numFaces > 0 && numFaces == edges.size() ? VertexRule::Smooth : VertexRule::Corner;
+    plan.Rule = plan.ChildRule = IsSmoothClosedVertex(level, v) ? VertexRule::Smooth : VertexRule::Corner;
     return plan;
   }
   // Small valences use the stack; a pole of any valence still works.

@@ -81,17 +81,14 @@ inline bool IsSmoothEdge(const Level& level, Index e)
   return !IsSharp(level.EdgeSharpness[e]) && level.Topology.GetEdgeFaces(e).size() == 2;
 }
 
-/// True when nothing is sharp at or around v and its faces close around it (as many faces
-/// as edges): the smooth vertex rule applies at this level and the next (the common case
-/// of PlanVertexRule).
-inline bool IsSmoothClosedVertex(const Level& level, Index v)
+/// True when neither v nor any of its edges is sharp.
+inline bool NothingSharpAt(const Level& level, Index v)
 {
-  const IndexSpan edges = level.Topology.GetVertexEdges(v);
-  if (IsSharp(level.VertexSharpness[v]) || edges.empty() || level.Topology.GetVertexFaces(v).size() != edges.size())
+  if (IsSharp(level.VertexSharpness[v]))
   {
     return false;
   }
-  for (Index e : edges)
+  for (Index e : level.Topology.GetVertexEdges(v))
   {
     if (IsSharp(level.EdgeSharpness[e]))
     {
@@ -99,6 +96,15 @@ inline bool IsSmoothClosedVertex(const Level& level, Index v)
     }
   }
   return true;
+}
+
+/// True when v has faces, they close around it (as many faces as edges) and nothing is
+/// sharp at or around it: the smooth vertex rule applies at this level and the next (the
+/// common case of PlanVertexRule).
+inline bool IsSmoothClosedVertex(const Level& level, Index v)
+{
+  const Index numEdges = level.Topology.GetVertexEdges(v).size();
+  return numEdges > 0 && level.Topology.GetVertexFaces(v).size() == numEdges && NothingSharpAt(level, v);
 }
 
 /// The crease weight of every edge of `level`.
