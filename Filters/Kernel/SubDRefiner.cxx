@@ -12,6 +12,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   for (int l = 0; l < levels; ++l)
   {
     const bool last = l + 1 == levels;
+    const ChildTopology depth = last ? finest : ChildTopology::Full;
     std::shared_ptr<const RowSource> writtenRows;
     if (levelRows == LevelRows::Written)
     {
@@ -20,7 +21,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
       if (writtenRows)
       {
         out.Stencils.push_back(StencilTable::FromSource(writtenRows));
-        current = scheme.Split(*parent, last ? finest : ChildTopology::Full);
+        current = scheme.Split(*parent, depth);
       }
       else
       {
@@ -29,7 +30,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
     }
     if (!writtenRows)
     {
-      LevelRefinement refinement = scheme.RefineLevel(current, last ? finest : ChildTopology::Full);
+      LevelRefinement refinement = scheme.RefineLevel(current, depth);
       out.Stencils.push_back(std::move(refinement.Stencils));
       current = std::move(refinement.Child);
     }
