@@ -7,6 +7,7 @@
 #include "SubDRefiner.h"
 #include "SubDRegularPatch.h"
 #include "SubDScheme.h"
+#include "vtkSubDAdoptedArray.h"
 #include "vtkSubDInputFaces.h"
 #include "vtkSubDLimitGeometry.h"
 #include "vtkSubDPointDataInterpolation.h"
@@ -120,6 +121,7 @@ public:
   // Which finest faces and points are output. In the common case (no holes, no isolated
   // input points) all are, and no maps are stored.
   bool CompactPoints = false;
+  subd::Index NumFinestFaces = 0; // kept: the finest faces may be handed to the output
   std::vector<subd::Index> EmittedFaces;      // when holes exist: finest faces that are not holes
   std::vector<vtkIdType> OutputPointOfFinest; // when compacting: -1 where a finest point is unused
   std::vector<vtkIdType> FinestPointOfOutput;
@@ -127,8 +129,7 @@ public:
 
   vtkIdType GetNumberOfOutputFaces() const
   {
-    return this->CompactPoints ? static_cast<vtkIdType>(this->EmittedFaces.size())
-                               : this->Hierarchy.Finest.Topology.GetNumFaces();
+    return this->CompactPoints ? static_cast<vtkIdType>(this->EmittedFaces.size()) : this->NumFinestFaces;
   }
   subd::Index FinestFace(vtkIdType outputFace) const
   {
@@ -147,6 +148,7 @@ void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
   this->EmittedFaces.clear();
   this->OutputPointOfFinest.clear();
   this->FinestPointOfOutput.clear();
+  this->NumFinestFaces = finest.Topology.GetNumFaces();
   this->CompactPoints = someBaseVertexUnused || finest.HasHoles();
   if (!this->CompactPoints)
   {
@@ -721,10 +723,19 @@ void vtkSubDSurfaceFilter::AddTangentMaskNormals(
 }
 
 // The output faces in 32-bit offsets/connectivity arrays: the kernel's own index width
-// (the size guard refuses outputs beyond it), half the memory of vtkIdType's.
-vtkSmartPointer<vtkCellArray> vtkSubDSurfaceFilter::MakeOutputFaces() const
+// (the size guard refuses outputs beyond it), half the memory of vtkIdType's. When every
+// finest face and point is output and nothing else reads the finest faces (a faces-only
+// level), the kernel's arrays become the output's.
+vtkSmartPointer<vtkCellArray> vtkSubDSurfaceFilter::MakeOutputFaces()
 {
-  const vtkInternals& cache = *this->Internals;
+  vtkInternals& cache = *this->Internals;
+  vtkNew<vtkCellArray> polys;
+  std::vector<subd::Index> kernelOffsets, kernelVertices;
+  if (!cache.CompactPoints && cache.Hierarchy.Finest.Topology.ReleaseFaces(kernelOffsets, kernelVertices))
+  {
+    polys->SetData(vtkSubDAdoptVector(std::move(kernelOffsets)), vtkSubDAdoptVector(std::move(kernelVertices)));
+    return polys;
+  }
   const subd::MeshTopology& topo = cache.Hierarchy.Finest.Topology;
   const vtkIdType numOut = cache.GetNumberOfOutputFaces();
   vtkNew<vtkTypeInt32Array> offsets;
@@ -748,7 +759,6 @@ vtkSmartPointer<vtkCellArray> vtkSubDSurfaceFilter::MakeOutputFaces() const
       }
     }
   });
-  vtkNew<vtkCellArray> polys;
   polys->SetData(offsets, connectivity);
   return polys;
 }

@@ -250,7 +250,7 @@ protected:
   /// Adds the limit normals and curvature arrays (ComputeLimitNormals, ComputeCurvature) of the
   /// output points; false (with an error message) if evaluation failed.
   bool AddLimitGeometry(const double* basePoints, vtkPointData* outPD);
-  vtkSmartPointer<vtkCellArray> MakeOutputFaces() const;
+  vtkSmartPointer<vtkCellArray> MakeOutputFaces();
   /// The normals from the scheme's tangent masks (schemes LimitEvaluator does not handle).
   void AddTangentMaskNormals(const std::vector<double>& control, vtkIdType numOut, vtkPointData* outPD);
 

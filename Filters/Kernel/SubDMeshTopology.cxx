@@ -32,6 +32,18 @@ MeshTopology MeshTopology::BuildFacesOnly(
   return topology;
 }
 
+bool MeshTopology::ReleaseFaces(std::vector<Index>& faceOffsets, std::vector<Index>& faceVertices)
+{
+  if (this->HasEdges())
+  {
+    return false;
+  }
+  faceOffsets = std::move(this->FaceOffsets);
+  faceVertices = std::move(this->FaceVertices);
+  *this = BuildFacesOnly(this->NumVertices, {}, {});
+  return true;
+}
+
 MeshTopology MeshTopology::Build(
   Index numVertices, std::vector<Index> faceOffsets, std::vector<Index> faceVertices)
 {

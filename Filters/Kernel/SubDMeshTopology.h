@@ -97,6 +97,10 @@ public:
   static MeshTopology BuildFacesOnly(Index numVertices, std::vector<Index> faceOffsets,
     std::vector<Index> faceVertices);
   bool HasEdges() const { return !FaceEdges.empty() || FaceVertices.empty(); }
+  /// Moves a faces-only topology's face arrays out (offsets, corners), leaving its vertices
+  /// and no faces: a caller that hands the faces on (to an output) then needs no copy.
+  /// Returns false, moving nothing, when the topology has edges (its relations index them).
+  bool ReleaseFaces(std::vector<Index>& faceOffsets, std::vector<Index>& faceVertices);
 
   /// For a triangle f and one of its edges e: the vertex of f not on e.
   Index GetTriangleOppositeVertex(Index f, Index e) const;

@@ -7,6 +7,7 @@
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
+#include "vtkCellArrayIterator.h"
 #include "vtkCommand.h"
 #include "vtkNew.h"
 #include "vtkPoints.h"
@@ -73,6 +74,21 @@ inline std::vector<double> Coordinates(vtkPolyData* mesh)
   for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
     mesh->GetPoint(i, &xyz[3 * static_cast<size_t>(i)]);
   return xyz;
+}
+
+// The polygons of a mesh, each as its point ids, in order.
+inline std::vector<std::vector<vtkIdType>> Faces(vtkPolyData* mesh)
+{
+  std::vector<std::vector<vtkIdType>> faces;
+  vtkIdType size = 0;
+  const vtkIdType* ids = nullptr;
+  auto polys = vtk::TakeSmartPointer(mesh->GetPolys()->NewIterator());
+  for (polys->GoToFirstCell(); !polys->IsDoneWithTraversal(); polys->GoToNextCell())
+  {
+    polys->GetCurrentCell(size, ids);
+    faces.emplace_back(ids, ids + size);
+  }
+  return faces;
 }
 
 // The max-norm distance from p to the nearest point of `mesh`.

@@ -7,6 +7,7 @@
 #include "vtkSubDLoopFilter.h"
 #include "vtkSubDMidpointFilter.h"
 #include "vtkSubDSqrt3Filter.h"
+#include "vtkSubDAdoptedArray.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -289,10 +290,40 @@ TYPED_TEST(AnySurfaceFilter, CachedStencilsReusedWhenOnlyPointsChange)
   // ...and the result equals a fresh filter's.
   vtkSmartPointer<vtkPolyData> fresh = Subdivide<TypeParam>(cube, 3);
   EXPECT_EQ(subdtest::Coordinates(fresh), subdtest::Coordinates(filter->GetOutput())); // bit for bit
+  EXPECT_EQ(subdtest::Faces(fresh), subdtest::Faces(filter->GetOutput()));
   // A changed option rebuilds.
   filter->SetBoundaryRuleToEdgeAndCorner();
   filter->Update();
   EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 2);
+}
+
+// The finest faces are handed to the output without a copy (vtkSubDAdoptedArray.h): they
+// outlive the filter, survive being edited, and their storage is freed exactly once.
+TYPED_TEST(AnySurfaceFilter, OutputFacesOutliveTheFilterAndAreFreed)
+{
+  const std::size_t adoptedBefore = vtkSubDNumberOfAdoptedVectors();
+  vtkSmartPointer<vtkPolyData> kept;
+  std::vector<std::vector<vtkIdType>> copied;
+  {
+    vtkNew<TypeParam> filter;
+    filter->SetInputData(Cube());
+    filter->SetNumberOfSubdivisions(2);
+    filter->Update();
+    kept = filter->GetOutput();
+    // The last level has faces only, which the output adopts: offsets and point ids.
+    EXPECT_EQ(vtkSubDNumberOfAdoptedVectors(), adoptedBefore + 2);
+    vtkNew<vtkPolyData> deep;
+    deep->DeepCopy(kept);
+    copied = subdtest::Faces(deep);
+  }
+  ASSERT_FALSE(copied.empty());
+  EXPECT_EQ(subdtest::Faces(kept), copied);
+  const vtkIdType extra[3] = { 0, 1, 2 };
+  kept->GetPolys()->InsertNextCell(3, extra); // grows (reallocates) the adopted arrays
+  copied.push_back({ 0, 1, 2 });
+  EXPECT_EQ(subdtest::Faces(kept), copied);
+  kept = nullptr;
+  EXPECT_EQ(vtkSubDNumberOfAdoptedVectors(), adoptedBefore);
 }
 
 TYPED_TEST(AnySurfaceFilter, SameOutputWithOneAndTwoThreads)
