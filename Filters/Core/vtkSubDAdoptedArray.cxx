@@ -1,14 +1,17 @@
 #include "vtkSubDAdoptedArray.h"
 
 #include <mutex>
+#include <type_traits>
 #include <unordered_map>
+
+static_assert(std::is_same<subd::Index, vtkTypeInt32>::value, "kernel indices are VTK's 32-bit ints");
 
 namespace
 {
 struct AdoptedVectors
 {
   std::mutex Mutex;
-  std::unordered_map<const void*, std::vector<std::int32_t>> ByStorage;
+  std::unordered_map<const void*, subd::IndexArray> ByStorage;
 };
 
 AdoptedVectors& Registry()
@@ -19,7 +22,7 @@ AdoptedVectors& Registry()
 
 void FreeAdopted(void* storage)
 {
-  std::vector<std::int32_t> released;
+  subd::IndexArray released;
   {
     AdoptedVectors& registry = Registry();
     std::lock_guard<std::mutex> lock(registry.Mutex);
@@ -35,12 +38,12 @@ void FreeAdopted(void* storage)
 }
 }
 
-vtkSmartPointer<vtkTypeInt32Array> vtkSubDAdoptVector(std::vector<std::int32_t>&& values)
+vtkSmartPointer<vtkTypeInt32Array> vtkSubDAdoptVector(subd::IndexArray&& values)
 {
   auto array = vtkSmartPointer<vtkTypeInt32Array>::New();
   if (values.empty())
   {
-    values = std::vector<std::int32_t>();
+    values = subd::IndexArray();
     return array;
   }
   std::int32_t* storage = values.data();
@@ -50,7 +53,7 @@ vtkSmartPointer<vtkTypeInt32Array> vtkSubDAdoptVector(std::vector<std::int32_t>&
     std::lock_guard<std::mutex> lock(registry.Mutex);
     registry.ByStorage.emplace(storage, std::move(values)); // moving keeps the storage
   }
-  values = std::vector<std::int32_t>();
+  values = subd::IndexArray();
   array->SetArray(storage, size, 0, vtkAbstractArray::VTK_DATA_ARRAY_USER_DEFINED);
   array->SetArrayFreeFunction(&FreeAdopted);
   return array;

@@ -1,4 +1,4 @@
-// Private helper of SubD's filters: hands a std::vector's storage to a VTK array without
+// Private helper of SubD's filters: hands a kernel array's storage to a VTK array without
 // copying it.
 //
 // vtkBuffer frees foreign memory through a plain function of the pointer only, so the
@@ -9,15 +9,13 @@
 #ifndef vtkSubDAdoptedArray_h
 #define vtkSubDAdoptedArray_h
 
-#include "vtkSmartPointer.h"
 #include "SubDFiltersModule.h" // export macro
+#include "SubDTypes.h"          // IndexArray
+#include "vtkSmartPointer.h"
 #include "vtkTypeInt32Array.h"
 
-#include <cstdint>
-#include <vector>
-
 /// A single-component array over `values`' storage; `values` is left empty.
-SUBDFILTERS_EXPORT vtkSmartPointer<vtkTypeInt32Array> vtkSubDAdoptVector(std::vector<std::int32_t>&& values);
+SUBDFILTERS_EXPORT vtkSmartPointer<vtkTypeInt32Array> vtkSubDAdoptVector(subd::IndexArray&& values);
 
 /// How many adopted vectors VTK arrays still hold (for tests: 0 once they are all freed).
 SUBDFILTERS_EXPORT std::size_t vtkSubDNumberOfAdoptedVectors();

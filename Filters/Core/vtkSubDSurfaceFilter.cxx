@@ -730,7 +730,7 @@ vtkSmartPointer<vtkCellArray> vtkSubDSurfaceFilter::MakeOutputFaces()
 {
   vtkInternals& cache = *this->Internals;
   vtkNew<vtkCellArray> polys;
-  std::vector<subd::Index> kernelOffsets, kernelVertices;
+  subd::IndexArray kernelOffsets, kernelVertices;
   if (!cache.CompactPoints && cache.Hierarchy.Finest.Topology.ReleaseFaces(kernelOffsets, kernelVertices))
   {
     polys->SetData(vtkSubDAdoptVector(std::move(kernelOffsets)), vtkSubDAdoptVector(std::move(kernelVertices)));

@@ -140,7 +140,8 @@ Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology dep
   auto cornerPoint = [&](Index f, Index corner) { return points.PointOfCorner[topo.GetFaceOffset(f) + corner]; };
 
   Level child;
-  std::vector<Index> offsets{ 0 }, vertices, origins, holes;
+  IndexArray offsets{ 0 }, vertices;
+  std::vector<Index> origins, holes;
   // Adds the face of the points from `first` on, without repeats of welded points; a face
   // left with fewer than three points is dropped.
   auto addFace = [&](size_t first, Index origin, std::uint8_t hole) {

@@ -158,8 +158,8 @@ std::vector<VertexRulePlan> PlanVertexRules(const Level& level)
   return plans;
 }
 
-void SetChildTopology(const Level& parent, Level& child, Index numPoints, std::vector<Index> offsets,
-  std::vector<Index> vertices, ChildTopology depth)
+void SetChildTopology(const Level& parent, Level& child, Index numPoints, IndexArray offsets,
+  IndexArray vertices, ChildTopology depth)
 {
   child.Depth = parent.Depth + 1;
   child.Creasing = parent.Creasing;

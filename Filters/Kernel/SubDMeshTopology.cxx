@@ -9,7 +9,7 @@ namespace subd
 namespace
 {
 // Turns per-item counts stored at [i+1] into offsets (exclusive prefix sum in place).
-void CountsToOffsets(std::vector<Index>& offsets)
+void CountsToOffsets(IndexArray& offsets)
 {
   for (size_t i = 1; i < offsets.size(); ++i)
   {
@@ -18,8 +18,7 @@ void CountsToOffsets(std::vector<Index>& offsets)
 }
 }
 
-MeshTopology MeshTopology::BuildFacesOnly(
-  Index numVertices, std::vector<Index> faceOffsets, std::vector<Index> faceVertices)
+MeshTopology MeshTopology::BuildFacesOnly(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices)
 {
   MeshTopology topology;
   topology.NumVertices = numVertices;
@@ -32,7 +31,7 @@ MeshTopology MeshTopology::BuildFacesOnly(
   return topology;
 }
 
-bool MeshTopology::ReleaseFaces(std::vector<Index>& faceOffsets, std::vector<Index>& faceVertices)
+bool MeshTopology::ReleaseFaces(IndexArray& faceOffsets, IndexArray& faceVertices)
 {
   if (this->HasEdges())
   {
@@ -45,7 +44,13 @@ bool MeshTopology::ReleaseFaces(std::vector<Index>& faceOffsets, std::vector<Ind
 }
 
 MeshTopology MeshTopology::Build(
-  Index numVertices, std::vector<Index> faceOffsets, std::vector<Index> faceVertices)
+  Index numVertices, const std::vector<Index>& faceOffsets, const std::vector<Index>& faceVertices)
+{
+  return Build(numVertices, IndexArray(faceOffsets.begin(), faceOffsets.end()),
+    IndexArray(faceVertices.begin(), faceVertices.end()));
+}
+
+MeshTopology MeshTopology::Build(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices)
 {
   MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), std::move(faceVertices));
   topology.BuildEdges();
@@ -65,7 +70,7 @@ void MeshTopology::BuildEdges()
   const size_t numHalfEdges = this->FaceVertices.size();
 
   std::vector<Index> upper(numHalfEdges);
-  std::vector<Index> bucketOffsets(static_cast<size_t>(this->NumVertices) + 1, 0);
+  IndexArray bucketOffsets(static_cast<size_t>(this->NumVertices) + 1, 0);
   for (Index f = 0; f < numFaces; ++f)
   {
     const Index begin = this->FaceOffsets[f], end = this->FaceOffsets[f + 1];
@@ -81,7 +86,7 @@ void MeshTopology::BuildEdges()
 
   std::vector<Index> buckets(numHalfEdges);
   {
-    std::vector<Index> fill(bucketOffsets.begin(), bucketOffsets.end() - 1);
+    IndexArray fill(bucketOffsets.begin(), bucketOffsets.end() - 1);
     for (Index f = 0; f < numFaces; ++f)
     {
       const Index begin = this->FaceOffsets[f], end = this->FaceOffsets[f + 1];
@@ -148,7 +153,7 @@ void MeshTopology::BuildEdgeFaces()
   }
   CountsToOffsets(this->EdgeFaceOffsets);
   this->EdgeFaces.resize(this->FaceEdges.size());
-  std::vector<Index> fill(this->EdgeFaceOffsets.begin(), this->EdgeFaceOffsets.end() - 1);
+  IndexArray fill(this->EdgeFaceOffsets.begin(), this->EdgeFaceOffsets.end() - 1);
   for (Index f = 0; f < numFaces; ++f)
   {
     for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
@@ -170,7 +175,7 @@ void MeshTopology::BuildVertexRelations()
   this->VertexFaces.resize(this->FaceVertices.size());
   this->VertexFaceCorners.resize(this->FaceVertices.size());
   {
-    std::vector<Index> fill(this->VertexFaceOffsets.begin(), this->VertexFaceOffsets.end() - 1);
+    IndexArray fill(this->VertexFaceOffsets.begin(), this->VertexFaceOffsets.end() - 1);
     const Index numFaces = this->GetNumFaces();
     for (Index f = 0; f < numFaces; ++f)
     {
@@ -190,7 +195,7 @@ void MeshTopology::BuildVertexRelations()
   }
   CountsToOffsets(this->VertexEdgeOffsets);
   this->VertexEdges.resize(this->EdgeVertices.size());
-  std::vector<Index> fill(this->VertexEdgeOffsets.begin(), this->VertexEdgeOffsets.end() - 1);
+  IndexArray fill(this->VertexEdgeOffsets.begin(), this->VertexEdgeOffsets.end() - 1);
   const Index numEdges = this->GetNumEdges();
   for (Index e = 0; e < numEdges; ++e)
   {

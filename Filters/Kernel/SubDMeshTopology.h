@@ -41,8 +41,10 @@ public:
   /// Builds the topology. Preconditions (checked by the caller, see MeshValidation): every
   /// face has >= 3 corners, no face repeats a vertex, all indices are in [0, numVertices).
   /// `faceOffsets` has numFaces+1 entries, the last one equal to the size of `faceVertices`.
-  static MeshTopology Build(Index numVertices, std::vector<Index> faceOffsets,
-    std::vector<Index> faceVertices);
+  static MeshTopology Build(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices);
+  /// The same from std::vector (copied: for base meshes, which are small).
+  static MeshTopology Build(Index numVertices, const std::vector<Index>& faceOffsets,
+    const std::vector<Index>& faceVertices);
 
   Index GetNumVertices() const { return NumVertices; }
   Index GetNumFaces() const { return static_cast<Index>(FaceOffsets.size()) - 1; }
@@ -88,19 +90,18 @@ public:
   Index GetMaxValence() const { return MaxValence; }
 
   /// Raw arrays (read-only), for splits that emit child topology in bulk.
-  const std::vector<Index>& GetFaceOffsetArray() const { return FaceOffsets; }
-  const std::vector<Index>& GetFaceVertexArray() const { return FaceVertices; }
-  const std::vector<Index>& GetFaceEdgeArray() const { return FaceEdges; }
+  const IndexArray& GetFaceOffsetArray() const { return FaceOffsets; }
+  const IndexArray& GetFaceVertexArray() const { return FaceVertices; }
+  const IndexArray& GetFaceEdgeArray() const { return FaceEdges; }
 
   /// Keeps only the faces: no edges, no incidence relations, no tags (GetNumEdges() is 0).
   /// For a last level that is only output.
-  static MeshTopology BuildFacesOnly(Index numVertices, std::vector<Index> faceOffsets,
-    std::vector<Index> faceVertices);
+  static MeshTopology BuildFacesOnly(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices);
   bool HasEdges() const { return !FaceEdges.empty() || FaceVertices.empty(); }
   /// Moves a faces-only topology's face arrays out (offsets, corners), leaving its vertices
   /// and no faces: a caller that hands the faces on (to an output) then needs no copy.
   /// Returns false, moving nothing, when the topology has edges (its relations index them).
-  bool ReleaseFaces(std::vector<Index>& faceOffsets, std::vector<Index>& faceVertices);
+  bool ReleaseFaces(IndexArray& faceOffsets, IndexArray& faceVertices);
 
   /// For a triangle f and one of its edges e: the vertex of f not on e.
   Index GetTriangleOppositeVertex(Index f, Index e) const;
@@ -127,7 +128,7 @@ private:
   // Splits that know their child's relations write them directly (SubDPrimalChildTopology).
   friend struct PrimalChildAssembly;
 
-  static IndexSpan Span(const std::vector<Index>& data, const std::vector<Index>& offsets, Index i)
+  static IndexSpan Span(const IndexArray& data, const IndexArray& offsets, Index i)
   {
     return IndexSpan{ data.data() + offsets[i], offsets[i + 1] - offsets[i] };
   }
@@ -138,19 +139,19 @@ private:
   void TagVertices();
 
   Index NumVertices = 0;
-  std::vector<Index> FaceOffsets{ 0 };
-  std::vector<Index> FaceVertices;
-  std::vector<Index> FaceEdges;
-  std::vector<Index> EdgeVertices;
-  std::vector<Index> EdgeFaceOffsets{ 0 };
-  std::vector<Index> EdgeFaces;
-  std::vector<Index> VertexFaceOffsets{ 0 };
-  std::vector<Index> VertexFaces;
-  std::vector<Index> VertexFaceCorners;
-  std::vector<Index> VertexEdgeOffsets{ 0 };
-  std::vector<Index> VertexEdges;
-  std::vector<EdgeTag> EdgeTags;
-  std::vector<VertexTag> VertexTags;
+  IndexArray FaceOffsets{ 0 };
+  IndexArray FaceVertices;
+  IndexArray FaceEdges;
+  IndexArray EdgeVertices;
+  IndexArray EdgeFaceOffsets{ 0 };
+  IndexArray EdgeFaces;
+  IndexArray VertexFaceOffsets{ 0 };
+  IndexArray VertexFaces;
+  IndexArray VertexFaceCorners;
+  IndexArray VertexEdgeOffsets{ 0 };
+  IndexArray VertexEdges;
+  LevelArray<EdgeTag> EdgeTags;
+  LevelArray<VertexTag> VertexTags;
   Index NumNonManifoldEdges = 0;
   Index NumNonManifoldVertices = 0;
   Index NumBoundaryEdges = 0;

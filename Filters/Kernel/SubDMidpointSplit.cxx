@@ -207,7 +207,7 @@ LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
   AddVertexFaces(parent, keptPoint, insertedAtCorner, vOffsets, vVertices, vOrigins, vHoles);
 
   Level& child = result.Child;
-  std::vector<Index> offsets{ 0 }, vertices;
+  IndexArray offsets{ 0 }, vertices;
   for (Index f = 0; f < topo.GetNumFaces(); ++f)
   {
     const IndexSpan edges = topo.GetFaceEdges(f);

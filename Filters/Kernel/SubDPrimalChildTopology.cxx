@@ -169,13 +169,13 @@ struct TriangleSplitShape
 struct PrimalChildAssembly
 {
   template <typename Shape>
-  static MeshTopology Assemble(const Shape& shape, std::vector<Index> offsets, std::vector<Index> vertices,
+  static MeshTopology Assemble(const Shape& shape, IndexArray offsets, IndexArray vertices,
     const ParallelFor& parallelFor);
 };
 
 template <typename Shape>
 MeshTopology PrimalChildAssembly::Assemble(
-  const Shape& shape, std::vector<Index> offsets, std::vector<Index> vertices, const ParallelFor& parallelFor)
+  const Shape& shape, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
 {
   const MeshTopology& parent = shape.Parent;
   const Index numFaces = parent.GetNumFaces();
@@ -197,7 +197,8 @@ MeshTopology PrimalChildAssembly::Assemble(
 
   // Edges: each parent face numbers the edges first met among its children from the sum of
   // the counts of the faces before it.
-  std::vector<Index> firstEdgeOfFace(static_cast<size_t>(numFaces) + 1, 0);
+  IndexArray firstEdgeOfFace(static_cast<size_t>(numFaces) + 1);
+  firstEdgeOfFace[0] = 0;
   forEachFace([&](Index f) {
     Index count = 0;
     shape.VisitCorners(f, [&count](Index, Index, bool isNew) { count += isNew; });
@@ -205,10 +206,11 @@ MeshTopology PrimalChildAssembly::Assemble(
   });
   std::partial_sum(firstEdgeOfFace.begin(), firstEdgeOfFace.end(), firstEdgeOfFace.begin());
 
-  std::vector<Index> edgeOfKey(static_cast<size_t>(numChildEdges));
+  IndexArray edgeOfKey(static_cast<size_t>(numChildEdges));
   child.EdgeVertices.resize(2 * static_cast<size_t>(numChildEdges));
   child.EdgeTags.resize(static_cast<size_t>(numChildEdges));
-  child.EdgeFaceOffsets.assign(static_cast<size_t>(numChildEdges) + 1, 0);
+  child.EdgeFaceOffsets.resize(static_cast<size_t>(numChildEdges) + 1); // counts of every edge below
+  child.EdgeFaceOffsets[0] = 0;
   constexpr Index size = Shape::ChildFaceSize;
   forEachFace([&](Index f) {
     Index next = firstEdgeOfFace[f];
@@ -267,8 +269,9 @@ MeshTopology PrimalChildAssembly::Assemble(
 
   // Vertex relations, by the kind of point: face points, edge points, vertex points.
   const size_t numSlots = static_cast<size_t>(numChildVertices) + 1;
-  child.VertexFaceOffsets.assign(numSlots, 0);
-  child.VertexEdgeOffsets.assign(numSlots, 0);
+  child.VertexFaceOffsets.resize(numSlots); // counts of every point below
+  child.VertexEdgeOffsets.resize(numSlots);
+  child.VertexFaceOffsets[0] = child.VertexEdgeOffsets[0] = 0;
   child.VertexTags.resize(static_cast<size_t>(numChildVertices));
   // Counts at [point + 1], and the tags: face points are interior, edge points take their
   // edge's, vertex points their vertex's.
@@ -373,21 +376,21 @@ MeshTopology PrimalChildAssembly::Assemble(
   return child;
 }
 
-MeshTopology PrimalChildTopology::OfQuadSplit(const MeshTopology& parent, std::vector<Index> offsets,
-  std::vector<Index> vertices, const ParallelFor& parallelFor)
+MeshTopology PrimalChildTopology::OfQuadSplit(const MeshTopology& parent, IndexArray offsets,
+  IndexArray vertices, const ParallelFor& parallelFor)
 {
   return PrimalChildAssembly::Assemble(QuadSplitShape{ parent }, std::move(offsets), std::move(vertices), parallelFor);
 }
 
-MeshTopology PrimalChildTopology::OfTriangleSplit(const MeshTopology& parent, std::vector<Index> offsets,
-  std::vector<Index> vertices, const ParallelFor& parallelFor)
+MeshTopology PrimalChildTopology::OfTriangleSplit(const MeshTopology& parent, IndexArray offsets,
+  IndexArray vertices, const ParallelFor& parallelFor)
 {
   return PrimalChildAssembly::Assemble(
     TriangleSplitShape{ parent }, std::move(offsets), std::move(vertices), parallelFor);
 }
 
 void PrimalChildTopology::SetChildLevel(const Level& parent, Level& child, Split split, Index numChildVertices,
-  std::vector<Index> offsets, std::vector<Index> vertices, ChildTopology depth, Index firstEdgePoint,
+  IndexArray offsets, IndexArray vertices, ChildTopology depth, Index firstEdgePoint,
   Index firstVertexPoint, const ParallelFor& parallelFor)
 {
   if (depth == ChildTopology::FacesOnly)

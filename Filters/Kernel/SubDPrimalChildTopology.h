@@ -33,12 +33,12 @@ class SUBDKERNEL_EXPORT PrimalChildTopology
 public:
   /// The child of the quad split of `parent` (SubDQuadSplit.h), whose faces (four corners
   /// each, numbered as the split numbers them) are `offsets` and `vertices`.
-  static MeshTopology OfQuadSplit(const MeshTopology& parent, std::vector<Index> offsets,
-    std::vector<Index> vertices, const ParallelFor& parallelFor);
+  static MeshTopology OfQuadSplit(const MeshTopology& parent, IndexArray offsets,
+    IndexArray vertices, const ParallelFor& parallelFor);
 
   /// The child of the triangle split of the all-triangle `parent` (SubDTriangleSplit.h).
-  static MeshTopology OfTriangleSplit(const MeshTopology& parent, std::vector<Index> offsets,
-    std::vector<Index> vertices, const ParallelFor& parallelFor);
+  static MeshTopology OfTriangleSplit(const MeshTopology& parent, IndexArray offsets,
+    IndexArray vertices, const ParallelFor& parallelFor);
 
   enum class Split
   {
@@ -48,7 +48,7 @@ public:
   /// Finishes a primal split's child level from its faces: faces only, or the full topology
   /// derived from the parent's with the sharpness the child inherits (InheritPrimalSharpness).
   static void SetChildLevel(const Level& parent, Level& child, Split split, Index numChildVertices,
-    std::vector<Index> offsets, std::vector<Index> vertices, ChildTopology depth, Index firstEdgePoint,
+    IndexArray offsets, IndexArray vertices, ChildTopology depth, Index firstEdgePoint,
     Index firstVertexPoint, const ParallelFor& parallelFor);
 };
 }

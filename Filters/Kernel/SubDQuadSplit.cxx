@@ -13,8 +13,8 @@ Level SplitQuads(const Level& parent, ChildTopology depth, const ParallelFor& pa
   const Index numCorners = topo.GetNumFaceCorners();
   const QuadSplitNumbering number{ numFaces, numEdges };
 
-  std::vector<Index> childOffsets(static_cast<size_t>(numCorners) + 1);
-  std::vector<Index> childVertices(static_cast<size_t>(numCorners) * 4);
+  IndexArray childOffsets(static_cast<size_t>(numCorners) + 1);
+  IndexArray childVertices(static_cast<size_t>(numCorners) * 4);
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {

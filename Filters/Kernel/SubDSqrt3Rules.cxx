@@ -264,7 +264,7 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
 
   // Topology.
   Level& child = result.Child;
-  std::vector<Index> offsets{ 0 }, vertices;
+  IndexArray offsets{ 0 }, vertices;
   auto addTriangle = [&](Index x, Index y, Index z, Index originFace, std::uint8_t hole) {
     vertices.insert(vertices.end(), { x, y, z });
     offsets.push_back(static_cast<Index>(vertices.size()));

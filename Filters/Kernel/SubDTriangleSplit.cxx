@@ -10,8 +10,8 @@ Level SplitTriangles(const Level& parent, ChildTopology depth, const ParallelFor
   const Index numEdges = topo.GetNumEdges();
   const TriangleSplitNumbering number{ numEdges };
 
-  std::vector<Index> childOffsets(4 * static_cast<size_t>(numFaces) + 1);
-  std::vector<Index> childVertices(12 * static_cast<size_t>(numFaces));
+  IndexArray childOffsets(4 * static_cast<size_t>(numFaces) + 1);
+  IndexArray childVertices(12 * static_cast<size_t>(numFaces));
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {

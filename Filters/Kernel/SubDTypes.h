@@ -8,11 +8,52 @@
 #include "SubDKernelModule.h" // export macro
 #include <cstdint>
 #include <cstddef>
+#include <memory>
+#include <new>
+#include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace subd
 {
 using Index = std::int32_t;
 constexpr Index InvalidIndex = -1;
+
+/// std::allocator, except that elements added without a value (resize, the size
+/// constructor) are default-initialised: left as they are for int, float and plain structs.
+/// Resizing a large array then writes no byte, so the first write to each page happens in
+/// the (parallel) loop that fills it rather than in a serial zero-fill, which on a level of
+/// tens of millions of elements is most of the cost of a serial pass. Every element must be
+/// written before it is read; use assign() where zeros are meant.
+template <typename T>
+struct DefaultInitAllocator : std::allocator<T>
+{
+  DefaultInitAllocator() = default;
+  template <typename U>
+  DefaultInitAllocator(const DefaultInitAllocator<U>&) noexcept
+  {
+  }
+  template <typename U>
+  struct rebind
+  {
+    using other = DefaultInitAllocator<U>;
+  };
+  template <typename U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
+  {
+    ::new (static_cast<void*>(p)) U;
+  }
+  template <typename U, typename... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+
+/// The kernel's large per-element arrays (see DefaultInitAllocator).
+template <typename T>
+using LevelArray = std::vector<T, DefaultInitAllocator<T>>;
+using IndexArray = LevelArray<Index>;
 
 /// A read-only view of contiguous indices (C++17 has no std::span).
 struct IndexSpan

@@ -95,9 +95,9 @@ TEST(MeshTopology, PinchedClosedFansAreNonManifold)
 TEST(MeshTopology, InconsistentOrientationIsNonManifold)
 {
   // Both triangles run along edge 0->1 in the same direction.
-  const MeshTopology t = MeshTopology::Build(4, { 0, 3, 6 }, { 0, 1, 2, 0, 1, 3 });
+  const MeshTopology t = MeshTopology::Build(4, subd::IndexArray{ 0, 3, 6 }, subd::IndexArray{ 0, 1, 2, 0, 1, 3 });
   EXPECT_TRUE(t.GetEdgeTag(t.FindEdge(0, 1)).NonManifold);
-  const MeshTopology ok = MeshTopology::Build(4, { 0, 3, 6 }, { 0, 1, 2, 1, 0, 3 });
+  const MeshTopology ok = MeshTopology::Build(4, subd::IndexArray{ 0, 3, 6 }, subd::IndexArray{ 0, 1, 2, 1, 0, 3 });
   EXPECT_FALSE(ok.GetEdgeTag(ok.FindEdge(0, 1)).NonManifold);
 }
 
