@@ -15,10 +15,11 @@ StencilTable BuildCatmullClarkStencils(const Level& parent)
   return WriteStencilTable(CatmullClarkRowWriter(parent), expected);
 }
 
-CatmullClarkRowWriter::CatmullClarkRowWriter(const Level& parent)
+CatmullClarkRowWriter::CatmullClarkRowWriter(const Level& parent, const ParallelFor& parallelFor)
   : Parent(parent)
   , Topology(parent.Topology)
   , Number{ parent.Topology.GetNumFaces(), parent.Topology.GetNumEdges() }
+  , SmoothVertex(FindSmoothClosedVertices(parent, parallelFor))
 {
   const MeshTopology& topo = this->Topology;
   for (Index f = 0; f < topo.GetNumFaces(); ++f)
@@ -70,10 +71,28 @@ Index CatmullClarkRowWriter::WriteVertexRow(Index v, Index* sources, double* wei
 {
   const MeshTopology& topo = this->Topology;
   const Index numParents = this->GetNumParents();
-  const VertexRulePlan plan = PlanVertexRule(this->Parent, v);
   const IndexSpan edges = topo.GetVertexEdges(v);
   const IndexSpan faces = topo.GetVertexFaces(v);
   const Index smoothSize = 1 + 2 * faces.size();
+  if (this->SmoothVertex[v])
+  {
+    // Every edge point around v follows the smooth rule: the form that reads them.
+    const double n = faces.size();
+    sources[0] = v;
+    weights[0] = (n - 3.0) / n;
+    for (Index i = 0; i < edges.size(); ++i)
+    {
+      sources[1 + i] = numParents + this->Number.EdgePoint(edges[i]);
+      weights[1 + i] = 4.0 / (n * n);
+    }
+    for (Index i = 0; i < faces.size(); ++i)
+    {
+      sources[1 + edges.size() + i] = numParents + this->Number.FacePoint(faces[i]);
+      weights[1 + edges.size() + i] = -1.0 / (n * n);
+    }
+    return smoothSize;
+  }
+  const VertexRulePlan plan = PlanVertexRule(this->Parent, v);
   WritePrimalVertexRow(topo, plan, v, smoothSize, sources, weights, [&](Index* src, double* wts) {
     src[0] = v;
     const double n = faces.size();

@@ -7,13 +7,16 @@
 //   edge point   e  = (v0 + v1 + f0 + f1) / 4                     smooth edge (two faces)
 //                e  = (v0 + v1) / 2                               sharp, boundary, non-manifold
 //   vertex point v' = (n-2)/n v + 1/n^2 sum(e_i) + 1/n^2 sum(f_i)  Smooth or Dart rule, n faces,
-//                     e_i the far ends of the n edges, f_i the new face points
+//                     e_i the far ends of the n edges, f_i the new face points; where nothing
+//                     around v is sharp, the same from the new edge points E_i:
+//                v' = (n-3)/n v + 4/n^2 sum(E_i) - 1/n^2 sum(f_i)  (sum(E_i) = (n v + sum(e_i)
+//                     + 2 sum(f_i)) / 4), one read per neighbour instead of two
 //                v' = 3/4 v + 1/8 (a + b)                         Crease rule, a, b the far ends
 //                                                                  of the two sharp edges
 //                v' = v                                           Corner rule
 //
-// The returned table has two blocks: the face points, then the edge and vertex points,
-// which read the face points of the same level. Its rows are numbered like the child
+// The returned table has three blocks: the face points, the edge points, which read the
+// face points of the same level, and the vertex points, which read both. Its rows are numbered like the child
 // points of the quad split (SubDQuadSplit.h).
 #ifndef SubDCatmullClarkRules_h
 #define SubDCatmullClarkRules_h
@@ -32,10 +35,13 @@ SUBDKERNEL_EXPORT StencilTable BuildCatmullClarkStencils(const Level& parent);
 class SUBDKERNEL_EXPORT CatmullClarkRowWriter
 {
 public:
-  explicit CatmullClarkRowWriter(const Level& parent);
+  explicit CatmullClarkRowWriter(const Level& parent, const ParallelFor& parallelFor = SerialFor);
   Index GetNumParents() const { return this->Topology.GetNumVertices(); }
   Index GetNumRows() const { return this->Number.VertexPoint(this->Topology.GetNumVertices()); }
-  std::vector<Index> GetBlockEnds() const { return { this->Number.EdgePoint(0), this->GetNumRows() }; }
+  std::vector<Index> GetBlockEnds() const
+  {
+    return { this->Number.EdgePoint(0), this->Number.VertexPoint(0), this->GetNumRows() };
+  }
   Index GetMaxRowSize() const { return this->MaxRowSize; }
   Index WriteRow(Index row, Index* sources, double* weights) const;
   template <typename T>
@@ -49,11 +55,12 @@ private:
   const MeshTopology& Topology;
   QuadSplitNumbering Number;
   Index MaxRowSize = 4;
+  std::vector<std::uint8_t> SmoothVertex; // FindSmoothClosedVertices
 };
 
 // Face points always; edge points of smooth edges; vertex points of vertices with nothing
-// sharp at or around them and a closed fan (PlanVertexRule's smooth case). Sources and
-// weights in WriteRow's order.
+// sharp at or around them and a closed fan (PlanVertexRule's smooth case), from the edge
+// points. Sources and weights in WriteRow's order.
 template <typename T>
 bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
 {
@@ -88,22 +95,21 @@ bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T*
     return true;
   }
   const Index v = row - firstVertexPoint;
-  if (!IsSmoothClosedVertex(this->Parent, v))
+  if (!this->SmoothVertex[v])
   {
     return false;
   }
   const IndexSpan edges = topo.GetVertexEdges(v);
   const IndexSpan faces = topo.GetVertexFaces(v);
   const double n = faces.size();
-  const double ringWeight = 1.0 / (n * n);
-  point.Add((n - 2.0) / n, parents + 3 * static_cast<size_t>(v));
+  point.Add((n - 3.0) / n, parents + 3 * static_cast<size_t>(v));
   for (Index e : edges)
   {
-    point.Add(ringWeight, parents + 3 * static_cast<size_t>(topo.GetOtherEndpoint(e, v)));
+    point.Add(4.0 / (n * n), children + 3 * static_cast<size_t>(this->Number.EdgePoint(e)));
   }
   for (Index f : faces)
   {
-    point.Add(ringWeight, children + 3 * static_cast<size_t>(this->Number.FacePoint(f)));
+    point.Add(-1.0 / (n * n), children + 3 * static_cast<size_t>(this->Number.FacePoint(f)));
   }
   point.Store(dst);
   return true;

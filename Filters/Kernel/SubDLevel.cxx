@@ -148,6 +148,27 @@ std::vector<float> EdgeCreaseWeights(const Level& level)
   return weights;
 }
 
+std::vector<std::uint8_t> FindSmoothClosedVertices(const Level& level, const ParallelFor& parallelFor)
+{
+  const MeshTopology& topo = level.Topology;
+  std::vector<std::uint8_t> smooth(static_cast<size_t>(topo.GetNumVertices()));
+  parallelFor(0, topo.GetNumVertices(), [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v)
+    {
+      const Index numEdges = topo.GetVertexEdges(v).size();
+      smooth[v] = numEdges > 0 && topo.GetVertexFaces(v).size() == numEdges && !IsSharp(level.VertexSharpness[v]);
+    }
+  });
+  for (Index e = 0; e < topo.GetNumEdges(); ++e)
+  {
+    if (IsSharp(level.EdgeSharpness[e]))
+    {
+      smooth[topo.GetEdgeVertices(e)[0]] = smooth[topo.GetEdgeVertices(e)[1]] = 0;
+    }
+  }
+  return smooth;
+}
+
 std::vector<VertexRulePlan> PlanVertexRules(const Level& level)
 {
   std::vector<VertexRulePlan> plans(static_cast<size_t>(level.Topology.GetNumVertices()));

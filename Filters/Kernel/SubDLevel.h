@@ -107,6 +107,12 @@ inline bool IsSmoothClosedVertex(const Level& level, Index v)
   return numEdges > 0 && level.Topology.GetVertexFaces(v).size() == numEdges && NothingSharpAt(level, v);
 }
 
+/// IsSmoothClosedVertex for every vertex of `level`, one byte each. A pass over the edges
+/// marks the ends of the sharp ones, where the per-vertex test reads the sharpness of every
+/// edge around the vertex: scattered reads that were most of a smooth vertex row's cost.
+SUBDKERNEL_EXPORT std::vector<std::uint8_t> FindSmoothClosedVertices(
+  const Level& level, const ParallelFor& parallelFor = SerialFor);
+
 /// The crease weight of every edge of `level`.
 SUBDKERNEL_EXPORT std::vector<float> EdgeCreaseWeights(const Level& level);
 

@@ -21,11 +21,12 @@ StencilTable BuildLoopStencils(const Level& parent)
   return WriteStencilTable(LoopRowWriter(parent), expected);
 }
 
-LoopRowWriter::LoopRowWriter(const Level& parent)
+LoopRowWriter::LoopRowWriter(const Level& parent, const ParallelFor& parallelFor)
   : Parent(parent)
   , Topology(parent.Topology)
   , Number{ parent.Topology.GetNumEdges() }
   , MaxRowSize(std::max<Index>(4, 1 + parent.Topology.GetMaxValence()))
+  , SmoothVertex(FindSmoothClosedVertices(parent, parallelFor))
 {
   this->Betas.resize(64);
   for (Index n = 1; n < 64; ++n)
@@ -49,8 +50,22 @@ Index LoopRowWriter::WriteRow(Index row, Index* sources, double* weights) const
     return PrimalEdgeRowSize(creaseWeight);
   }
   const Index v = row - this->Number.VertexPoint(0);
-  const VertexRulePlan plan = PlanVertexRule(this->Parent, v);
   const IndexSpan edges = topo.GetVertexEdges(v);
+  if (this->SmoothVertex[v])
+  {
+    // Every edge point around v follows the smooth rule: the form that reads them.
+    const Index n = edges.size();
+    const double beta = this->Beta(n);
+    sources[0] = v;
+    weights[0] = 1.0 - 1.6 * n * beta;
+    for (Index i = 0; i < n; ++i)
+    {
+      sources[1 + i] = this->GetNumParents() + this->Number.EdgePoint(edges[i]);
+      weights[1 + i] = 1.6 * beta;
+    }
+    return 1 + n;
+  }
+  const VertexRulePlan plan = PlanVertexRule(this->Parent, v);
   WritePrimalVertexRow(topo, plan, v, 1 + edges.size(), sources, weights, [&](Index* src, double* wts) {
     const Index n = edges.size();
     src[0] = v;

@@ -7,12 +7,16 @@
 //                e  = (v0 + v1) / 2                   sharp, boundary, non-manifold
 //   vertex point v' = (1 - n beta) v + beta sum(v_i)   Smooth or Dart rule, n neighbours, with
 //                     beta(n) = (1/n) (5/8 - (3/8 + 1/4 cos(2 pi / n))^2)
-//                     (beta = 1/16 for n = 6; beta = 3/16 for n = 3)
+//                     (beta = 1/16 for n = 6; beta = 3/16 for n = 3); where nothing around
+//                     v is sharp, the same from the new edge points E_i:
+//                v' = (1 - 8/5 n beta) v + 8/5 beta sum(E_i)   (sum(E_i) = 3/8 n v + 5/8
+//                     sum(v_i), each v_i a wing of two edges), one read per neighbour, not two
 //                v' = 3/4 v + 1/8 (a + b)            Crease rule
 //                v' = v                              Corner rule
 //
-// Rows are numbered like the child points of the triangle split (SubDTriangleSplit.h) and
-// only read parent points (one block).
+// Rows are numbered like the child points of the triangle split (SubDTriangleSplit.h), in
+// two blocks: the edge points, which read parent points, and the vertex points, which also
+// read edge points.
 #ifndef SubDLoopRules_h
 #define SubDLoopRules_h
 
@@ -34,10 +38,10 @@ SUBDKERNEL_EXPORT StencilTable BuildLoopStencils(const Level& parent);
 class SUBDKERNEL_EXPORT LoopRowWriter
 {
 public:
-  explicit LoopRowWriter(const Level& parent);
+  explicit LoopRowWriter(const Level& parent, const ParallelFor& parallelFor = SerialFor);
   Index GetNumParents() const { return this->Topology.GetNumVertices(); }
   Index GetNumRows() const { return this->Number.VertexPoint(this->Topology.GetNumVertices()); }
-  std::vector<Index> GetBlockEnds() const { return { this->GetNumRows() }; }
+  std::vector<Index> GetBlockEnds() const { return { this->Number.VertexPoint(0), this->GetNumRows() }; }
   Index GetMaxRowSize() const { return this->MaxRowSize; }
   Index WriteRow(Index row, Index* sources, double* weights) const;
   template <typename T>
@@ -54,12 +58,14 @@ private:
   TriangleSplitNumbering Number;
   Index MaxRowSize;
   std::vector<double> Betas; // Beta(n) for small valences (6: 1/16 exactly)
+  std::vector<std::uint8_t> SmoothVertex; // FindSmoothClosedVertices
 };
 
 // Edge points of smooth edges; vertex points of vertices with nothing sharp at or around
-// them and a closed fan (PlanVertexRule's smooth case). Sources and weights in WriteRow's order.
+// them and a closed fan (PlanVertexRule's smooth case), from the edge points. Sources and
+// weights in WriteRow's order.
 template <typename T>
-bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
+bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
 {
   const MeshTopology& topo = this->Topology;
   PointSum point;
@@ -81,17 +87,17 @@ bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst
     return true;
   }
   const Index v = row - firstVertexPoint;
-  if (!IsSmoothClosedVertex(this->Parent, v))
+  if (!this->SmoothVertex[v])
   {
     return false;
   }
   const IndexSpan edges = topo.GetVertexEdges(v);
   const Index n = edges.size();
   const double beta = this->Beta(n);
-  point.Add(1.0 - n * beta, parents + 3 * static_cast<size_t>(v));
+  point.Add(1.0 - 1.6 * n * beta, parents + 3 * static_cast<size_t>(v));
   for (Index e : edges)
   {
-    point.Add(beta, parents + 3 * static_cast<size_t>(topo.GetOtherEndpoint(e, v)));
+    point.Add(1.6 * beta, children + 3 * static_cast<size_t>(this->Number.EdgePoint(e)));
   }
   point.Store(dst);
   return true;

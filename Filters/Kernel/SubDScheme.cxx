@@ -28,7 +28,7 @@ StencilTable CatmullClarkScheme::BuildStencils(const Level& parent) const
 
 std::shared_ptr<const RowSource> CatmullClarkScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
 {
-  return std::make_shared<WrittenRows<CatmullClarkRowWriter>>(std::move(parent));
+  return std::make_shared<WrittenRows<CatmullClarkRowWriter>>(std::move(parent), this->GetParallelFor());
 }
 
 MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const
@@ -70,7 +70,7 @@ std::shared_ptr<const RowSource> ButterflyScheme::MakeRowSource(std::shared_ptr<
 
 std::shared_ptr<const RowSource> LoopScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
 {
-  return std::make_shared<WrittenRows<LoopRowWriter>>(std::move(parent));
+  return std::make_shared<WrittenRows<LoopRowWriter>>(std::move(parent), this->GetParallelFor());
 }
 
 MeshCounts TriangleSplitScheme::PredictChildCounts(const MeshCounts& parent) const
