@@ -59,7 +59,8 @@ void StoreTyped(const double* values, int components, const std::vector<vtkIdTyp
 }
 
 vtkSmartPointer<vtkDataArray> vtkSubDPointDataInterpolation::Interpolate(
-  vtkDataArray* base, int outputType, bool normalize, const subd::ProgressCallback& progress) const
+  vtkDataArray* base, int outputType, bool normalize, const subd::ProgressCallback& progress,
+  vtkDataArray* recycled) const
 {
   const int components = base->GetNumberOfComponents();
   const vtkIdType numBase = base->GetNumberOfTuples();
@@ -85,8 +86,11 @@ vtkSmartPointer<vtkDataArray> vtkSubDPointDataInterpolation::Interpolate(
 
   const vtkIdType numFinest = this->Hierarchy.GetNumFinestPoints();
   const vtkIdType numOut = this->Selection ? static_cast<vtkIdType>(this->Selection->size()) : numFinest;
-  vtkSmartPointer<vtkDataArray> out =
-    vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(outputType));
+  const bool recycle = recycled && recycled->GetDataType() == outputType &&
+    recycled->GetNumberOfComponents() == components && recycled->GetNumberOfTuples() == numOut;
+  vtkSmartPointer<vtkDataArray> out = recycle
+    ? vtkSmartPointer<vtkDataArray>(recycled)
+    : vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(outputType));
   out->SetName(base->GetName());
   out->SetNumberOfComponents(components);
   for (int c = 0; c < components; ++c)
@@ -100,7 +104,7 @@ vtkSmartPointer<vtkDataArray> vtkSubDPointDataInterpolation::Interpolate(
 
   // Evaluate straight into a double output when nothing needs converting.
   const bool direct = outputType == VTK_DOUBLE && !this->Selection && !normalize;
-  std::vector<double> finest;
+  subd::LevelArray<double> finest;
   double* finestValues = nullptr;
   if (direct)
   {
@@ -119,6 +123,7 @@ vtkSmartPointer<vtkDataArray> vtkSubDPointDataInterpolation::Interpolate(
   {
     return nullptr;
   }
+  out->Modified(); // written through its pointer (a recycled array had other values)
   return out;
 }
 

@@ -126,6 +126,15 @@ public:
   std::vector<vtkIdType> OutputPointOfFinest; // when compacting: -1 where a finest point is unused
   std::vector<vtkIdType> FinestPointOfOutput;
   vtkSmartPointer<vtkCellArray> OutputFaces; // made once per topology, shared by the outputs
+  // The last output's coordinates. Once that output is released (the pipeline does so
+  // before executing again) and if nothing else holds them, re-applied stencils overwrite
+  // them instead of faulting in a new array.
+  vtkSmartPointer<vtkDataArray> LastCoords;
+  vtkDataArray* TakeRecyclableCoords()
+  {
+    vtkDataArray* last = this->LastCoords;
+    return last && last->GetReferenceCount() == 1 ? last : nullptr;
+  }
 
   vtkIdType GetNumberOfOutputFaces() const
   {
@@ -316,6 +325,7 @@ int vtkSubDSurfaceFilter::RequestData(
   {
     cache.Valid = false;
     cache.OutputFaces = nullptr;
+    cache.LastCoords = nullptr;
     bool allTriangles = true;
     for (size_t f = 0; f + 1 < screened.Offsets.size() && allTriangles; ++f)
     {
@@ -475,11 +485,13 @@ int vtkSubDSurfaceFilter::RequestData(
     };
   };
   vtkSmartPointer<vtkDataArray> outCoords =
-    interpolation.Interpolate(basePoints, outPoints->GetDataType(), false, evaluateProgress(0));
+    interpolation.Interpolate(basePoints, outPoints->GetDataType(), false, evaluateProgress(0),
+      cache.TakeRecyclableCoords());
   if (!outCoords)
   {
     return aborted();
   }
+  cache.LastCoords = outCoords;
   outPoints->SetData(outCoords);
   output->SetPoints(outPoints);
   if ((this->ComputeLimitNormals || this->ComputeCurvature) &&

@@ -69,7 +69,7 @@ bool Hierarchy::Evaluate(const T* base, int components, T* finest, const Paralle
     std::copy(base, base + static_cast<size_t>(this->NumBasePoints) * components, finest);
     return true;
   }
-  std::vector<T> scratch[2];
+  LevelArray<T> scratch[2]; // written before read: no zero-fill (SubDTypes.h)
   const T* parents = base;
   for (int l = 0; l < levels; ++l)
   {

@@ -297,6 +297,40 @@ TYPED_TEST(AnySurfaceFilter, CachedStencilsReusedWhenOnlyPointsChange)
   EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 2);
 }
 
+// Re-applied stencils overwrite the last output's coordinates in place only when nothing
+// but the filter holds them.
+TYPED_TEST(AnySurfaceFilter, ReappliedStencilsRecycleOnlyUnheldCoordinates)
+{
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  vtkNew<TypeParam> filter;
+  filter->SetInputData(cube);
+  filter->SetNumberOfSubdivisions(2);
+  filter->Update();
+  auto held = vtkSmartPointer<vtkPolyData>::New();
+  held->ShallowCopy(filter->GetOutput());
+  const std::vector<double> heldCoordinates = subdtest::Coordinates(held);
+  auto movePoint = [&cube](double x) {
+    cube->GetPoints()->SetPoint(6, x, 1.5, 1.2);
+    cube->GetPoints()->Modified();
+  };
+
+  movePoint(2.0);
+  filter->Update();
+  EXPECT_EQ(subdtest::Coordinates(held), heldCoordinates); // held: a new array was written
+  EXPECT_NE(filter->GetOutput()->GetPoints()->GetData(), held->GetPoints()->GetData());
+  EXPECT_EQ(subdtest::Coordinates(filter->GetOutput()), subdtest::Coordinates(Subdivide<TypeParam>(cube, 2)));
+  held = nullptr;
+
+  vtkDataArray* unheld = filter->GetOutput()->GetPoints()->GetData();
+  const vtkMTimeType before = unheld->GetMTime();
+  movePoint(2.5);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetPoints()->GetData(), unheld); // rewritten in place...
+  EXPECT_GT(unheld->GetMTime(), before);                          // ...and marked modified
+  EXPECT_EQ(subdtest::Coordinates(filter->GetOutput()), subdtest::Coordinates(Subdivide<TypeParam>(cube, 2)));
+  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 1);
+}
+
 // The finest faces are handed to the output without a copy (vtkSubDAdoptedArray.h): they
 // outlive the filter, survive being edited, and their storage is freed exactly once.
 TYPED_TEST(AnySurfaceFilter, OutputFacesOutliveTheFilterAndAreFreed)
