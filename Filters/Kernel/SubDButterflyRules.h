@@ -64,10 +64,6 @@ public:
   /// Vertex points (copies of the parent's vertices); edge points are written.
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
-  template <typename T>
-  void PrefetchRow(Index, const T*, const T*) const
-  {
-  }
 
   /// A row under construction in caller storage: weights accumulated per source.
   struct Row

@@ -46,8 +46,6 @@ public:
   Index WriteRow(Index row, Index* sources, double* weights) const;
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
-  template <typename T>
-  void PrefetchRow(Index row, const T* parents, const T* children) const;
 
 private:
   Index WriteEdgeRow(Index e, Index* sources, double* weights) const;
@@ -59,37 +57,6 @@ private:
   Index MaxRowSize = 4;
   std::vector<std::uint8_t> SmoothVertex; // FindSmoothClosedVertices
 };
-
-// The points a row reads, asked for some rows ahead of it: they are scattered over the
-// level, and the loads of one row depend on topology reads, so without this the rows wait
-// on one cache miss after another.
-template <typename T>
-void CatmullClarkRowWriter::PrefetchRow(Index row, const T* parents, const T* children) const
-{
-  const MeshTopology& topo = this->Topology;
-  const Index firstVertexPoint = this->Number.VertexPoint(0);
-  if (row < this->Number.NumFaces)
-  {
-    return; // face rows read their corners, in order
-  }
-  if (row < firstVertexPoint)
-  {
-    const Index e = row - this->Number.NumFaces;
-    const Index* ev = topo.GetEdgeVertices(e);
-    __builtin_prefetch(parents + 3 * static_cast<size_t>(ev[0]));
-    __builtin_prefetch(parents + 3 * static_cast<size_t>(ev[1]));
-    return;
-  }
-  const Index v = row - firstVertexPoint;
-  for (Index e : topo.GetVertexEdges(v))
-  {
-    __builtin_prefetch(children + 3 * static_cast<size_t>(this->Number.EdgePoint(e)));
-  }
-  for (Index f : topo.GetVertexFaces(v))
-  {
-    __builtin_prefetch(children + 3 * static_cast<size_t>(this->Number.FacePoint(f)));
-  }
-}
 
 // Face points always; edge points of smooth edges; vertex points of vertices with nothing
 // sharp at or around them and a closed fan (PlanVertexRule's smooth case), from the edge

@@ -33,10 +33,6 @@ public:
   /// Every row is known in closed form.
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
-  template <typename T>
-  void PrefetchRow(Index, const T*, const T*) const
-  {
-  }
 
 private:
   const MeshTopology& Topology;

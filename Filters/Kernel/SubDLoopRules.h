@@ -46,10 +46,6 @@ public:
   Index WriteRow(Index row, Index* sources, double* weights) const;
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
-  template <typename T>
-  void PrefetchRow(Index, const T*, const T*) const
-  {
-  }
 
 private:
   double Beta(Index n) const

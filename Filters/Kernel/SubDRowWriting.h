@@ -84,10 +84,6 @@ private:
     const Index numParents = this->RowWriter.GetNumParents();
     for (Index row = begin; row < end; ++row)
     {
-      if (row + PrefetchDistance < end)
-      {
-        this->RowWriter.PrefetchRow(row + PrefetchDistance, parents, children);
-      }
       T* dst = children + static_cast<size_t>(row) * components;
       if (components == 3 && this->RowWriter.ApplySmoothRow(row, parents, children, dst))
       {
@@ -98,7 +94,6 @@ private:
     }
   }
 
-  static constexpr Index PrefetchDistance = 16;
   std::shared_ptr<const Level> Parent;
   Writer RowWriter;
 };
