@@ -115,7 +115,7 @@ vtkSmartPointer<vtkDataArray> vtkSubDPointDataInterpolation::Interpolate(
     finest.resize(static_cast<size_t>(numFinest) * components);
     finestValues = finest.data();
   }
-  if (!this->Hierarchy.Evaluate(baseValues, components, finestValues, this->ParallelFor, progress))
+  if (!this->Hierarchy.Evaluate(baseValues, components, finestValues, this->ParallelFor, progress, -1, this->Scratch))
   {
     return nullptr;
   }

@@ -18,11 +18,13 @@ class vtkSubDPointDataInterpolation
 {
 public:
   /// `selection`, when given, lists the finest points to output, in output order.
+  /// `scratch`, when given, holds the intermediate levels' values (kept by the caller).
   vtkSubDPointDataInterpolation(const subd::Hierarchy& hierarchy, subd::ParallelFor parallelFor,
-    const std::vector<vtkIdType>* selection)
+    const std::vector<vtkIdType>* selection, subd::EvaluationScratch<double>* scratch = nullptr)
     : Hierarchy(hierarchy)
     , ParallelFor(std::move(parallelFor))
     , Selection(selection)
+    , Scratch(scratch)
   {
   }
 
@@ -47,6 +49,7 @@ private:
   const subd::Hierarchy& Hierarchy;
   subd::ParallelFor ParallelFor;
   const std::vector<vtkIdType>* Selection;
+  subd::EvaluationScratch<double>* Scratch;
 };
 
 #endif

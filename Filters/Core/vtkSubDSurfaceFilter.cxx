@@ -130,6 +130,7 @@ public:
   // before executing again) and if nothing else holds them, re-applied stencils overwrite
   // them instead of faulting in a new array.
   vtkSmartPointer<vtkDataArray> LastCoords;
+  subd::EvaluationScratch<double> Scratch; // the intermediate levels' values, reused likewise
   vtkDataArray* TakeRecyclableCoords()
   {
     vtkDataArray* last = this->LastCoords;
@@ -326,6 +327,7 @@ int vtkSubDSurfaceFilter::RequestData(
     cache.Valid = false;
     cache.OutputFaces = nullptr;
     cache.LastCoords = nullptr;
+    cache.Scratch = subd::EvaluationScratch<double>();
     bool allTriangles = true;
     for (size_t f = 0; f + 1 < screened.Offsets.size() && allTriangles; ++f)
     {
@@ -460,7 +462,7 @@ int vtkSubDSurfaceFilter::RequestData(
   const subd::Hierarchy& hierarchy = cache.Hierarchy;
   const subd::Level& finest = hierarchy.Finest;
   vtkSubDPointDataInterpolation interpolation(hierarchy, vtkSubDPointDataInterpolation::SMPFor,
-    cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr);
+    cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr, &cache.Scratch);
 
   // Points.
   vtkNew<vtkDoubleArray> basePoints;

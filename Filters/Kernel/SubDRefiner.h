@@ -18,6 +18,15 @@ namespace subd
 /// Reports progress in [0, 1]; returning false asks the work to stop.
 using ProgressCallback = std::function<bool(double)>;
 
+/// Room for the values of the levels between the base and the finest. A caller that
+/// evaluates again and again (re-applied stencils when points move) keeps one: reused, its
+/// pages are not faulted in anew each time. Sized to the largest evaluation it served.
+template <typename T>
+struct EvaluationScratch
+{
+  LevelArray<T> Levels[2];
+};
+
 struct SUBDKERNEL_EXPORT Hierarchy
 {
   Index NumBasePoints = 0;
@@ -37,9 +46,10 @@ struct SUBDKERNEL_EXPORT Hierarchy
   /// GetNumFinestPoints() * components values. T is float or double (accumulation is in
   /// double either way). Returns false when progress asked to stop. `numTables` (if not
   /// negative) applies only the first tables (the levels, without an appended limit table).
+  /// `scratch`, if given, holds the intermediate levels (else they are allocated here).
   template <typename T>
   bool Evaluate(const T* base, int components, T* finest, const ParallelFor& parallelFor = SerialFor,
-    const ProgressCallback& progress = nullptr, int numTables = -1) const;
+    const ProgressCallback& progress = nullptr, int numTables = -1, EvaluationScratch<T>* scratch = nullptr) const;
 };
 
 /// How each level's stencils are kept.
@@ -61,7 +71,7 @@ SUBDKERNEL_EXPORT bool Refine(const Scheme& scheme, Level base, int levels, Hier
 
 template <typename T>
 bool Hierarchy::Evaluate(const T* base, int components, T* finest, const ParallelFor& parallelFor,
-  const ProgressCallback& progress, int numTables) const
+  const ProgressCallback& progress, int numTables, EvaluationScratch<T>* scratch) const
 {
   const int levels = numTables < 0 ? this->GetNumStencilTables() : std::min(numTables, this->GetNumStencilTables());
   if (levels == 0)
@@ -69,7 +79,8 @@ bool Hierarchy::Evaluate(const T* base, int components, T* finest, const Paralle
     std::copy(base, base + static_cast<size_t>(this->NumBasePoints) * components, finest);
     return true;
   }
-  LevelArray<T> scratch[2]; // written before read: no zero-fill (SubDTypes.h)
+  EvaluationScratch<T> ownScratch;
+  LevelArray<T>* room = (scratch ? scratch : &ownScratch)->Levels; // written before read
   const T* parents = base;
   for (int l = 0; l < levels; ++l)
   {
@@ -77,8 +88,9 @@ bool Hierarchy::Evaluate(const T* base, int components, T* finest, const Paralle
     T* children = finest;
     if (l + 1 < levels)
     {
-      scratch[l % 2].resize(static_cast<size_t>(table.GetNumRows()) * components);
-      children = scratch[l % 2].data();
+      LevelArray<T>& values = room[l % 2];
+      values.resize(std::max(values.size(), static_cast<size_t>(table.GetNumRows()) * components));
+      children = values.data();
     }
     const Index blocks = table.GetNumBlocks();
     for (Index b = 0; b < blocks; ++b)
