@@ -337,7 +337,8 @@ int vtkSubDSurfaceFilter::RequestData(
     cache.Scheme->SetParallelFor(&vtkSubDPointDataInterpolation::SMPFor);
     const subd::Scheme* scheme = cache.Scheme.get();
     subd::MeshTopology topology =
-      subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices);
+      subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices,
+        &vtkSubDPointDataInterpolation::SMPFor);
     if (topology.GetNumNonManifoldEdges() > 0 || topology.GetNumNonManifoldVertices() > 0)
     {
       vtkWarningMacro(<< "Input is non-manifold (" << topology.GetNumNonManifoldEdges()

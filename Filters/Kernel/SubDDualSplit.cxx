@@ -132,7 +132,7 @@ DualPoints NumberDualPoints(const Level& level)
   return points;
 }
 
-Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology depth)
+Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology depth, const ParallelFor& parallelFor)
 {
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
@@ -258,7 +258,7 @@ Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology dep
   child.FaceOrigin.assign(origins.begin(), origins.end());
   child.FaceIsHole.assign(holes.begin(), holes.end());
   const Index numPoints = static_cast<Index>(points.CornerOfPoint.size());
-  SetChildTopology(parent, child, numPoints, std::move(offsets), std::move(vertices), depth);
+  SetChildTopology(parent, child, numPoints, std::move(offsets), std::move(vertices), depth, parallelFor);
   if (depth == ChildTopology::Full)
   {
     // Crease segments: the child edge between the two welded points of a sharp edge, and,

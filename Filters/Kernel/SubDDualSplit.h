@@ -44,7 +44,8 @@ struct DualPoints
 };
 SUBDKERNEL_EXPORT DualPoints NumberDualPoints(const Level& level);
 
-SUBDKERNEL_EXPORT Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology depth);
+SUBDKERNEL_EXPORT Level SplitDual(
+  const Level& parent, const DualPoints& points, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
 }
 
 #endif

@@ -180,7 +180,7 @@ std::vector<VertexRulePlan> PlanVertexRules(const Level& level)
 }
 
 void SetChildTopology(const Level& parent, Level& child, Index numPoints, IndexArray offsets,
-  IndexArray vertices, ChildTopology depth)
+  IndexArray vertices, ChildTopology depth, const ParallelFor& parallelFor)
 {
   child.Depth = parent.Depth + 1;
   child.Creasing = parent.Creasing;
@@ -189,7 +189,7 @@ void SetChildTopology(const Level& parent, Level& child, Index numPoints, IndexA
     child.Topology = MeshTopology::BuildFacesOnly(numPoints, std::move(offsets), std::move(vertices));
     return;
   }
-  child.Topology = MeshTopology::Build(numPoints, std::move(offsets), std::move(vertices));
+  child.Topology = MeshTopology::Build(numPoints, std::move(offsets), std::move(vertices), parallelFor);
   child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), SharpnessSmooth);
   child.VertexSharpness.assign(static_cast<size_t>(numPoints), SharpnessSmooth);
 }

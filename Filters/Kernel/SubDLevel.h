@@ -227,7 +227,7 @@ void WritePrimalVertexRow(const MeshTopology& topo, const VertexRulePlan& plan, 
 /// Sets the child's topology from its faces: faces only, or the full topology with smooth
 /// edge and vertex tags; and its depth, one more than the parent's.
 SUBDKERNEL_EXPORT void SetChildTopology(const Level& parent, Level& child, Index numPoints,
-  IndexArray offsets, IndexArray vertices, ChildTopology depth);
+  IndexArray offsets, IndexArray vertices, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
 
 /// The edge key of the half of parent edge e that ends at its vertex v (0 .. 2E-1): keys
 /// that primal splits give the two halves of every parent edge.

@@ -14,6 +14,7 @@
 #ifndef SubDMeshTopology_h
 #define SubDMeshTopology_h
 
+#include "SubDParallel.h"
 #include "SubDTypes.h"
 #include <vector>
 
@@ -41,10 +42,12 @@ public:
   /// Builds the topology. Preconditions (checked by the caller, see MeshValidation): every
   /// face has >= 3 corners, no face repeats a vertex, all indices are in [0, numVertices).
   /// `faceOffsets` has numFaces+1 entries, the last one equal to the size of `faceVertices`.
-  static MeshTopology Build(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices);
+  /// `parallelFor` runs the passes that are independent per vertex.
+  static MeshTopology Build(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
+    const ParallelFor& parallelFor = SerialFor);
   /// The same from std::vector (copied: for base meshes, which are small).
   static MeshTopology Build(Index numVertices, const std::vector<Index>& faceOffsets,
-    const std::vector<Index>& faceVertices);
+    const std::vector<Index>& faceVertices, const ParallelFor& parallelFor = SerialFor);
 
   Index GetNumVertices() const { return NumVertices; }
   Index GetNumFaces() const { return static_cast<Index>(FaceOffsets.size()) - 1; }
@@ -136,7 +139,8 @@ private:
   void BuildEdgeFaces();
   void BuildVertexRelations();
   void TagEdges();
-  void TagVertices();
+  void TagVertices(const ParallelFor& parallelFor);
+  Index CountFans(Index v, std::vector<Index>& scratch) const;
 
   Index NumVertices = 0;
   IndexArray FaceOffsets{ 0 };

@@ -182,7 +182,7 @@ void AddVertexFaces(const Level& parent, const std::vector<Index>& keptPoint, st
 }
 }
 
-LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
+LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
   const MeshTopology& topo = parent.Topology;
 
@@ -233,7 +233,7 @@ LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth)
   child.FaceOrigin.insert(child.FaceOrigin.end(), vOrigins.begin(), vOrigins.end());
   child.FaceIsHole.insert(child.FaceIsHole.end(), vHoles.begin(), vHoles.end());
 
-  SetChildTopology(parent, child, numChildPoints, std::move(offsets), std::move(vertices), depth);
+  SetChildTopology(parent, child, numChildPoints, std::move(offsets), std::move(vertices), depth, parallelFor);
   if (depth == ChildTopology::Full)
   {
     InheritMidpointSharpness(parent, keptPoint, child);

@@ -39,7 +39,8 @@ namespace subd
 SUBDKERNEL_EXPORT bool MidpointKeepsVertex(const Level& level, Index v);
 
 /// The split and its stencils together: both depend on which boundary vertices are kept.
-SUBDKERNEL_EXPORT LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth);
+SUBDKERNEL_EXPORT LevelRefinement RefineMidpoint(
+  const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
 }
 
 #endif

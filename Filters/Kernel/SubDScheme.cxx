@@ -97,7 +97,7 @@ StencilTable LinearTriangleScheme::BuildStencils(const Level& parent) const
 
 Level DooSabinScheme::Split(const Level& parent, ChildTopology depth) const
 {
-  return SplitDual(parent, NumberDualPoints(parent), depth);
+  return SplitDual(parent, NumberDualPoints(parent), depth, this->GetParallelFor());
 }
 
 StencilTable DooSabinScheme::BuildStencils(const Level& parent) const
@@ -111,7 +111,7 @@ LevelRefinement DooSabinScheme::RefineLevel(const Level& parent, ChildTopology d
   const DualPoints points = NumberDualPoints(parent);
   LevelRefinement r;
   r.Stencils = BuildDooSabinStencils(parent, points);
-  r.Child = SplitDual(parent, points, depth);
+  r.Child = SplitDual(parent, points, depth, this->GetParallelFor());
   return r;
 }
 
@@ -130,7 +130,7 @@ MeshCounts DooSabinScheme::PredictChildCounts(const MeshCounts& parent) const
 
 LevelRefinement MidpointScheme::RefineLevel(const Level& parent, ChildTopology depth) const
 {
-  return RefineMidpoint(parent, depth);
+  return RefineMidpoint(parent, depth, this->GetParallelFor());
 }
 
 MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
@@ -154,7 +154,7 @@ StencilTable ButterflyScheme::BuildStencils(const Level& parent) const
 
 LevelRefinement Sqrt3Scheme::RefineLevel(const Level& parent, ChildTopology depth) const
 {
-  return RefineSqrt3(parent, depth);
+  return RefineSqrt3(parent, depth, this->GetParallelFor());
 }
 
 MeshCounts Sqrt3Scheme::PredictChildCounts(const MeshCounts& parent) const

@@ -137,7 +137,7 @@ void InheritSqrt3Sharpness(const Level& parent, const std::vector<Index>& firstE
 }
 }
 
-LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
+LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
@@ -275,8 +275,9 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
   // Edge e's ends (a, b) in the order face f runs them.
   auto orientedEnds = [&](Index e, Index f, Index& a, Index& b) {
     const Index* ev = topo.GetEdgeVertices(e);
-    const Index corner = topo.FindCorner(ev[0], f);
-    const bool forward = topo.GetFaceVertices(f)[(corner + 1) % 3] == ev[1];
+    const IndexSpan fv = topo.GetFaceVertices(f); // a triangle: its corners, not v's faces
+    const Index corner = fv[0] == ev[0] ? 0 : (fv[1] == ev[0] ? 1 : 2);
+    const bool forward = fv[(corner + 1) % 3] == ev[1];
     a = forward ? ev[0] : ev[1];
     b = forward ? ev[1] : ev[0];
   };
@@ -332,7 +333,7 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth)
     const Index m = topo.GetTriangleOppositeVertex(f, e);
     addTriangle(trisectionPoint(e, a), trisectionPoint(e, b), vertexPoint(m), f, parent.FaceIsHole[f]);
   }
-  SetChildTopology(parent, child, numChildPoints, std::move(offsets), std::move(vertices), depth);
+  SetChildTopology(parent, child, numChildPoints, std::move(offsets), std::move(vertices), depth, parallelFor);
   if (depth == ChildTopology::Full)
   {
     InheritSqrt3Sharpness(parent, firstEdgePoint, firstVertexPoint, child);

@@ -69,7 +69,8 @@ SUBDKERNEL_EXPORT Index Sqrt3FirstVertexPoint(const Level& parent);
 
 /// One step (split and stencils share the point numbering); every face of `parent` must be a
 /// triangle.
-SUBDKERNEL_EXPORT LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth);
+SUBDKERNEL_EXPORT LevelRefinement RefineSqrt3(
+  const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
 }
 
 #endif

@@ -233,6 +233,18 @@ TEST(MeshTopology, TriangleSplitChildEqualsSearchedTopology)
   }
 }
 
+// The general builder's per-vertex passes give the same tags on threads.
+TEST(MeshTopology, BuildOnThreadsEqualsSerialBuild)
+{
+  int i = 0;
+  for (const subdtest::TestMesh& mesh : TagFixtures())
+  {
+    const MeshTopology serial = Build(mesh);
+    ExpectSameTopology(MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices, ThreeThreadFor), serial,
+      "mesh " + std::to_string(i++));
+  }
+}
+
 TEST(MeshValidation, CollapsesDropsAndReports)
 {
   // face 0 ok, face 1 has a repeated consecutive corner (kept as a triangle), face 2 collapses
