@@ -491,6 +491,39 @@ TEST(Sqrt3Scheme, CentroidAndRelaxationMasksForValences3To64)
   }
 }
 
+// The per-level flags the Catmull-Clark and Loop writers read (one pass over the edges)
+// agree with the per-vertex test, with sharp and semi-sharp edges, a sharp vertex and
+// boundaries, on the base level and after the creases decayed one level.
+TEST(Level, SmoothClosedVerticesAgreeWithThePerVertexTest)
+{
+  int smooth = 0, tested = 0;
+  for (const subdtest::TestMesh& mesh : subdtest::StandardMeshes())
+  {
+    const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+    subd::BaseTags tags;
+    tags.EdgeSharpness.resize(static_cast<size_t>(topology.GetNumEdges()));
+    for (size_t e = 0; e < tags.EdgeSharpness.size(); ++e)
+      tags.EdgeSharpness[e] = e % 5 == 0 ? 0.6f : (e % 7 == 0 ? subd::SharpnessInfinite : 0.0f);
+    tags.VertexSharpness.assign(static_cast<size_t>(topology.GetNumVertices()), 0.0f);
+    tags.VertexSharpness[0] = 2.3f;
+    subd::Level level = subd::MakeBaseLevel(topology, tags, subd::BoundaryRule::EdgeOnly);
+    for (int l = 0; l < 2; ++l)
+    {
+      const std::vector<std::uint8_t> flags = subd::FindSmoothClosedVertices(level);
+      ASSERT_EQ(flags.size(), static_cast<size_t>(level.Topology.GetNumVertices()));
+      for (Index v = 0; v < level.Topology.GetNumVertices(); ++v)
+      {
+        EXPECT_EQ(flags[v] != 0, subd::IsSmoothClosedVertex(level, v)) << mesh.Name << " level " << l << " vertex " << v;
+        smooth += flags[v];
+        ++tested;
+      }
+      level = subd::CatmullClarkScheme().Split(level, subd::ChildTopology::Full);
+    }
+  }
+  EXPECT_GT(smooth, 0);
+  EXPECT_LT(smooth, tested);
+}
+
 // Every level's rows written as they are applied (LevelRows::Written, what the filters use)
 // give bit for bit the points the stored table gives, with semi-sharp and sharp creases
 // and corners under both crease methods, for 3 double and 5 float components.
