@@ -1,7 +1,10 @@
 #include "SubDMeshIO.h"
 
+#include "SubDFileChecks.h"
 #include "SubDMessageCollector.h"
 #include "vtkAlgorithm.h"
+#include "vtkObjectFactory.h"
+#include "vtkOutputWindow.h"
 #include "vtkPLYReader.h"
 #include "vtkPLYWriter.h"
 #include "vtkPolyData.h"
@@ -34,6 +37,34 @@ bool FileReadable(const std::string& path)
   return static_cast<bool>(in);
 }
 
+// Some readers report a broken file only through a generic warning, attached to no object
+// (vtkDataReader: "Error reading ascii data. Possible mismatch of datasize with declaration."),
+// and return what they read so far. While a reader runs, this output window keeps such
+// messages as errors of the read; it puts the previous window back when it goes.
+class GenericMessageCapture : public vtkOutputWindow
+{
+public:
+  static GenericMessageCapture* New();
+  vtkTypeMacro(GenericMessageCapture, vtkOutputWindow);
+  void DisplayText(const char*) override {}
+  void DisplayErrorText(const char* text) override { this->Keep(text); }
+  void DisplayGenericWarningText(const char* text) override { this->Keep(text); }
+  std::string Captured;
+
+private:
+  void Keep(const char* text)
+  {
+    std::string message = text ? text : "";
+    const auto newline = message.find('\n'); // drop the "... In file, line N" first line
+    if (newline != std::string::npos && message.substr(0, newline).find(", line ") != std::string::npos)
+    {
+      message = message.substr(newline + 1);
+    }
+    this->Captured += message;
+  }
+};
+vtkStandardNewMacro(GenericMessageCapture);
+
 template <typename Reader>
 vtkSmartPointer<vtkPolyData> RunReader(const std::string& path, std::string& error)
 {
@@ -41,7 +72,12 @@ vtkSmartPointer<vtkPolyData> RunReader(const std::string& path, std::string& err
   MessageCollector messages;
   messages.Watch(reader);
   reader->SetFileName(path.c_str());
+  vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
+  vtkNew<GenericMessageCapture> capture;
+  vtkOutputWindow::SetInstance(capture);
   reader->Update();
+  vtkOutputWindow::SetInstance(previous);
+  messages.Errors += capture->Captured;
   vtkPolyData* out = reader->GetOutput();
   if (!messages.Errors.empty() || reader->GetErrorCode() != 0)
   {
@@ -104,11 +140,11 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& erro
   }
   if (ext == ".ply")
   {
-    return RunReader<vtkPLYReader>(path, error);
+    return CheckPLYFile(path, error) ? RunReader<vtkPLYReader>(path, error) : nullptr;
   }
   if (ext == ".stl")
   {
-    return RunReader<vtkSTLReader>(path, error);
+    return CheckSTLFile(path, error) ? RunReader<vtkSTLReader>(path, error) : nullptr;
   }
   if (ext == ".off")
   {

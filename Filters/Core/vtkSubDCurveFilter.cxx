@@ -206,6 +206,23 @@ int vtkSubDCurveFilter::RequestData(
     return 0;
   };
 
+  // Checked before anything passes through: a non-finite point is an error, lines or not.
+  const vtkIdType badPoint = input && input->GetNumberOfPoints() > 0 ? vtkSubDFirstNonFinitePoint(input->GetPoints()) : -1;
+  if (badPoint >= 0)
+  {
+    double p[3];
+    input->GetPoint(badPoint, p);
+    vtkErrorMacro("Point " << badPoint << " has a non-finite coordinate (" << p[0] << ", " << p[1] << ", "
+                           << p[2] << "): the curves cannot be subdivided.");
+    return fail();
+  }
+  // Cells are checked too, also those that only pass through.
+  const vtkIdType badCell = input ? vtkSubDFirstCellOutsidePoints(input) : -1;
+  if (badCell >= 0)
+  {
+    vtkErrorMacro("Cell " << badCell << " refers to a point id outside 0.." << input->GetNumberOfPoints() - 1 << ".");
+    return fail();
+  }
   if (!input || input->GetNumberOfLines() == 0)
   {
     vtkWarningMacro(<< "Input has no lines (line or polyline cells) to refine; "
@@ -221,15 +238,6 @@ int vtkSubDCurveFilter::RequestData(
   {
     vtkErrorMacro("Input has " << numPoints << " points; at most "
                                << std::numeric_limits<subd::Index>::max() / 4 << " are supported.");
-    return fail();
-  }
-  const vtkIdType badPoint = numPoints > 0 ? vtkSubDFirstNonFinitePoint(input->GetPoints()) : -1;
-  if (badPoint >= 0)
-  {
-    double p[3];
-    input->GetPoint(badPoint, p);
-    vtkErrorMacro("Point " << badPoint << " has a non-finite coordinate (" << p[0] << ", " << p[1] << ", "
-                           << p[2] << "): the curves cannot be subdivided.");
     return fail();
   }
   const InputLines lines = ReadLines(input, this->Closed);

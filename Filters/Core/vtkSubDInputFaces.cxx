@@ -1,5 +1,7 @@
 #include "vtkSubDInputFaces.h"
 
+#include "SubDMeshTopology.h"
+
 #include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkPoints.h"
@@ -92,3 +94,37 @@ vtkIdType vtkSubDFirstNonFinitePoint(vtkPoints* points)
   return -1;
 }
 
+
+vtkIdType vtkSubDFirstCellOutsidePoints(vtkPolyData* input)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  vtkIdType cellId = 0;
+  for (vtkCellArray* cells : { input->GetVerts(), input->GetLines(), input->GetPolys(), input->GetStrips() })
+  {
+    vtkIdType n;
+    const vtkIdType* ids;
+    for (cells->InitTraversal(); cells->GetNextCell(n, ids); ++cellId)
+    {
+      for (vtkIdType k = 0; k < n; ++k)
+      {
+        if (ids[k] < 0 || ids[k] >= numPoints)
+        {
+          return cellId;
+        }
+      }
+    }
+  }
+  return -1;
+}
+
+std::string vtkSubDNonManifoldWarning(const subd::MeshTopology& topology)
+{
+  if (topology.GetNumNonManifoldEdges() == 0 && topology.GetNumNonManifoldVertices() == 0)
+  {
+    return "";
+  }
+  return "Input is non-manifold (" + std::to_string(topology.GetNumNonManifoldEdges()) +
+    " edges with more than two faces or inconsistent orientation, " +
+    std::to_string(topology.GetNumNonManifoldVertices()) +
+    " non-manifold vertices); they are subdivided as infinitely sharp";
+}

@@ -6,8 +6,13 @@
 
 #include "vtkType.h"
 
+#include <string>
 #include <vector>
 
+namespace subd
+{
+class MeshTopology;
+}
 class vtkPoints;
 class vtkPolyData;
 
@@ -32,5 +37,13 @@ vtkSubDInputFaces vtkSubDGatherFaces(vtkPolyData* input);
 
 /// The first point with a NaN or infinite coordinate, or -1.
 vtkIdType vtkSubDFirstNonFinitePoint(vtkPoints* points);
+
+/// The first cell (verts, lines, polygons, strips: VTK's cell order) naming a point id outside
+/// [0, number of points), or -1.
+vtkIdType vtkSubDFirstCellOutsidePoints(vtkPolyData* input);
+
+/// The warning for a non-manifold input ("" when it is manifold): such edges and vertices are
+/// subdivided as infinitely sharp, as OpenSubdiv does.
+std::string vtkSubDNonManifoldWarning(const subd::MeshTopology& topology);
 
 #endif

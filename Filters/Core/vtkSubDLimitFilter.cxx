@@ -100,6 +100,11 @@ bool ReadCage(vtkPolyData* input, bool triangles, subd::BoundaryRule rule, subd:
   }
   subd::MeshTopology topology =
     subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices);
+  const std::string nonManifold = vtkSubDNonManifoldWarning(topology);
+  if (!nonManifold.empty())
+  {
+    warning += (warning.empty() ? "" : "; ") + nonManifold;
+  }
   vtkSubDSharpFeatures features;
   if (!features.Read(input, cage.FaceCell, error))
   {
@@ -158,7 +163,8 @@ int vtkSubDLimitFilter::RequestData(
     static_cast<subd::CreaseMethod>(this->CreaseMethod), cage, error, warning);
   if (!warning.empty())
   {
-    vtkWarningMacro(<< "I" << warning.substr(1) << ".");
+    warning[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(warning[0])));
+    vtkWarningMacro(<< warning << ".");
   }
   if (!read)
   {
@@ -448,7 +454,7 @@ int vtkSubDLimitFilter::RequestData(
     vtkSubDPointDataInterpolation::Store(c.Samples.data(), c.Components, nullptr, numSamples, c.Normals, out);
     output->GetPointData()->AddArray(out);
   }
-  geometry.AddTo(output->GetPointData());
+  geometry.AddTo(output->GetPointData(), this);
   return 1;
 }
 

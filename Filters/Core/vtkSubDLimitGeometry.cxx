@@ -1,6 +1,8 @@
 #include "vtkSubDLimitGeometry.h"
 
+#include "vtkObject.h"
 #include "vtkPointData.h"
+#include "vtkSetGet.h"
 
 #include <algorithm>
 #include <cmath>
@@ -81,16 +83,19 @@ bool vtkSubDLimitGeometry::SetMean(vtkIdType i, const std::vector<subd::SurfaceG
     kmax /= regular;
     kmin /= regular;
   }
-  const double nan = std::nan("");
+  if (!ok)
+  {
+    ++this->NumUndefined;
+  }
   this->Normals->SetTuple3(i, ok ? n[0] : 0.0, ok ? n[1] : 0.0, ok ? n[2] : 0.0);
-  this->Mean->SetValue(i, ok ? mean : nan);
-  this->Gauss->SetValue(i, ok ? gauss : nan);
-  this->Maximum->SetValue(i, ok ? kmax : nan);
-  this->Minimum->SetValue(i, ok ? kmin : nan);
+  this->Mean->SetValue(i, ok ? mean : 0.0);
+  this->Gauss->SetValue(i, ok ? gauss : 0.0);
+  this->Maximum->SetValue(i, ok ? kmax : 0.0);
+  this->Minimum->SetValue(i, ok ? kmin : 0.0);
   const subd::SurfaceGeometry* first = nullptr;
   for (const subd::SurfaceGeometry& g : sides)
   {
-    if (g.Regular && !first)
+    if (g.Regular && !first && ok)
     {
       first = &g;
     }
@@ -103,8 +108,14 @@ bool vtkSubDLimitGeometry::SetMean(vtkIdType i, const std::vector<subd::SurfaceG
   return ok;
 }
 
-void vtkSubDLimitGeometry::AddTo(vtkPointData* pd) const
+void vtkSubDLimitGeometry::AddTo(vtkPointData* pd, vtkObject* filter) const
 {
+  if (this->NumUndefined > 0 && (this->WithNormals || this->WithCurvature))
+  {
+    vtkWarningWithObjectMacro(filter, << "The limit surface has no tangent plane at " << this->NumUndefined
+                                      << " output point(s) (a non-manifold vertex or degenerate geometry): "
+                                         "their normals and curvatures are 0.");
+  }
   auto add = [pd](vtkDataArray* array) {
     pd->RemoveArray(array->GetName());
     pd->AddArray(array);

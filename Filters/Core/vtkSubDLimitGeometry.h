@@ -6,6 +6,9 @@
 // "Maximum_Curvature_Direction", "Minimum_Curvature_Direction" (float, unit, tangent), and
 // with derivatives "dPdu", "dPdv" (double). Curvature is positive where the surface is
 // convex seen from the side its faces are counter-clockwise from (a closed surface's outside).
+// Where the limit surface has no tangent plane (a non-manifold vertex, degenerate geometry),
+// the normal, the curvatures and their directions are 0, never NaN, and the points are
+// counted (GetNumberOfUndefinedPoints) for the filter's warning.
 #ifndef vtkSubDLimitGeometry_h
 #define vtkSubDLimitGeometry_h
 
@@ -15,6 +18,10 @@
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
 
+#include <atomic>
+#include <string>
+
+class vtkObject;
 class vtkPointData;
 
 class vtkSubDLimitGeometry
@@ -31,8 +38,11 @@ public:
   bool SetMean(vtkIdType i, const std::vector<subd::SurfaceGeometry>& sides, const double d[6][3]);
 
   /// Adds the arrays to `pd` (replacing arrays of the same names; the normals become the
-  /// active normals).
-  void AddTo(vtkPointData* pd) const;
+  /// active normals), and gives `filter`'s warning for the undefined points.
+  void AddTo(vtkPointData* pd, vtkObject* filter) const;
+
+  /// How many points had no tangent plane (their normal and curvature were set to 0).
+  vtkIdType GetNumberOfUndefinedPoints() const { return this->NumUndefined; }
 
   /// Applies a stencil's rows to xyz points: d = derivatives, c = the curvature frame.
   static void Apply(const subd::LimitStencil& stencil, const double* points, double d[6][3], double c[6][3]);
@@ -41,6 +51,7 @@ private:
   vtkNew<vtkFloatArray> Normals, MaximumDirection, MinimumDirection;
   vtkNew<vtkDoubleArray> Mean, Gauss, Maximum, Minimum, Du, Dv;
   bool WithNormals, WithCurvature, WithDerivatives;
+  std::atomic<vtkIdType> NumUndefined{ 0 }; // Set and SetMean run on several threads
 };
 
 #endif

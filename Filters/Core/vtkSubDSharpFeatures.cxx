@@ -244,6 +244,25 @@ std::vector<float> vtkSubDWriteSharpFeatures(const vtkSubDSharpFeatures& feature
     lines->InsertNextCell(2, ends);
     sharpness.push_back(features.SegmentSharpness[segment]);
   }
+  // The limit normals and curvature (computed before) have no value at the copies, which are
+  // not on the surface: 0, as where the surface has no tangent plane.
+  const vtkIdType numPoints = points->GetNumberOfPoints();
+  for (int a = 0; a < outPD->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = outPD->GetArray(a);
+    const vtkIdType had = array ? array->GetNumberOfTuples() : numPoints;
+    if (had < numPoints)
+    {
+      array->SetNumberOfTuples(numPoints);
+      for (vtkIdType t = had; t < numPoints; ++t)
+      {
+        for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+        {
+          array->SetComponent(t, c, 0.0);
+        }
+      }
+    }
+  }
   if (lines->GetNumberOfCells() > 0)
   {
     output->SetLines(lines);

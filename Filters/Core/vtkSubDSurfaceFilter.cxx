@@ -339,12 +339,10 @@ int vtkSubDSurfaceFilter::RequestData(
     subd::MeshTopology topology =
       subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices,
         &vtkSubDPointDataInterpolation::SMPFor);
-    if (topology.GetNumNonManifoldEdges() > 0 || topology.GetNumNonManifoldVertices() > 0)
+    const std::string nonManifold = vtkSubDNonManifoldWarning(topology);
+    if (!nonManifold.empty())
     {
-      vtkWarningMacro(<< "Input is non-manifold (" << topology.GetNumNonManifoldEdges()
-                      << " edges with more than two faces or inconsistent orientation, "
-                      << topology.GetNumNonManifoldVertices()
-                      << " non-manifold vertices); they are subdivided as infinitely sharp.");
+      vtkWarningMacro(<< nonManifold << ".");
     }
 
     // Size guard: predict the finest level before allocating it.
@@ -705,7 +703,7 @@ bool vtkSubDSurfaceFilter::AddLimitGeometry(const double* basePoints, vtkPointDa
     vtkErrorMacro(<< "Limit geometry: " << firstError << ".");
     return false;
   }
-  geometry.AddTo(outPD);
+  geometry.AddTo(outPD, this);
   return true;
 }
 
@@ -734,7 +732,7 @@ void vtkSubDSurfaceFilter::AddTangentMaskNormals(
       geometry.Set(o, d, d);
     }
   });
-  geometry.AddTo(outPD);
+  geometry.AddTo(outPD, this);
 }
 
 // The output faces in 32-bit offsets/connectivity arrays: the kernel's own index width

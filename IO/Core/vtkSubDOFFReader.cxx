@@ -82,6 +82,23 @@ bool ParseNumbers(const std::string& line, std::vector<double>& values)
 }
 }
 
+namespace
+{
+// The bytes from the stream's position to its end, or -1 when it cannot seek.
+std::streamoff RemainingBytes(std::istream& in)
+{
+  const std::streampos here = in.tellg();
+  if (here == std::streampos(-1) || !in.seekg(0, std::ios::end))
+  {
+    in.clear();
+    return -1;
+  }
+  const std::streamoff remaining = in.tellg() - here;
+  in.seekg(here);
+  return remaining;
+}
+}
+
 bool vtkSubDOFFReader::ReadFile(std::istream& file, vtkPolyData* output)
 {
   OFFLines lines(file);
@@ -131,6 +148,14 @@ bool vtkSubDOFFReader::ReadFile(std::istream& file, vtkPolyData* output)
   }
   const vtkIdType numVertices = static_cast<vtkIdType>(numVerticesValue);
   const vtkIdType numFaces = static_cast<vtkIdType>(numFacesValue);
+  // A header may promise more than the file holds: refuse before allocating for it. The
+  // shortest vertex line is "0 0 0" and a newline, the shortest face "1 0" and a newline.
+  const std::streamoff remaining = RemainingBytes(file);
+  if (remaining >= 0 && 6 * static_cast<double>(numVertices) + 4 * static_cast<double>(numFaces) > remaining)
+  {
+    return fail("the header announces " + std::to_string(numVertices) + " vertices and " + std::to_string(numFaces) +
+      " faces, more than the " + std::to_string(remaining) + " bytes after it can hold.");
+  }
 
   vtkNew<vtkPoints> points;
   points->SetDataType(VTK_DOUBLE);
@@ -189,7 +214,12 @@ bool vtkSubDOFFReader::ReadFile(std::istream& file, vtkPolyData* output)
       return fail("expected face " + std::to_string(f) + " as 'n i0 i1 ...', found '" + line + "'.");
     }
     const double n = values[0];
-    if (n < 1 || n != std::floor(n) || static_cast<double>(values.size()) < n + 1)
+    if (n < 1 || n != std::floor(n))
+    {
+      return fail("face " + std::to_string(f) + " announces " + line.substr(0, line.find_first_of(" \t")) +
+        " vertices; a face lists a whole number of them, at least one.");
+    }
+    if (static_cast<double>(values.size()) < n + 1)
     {
       return fail("face " + std::to_string(f) + " announces " + std::to_string(static_cast<long long>(n)) +
         " vertices but lists " + std::to_string(values.size() - 1) + ".");

@@ -1,6 +1,7 @@
 # Runs a command and checks its exit code and output.
 #   cmake -DCOMMAND=prog -DARGS="arg|arg|..." -DEXPECT_EXIT=0|nonzero [-DEXPECT_OUTPUT=regex]
 #         [-DEXPECT_FILE=path [-DEXPECT_FILE_CONTAINS=regex]] [-DWORKING_DIRECTORY=dir]
+#         [-DEXPECT_UNCHANGED=path] (a file made before the run must come out byte for byte the same)
 #         -P RunAndCheck.cmake
 if (DEFINED EXPECT_FILE)
   file(REMOVE "${EXPECT_FILE}")
@@ -9,6 +10,10 @@ if (NOT DEFINED WORKING_DIRECTORY)
   set(WORKING_DIRECTORY ".")
 endif ()
 file(MAKE_DIRECTORY "${WORKING_DIRECTORY}")
+if (DEFINED EXPECT_UNCHANGED)
+  file(WRITE "${EXPECT_UNCHANGED}" "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
+  file(SHA256 "${EXPECT_UNCHANGED}" before)
+endif ()
 string(REPLACE "|" ";" ARGS "${ARGS}")
 execute_process(COMMAND ${COMMAND} ${ARGS}
   WORKING_DIRECTORY "${WORKING_DIRECTORY}"
@@ -31,5 +36,16 @@ if (DEFINED EXPECT_FILE_CONTAINS)
   file(READ "${EXPECT_FILE}" content LIMIT 200000)
   if (NOT content MATCHES "${EXPECT_FILE_CONTAINS}")
     message(FATAL_ERROR "${EXPECT_FILE} does not match '${EXPECT_FILE_CONTAINS}'")
+  endif ()
+endif ()
+if (DEFINED EXPECT_UNCHANGED)
+  file(SHA256 "${EXPECT_UNCHANGED}" after)
+  if (NOT after STREQUAL before)
+    message(FATAL_ERROR "${EXPECT_UNCHANGED} was changed by a run that failed")
+  endif ()
+  get_filename_component(dir "${EXPECT_UNCHANGED}" DIRECTORY)
+  file(GLOB leftovers "${dir}/*.tmp-*")
+  if (leftovers)
+    message(FATAL_ERROR "temporary files left behind: ${leftovers}")
   endif ()
 endif ()
