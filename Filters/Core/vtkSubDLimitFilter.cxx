@@ -183,6 +183,12 @@ int vtkSubDLimitFilter::RequestData(
   const subd::Level& level = cage.Level;
   const subd::MeshTopology& topo = level.Topology;
   const subd::LimitEvaluator evaluator(*scheme, level);
+  std::string evaluatorError;
+  if (!evaluator.IsValid(evaluatorError))
+  {
+    vtkErrorMacro(<< evaluatorError << ".");
+    return 0;
+  }
 
   // The samples, grouped by face: each evaluated once, by the face that owns it.
   std::vector<FaceGrid> grids;

@@ -250,17 +250,11 @@ std::vector<float> vtkSubDWriteSharpFeatures(const vtkSubDSharpFeatures& feature
   for (int a = 0; a < outPD->GetNumberOfArrays(); ++a)
   {
     vtkDataArray* array = outPD->GetArray(a);
-    const vtkIdType had = array ? array->GetNumberOfTuples() : numPoints;
-    if (had < numPoints)
+    // InsertTuple grows the array keeping its values (SetNumberOfTuples need not keep them).
+    const std::vector<double> zeros(array ? static_cast<size_t>(array->GetNumberOfComponents()) : 0, 0.0);
+    for (vtkIdType t = array ? array->GetNumberOfTuples() : numPoints; t < numPoints; ++t)
     {
-      array->SetNumberOfTuples(numPoints);
-      for (vtkIdType t = had; t < numPoints; ++t)
-      {
-        for (int c = 0; c < array->GetNumberOfComponents(); ++c)
-        {
-          array->SetComponent(t, c, 0.0);
-        }
-      }
+      array->InsertTuple(t, zeros.data());
     }
   }
   if (lines->GetNumberOfCells() > 0)

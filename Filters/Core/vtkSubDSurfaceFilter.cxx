@@ -433,11 +433,16 @@ int vtkSubDSurfaceFilter::RequestData(
     if (limitGeometry && !subd::LimitEvaluator(*scheme, cache.Hierarchy.Finest).IsValid(evaluationError))
     {
       // Without exact derivatives, normals can still come from tangent masks; curvature not.
+      // Catmull-Clark and Loop report the evaluator's reason (e.g. a vertex of too high a
+      // valence), the other schemes why their tangent masks do not apply.
+      std::string tangentError;
       if (this->ComputeCurvature ||
-        !scheme->BuildLimitTangentStencils(cache.Hierarchy.Finest, cache.LimitTangents, evaluationError))
+        !scheme->BuildLimitTangentStencils(cache.Hierarchy.Finest, cache.LimitTangents, tangentError))
       {
+        const std::string name = scheme->GetName();
+        const bool exactScheme = name == "catmull-clark" || name == "loop";
         vtkErrorMacro(<< (this->ComputeCurvature ? "ComputeCurvature" : "ComputeLimitNormals") << ": "
-                      << evaluationError << ".");
+                      << (exactScheme || tangentError.empty() ? evaluationError : tangentError) << ".");
         return fail();
       }
     }

@@ -99,6 +99,26 @@ LimitEvaluator::LimitEvaluator(const Scheme& scheme, const Level& level)
     this->Kind = name == "loop" ? PatchKind::BoxSpline : PatchKind::BSpline;
     this->Valid = level.Topology.HasEdges() && !level.EdgeSharpness.empty();
     this->Problem = this->Valid ? "" : "the level has no edges (refined with faces only)";
+    for (Index v = 0; this->Valid && v < level.Topology.GetNumVertices(); ++v)
+    {
+      const Index valence = level.Topology.GetVertexFaces(v).size();
+      if (valence > MaxValence)
+      {
+        this->Valid = false;
+        this->Problem = "vertex " + std::to_string(v) + " has " + std::to_string(valence) +
+          " faces around it; the exact limit is evaluated near vertices of at most " + std::to_string(MaxValence);
+      }
+    }
+    // A Catmull-Clark face of n sides becomes a vertex of valence n once split.
+    for (Index f = 0; this->Valid && f < level.Topology.GetNumFaces(); ++f)
+    {
+      if (level.Topology.GetFaceSize(f) > MaxValence)
+      {
+        this->Valid = false;
+        this->Problem = "face " + std::to_string(f) + " has " + std::to_string(level.Topology.GetFaceSize(f)) +
+          " sides; the exact limit is evaluated near faces and vertices of at most " + std::to_string(MaxValence);
+      }
+    }
   }
   else
   {

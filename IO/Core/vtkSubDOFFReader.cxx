@@ -150,8 +150,10 @@ bool vtkSubDOFFReader::ReadFile(std::istream& file, vtkPolyData* output)
   const vtkIdType numFaces = static_cast<vtkIdType>(numFacesValue);
   // A header may promise more than the file holds: refuse before allocating for it. The
   // shortest vertex line is "0 0 0" and a newline, the shortest face "1 0" and a newline.
+  // (Small promises are read as far as they go, for the exact line where the file ends.)
   const std::streamoff remaining = RemainingBytes(file);
-  if (remaining >= 0 && 6 * static_cast<double>(numVertices) + 4 * static_cast<double>(numFaces) > remaining)
+  const double promised = 6 * static_cast<double>(numVertices) + 4 * static_cast<double>(numFaces);
+  if (remaining >= 0 && promised > remaining && promised > 1e6)
   {
     return fail("the header announces " + std::to_string(numVertices) + " vertices and " + std::to_string(numFaces) +
       " faces, more than the " + std::to_string(remaining) + " bytes after it can hold.");

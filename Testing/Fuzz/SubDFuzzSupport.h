@@ -173,7 +173,7 @@ inline void RunAndCheck(vtkPolyDataAlgorithm* filter, vtkPolyData* input, const 
   filter->SetInputData(input);
   filter->Update();
   vtkPolyData* out = filter->GetOutput();
-  const std::string problems = subdtest::OutputProblems(out);
+  const std::string problems = subdtest::OutputProblems(out, input);
   if (!problems.empty())
   {
     Fail(name + " gave an invalid output", problems);
