@@ -297,6 +297,51 @@ bool CheckPLYFile(const std::string& path, std::string& error)
   return true;
 }
 
+bool CheckLegacyVTKFile(const std::string& path, std::string& error)
+{
+  std::ifstream in(path, std::ios::binary | std::ios::ate);
+  if (!in)
+  {
+    error = "cannot open '" + path + "'";
+    return false;
+  }
+  const double size = static_cast<double>(in.tellg());
+  in.seekg(0);
+  // Every value takes at least one byte (binary files: at least four, ASCII: a digit and a
+  // separator), so a count above the file's size is a lie whatever the encoding.
+  std::string line;
+  for (int lineNumber = 1; std::getline(in, line); ++lineNumber)
+  {
+    std::istringstream words(line);
+    std::string keyword;
+    double count = 0, values = 0;
+    if (!(words >> keyword >> count))
+    {
+      continue;
+    }
+    if (keyword == "POINTS")
+    {
+      values = 3 * count;
+    }
+    else if (keyword == "VERTICES" || keyword == "LINES" || keyword == "POLYGONS" || keyword == "TRIANGLE_STRIPS")
+    {
+      double total = 0;
+      values = (words >> total) ? std::max(count, total) : count;
+    }
+    else if (keyword == "POINT_DATA" || keyword == "CELL_DATA")
+    {
+      values = count;
+    }
+    if (values > size)
+    {
+      error = "'" + path + "' is not a valid VTK file: line " + std::to_string(lineNumber) + " ('" + line +
+        "') announces more values than the file's " + std::to_string(static_cast<long long>(size)) + " bytes hold";
+      return false;
+    }
+  }
+  return true;
+}
+
 bool CheckSTLFile(const std::string& path, std::string& error)
 {
   std::ifstream in(path, std::ios::binary | std::ios::ate);

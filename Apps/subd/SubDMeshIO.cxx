@@ -132,7 +132,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& erro
   }
   if (ext == ".vtk")
   {
-    return RunReader<vtkPolyDataReader>(path, error);
+    return CheckLegacyVTKFile(path, error) ? RunReader<vtkPolyDataReader>(path, error) : nullptr;
   }
   if (ext == ".obj")
   {

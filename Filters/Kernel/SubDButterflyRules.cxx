@@ -99,8 +99,10 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
 
 double ButterflyRowWriter::ExtraordinaryWeight(Index K, Index j) const
 {
-  return K < static_cast<Index>(this->ExtraordinaryWeights.size()) ? this->ExtraordinaryWeights[K][j]
-                                                                   : ButterflyExtraordinaryWeight(K, j);
+  // The table covers Zorin's valences 3..31; a ring of 1 or 2 faces (a degenerate, closed
+  // double-sided fan) takes the general formula too.
+  return K >= 3 && K < static_cast<Index>(this->ExtraordinaryWeights.size()) ? this->ExtraordinaryWeights[K][j]
+                                                                            : ButterflyExtraordinaryWeight(K, j);
 }
 
 // Neighbour of v next to b on the side away from y, where y and b are consecutive in v's

@@ -12,12 +12,19 @@ namespace
 Index EdgePosition(const MeshTopology& topo, Index f, Index e)
 {
   const IndexSpan fe = topo.GetFaceEdges(f);
-  Index i = 0;
-  while (fe[i] != e)
+  if (fe.size() <= 16)
   {
-    ++i;
+    Index i = 0;
+    while (fe[i] != e)
+    {
+      ++i;
+    }
+    return i;
   }
-  return i;
+  // A large polygon (a scan would make its edges quadratic): the edge starts or ends at the
+  // corner of its first vertex, found through that vertex's faces.
+  const Index i = topo.FindCorner(topo.GetEdgeVertices(e)[0], f);
+  return fe[i] == e ? i : (i == 0 ? fe.size() - 1 : i - 1);
 }
 
 // Walking the faces in order, an edge is first met in the first of its faces (they are

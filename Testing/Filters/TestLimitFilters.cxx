@@ -472,3 +472,67 @@ TEST(LimitFilter, StripsAndDegeneratePolygonsAreReadLikeTheSurfaceFilters)
   EXPECT_NE(messages.Warnings.find("degenerate"), std::string::npos) << messages.Warnings;
   EXPECT_EQ(limit->GetOutput()->GetNumberOfCells(), 6 * 4);
 }
+
+namespace
+{
+// Where the limit surface has no tangent plane (here: a triangle of zero area), the normals
+// and curvatures are 0, never NaN, and a warning says how many points.
+TEST(LimitGeometry, NoTangentPlaneGivesZerosAndAWarning)
+{
+  for (bool loop : { false, true })
+  {
+    SCOPED_TRACE(loop ? "loop" : "catmull-clark");
+    vtkSmartPointer<vtkSubDSurfaceFilter> filter;
+    if (loop)
+    {
+      filter = vtkSmartPointer<vtkSubDLoopFilter>::New();
+    }
+    else
+    {
+      filter = vtkSmartPointer<vtkSubDCatmullClarkFilter>::New();
+    }
+    // A cube, and a triangle whose three corners coincide: no tangent plane anywhere on it.
+    subdtest::TestMesh mesh = loop ? subdtest::Cube().Triangulated() : subdtest::Cube();
+    const subd::Index first = mesh.NumVertices();
+    for (int k = 0; k < 3; ++k)
+    {
+      mesh.AddPoint(5, 5, 5);
+    }
+    mesh.AddFace({ first, first + 1, first + 2 });
+    filter->SetInputData(ToPolyData(mesh));
+    filter->SetNumberOfSubdivisions(2);
+    filter->ProjectToLimitOn();
+    filter->ComputeLimitNormalsOn();
+    filter->ComputeCurvatureOn();
+    subdtest::Messages messages;
+    messages.Watch(filter);
+    filter->Update();
+    vtkPolyData* out = filter->GetOutput();
+    ASSERT_GT(out->GetNumberOfPoints(), 0) << messages.Errors;
+    vtkDataArray* normals = out->GetPointData()->GetArray("Normals");
+    vtkDataArray* mean = out->GetPointData()->GetArray("Mean_Curvature");
+    ASSERT_TRUE(normals && mean);
+    vtkIdType undefined = 0;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      const double* n = normals->GetTuple3(i);
+      ASSERT_TRUE(std::isfinite(n[0]) && std::isfinite(n[1]) && std::isfinite(n[2]) &&
+        std::isfinite(mean->GetTuple1(i)));
+      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if (length == 0.0)
+      {
+        ++undefined;
+        EXPECT_EQ(mean->GetTuple1(i), 0.0);
+      }
+      else
+      {
+        EXPECT_NEAR(length, 1.0, 1e-6);
+      }
+    }
+    ASSERT_GT(undefined, 0);
+    EXPECT_NE(messages.Warnings.find("no tangent plane at " + std::to_string(undefined) + " output point"),
+      std::string::npos)
+      << messages.Warnings;
+  }
+}
+}

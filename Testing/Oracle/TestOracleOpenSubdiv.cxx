@@ -574,7 +574,12 @@ TEST_P(LimitOracle, MatchesOpenSubdivPatches)
     primvar.Interpolate(l, src, dst);
     src = dst;
   }
-  table->ComputeLocalPointValues(values.data(), values.data() + numRefined);
+  // The local points (Gregory end caps) from the double-precision stencils the options asked
+  // for (PatchTable::ComputeLocalPointValues reads the float table only).
+  if (const Far::StencilTableReal<double>* local = table->GetLocalPointStencilTable<double>())
+  {
+    local->UpdateValues(values.data(), values.data() + numRefined);
+  }
   const Far::PatchMap patchMap(*table);
   const Far::PtexIndices ptex(*refiner);
 
