@@ -25,6 +25,20 @@ bool ReadWholeFile(const std::string& path, std::vector<char>& bytes, std::strin
   return true;
 }
 
+// Opens `path` for reading from its start, with its size in bytes.
+bool OpenMeasured(const std::string& path, std::ifstream& in, std::streamoff& size, std::string& error)
+{
+  in.open(path, std::ios::binary | std::ios::ate);
+  if (!in)
+  {
+    error = "cannot open '" + path + "'";
+    return false;
+  }
+  size = in.tellg();
+  in.seekg(0);
+  return true;
+}
+
 // Size in bytes of a PLY scalar type, 0 when the name is not one.
 int PLYTypeSize(const std::string& type)
 {
@@ -297,16 +311,123 @@ bool CheckPLYFile(const std::string& path, std::string& error)
   return true;
 }
 
+namespace
+{
+// Walks an ASCII legacy polydata's geometry (POINTS and the four cell sections, in the classic
+// "n size" layout or the OFFSETS/CONNECTIVITY one) and returns what does not add up, or "".
+// vtkPolyDataReader reads past a section whose counts do not match its values and crashes.
+std::string LegacyASCIIProblem(std::istream& in)
+{
+  std::string token;
+  const auto number = [&in, &token](double& value) {
+    if (!(in >> token))
+    {
+      return false;
+    }
+    char* end = nullptr;
+    value = std::strtod(token.c_str(), &end);
+    return end == token.c_str() + token.size();
+  };
+  std::string line;
+  std::getline(in, line); // "# vtk DataFile Version x.y"
+  std::getline(in, line); // the title
+  std::getline(in, line); // ASCII
+  std::getline(in, line); // DATASET POLYDATA
+  std::string keyword;
+  while (in >> keyword)
+  {
+    double count = 0, size = 0, value = 0;
+    if (keyword == "POINTS")
+    {
+      if (!number(count) || !(in >> token))
+      {
+        return "POINTS has no count and type";
+      }
+      for (double k = 0; k < 3 * count; ++k)
+      {
+        if (!number(value))
+        {
+          return "POINTS announces " + std::to_string(static_cast<long long>(count)) + " points; value " +
+            std::to_string(static_cast<long long>(k)) + " is missing or not a number";
+        }
+      }
+      continue;
+    }
+    if (keyword != "VERTICES" && keyword != "LINES" && keyword != "POLYGONS" && keyword != "TRIANGLE_STRIPS")
+    {
+      return ""; // attributes and the rest: the reader's own checks
+    }
+    if (!number(count) || !number(size) || count < 0 || size < 0)
+    {
+      return keyword + " has no valid counts";
+    }
+    const std::streampos start = in.tellg();
+    if (in >> token && token == "OFFSETS")
+    {
+      // OFFSETS type and `count` offsets, then CONNECTIVITY type and `size` ids.
+      in >> token;
+      for (double k = 0; k < count; ++k)
+      {
+        if (!number(value))
+        {
+          return keyword + " ends before its " + std::to_string(static_cast<long long>(count)) + " offsets";
+        }
+      }
+      if (!(in >> token) || token != "CONNECTIVITY" || !(in >> token))
+      {
+        return keyword + " has OFFSETS but no CONNECTIVITY";
+      }
+      for (double k = 0; k < size; ++k)
+      {
+        if (!number(value))
+        {
+          return keyword + " ends before its " + std::to_string(static_cast<long long>(size)) + " point ids";
+        }
+      }
+      continue;
+    }
+    in.clear();
+    in.seekg(start);
+    double used = 0;
+    for (double c = 0; c < count; ++c)
+    {
+      double n = 0;
+      if (!number(n) || n < 0)
+      {
+        return keyword + " cell " + std::to_string(static_cast<long long>(c)) + " has no valid point count";
+      }
+      used += 1 + n;
+      if (used > size)
+      {
+        return keyword + " holds more values than its size " + std::to_string(static_cast<long long>(size));
+      }
+      for (double k = 0; k < n; ++k)
+      {
+        if (!number(value))
+        {
+          return keyword + " cell " + std::to_string(static_cast<long long>(c)) + " ends early";
+        }
+      }
+    }
+    if (used != size)
+    {
+      return keyword + " announces " + std::to_string(static_cast<long long>(size)) + " values but its cells hold " +
+        std::to_string(static_cast<long long>(used));
+    }
+  }
+  return "";
+}
+}
+
 bool CheckLegacyVTKFile(const std::string& path, std::string& error)
 {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in)
+  std::ifstream in;
+  std::streamoff fileSize = 0;
+  if (!OpenMeasured(path, in, fileSize, error))
   {
-    error = "cannot open '" + path + "'";
     return false;
   }
-  const double size = static_cast<double>(in.tellg());
-  in.seekg(0);
+  const double size = static_cast<double>(fileSize);
   // Every value takes at least one byte (binary files: at least four, ASCII: a digit and a
   // separator), so a count above the file's size is a lie whatever the encoding.
   std::string line;
@@ -339,19 +460,65 @@ bool CheckLegacyVTKFile(const std::string& path, std::string& error)
       return false;
     }
   }
+  // ASCII files: the geometry's values must add up (the third line says ASCII or BINARY).
+  in.clear();
+  in.seekg(0);
+  std::string header[3];
+  for (std::string& h : header)
+  {
+    std::getline(in, h);
+  }
+  if (header[2].rfind("ASCII", 0) == 0)
+  {
+    in.seekg(0);
+    const std::string problem = LegacyASCIIProblem(in);
+    if (!problem.empty())
+    {
+      error = "'" + path + "' is not a valid VTK file: " + problem;
+      return false;
+    }
+  }
+  return true;
+}
+
+bool CheckXMLPolyDataFile(const std::string& path, std::string& error)
+{
+  std::vector<char> bytes;
+  if (!ReadWholeFile(path, bytes, error))
+  {
+    return false;
+  }
+  const std::string text(bytes.begin(), bytes.end());
+  const double limit = 1100.0 * static_cast<double>(bytes.size());
+  for (size_t at = text.find("NumberOf"); at != std::string::npos; at = text.find("NumberOf", at + 8))
+  {
+    const size_t quote = text.find('"', at);
+    if (quote == std::string::npos || quote > at + 40)
+    {
+      continue;
+    }
+    const double count = std::strtod(text.c_str() + quote + 1, nullptr);
+    // A point has 3 values; a cell at least 2 (an offset and a point id).
+    const double values = (text.compare(at, 14, "NumberOfPoints") == 0 ? 3.0 : 2.0) * count;
+    if (!(values <= limit))
+    {
+      error = "'" + path + "' is not a valid VTK XML file: '" + text.substr(at, quote - at) +
+        std::to_string(static_cast<long long>(count)) + "' announces more than its " + std::to_string(bytes.size()) +
+        " bytes can hold";
+      return false;
+    }
+  }
   return true;
 }
 
 bool CheckSTLFile(const std::string& path, std::string& error)
 {
-  std::ifstream in(path, std::ios::binary | std::ios::ate);
-  if (!in)
+  std::ifstream in;
+  std::streamoff size = 0;
+  if (!OpenMeasured(path, in, size, error))
   {
-    error = "cannot open '" + path + "'";
     return false;
   }
-  const std::streamoff size = in.tellg();
-  in.seekg(0);
   char head[84] = {};
   in.read(head, sizeof head);
   const std::streamsize got = in.gcount();

@@ -23,6 +23,10 @@ bool CheckPLYFile(const std::string& path, std::string& error);
 /// (vtkPolyDataReader allocates for the count first). Otherwise false, with `error` set.
 bool CheckLegacyVTKFile(const std::string& path, std::string& error);
 
+/// True when no NumberOf... attribute of the VTK XML file `path` exceeds what its bytes can
+/// hold even compressed (zlib packs at most about 1000 to 1). Otherwise false, with `error` set.
+bool CheckXMLPolyDataFile(const std::string& path, std::string& error);
+
 /// True when `path` is an ASCII STL file (left to the reader) or a binary one whose size holds
 /// the triangles its header counts. Otherwise false, with `error` set.
 bool CheckSTLFile(const std::string& path, std::string& error);

@@ -25,6 +25,7 @@
 #include <cctype>
 #include <cstdio>
 #include <fstream>
+#include <new>
 #include <unistd.h>
 
 namespace subdapp
@@ -75,7 +76,15 @@ vtkSmartPointer<vtkPolyData> RunReader(const std::string& path, std::string& err
   vtkSmartPointer<vtkOutputWindow> previous = vtkOutputWindow::GetInstance();
   vtkNew<GenericMessageCapture> capture;
   vtkOutputWindow::SetInstance(capture);
-  reader->Update();
+  try
+  {
+    reader->Update();
+  }
+  catch (const std::bad_alloc&)
+  {
+    // A header that promises more than memory holds, past the checks made before reading.
+    capture->Captured += "the file announces more data than memory can hold";
+  }
   vtkOutputWindow::SetInstance(previous);
   messages.Errors += capture->Captured;
   vtkPolyData* out = reader->GetOutput();
@@ -128,7 +137,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& erro
   const std::string ext = LowerExtension(path);
   if (ext == ".vtp")
   {
-    return RunReader<vtkXMLPolyDataReader>(path, error);
+    return CheckXMLPolyDataFile(path, error) ? RunReader<vtkXMLPolyDataReader>(path, error) : nullptr;
   }
   if (ext == ".vtk")
   {

@@ -222,6 +222,8 @@ write_text("lying-count.ply", ply.replace("element vertex 8", "element vertex 20
 expect("lying-count.ply", read="error~.")
 write_text("lying-count.vtk", legacy_vtk(CUBE_POINTS, polys=CUBE_FACES).replace("POINTS 8", "POINTS 2000000000"))
 expect("lying-count.vtk", read="error~.")
+write_text("lying-count.vtp", vtp.replace('NumberOfPoints="8"', 'NumberOfPoints="2000000000"'))
+expect("lying-count.vtp", read="error~.")
 # Binary STL: an 80-byte header and a count of 2^31 - 1 triangles, followed by one.
 write_bytes("lying-count.stl", b"binary STL".ljust(80, b" ") + (2**31 - 1).to_bytes(4, "little") + bytes(50))
 expect("lying-count.stl", read="error~.")
