@@ -522,11 +522,22 @@ bool CheckSTLFile(const std::string& path, std::string& error)
   char head[84] = {};
   in.read(head, sizeof head);
   const std::streamsize got = in.gcount();
-  // VTK's reader takes a file that starts with "solid" and continues as text for ASCII.
+  // VTK's reader takes a file for ASCII when it starts with "solid" and has no binary bytes
+  // in the part it looks at. Any non-text byte in the first megabyte, and the file is held
+  // to the binary layout here, whatever its first word.
   bool text = got >= 5 && std::string(head, 5) == "solid";
-  for (std::streamsize k = 0; text && k < got; ++k)
+  std::vector<char> start(head, head + got);
+  if (text)
   {
-    const auto c = static_cast<unsigned char>(head[k]);
+    start.resize(1 << 20);
+    in.clear();
+    in.seekg(0);
+    in.read(start.data(), static_cast<std::streamsize>(start.size()));
+    start.resize(static_cast<size_t>(in.gcount()));
+  }
+  for (size_t k = 0; text && k < start.size(); ++k)
+  {
+    const auto c = static_cast<unsigned char>(start[k]);
     text = c == '\n' || c == '\r' || c == '\t' || (c >= 32 && c < 127);
   }
   if (text)
