@@ -67,6 +67,7 @@ struct PLYProperty
   bool IsList = false;
   std::string CountType; // lists: the type of the length
   int Size = 0;          // scalars: the value; lists: one item
+  bool Integer = false;  // the value (lists: the items) is an integer type
 };
 
 struct PLYElement
@@ -165,6 +166,7 @@ bool CheckPLYFile(const std::string& path, std::string& error)
         words >> property.CountType >> itemType >> property.Name;
         property.IsList = true;
         property.Size = PLYTypeSize(itemType);
+        property.Integer = IsIntegerType(itemType);
         if (!IsIntegerType(property.CountType) || property.Size == 0)
         {
           return fail("header line " + std::to_string(lineNumber) + " ('" + line + "') has an unknown list type");
@@ -174,6 +176,7 @@ bool CheckPLYFile(const std::string& path, std::string& error)
       {
         words >> property.Name;
         property.Size = PLYTypeSize(type);
+        property.Integer = IsIntegerType(type);
         if (property.Size == 0)
         {
           return fail("header line " + std::to_string(lineNumber) + " ('" + line + "') has an unknown type");
@@ -240,36 +243,53 @@ bool CheckPLYFile(const std::string& path, std::string& error)
     }
     for (long long i = 0; i < element.Count; ++i)
     {
+      // ASCII: one element per line (vtkPLYReader reads it as one line of words).
+      size_t lineEnd = pos;
+      if (ascii)
+      {
+        while (pos < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[pos])))
+        {
+          ++pos;
+        }
+        lineEnd = pos;
+        while (lineEnd < bytes.size() && bytes[lineEnd] != '\n')
+        {
+          ++lineEnd;
+        }
+      }
       for (const PLYProperty& property : element.Properties)
       {
         long long items = 1;
         if (ascii)
         {
-          // Tokens: the list length (an integer), then the items.
+          // Words: the list length (an integer), then the items.
           for (long long t = 0; t < items + (property.IsList ? 1 : 0); ++t)
           {
-            while (pos < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[pos])))
+            while (pos < lineEnd && std::isspace(static_cast<unsigned char>(bytes[pos])))
             {
               ++pos;
             }
-            if (pos >= bytes.size())
+            if (pos >= lineEnd)
             {
-              return fail("the file ends inside '" + element.Name + "' element " + std::to_string(i) + " of " +
-                std::to_string(element.Count));
+              return fail("line of '" + element.Name + "' element " + std::to_string(i) + " of " +
+                std::to_string(element.Count) + " ends before its '" + property.Name + "' values");
             }
             const char* start = bytes.data() + pos;
             size_t length = 0;
-            while (pos + length < bytes.size() && !std::isspace(static_cast<unsigned char>(start[length])))
+            while (pos + length < lineEnd && !std::isspace(static_cast<unsigned char>(start[length])))
             {
               ++length;
             }
             const std::string token(start, length);
             pos += length;
+            const bool integer = (property.IsList && t == 0) || property.Integer;
             char* parsed = nullptr;
-            const double value = std::strtod(token.c_str(), &parsed);
+            const double value = integer ? static_cast<double>(std::strtoll(token.c_str(), &parsed, 10))
+                                         : std::strtod(token.c_str(), &parsed);
             if (parsed != token.c_str() + token.size())
             {
-              return fail("'" + token + "' in '" + element.Name + "' element " + std::to_string(i) + " is not a number");
+              return fail("'" + token + "' in '" + element.Name + "' element " + std::to_string(i) + " is not " +
+                (integer ? "an integer" : "a number"));
             }
             if (property.IsList && t == 0)
             {
@@ -306,6 +326,10 @@ bool CheckPLYFile(const std::string& path, std::string& error)
         }
         pos += need;
       }
+      if (ascii)
+      {
+        pos = lineEnd; // words past the element's values are ignored, as the reader does
+      }
     }
   }
   return true;
@@ -319,13 +343,15 @@ namespace
 std::string LegacyASCIIProblem(std::istream& in)
 {
   std::string token;
-  const auto number = [&in, &token](double& value) {
+  // A number (a coordinate), or with `integer` an id or count: VTK reads "0.5" where it wants
+  // an integer as 0 and then trips over ".5".
+  const auto number = [&in, &token](double& value, bool integer = false) {
     if (!(in >> token))
     {
       return false;
     }
     char* end = nullptr;
-    value = std::strtod(token.c_str(), &end);
+    value = integer ? static_cast<double>(std::strtoll(token.c_str(), &end, 10)) : std::strtod(token.c_str(), &end);
     return end == token.c_str() + token.size();
   };
   std::string line;
@@ -333,13 +359,21 @@ std::string LegacyASCIIProblem(std::istream& in)
   std::getline(in, line); // the title
   std::getline(in, line); // ASCII
   std::getline(in, line); // DATASET POLYDATA
-  std::string keyword;
-  while (in >> keyword)
+  std::string word;
+  while (in >> word)
   {
+    // vtkDataReader compares keywords without case, by their first letters.
+    std::string keyword;
+    for (const char* known : { "POINTS", "VERTICES", "LINES", "POLYGONS", "TRIANGLE_STRIPS" })
+    {
+      std::string upper = word.substr(0, std::string(known).size());
+      std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char c) { return std::toupper(c); });
+      keyword = upper == known ? known : keyword;
+    }
     double count = 0, size = 0, value = 0;
     if (keyword == "POINTS")
     {
-      if (!number(count) || !(in >> token))
+      if (!number(count, true) || !(in >> token))
       {
         return "POINTS has no count and type";
       }
@@ -353,11 +387,11 @@ std::string LegacyASCIIProblem(std::istream& in)
       }
       continue;
     }
-    if (keyword != "VERTICES" && keyword != "LINES" && keyword != "POLYGONS" && keyword != "TRIANGLE_STRIPS")
+    if (keyword.empty())
     {
       return ""; // attributes and the rest: the reader's own checks
     }
-    if (!number(count) || !number(size) || count < 0 || size < 0)
+    if (!number(count, true) || !number(size, true) || count < 0 || size < 0)
     {
       return keyword + " has no valid counts";
     }
@@ -368,7 +402,7 @@ std::string LegacyASCIIProblem(std::istream& in)
       in >> token;
       for (double k = 0; k < count; ++k)
       {
-        if (!number(value))
+        if (!number(value, true))
         {
           return keyword + " ends before its " + std::to_string(static_cast<long long>(count)) + " offsets";
         }
@@ -379,7 +413,7 @@ std::string LegacyASCIIProblem(std::istream& in)
       }
       for (double k = 0; k < size; ++k)
       {
-        if (!number(value))
+        if (!number(value, true))
         {
           return keyword + " ends before its " + std::to_string(static_cast<long long>(size)) + " point ids";
         }
@@ -392,7 +426,7 @@ std::string LegacyASCIIProblem(std::istream& in)
     for (double c = 0; c < count; ++c)
     {
       double n = 0;
-      if (!number(n) || n < 0)
+      if (!number(n, true) || n < 0)
       {
         return keyword + " cell " + std::to_string(static_cast<long long>(c)) + " has no valid point count";
       }
@@ -403,7 +437,7 @@ std::string LegacyASCIIProblem(std::istream& in)
       }
       for (double k = 0; k < n; ++k)
       {
-        if (!number(value))
+        if (!number(value, true))
         {
           return keyword + " cell " + std::to_string(static_cast<long long>(c)) + " ends early";
         }
