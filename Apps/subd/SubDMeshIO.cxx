@@ -56,6 +56,10 @@ private:
   void Keep(const char* text)
   {
     std::string message = text ? text : "";
+    if (message.find("returned failure for request") != std::string::npos)
+    {
+      return; // the executive's follow-up to an error the reader reported itself
+    }
     const auto newline = message.find('\n'); // drop the "... In file, line N" first line
     if (newline != std::string::npos && message.substr(0, newline).find(", line ") != std::string::npos)
     {

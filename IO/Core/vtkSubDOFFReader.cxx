@@ -87,6 +87,7 @@ namespace
 // The bytes from the stream's position to its end, or -1 when it cannot seek.
 std::streamoff RemainingBytes(std::istream& in)
 {
+  in.clear(); // a last line without a newline leaves the stream at its end with eofbit set
   const std::streampos here = in.tellg();
   if (here == std::streampos(-1) || !in.seekg(0, std::ios::end))
   {

@@ -1,7 +1,7 @@
 # `subd` on every entry of the corpus of bad inputs (Testing/Data/Corpus/make_corpus.py): exit
 # code 0 and an output file where the manifest expects a mesh, a non-zero exit code, a message
-# naming the problem and no output file where it expects an error; never a crash, never a
-# temporary file left behind.
+# naming the problem (and no pipeline dump) and no output file where it expects an error;
+# never a crash, never a temporary file left behind.
 #   cmake -DSUBD=path/to/subd -DCORPUS=dir -DWORK=dir -P RunCorpus.cmake
 file(MAKE_DIRECTORY "${WORK}")
 file(STRINGS "${CORPUS}/corpus.txt" lines)
@@ -35,6 +35,8 @@ foreach (line IN LISTS lines)
       string(APPEND failures "${name}: the message does not match '${pattern}'\n")
     elseif (EXISTS "${out}")
       string(APPEND failures "${name}: an output file was written after a failure\n")
+    elseif (stderr MATCHES "returned failure|vtkInformation")
+      string(APPEND failures "${name}: VTK's pipeline report reached the user\n")
     endif ()
   elseif (NOT code EQUAL 0 OR NOT EXISTS "${out}")
     string(APPEND failures "${name}: expected exit code 0 and ${out}, got '${code}'\n")
