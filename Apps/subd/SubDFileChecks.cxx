@@ -357,8 +357,7 @@ std::string LegacyASCIIProblem(std::istream& in)
   std::string line;
   std::getline(in, line); // "# vtk DataFile Version x.y"
   std::getline(in, line); // the title
-  std::getline(in, line); // ASCII
-  std::getline(in, line); // DATASET POLYDATA
+  in >> token >> token >> token; // ASCII DATASET POLYDATA: words, as the reader reads them
   std::string word;
   while (in >> word)
   {

@@ -141,7 +141,8 @@ bool vtkSubDOFFReader::ReadFile(std::istream& file, vtkPolyData* output)
     return fail("expected the counts 'vertices faces edges', found '" + line + "'.");
   }
   const double numVerticesValue = values[0], numFacesValue = values[1];
-  if (numVerticesValue < 0 || numFacesValue < 0 || numVerticesValue > 2e9 || numFacesValue > 2e9 ||
+  // Written so that NaN fails too (before the casts below, undefined for NaN).
+  if (!(numVerticesValue >= 0 && numVerticesValue <= 2e9) || !(numFacesValue >= 0 && numFacesValue <= 2e9) ||
     numVerticesValue != static_cast<double>(static_cast<long long>(numVerticesValue)) ||
     numFacesValue != static_cast<double>(static_cast<long long>(numFacesValue)))
   {
