@@ -1,11 +1,10 @@
-// subd: checks of PLY and STL files before VTK's readers see them.
+// subd: checks of VTK XML and STL files before VTK's readers see them.
 //
-// vtkPLYReader, vtkSTLReader and vtkPolyDataReader trust their files: a PLY file cut short makes the first crash
-// (a double free) and a header announcing two billion vertices makes it loop for minutes; a
-// binary STL whose triangle count exceeds the file, or a legacy VTK file whose POINTS count
-// does, makes the others allocate for it. These
-// checks walk the file's structure (header, element counts, list lengths) without building
-// anything, and name what is wrong; a file that passes holds everything its header announces.
+// vtkXMLPolyDataReader and vtkSTLReader trust the counts in their files: a NumberOfPoints or
+// a binary STL triangle count larger than the file makes them allocate for it (gigabytes,
+// or bad_alloc). These checks weigh the counts against the file's size and name what is
+// wrong; a file that passes cannot make the reader allocate much more than its size. (Legacy
+// .vtk and PLY files are read by SubD's own readers, which check everything as they read.)
 #ifndef SubDFileChecks_h
 #define SubDFileChecks_h
 
@@ -13,16 +12,6 @@
 
 namespace subdapp
 {
-/// True when `path` is a PLY file (ascii or binary) whose body holds every element its header
-/// announces, with a "vertex" element of x, y, z and, if it has faces, a vertex index list.
-/// Otherwise false, with `error` set.
-bool CheckPLYFile(const std::string& path, std::string& error);
-
-/// True when no count in the legacy VTK file `path` (POINTS, VERTICES, LINES, POLYGONS,
-/// TRIANGLE_STRIPS, POINT_DATA, CELL_DATA) promises more values than its bytes can hold
-/// (vtkPolyDataReader allocates for the count first). Otherwise false, with `error` set.
-bool CheckLegacyVTKFile(const std::string& path, std::string& error);
-
 /// True when no NumberOf... attribute of the VTK XML file `path` exceeds what its bytes can
 /// hold even compressed (zlib packs at most about 1000 to 1). Otherwise false, with `error` set.
 bool CheckXMLPolyDataFile(const std::string& path, std::string& error);

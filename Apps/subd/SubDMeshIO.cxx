@@ -5,17 +5,17 @@
 #include "vtkAlgorithm.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
-#include "vtkPLYReader.h"
 #include "vtkPLYWriter.h"
 #include "vtkPolyData.h"
-#include "vtkPolyDataReader.h"
 #include "vtkPolyDataWriter.h"
 #include "vtkSTLReader.h"
 #include "vtkSTLWriter.h"
+#include "vtkSubDLegacyReader.h"
 #include "vtkSubDOBJReader.h"
 #include "vtkSubDOBJWriter.h"
 #include "vtkSubDOFFReader.h"
 #include "vtkSubDOFFWriter.h"
+#include "vtkSubDPLYReader.h"
 #include "vtkTriangleFilter.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
@@ -145,7 +145,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& erro
   }
   if (ext == ".vtk")
   {
-    return CheckLegacyVTKFile(path, error) ? RunReader<vtkPolyDataReader>(path, error) : nullptr;
+    return RunReader<vtkSubDLegacyReader>(path, error);
   }
   if (ext == ".obj")
   {
@@ -153,7 +153,7 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& erro
   }
   if (ext == ".ply")
   {
-    return CheckPLYFile(path, error) ? RunReader<vtkPLYReader>(path, error) : nullptr;
+    return RunReader<vtkSubDPLYReader>(path, error);
   }
   if (ext == ".stl")
   {

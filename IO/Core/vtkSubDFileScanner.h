@@ -1,0 +1,204 @@
+// vtkSubDFileScanner: the bytes of a whole file, read as words, lines and raw values, never
+// past their end.
+//
+// SubD's legacy VTK and PLY readers parse headers made of words and bodies that are either
+// ASCII numbers or raw binary values. Both trust nothing in the file: every count is weighed
+// against the bytes left before anything is allocated for it (ReserveFor), every read is
+// bounds-checked, and numbers are parsed without the C locale (std::from_chars), so a comma
+// locale cannot change what a file means.
+#ifndef vtkSubDFileScanner_h
+#define vtkSubDFileScanner_h
+
+#include <algorithm>
+#include <charconv>
+#include <cstdint>
+#include <cstring>
+#include <istream>
+#include <iterator>
+#include <limits>
+#include <string>
+#include <type_traits>
+
+namespace subdio
+{
+class FileScanner
+{
+public:
+  /// Reads the whole stream. False (with nothing read) when it cannot be read.
+  bool Load(std::istream& in)
+  {
+    this->Bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    this->Position = 0;
+    this->LineNumber = 1;
+    return !in.bad();
+  }
+
+  size_t Remaining() const { return this->Bytes.size() - this->Position; }
+  bool AtEnd() const { return this->Position >= this->Bytes.size(); }
+  /// Where the next read starts, in bytes from the start of the file.
+  size_t Offset() const { return this->Position; }
+  /// The line the next text read starts on (counting stops being exact after binary data).
+  long Line() const { return this->LineNumber; }
+
+  /// Skips white space (the C set: space, \t, \n, \v, \f, \r) and reads the next word; false at
+  /// the end of the bytes.
+  bool NextWord(std::string& word)
+  {
+    this->SkipSpace();
+    const size_t start = this->Position;
+    while (!this->AtEnd() && !IsSpace(this->Bytes[this->Position]))
+    {
+      ++this->Position;
+    }
+    word.assign(this->Bytes, start, this->Position - start);
+    return !word.empty();
+  }
+
+  /// The next word without consuming it; empty at the end.
+  std::string PeekWord()
+  {
+    const size_t position = this->Position;
+    const long line = this->LineNumber;
+    std::string word;
+    this->NextWord(word);
+    this->Position = position;
+    this->LineNumber = line;
+    return word;
+  }
+
+  /// The rest of the current line (without its \n or a \r before it), moving past its end.
+  /// False at the end of the bytes.
+  bool NextLine(std::string& line)
+  {
+    if (this->AtEnd())
+    {
+      return false;
+    }
+    const size_t start = this->Position;
+    const size_t newline = this->Bytes.find('\n', start);
+    const size_t end = newline == std::string::npos ? this->Bytes.size() : newline;
+    line.assign(this->Bytes, start, end - start);
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    this->Position = newline == std::string::npos ? end : end + 1;
+    this->LineNumber += newline == std::string::npos ? 0 : 1;
+    return true;
+  }
+
+  /// Moves past the end of the current line (binary data starts after it).
+  void SkipRestOfLine()
+  {
+    std::string ignored;
+    this->NextLine(ignored);
+  }
+
+  /// Reads the next word as a number of type T. Integer types accept only integers within
+  /// their range; floating types accept what strtod does in the C locale, "nan" and "inf" too.
+  template <typename T>
+  bool NextNumber(T& value)
+  {
+    this->SkipSpace();
+    const char* first = this->Bytes.data() + this->Position;
+    const char* last = this->Bytes.data() + this->Bytes.size();
+    const char* wordEnd = std::find_if(first, last, IsSpace);
+    const char* digits = (first != wordEnd && *first == '+') ? first + 1 : first; // from_chars refuses '+'
+    ParseResult result = Parse(digits, wordEnd, value);
+    if (result.ptr != wordEnd || result.ec != std::errc() || digits == wordEnd)
+    {
+      return false;
+    }
+    this->Position = static_cast<size_t>(wordEnd - this->Bytes.data());
+    return true;
+  }
+
+  /// Copies `count` raw values of type T, swapping their bytes when the file's byte order
+  /// (`bigEndian`) is not the machine's. False, reading nothing, when the bytes run out.
+  template <typename T>
+  bool NextBinary(T* values, size_t count, bool bigEndian)
+  {
+    if (count > this->Remaining() / sizeof(T))
+    {
+      return false;
+    }
+    std::memcpy(values, this->Bytes.data() + this->Position, count * sizeof(T));
+    this->Position += count * sizeof(T);
+    if (bigEndian != MachineIsBigEndian() && sizeof(T) > 1)
+    {
+      auto* bytes = reinterpret_cast<unsigned char*>(values);
+      for (size_t i = 0; i < count; ++i)
+      {
+        std::reverse(bytes + i * sizeof(T), bytes + (i + 1) * sizeof(T));
+      }
+    }
+    return true;
+  }
+
+  /// True when `count` values, each taking at least `bytesEach` bytes in the file, can still
+  /// be in it: checked before allocating for a count the file announces.
+  bool ReserveFor(double count, double bytesEach) const
+  {
+    return count * bytesEach <= static_cast<double>(this->Remaining()) + 1;
+  }
+
+  static bool MachineIsBigEndian()
+  {
+    const std::uint16_t probe = 1;
+    unsigned char first;
+    std::memcpy(&first, &probe, 1);
+    return first == 0;
+  }
+
+  static bool IsSpace(char c)
+  {
+    return c == ' ' || c == '\t' || c == '\n' || c == '\v' || c == '\f' || c == '\r';
+  }
+
+private:
+  struct ParseResult
+  {
+    const char* ptr;
+    std::errc ec;
+  };
+
+  template <typename T>
+  static ParseResult Parse(const char* first, const char* last, T& value)
+  {
+    if constexpr (std::is_floating_point<T>::value)
+    {
+      // from_chars reports a value too small for T as out of range; a file of doubles
+      // written as text may hold such a value, which stands for zero. Too large stays an error.
+      auto r = std::from_chars(first, last, value, std::chars_format::general);
+      if (r.ec == std::errc::result_out_of_range)
+      {
+        const std::string text(first, r.ptr);
+        const bool tiny = text.find("e-") != std::string::npos || text.find("E-") != std::string::npos;
+        value = 0;
+        return { r.ptr, tiny ? std::errc() : r.ec };
+      }
+      return { r.ptr, r.ec };
+    }
+    else
+    {
+      auto r = std::from_chars(first, last, value);
+      return { r.ptr, r.ec };
+    }
+  }
+
+  void SkipSpace()
+  {
+    while (!this->AtEnd() && IsSpace(this->Bytes[this->Position]))
+    {
+      this->LineNumber += this->Bytes[this->Position] == '\n' ? 1 : 0;
+      ++this->Position;
+    }
+  }
+
+  std::string Bytes;
+  size_t Position = 0;
+  long LineNumber = 1;
+};
+}
+
+#endif
