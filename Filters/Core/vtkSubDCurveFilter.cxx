@@ -1,5 +1,6 @@
 #include "vtkSubDCurveFilter.h"
 #include "vtkSubDMemoryBudget.h"
+#include "vtkSubDOutOfMemory.h"
 
 #include "SubDCurveLimit.h"
 #include "SubDCurveRefiner.h"
@@ -194,6 +195,14 @@ const char* vtkSubDCurveFilter::GetSchemeAsString()
 }
 
 int vtkSubDCurveFilter::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return vtkSubDRunCatchingOutOfMemory(this, vtkPolyData::GetData(outputVector),
+    [&]() { return this->Execute(request, inputVector, outputVector); },
+    [this](unsigned long code) { this->SetErrorCode(code); });
+}
+
+int vtkSubDCurveFilter::Execute(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);

@@ -153,6 +153,8 @@ protected:
   ~vtkSubDCurveFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// RequestData's work; RequestData runs it and turns running out of memory into an error.
+  int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   int Scheme = SCHEME_CUBIC_BSPLINE;
   int NumberOfSubdivisions = 1;

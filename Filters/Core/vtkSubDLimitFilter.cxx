@@ -1,5 +1,6 @@
 #include "vtkSubDLimitFilter.h"
 
+#include "vtkSubDOutOfMemory.h"
 #include "SubDLimitEvaluator.h"
 #include "SubDMeshValidation.h"
 #include "SubDScheme.h"
@@ -150,6 +151,14 @@ int vtkSubDLimitFilter::FillInputPortInformation(int port, vtkInformation* info)
 }
 
 int vtkSubDLimitFilter::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return vtkSubDRunCatchingOutOfMemory(this, vtkPolyData::GetData(outputVector),
+    [&]() { return this->Execute(request, inputVector, outputVector); },
+    [this](unsigned long code) { this->SetErrorCode(code); });
+}
+
+int vtkSubDLimitFilter::Execute(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);

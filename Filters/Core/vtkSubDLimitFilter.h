@@ -111,6 +111,8 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// RequestData's work; RequestData runs it and turns running out of memory into an error.
+  int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   int Scheme = CATMULL_CLARK;
   int Resolution = 4;

@@ -1,5 +1,6 @@
 #include "vtkSubDSurfaceFilter.h"
 #include "vtkSubDMemoryBudget.h"
+#include "vtkSubDOutOfMemory.h"
 
 #include "SubDLimitEvaluator.h"
 #include "SubDMeshValidation.h"
@@ -215,6 +216,14 @@ const char* vtkSubDSurfaceFilter::GetCreaseMethodAsString()
 }
 
 int vtkSubDSurfaceFilter::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return vtkSubDRunCatchingOutOfMemory(this, vtkPolyData::GetData(outputVector),
+    [&]() { return this->Execute(request, inputVector, outputVector); },
+    [this](unsigned long code) { this->SetErrorCode(code); });
+}
+
+int vtkSubDSurfaceFilter::Execute(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);

@@ -242,6 +242,8 @@ protected:
   ~vtkSubDSurfaceFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// RequestData's work; RequestData runs it and turns running out of memory into an error.
+  int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   /// The subclass's scheme; called when the stencils must be (re)built. `allTriangles` tells
   /// whether every (screened) input face is a triangle.

@@ -13,11 +13,13 @@
 #include <charconv>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 #include <istream>
 #include <iterator>
 #include <limits>
 #include <string>
 #include <type_traits>
+#include <utility>
 
 namespace subdio
 {
@@ -199,6 +201,46 @@ private:
   size_t Position = 0;
   long LineNumber = 1;
 };
+
+/// Base of the parsers of SubD's readers: the file's bytes and how a problem is reported.
+class FileParser
+{
+public:
+  /// Reports a problem at a line of the file (0: no line) and returns false.
+  using Reporter = std::function<bool(long line, const std::string& what)>;
+
+protected:
+  FileParser(FileScanner& scanner, Reporter report)
+    : Scanner(scanner)
+    , Report(std::move(report))
+  {
+  }
+
+  /// Reports `what` where the scanner stands: at its line in a text file, at its byte offset
+  /// in binary data (where line numbers mean little).
+  bool Fail(const std::string& what)
+  {
+    return this->Binary ? this->Report(0, "near byte " + std::to_string(this->Scanner.Offset()) + ": " + what)
+                        : this->Report(this->Scanner.Line(), what);
+  }
+
+  FileScanner& Scanner;
+  Reporter Report;
+  bool Binary = false;
+};
+
+/// Reads the whole `file` and runs Parser(scanner, report).Parse(output).
+template <typename Parser, typename Output>
+bool ParseFile(std::istream& file, Output* output, FileParser::Reporter report)
+{
+  FileScanner scanner;
+  if (!scanner.Load(file))
+  {
+    return report(0, "the file cannot be read.");
+  }
+  Parser parser(scanner, std::move(report));
+  return parser.Parse(output);
+}
 }
 
 #endif

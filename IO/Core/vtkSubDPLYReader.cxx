@@ -17,7 +17,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <functional>
 #include <map>
 #include <sstream>
 #include <string>
@@ -106,24 +105,17 @@ bool ReadScalar(subdio::FileScanner& scanner, int type, bool binary, bool bigEnd
   }
 }
 
-class PLYParser
+class PLYParser : public subdio::FileParser
 {
 public:
-  using Reporter = std::function<bool(long line, const std::string& what)>;
   PLYParser(subdio::FileScanner& scanner, Reporter report)
-    : Scanner(scanner)
-    , Report(std::move(report))
+    : FileParser(scanner, std::move(report))
   {
   }
 
   bool Parse(vtkPolyData* output);
 
 private:
-  bool Fail(const std::string& what)
-  {
-    return this->Binary ? this->Report(0, "near byte " + std::to_string(this->Scanner.Offset()) + ": " + what)
-                        : this->Report(this->Scanner.Line(), what);
-  }
   bool ReadHeader();
   bool ReadHeaderLine(const std::string& line);
   bool ReadElement(PLYElement& element);
@@ -131,9 +123,7 @@ private:
   bool MakePoints(vtkPolyData* output);
   void MakeAttributes(PLYElement& element, vtkDataSetAttributes* attributes);
 
-  subdio::FileScanner& Scanner;
-  Reporter Report;
-  bool Binary = false, BigEndian = false;
+  bool BigEndian = false;
   std::vector<PLYElement> Elements;
   vtkIdType NumVertices = -1;
   vtkNew<vtkIdTypeArray> Offsets, Connectivity;
@@ -470,13 +460,8 @@ bool PLYParser::Parse(vtkPolyData* output)
 
 bool vtkSubDPLYReader::ReadFile(std::istream& file, vtkPolyData* output)
 {
-  subdio::FileScanner scanner;
-  if (!scanner.Load(file))
-  {
-    return this->Fail(0, "the file cannot be read.");
-  }
-  PLYParser parser(scanner, [this](long line, const std::string& what) { return this->Fail(line, what); });
-  return parser.Parse(output);
+  return subdio::ParseFile<PLYParser>(
+    file, output, [this](long line, const std::string& what) { return this->Fail(line, what); });
 }
 
 void vtkSubDPLYReader::PrintSelf(ostream& os, vtkIndent indent)

@@ -29,10 +29,13 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/resource.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <fstream>
 #include <limits>
 #include <sstream>
 #include <string>
@@ -544,6 +547,35 @@ TEST(CatmullClarkFilter, ErrorOutputAboveMemoryBudgetRefused)
   filter->SetMaximumMemory(64.0);
   filter->Update();
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPolys(), 6 * 4096);
+}
+
+// When memory runs out all the same (the budget allows the output, the process cannot hold it),
+// the filter reports it and leaves an empty output instead of ending the application. Run in
+// a child process whose address space is capped 1 GiB above what it already maps; the
+// 25M-quad output needs about 2 GiB.
+TEST(CatmullClarkFilterDeathTest, RunningOutOfMemoryIsAnErrorNotACrash)
+{
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  auto runCapped = []() {
+    long mappedPages = 0;
+    std::ifstream("/proc/self/statm") >> mappedPages;
+    const rlim_t cap = static_cast<rlim_t>(mappedPages) * sysconf(_SC_PAGE_SIZE) + (rlim_t(1) << 30);
+    const rlimit limit = { cap, cap };
+    if (setrlimit(RLIMIT_AS, &limit) != 0)
+    {
+      std::exit(2);
+    }
+    vtkNew<vtkSubDCatmullClarkFilter> filter;
+    Messages messages;
+    messages.Watch(filter);
+    filter->SetInputData(Cube());
+    filter->SetNumberOfSubdivisions(11);
+    filter->SetMaximumMemory(1.0e7);
+    filter->Update();
+    const bool reported = messages.Errors.find("Ran out of memory") != std::string::npos;
+    std::exit(reported && filter->GetOutput()->GetNumberOfCells() == 0 ? 0 : 1);
+  };
+  EXPECT_EXIT(runCapped(), ::testing::ExitedWithCode(0), "");
 }
 
 // The default budget is half the machine's physical memory.

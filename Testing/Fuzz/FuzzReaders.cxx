@@ -16,6 +16,13 @@
 #include <string>
 #include <unistd.h>
 
+// Full stacks for leak reports: VTK's libraries are built without frame pointers, so the fast
+// unwinder stops at their first frame and lsan.supp could not name the VTK function that leaks.
+extern "C" const char* __asan_default_options()
+{
+  return "fast_unwind_on_malloc=0";
+}
+
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 {
   static const char* const extensions[] = { ".off", ".obj", ".ply", ".stl", ".vtk", ".vtp" };
