@@ -553,6 +553,15 @@ TEST(CatmullClarkFilter, ErrorOutputAboveMemoryBudgetRefused)
 // the filter reports it and leaves an empty output instead of ending the application. Run in
 // a child process whose address space is capped 1 GiB above what it already maps; the
 // 25M-quad output needs about 2 GiB.
+// Not in the AddressSanitizer build: there operator new aborts the process on running out of
+// memory (whatever allocator_may_return_null says) instead of throwing std::bad_alloc, so the
+// behaviour under test does not exist; the ordinary build runs it.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SUBD_OPERATOR_NEW_ABORTS_ON_OOM
+#endif
+#endif
+#ifndef SUBD_OPERATOR_NEW_ABORTS_ON_OOM
 TEST(CatmullClarkFilterDeathTest, RunningOutOfMemoryIsAnErrorNotACrash)
 {
   GTEST_FLAG_SET(death_test_style, "threadsafe");
@@ -577,6 +586,7 @@ TEST(CatmullClarkFilterDeathTest, RunningOutOfMemoryIsAnErrorNotACrash)
   };
   EXPECT_EXIT(runCapped(), ::testing::ExitedWithCode(0), "");
 }
+#endif
 
 // The default budget is half the machine's physical memory.
 TEST(CatmullClarkFilter, DefaultMemoryBudgetIsHalfThePhysicalMemory)

@@ -26,6 +26,7 @@ tests) regenerates the corpus in the build folder; fuzzing adds the inputs that 
 import math
 import os
 import random
+import struct
 import sys
 
 OUT = sys.argv[1] if len(sys.argv) > 1 else "corpus"
@@ -230,6 +231,45 @@ expect("lying-count.stl", read="error~.")
 # OBJ faces naming vertices that do not exist (1-based, and relative past the start).
 write_text("obj-bad-index.obj", obj + "f 1 2 42\nf -1 -2 -30\n")
 expect("obj-bad-index.obj", read="error~.")
+
+# Binary layouts (big-endian legacy, both PLY byte orders) and the inconsistencies only they
+# can hold; also seeds that let the fuzzer reach the binary readers.
+def legacy_binary(points, faces, cells_values=None):
+    values = cells_values if cells_values is not None else [v for f in faces for v in [len(f)] + list(f)]
+    return (b"# vtk DataFile Version 3.0\nSubD corpus\nBINARY\nDATASET POLYDATA\n"
+            + b"POINTS %d float\n" % len(points) + struct.pack(">%df" % (3 * len(points)), *[c for p in points for c in p])
+            + b"\nPOLYGONS %d %d\n" % (len(faces), len(values)) + struct.pack(">%di" % len(values), *values) + b"\n")
+
+
+write_bytes("valid-binary.vtk", legacy_binary(CUBE_POINTS, CUBE_FACES))
+expect("valid-binary.vtk")
+# The first cell claims 9 points: the cells no longer add up to the section's 30 values.
+write_bytes("binary-cell-count-mismatch.vtk",
+            legacy_binary(CUBE_POINTS, CUBE_FACES, [9] + [v for f in CUBE_FACES for v in [len(f)] + list(f)][1:]))
+expect("binary-cell-count-mismatch.vtk", read="error~runs past|use")
+write_text("legacy-v5-decreasing-offsets.vtk",
+           "# vtk DataFile Version 5.1\nSubD corpus\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+           "0 0 0 1 0 0 1 1 0 0 1 0\nPOLYGONS 3 6\nOFFSETS vtktypeint64\n0 4 3\n"
+           "CONNECTIVITY vtktypeint64\n0 1 2 3 0 2\n")
+expect("legacy-v5-decreasing-offsets.vtk", read="error~offsets")
+
+
+def ply_binary(points, faces, order, extra=""):
+    fmt = "<" if order == "little" else ">"
+    header = ("ply\nformat binary_%s_endian 1.0\nelement vertex %d\nproperty float x\nproperty float y\n"
+              "property float z\n%selement face %d\nproperty list uchar int vertex_indices\nend_header\n"
+              % (order, len(points), extra, len(faces))).encode()
+    body = b"".join(struct.pack(fmt + "3f", *p) + (struct.pack(fmt + "f", 0.5) if extra else b"") for p in points)
+    body += b"".join(struct.pack(fmt + "B%di" % len(f), len(f), *f) for f in faces)
+    return header + body
+
+
+write_bytes("valid-little-endian.ply", ply_binary(CUBE_POINTS, CUBE_FACES, "little"))
+expect("valid-little-endian.ply")
+write_bytes("valid-big-endian-quality.ply", ply_binary(CUBE_POINTS, CUBE_FACES, "big", "property float quality\n"))
+expect("valid-big-endian-quality.ply")
+write_bytes("ply-index-out-of-range.ply", ply_binary(CUBE_POINTS, CUBE_FACES[:5] + [(0, 1, 8, 3)], "little"))
+expect("ply-index-out-of-range.ply", read="error~uses vertex 8")
 
 # --- seeds for the fuzz targets (Testing/Fuzz) ---
 # FuzzReaders: a format byte (the index in its list of extensions), then the file.

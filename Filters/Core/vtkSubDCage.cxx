@@ -1,0 +1,83 @@
+#include "vtkSubDCage.h"
+
+#include "SubDMeshValidation.h"
+#include "vtkSubDInputFaces.h"
+#include "vtkSubDSharpFeatures.h"
+
+bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::BoundaryRule rule, subd::CreaseMethod creasing, vtkSubDCage& cage,
+  std::string& error, std::string& warning)
+{
+  const vtkIdType numPoints = input && input->GetPoints() ? input->GetNumberOfPoints() : 0;
+  const vtkSubDInputFaces faces = input ? vtkSubDGatherFaces(input) : vtkSubDInputFaces();
+  if (numPoints == 0 || faces.NumFaces == 0)
+  {
+    error = "the input has no polygons to evaluate the limit surface of";
+    return false;
+  }
+  const vtkIdType badPoint = vtkSubDFirstNonFinitePoint(input->GetPoints());
+  if (badPoint >= 0)
+  {
+    error = "point " + std::to_string(badPoint) + " has a non-finite coordinate";
+    return false;
+  }
+  // Faces screened as the surface filters screen them: degenerate ones are dropped.
+  const vtkIdType numPolys = input->GetNumberOfPolys();
+  const subd::FaceScreening screened = subd::ScreenFaces(static_cast<subd::Index>(numPoints),
+    static_cast<subd::Index>(faces.NumFaces), faces.Offsets, faces.Connectivity);
+  if (screened.NumOutOfRange > 0)
+  {
+    error = "cell " + std::to_string(faces.CellIdOf(screened.FirstOutOfRangeFace, numPolys)) + " uses point id " +
+      std::to_string(screened.FirstOutOfRangeId) + ", which does not exist";
+    return false;
+  }
+  if (screened.NumDropped > 0)
+  {
+    warning = "ignored " + std::to_string(screened.NumDropped) +
+      " degenerate polygon(s) (fewer than 3 distinct points, or a point repeated); the first is cell " +
+      std::to_string(faces.CellIdOf(screened.FirstDroppedFace, numPolys));
+  }
+  for (subd::Index f : screened.KeptFaces)
+  {
+    cage.FaceCell.push_back(faces.CellIdOf(f, numPolys));
+  }
+  for (size_t f = 0; f + 1 < screened.Offsets.size(); ++f)
+  {
+    const subd::Index size = screened.Offsets[f + 1] - screened.Offsets[f];
+    if (triangles && size != 3)
+    {
+      error = "cell " + std::to_string(cage.FaceCell[f]) + " has " + std::to_string(size) +
+        " points; Loop needs triangles (use vtkTriangleFilter)";
+      return false;
+    }
+  }
+  if (screened.KeptFaces.empty())
+  {
+    error = "no usable polygon remains after removing degenerate ones";
+    return false;
+  }
+  cage.Points.resize(static_cast<size_t>(numPoints) * 3);
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    input->GetPoint(i, &cage.Points[3 * i]);
+  }
+  subd::MeshTopology topology =
+    subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices);
+  const std::string nonManifold = vtkSubDNonManifoldWarning(topology);
+  if (!nonManifold.empty())
+  {
+    warning += (warning.empty() ? "" : "; ") + nonManifold;
+  }
+  vtkSubDSharpFeatures features;
+  if (!features.Read(input, cage.FaceCell, error))
+  {
+    return false;
+  }
+  std::vector<subd::Index> unmatched;
+  const subd::BaseTags tags = features.ToBaseTags(topology, input->GetPoints(), 0.0, creasing, unmatched);
+  cage.Level = subd::MakeBaseLevel(std::move(topology), tags, rule);
+  for (size_t f = 0; f < cage.FaceCell.size(); ++f)
+  {
+    cage.FaceOfCell.emplace(cage.FaceCell[f], static_cast<subd::Index>(f));
+  }
+  return true;
+}

@@ -1,0 +1,29 @@
+// Private helper of SubD's filters that work on the cage itself (vtkSubDLimitFilter,
+// vtkSubDInterpolateFilter): the input polygons as a kernel base level.
+#ifndef vtkSubDCage_h
+#define vtkSubDCage_h
+
+#include "SubDLevel.h"
+#include "vtkPolyData.h"
+
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+// The cage as a kernel level, its points, and the input cell id of each face.
+struct vtkSubDCage
+{
+  subd::Level Level;
+  std::vector<double> Points;
+  std::vector<vtkIdType> FaceCell;                  ///< input cell id of each face
+  std::unordered_map<vtkIdType, subd::Index> FaceOfCell; ///< and back
+};
+
+/// Reads `input`'s polygons (screened as vtkSubDSurfaceFilter screens them: degenerate ones
+/// dropped with a warning) and sharp features into `cage`. `triangles`: every face must be a
+/// triangle (Loop). False, with the reason in `error`, for no polygons, a non-finite point,
+/// an id outside the points, or a face of the wrong kind.
+bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::BoundaryRule rule, subd::CreaseMethod creasing, vtkSubDCage& cage,
+  std::string& error, std::string& warning);
+
+#endif

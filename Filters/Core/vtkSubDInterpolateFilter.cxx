@@ -1,0 +1,205 @@
+#include "vtkSubDInterpolateFilter.h"
+
+#include "SubDInterpolation.h"
+#include "SubDScheme.h"
+#include "vtkSubDCage.h"
+#include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDDooSabinFilter.h"
+#include "vtkSubDLoopFilter.h"
+#include "vtkSubDOutOfMemory.h"
+
+#include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkErrorCode.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <cctype>
+#include <memory>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkSubDInterpolateFilter);
+
+vtkSubDInterpolateFilter::vtkSubDInterpolateFilter()
+{
+  this->SetInterpolationArrayName("Interpolate");
+}
+
+vtkSubDInterpolateFilter::~vtkSubDInterpolateFilter()
+{
+  this->SetInterpolationArrayName(nullptr);
+}
+
+const char* vtkSubDInterpolateFilter::GetSchemeAsString()
+{
+  static const char* const names[] = { "catmull-clark", "loop", "doo-sabin" };
+  return names[this->Scheme];
+}
+
+int vtkSubDInterpolateFilter::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  return vtkSubDRunCatchingOutOfMemory(
+    this, vtkPolyData::GetData(outputVector), [&]() { return this->Execute(request, inputVector, outputVector); },
+    [this](unsigned long code) { this->SetErrorCode(code); });
+}
+
+namespace
+{
+std::unique_ptr<subd::Scheme> NewScheme(int scheme)
+{
+  switch (scheme)
+  {
+    case vtkSubDInterpolateFilter::LOOP:
+      return std::make_unique<subd::LoopScheme>();
+    case vtkSubDInterpolateFilter::DOO_SABIN:
+      return std::make_unique<subd::DooSabinScheme>();
+    default:
+      return std::make_unique<subd::CatmullClarkScheme>();
+  }
+}
+
+vtkSmartPointer<vtkSubDSurfaceFilter> NewSurfaceFilter(int scheme)
+{
+  switch (scheme)
+  {
+    case vtkSubDInterpolateFilter::LOOP:
+      return vtkSmartPointer<vtkSubDLoopFilter>::New();
+    case vtkSubDInterpolateFilter::DOO_SABIN:
+      return vtkSmartPointer<vtkSubDDooSabinFilter>::New();
+    default:
+      return vtkSmartPointer<vtkSubDCatmullClarkFilter>::New();
+  }
+}
+}
+
+int vtkSubDInterpolateFilter::Execute(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector);
+  output->Initialize();
+  this->SetErrorCode(vtkErrorCode::NoError);
+  this->Residual = 0.0;
+  this->NumberOfTaggedVertices = 0;
+  auto fail = [this, output](const std::string& why) {
+    std::string message = why;
+    message[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(message[0])));
+    vtkErrorMacro(<< message << ".");
+    output->Initialize();
+    this->SetErrorCode(vtkErrorCode::UserError);
+    return 0;
+  };
+
+  vtkSubDCage cage;
+  std::string error, warning;
+  if (!vtkSubDReadCage(input, this->Scheme == LOOP, static_cast<subd::BoundaryRule>(this->BoundaryRule),
+        static_cast<subd::CreaseMethod>(this->CreaseMethod), cage, error, warning))
+  {
+    return fail(error);
+  }
+  if (!warning.empty())
+  {
+    warning[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(warning[0])));
+    vtkWarningMacro(<< warning << ".");
+  }
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  std::vector<char> tagged(static_cast<size_t>(numPoints), 1);
+  vtkDataArray* tags =
+    this->InterpolationArrayName ? input->GetPointData()->GetArray(this->InterpolationArrayName) : nullptr;
+  if (tags)
+  {
+    for (vtkIdType v = 0; v < numPoints; ++v)
+    {
+      tagged[v] = tags->GetComponent(v, 0) != 0.0;
+    }
+  }
+  // Points on no face, or only on holes, are not on the surface: they stay where they are.
+  vtkIdType offSurface = 0;
+  for (vtkIdType v = 0; v < numPoints; ++v)
+  {
+    bool onSurface = false;
+    for (subd::Index f : cage.Level.Topology.GetVertexFaces(static_cast<subd::Index>(v)))
+    {
+      onSurface = onSurface || !cage.Level.FaceIsHole[f];
+    }
+    offSurface += tagged[v] && !onSurface ? 1 : 0;
+    tagged[v] = tagged[v] && onSurface;
+  }
+  if (offSurface > 0)
+  {
+    vtkWarningMacro(<< offSurface << " tagged point(s) are on no face (or only on holes): they keep their positions.");
+  }
+  this->UpdateProgress(0.1);
+
+  const std::unique_ptr<subd::Scheme> scheme = NewScheme(this->Scheme);
+  std::vector<subd::SparseRow> rows;
+  std::vector<std::string> problems;
+  subd::BuildVertexLimitRows(*scheme, cage.Level, rows, problems);
+  for (vtkIdType v = 0; v < numPoints; ++v)
+  {
+    if (tagged[v] && !problems[v].empty())
+    {
+      return fail("vertex " + std::to_string(v) + " is tagged but has no " + this->GetSchemeAsString() +
+        " limit point: " + problems[v]);
+    }
+  }
+  this->UpdateProgress(0.4);
+  std::vector<double> solved;
+  subd::InterpolationReport report;
+  if (!subd::SolveInterpolation(rows, tagged, cage.Points, this->Tolerance, solved, report, error))
+  {
+    this->Residual = report.Residual;
+    return fail(error);
+  }
+  this->Residual = report.Residual;
+  this->NumberOfTaggedVertices = report.NumTagged;
+  this->UpdateProgress(0.9);
+
+  vtkNew<vtkDoubleArray> coordinates;
+  coordinates->SetNumberOfComponents(3);
+  coordinates->SetNumberOfTuples(numPoints);
+  std::copy(solved.begin(), solved.end(), coordinates->GetPointer(0));
+  vtkNew<vtkPoints> points;
+  points->SetData(coordinates);
+  vtkNew<vtkPolyData> newCage;
+  newCage->ShallowCopy(input);
+  newCage->SetPoints(points);
+  if (!this->OutputRefinedSurface)
+  {
+    output->ShallowCopy(newCage);
+    return 1;
+  }
+  vtkSmartPointer<vtkSubDSurfaceFilter> refine = NewSurfaceFilter(this->Scheme);
+  refine->SetInputData(newCage);
+  refine->SetNumberOfSubdivisions(this->NumberOfSubdivisions);
+  refine->SetBoundaryRule(this->BoundaryRule);
+  refine->SetCreaseMethod(this->CreaseMethod);
+  refine->Update();
+  if (refine->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    return fail("refining the interpolating cage failed (see the error of " + std::string(refine->GetClassName()) +
+      ")");
+  }
+  output->ShallowCopy(refine->GetOutput());
+  return 1;
+}
+
+void vtkSubDInterpolateFilter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Scheme: " << this->GetSchemeAsString() << "\n";
+  os << indent << "InterpolationArrayName: "
+     << (this->InterpolationArrayName ? this->InterpolationArrayName : "(none)") << "\n";
+  os << indent << "BoundaryRule: " << this->BoundaryRule << "\n";
+  os << indent << "CreaseMethod: " << this->CreaseMethod << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "OutputRefinedSurface: " << this->OutputRefinedSurface << "\n";
+  os << indent << "NumberOfSubdivisions: " << this->NumberOfSubdivisions << "\n";
+  os << indent << "Residual: " << this->Residual << "\n";
+  os << indent << "NumberOfTaggedVertices: " << this->NumberOfTaggedVertices << "\n";
+}

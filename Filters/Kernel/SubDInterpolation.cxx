@@ -1,0 +1,194 @@
+#include "SubDInterpolation.h"
+
+#include "SubDLimitEvaluator.h"
+#include "SubDStencilTable.h"
+
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <map>
+
+namespace subd
+{
+namespace
+{
+bool IsExactlyEvaluated(const Scheme& scheme)
+{
+  return std::strcmp(scheme.GetName(), "catmull-clark") == 0 || std::strcmp(scheme.GetName(), "loop") == 0;
+}
+
+// Rows from LimitEvaluator: the limit at a corner of one of the vertex's faces that is not
+// a hole (any of them: the limit point is the same from every side).
+void RowsFromLimitEvaluator(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
+  std::vector<std::string>& problems)
+{
+  const LimitEvaluator evaluator(scheme, level);
+  std::string error;
+  if (!evaluator.IsValid(error))
+  {
+    std::fill(problems.begin(), problems.end(), error);
+    return;
+  }
+  const bool quads = std::strcmp(scheme.GetName(), "catmull-clark") == 0;
+  std::vector<LimitStencil> out;
+  for (Index v = 0; v < level.Topology.GetNumVertices(); ++v)
+  {
+    const IndexSpan faces = level.Topology.GetVertexFaces(v);
+    const IndexSpan corners = level.Topology.GetVertexFaceCorners(v);
+    problems[v] = faces.size() == 0 ? "it is on no face" : "it is only on holes";
+    for (Index k = 0; k < faces.size(); ++k)
+    {
+      const Index f = faces[k];
+      if (level.FaceIsHole[f])
+      {
+        continue;
+      }
+      const FaceSample sample = LimitEvaluator::CornerSample(level.Topology.GetFaceSize(f), corners[k], quads);
+      if (!evaluator.EvaluateFace(f, { sample }, out, error))
+      {
+        problems[v] = error;
+        break;
+      }
+      rows[v].Points = out[0].Points;
+      rows[v].Weights.assign(out[0].Row(0), out[0].Row(0) + out[0].Points.size());
+      problems[v].clear();
+      break;
+    }
+  }
+}
+
+// Rows from the scheme's limit stencils, whose entries may name earlier rows: expanded
+// into weights over the level's points.
+void RowsFromLimitStencils(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
+  std::vector<std::string>& problems)
+{
+  StencilTable stencils;
+  std::string error;
+  if (!scheme.BuildLimitStencils(level, stencils, error))
+  {
+    std::fill(problems.begin(), problems.end(), error);
+    return;
+  }
+  const Index numParents = stencils.GetNumParents();
+  std::vector<SparseRow> expanded(static_cast<size_t>(stencils.GetNumRows()));
+  for (Index r = 0; r < stencils.GetNumRows(); ++r)
+  {
+    std::map<Index, double> row;
+    const IndexSpan sources = stencils.GetSources(r);
+    const double* weights = stencils.GetWeights(r);
+    for (Index k = 0; k < sources.size(); ++k)
+    {
+      if (sources[k] < numParents)
+      {
+        row[sources[k]] += weights[k];
+        continue;
+      }
+      const SparseRow& earlier = expanded[sources[k] - numParents];
+      for (size_t j = 0; j < earlier.Points.size(); ++j)
+      {
+        row[earlier.Points[j]] += weights[k] * earlier.Weights[j];
+      }
+    }
+    for (const auto& [point, weight] : row)
+    {
+      expanded[r].Points.push_back(point);
+      expanded[r].Weights.push_back(weight);
+    }
+  }
+  for (Index v = 0; v < level.Topology.GetNumVertices() && v < stencils.GetNumRows(); ++v)
+  {
+    rows[v] = expanded[v];
+  }
+}
+}
+
+void BuildVertexLimitRows(
+  const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows, std::vector<std::string>& problems)
+{
+  const Index numVertices = level.Topology.GetNumVertices();
+  rows.assign(static_cast<size_t>(numVertices), SparseRow());
+  problems.assign(static_cast<size_t>(numVertices), std::string());
+  if (IsExactlyEvaluated(scheme))
+  {
+    RowsFromLimitEvaluator(scheme, level, rows, problems);
+  }
+  else
+  {
+    RowsFromLimitStencils(scheme, level, rows, problems);
+  }
+}
+
+bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<char>& tagged,
+  const std::vector<double>& targets, double tolerance, std::vector<double>& points, InterpolationReport& report,
+  std::string& error)
+{
+  points.clear();
+  report = InterpolationReport();
+  const Index n = static_cast<Index>(tagged.size());
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Index v = 0; v < n; ++v)
+  {
+    if (!tagged[v])
+    {
+      entries.emplace_back(v, v, 1.0);
+      continue;
+    }
+    if (rows[v].Points.empty())
+    {
+      error = "vertex " + std::to_string(v) + " is tagged but has no limit point to interpolate with";
+      return false;
+    }
+    ++report.NumTagged;
+    for (size_t k = 0; k < rows[v].Points.size(); ++k)
+    {
+      entries.emplace_back(v, rows[v].Points[k], rows[v].Weights[k]);
+    }
+  }
+  Eigen::SparseMatrix<double> matrix(n, n);
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  matrix.makeCompressed();
+  report.NumNonZeros = static_cast<size_t>(matrix.nonZeros());
+
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> solver;
+  solver.compute(matrix);
+  if (solver.info() != Eigen::Success)
+  {
+    error = "the interpolation system is singular (" + solver.lastErrorMessage() +
+      "): no cage of this topology has these limit points; tag fewer vertices";
+    return false;
+  }
+  Eigen::MatrixXd rhs(n, 3);
+  for (Index v = 0; v < n; ++v)
+  {
+    rhs.row(v) << targets[3 * v], targets[3 * v + 1], targets[3 * v + 2];
+  }
+  const Eigen::MatrixXd solution = solver.solve(rhs);
+  const double residual = solution.allFinite() ? (matrix * solution - rhs).cwiseAbs().maxCoeff() : HUGE_VAL;
+  const double extent = std::max(1.0, rhs.cwiseAbs().maxCoeff());
+  report.Residual = residual;
+  if (!(residual <= tolerance * extent))
+  {
+    // Round-off can hide an exactly singular matrix from the factorisation (a closed cube's
+    // Catmull-Clark limit masks annihilate the alternating +1/-1 vertex pattern); the
+    // residual cannot.
+    char numbers[160];
+    std::snprintf(numbers, sizeof numbers, "%.3g (tolerance %.3g)", residual, tolerance * extent);
+    error = std::string("the interpolation system is singular or ill-conditioned: the solution misses the targets "
+                        "by ") + numbers + "; no cage of this topology has these limit points, tag fewer vertices";
+    return false;
+  }
+  points.resize(static_cast<size_t>(n) * 3);
+  for (Index v = 0; v < n; ++v)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      points[3 * v + c] = solution(v, c);
+    }
+  }
+  return true;
+}
+}

@@ -1,0 +1,61 @@
+// SubD kernel: a control cage whose limit surface passes through given points.
+//
+// An approximating scheme moves every vertex: the limit point of vertex v is a fixed linear
+// combination of the cage's points (its limit mask), row v of a sparse matrix M. Asking the
+// limit points of the tagged vertices to be the targets, and the other vertices to stay
+// where they are, gives the square system
+//     M_v . x = t_v   (v tagged),      x_v = t_v   (v untagged: an identity row),
+// one right-hand side per coordinate. The limit masks are local (a vertex's 1-ring), so M
+// is as sparse as the mesh; it is not symmetric (a mask's weights depend on the vertex's
+// valence), so the solver is Eigen's SparseLU with a COLAMD ordering: direct, exact to
+// round-off on well-posed systems, and it reports a singular matrix instead of returning
+// garbage (an iterative solver would need a preconditioner tuned per scheme and a stopping
+// rule that can stop short). The residual |M x - t| is checked after solving.
+//
+// Interpolating a surface through points this way goes back to Halstead, Kass and DeRose
+// ("Efficient, fair interpolation using Catmull-Clark surfaces", SIGGRAPH 1993), who solved
+// the same limit-mask system (with a fairness term for the untagged vertices).
+#ifndef SubDInterpolation_h
+#define SubDInterpolation_h
+
+#include "SubDLevel.h"
+#include "SubDScheme.h"
+
+#include <string>
+#include <vector>
+
+namespace subd
+{
+/// The limit point of one vertex as weights over the level's points (empty: none).
+struct SparseRow
+{
+  std::vector<Index> Points;
+  std::vector<double> Weights;
+};
+
+/// The limit point of every vertex of `level` that some face uses, as weights over the
+/// level's points: exact (LimitEvaluator, semi-sharp features included) for Catmull-Clark
+/// and Loop, the scheme's limit stencils otherwise (Doo-Sabin: the centroid of the vertex's
+/// V-face, SubDDualLimit.h). A vertex that has no limit mask (one only on holes, a dart of a
+/// dual scheme, ...) gets an empty row and its reason in `problems[v]` (else empty).
+SUBDKERNEL_EXPORT void BuildVertexLimitRows(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
+  std::vector<std::string>& problems);
+
+struct InterpolationReport
+{
+  Index NumTagged = 0;   ///< rows that are limit masks
+  size_t NumNonZeros = 0; ///< entries of the matrix
+  double Residual = 0;   ///< max |M x - t| over rows and coordinates
+};
+
+/// Solves the system above: `targets` and `points` hold 3 coordinates per vertex, `tagged`
+/// one flag per vertex, `rows` the limit masks (BuildVertexLimitRows). False, with the
+/// reason, when a tagged vertex has no row, when the matrix is singular, or when the
+/// residual exceeds `tolerance` times the targets' extent (ill-conditioned): `points` is
+/// then left empty.
+SUBDKERNEL_EXPORT bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<char>& tagged,
+  const std::vector<double>& targets, double tolerance, std::vector<double>& points, InterpolationReport& report,
+  std::string& error);
+}
+
+#endif
