@@ -24,6 +24,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 namespace
@@ -37,7 +38,9 @@ vtkSmartPointer<ArrayType> Filled(const char* name, int components, vtkIdType tu
   array->SetNumberOfTuples(tuples);
   for (vtkIdType i = 0; i < array->GetNumberOfValues(); ++i)
   {
-    array->SetValue(i, static_cast<typename ArrayType::ValueType>(std::fmod(i * scale, 100.0) - (scale < 1 ? 0 : 20)));
+    using Value = typename ArrayType::ValueType;
+    const double shift = std::numeric_limits<Value>::is_signed && scale >= 1 ? 20 : 0; // negatives where they fit
+    array->SetValue(i, static_cast<Value>(std::fmod(i * scale, 100.0) - shift));
   }
   return array;
 }
