@@ -5,6 +5,7 @@
 #include "SubDCurveLimit.h"
 #include "SubDCurveRefiner.h"
 #include "vtkSubDInputFaces.h"
+#include "vtkSubDInputLines.h"
 #include "vtkSubDPointDataInterpolation.h"
 
 #include "vtkCellArray.h"
@@ -29,76 +30,6 @@ vtkStandardNewMacro(vtkSubDCurveFilter);
 
 namespace
 {
-// The input's line cells as polylines of kernel indices: a closed polyline (first id == last,
-// or every line when `allClosed`) lists its points once.
-struct InputLines
-{
-  std::vector<subd::Index> Offsets{ 0 };
-  std::vector<subd::Index> Ids;
-  std::vector<unsigned char> Closed;
-  std::vector<vtkIdType> CellIds; // input cell id of each kept line
-  vtkIdType Empty = 0;           // line cells without points (dropped)
-  vtkIdType SinglePoint = 0;     // one-point polylines (kept)
-  vtkIdType FirstBadCell = -1;   // first line with an out-of-range point id
-};
-
-InputLines ReadLines(vtkPolyData* input, bool allClosed)
-{
-  InputLines lines;
-  const vtkIdType numPoints = input->GetNumberOfPoints();
-  const vtkIdType firstLineCell = input->GetNumberOfVerts();
-  auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
-  vtkIdType index = 0;
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++index)
-  {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    if (n == 0)
-    {
-      ++lines.Empty;
-      continue;
-    }
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      if (ids[k] < 0 || ids[k] >= numPoints)
-      {
-        lines.FirstBadCell = firstLineCell + index;
-        return lines;
-      }
-    }
-    bool closed = allClosed;
-    if (n >= 4 && ids[0] == ids[n - 1])
-    {
-      closed = true;
-      --n; // the repeated point is listed once
-    }
-    lines.SinglePoint += n == 1 ? 1 : 0;
-    lines.Ids.insert(lines.Ids.end(), ids, ids + n);
-    lines.Offsets.push_back(static_cast<subd::Index>(lines.Ids.size()));
-    lines.Closed.push_back(closed ? 1 : 0);
-    lines.CellIds.push_back(firstLineCell + index);
-  }
-  return lines;
-}
-
-// Points whose "CornerSharpness" is infinitely sharp (OpenSubdiv's 10).
-std::vector<unsigned char> ReadCorners(vtkPolyData* input)
-{
-  std::vector<unsigned char> corners;
-  vtkDataArray* sharpness = input->GetPointData()->GetArray("CornerSharpness");
-  if (!sharpness || sharpness->GetNumberOfTuples() != input->GetNumberOfPoints())
-  {
-    return corners;
-  }
-  corners.resize(static_cast<size_t>(input->GetNumberOfPoints()));
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-  {
-    corners[i] = sharpness->GetComponent(i, 0) >= 10.0 ? 1 : 0;
-  }
-  return corners;
-}
-
 // Unit tangents per output curve point: the tangent rows are one per piece entry; a point in
 // several pieces (a corner) gets the normalized mean of its unit tangents.
 vtkSmartPointer<vtkDoubleArray> UnitTangents(const subd::StencilTable& rows, const subd::CurvePieces& pieces,
@@ -249,7 +180,7 @@ int vtkSubDCurveFilter::Execute(
                                << std::numeric_limits<subd::Index>::max() / 4 << " are supported.");
     return fail();
   }
-  const InputLines lines = ReadLines(input, this->Closed);
+  const vtkSubDInputLines lines = vtkSubDReadInputLines(input, this->Closed);
   if (lines.FirstBadCell >= 0)
   {
     vtkErrorMacro("Cell " << lines.FirstBadCell << " refers to a point id outside 0.." << numPoints - 1 << ".");
@@ -267,7 +198,7 @@ int vtkSubDCurveFilter::Execute(
   subd::CurveRules rules;
   rules.Scheme = static_cast<subd::CurveScheme>(this->Scheme);
   rules.Tension = this->Tension;
-  const std::vector<unsigned char> corners = ReadCorners(input);
+  const std::vector<unsigned char> corners = vtkSubDReadCurveCorners(input);
   subd::CurvePieces pieces;
   std::vector<subd::Index> firstPiece;
   subd::SplitAtCorners(

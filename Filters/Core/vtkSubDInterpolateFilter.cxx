@@ -4,6 +4,7 @@
 #include "SubDScheme.h"
 #include "vtkSubDCage.h"
 #include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDInterpolationSupport.h"
 #include "vtkSubDDooSabinFilter.h"
 #include "vtkSubDLoopFilter.h"
 #include "vtkSubDOutOfMemory.h"
@@ -17,7 +18,6 @@
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
-#include <cctype>
 #include <memory>
 #include <string>
 #include <vector>
@@ -87,9 +87,7 @@ int vtkSubDInterpolateFilter::Execute(
   this->Residual = 0.0;
   this->NumberOfTaggedVertices = 0;
   auto fail = [this, output](const std::string& why) {
-    std::string message = why;
-    message[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(message[0])));
-    vtkErrorMacro(<< message << ".");
+    vtkErrorMacro(<< vtkSubDSentence(why));
     output->Initialize();
     this->SetErrorCode(vtkErrorCode::UserError);
     return 0;
@@ -104,20 +102,10 @@ int vtkSubDInterpolateFilter::Execute(
   }
   if (!warning.empty())
   {
-    warning[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(warning[0])));
-    vtkWarningMacro(<< warning << ".");
+    vtkWarningMacro(<< vtkSubDSentence(warning));
   }
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  std::vector<char> tagged(static_cast<size_t>(numPoints), 1);
-  vtkDataArray* tags =
-    this->InterpolationArrayName ? input->GetPointData()->GetArray(this->InterpolationArrayName) : nullptr;
-  if (tags)
-  {
-    for (vtkIdType v = 0; v < numPoints; ++v)
-    {
-      tagged[v] = tags->GetComponent(v, 0) != 0.0;
-    }
-  }
+  std::vector<char> tagged = vtkSubDReadInterpolationTags(input, this->InterpolationArrayName);
   // Points on no face, or only on holes, are not on the surface: they stay where they are.
   vtkIdType offSurface = 0;
   for (vtkIdType v = 0; v < numPoints; ++v)
@@ -160,15 +148,7 @@ int vtkSubDInterpolateFilter::Execute(
   this->NumberOfTaggedVertices = report.NumTagged;
   this->UpdateProgress(0.9);
 
-  vtkNew<vtkDoubleArray> coordinates;
-  coordinates->SetNumberOfComponents(3);
-  coordinates->SetNumberOfTuples(numPoints);
-  std::copy(solved.begin(), solved.end(), coordinates->GetPointer(0));
-  vtkNew<vtkPoints> points;
-  points->SetData(coordinates);
-  vtkNew<vtkPolyData> newCage;
-  newCage->ShallowCopy(input);
-  newCage->SetPoints(points);
+  vtkSmartPointer<vtkPolyData> newCage = vtkSubDWithSolvedPoints(input, solved);
   if (!this->OutputRefinedSurface)
   {
     output->ShallowCopy(newCage);
