@@ -94,7 +94,7 @@ std::string UsageText()
   std::ostringstream out;
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
          "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--normals]\n"
-         "            [--curvature] [--tangents] [--closed] [--output FILE]\n"
+         "            [--curvature] [--tangents] [--closed] [--interpolate] [--output FILE]\n"
          "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
          "\n"
          "Subdivides the polygon mesh INPUT (" << SupportedExtensions() << ") and writes the\n"
@@ -133,6 +133,10 @@ std::string UsageText()
          "  --closed           curves: every polyline is closed (otherwise only those whose last\n"
          "                     point repeats the first); a point with \"CornerSharpness\" >= 10 is\n"
          "                     a sharp corner of its curve\n"
+         "  --interpolate      first solve for the cage (or control polygons) whose limit passes\n"
+         "                     through the input's points - all, or those whose point data\n"
+         "                     \"Interpolate\" is non-zero - then subdivide that cage (catmull-clark,\n"
+         "                     loop, doo-sabin, chaikin, bspline; --levels 0 writes the cage itself)\n"
          "\n"
          "Creases come with the input: in .vtp/.vtk as line cells with the cell array\n"
          "\"Sharpness\" (0 smooth .. 10 infinitely sharp), \"CornerSharpness\" point data and\n"
@@ -365,6 +369,10 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
       cmd.Options.Closed = true;
       cmd.CurveOptions.push_back(arg);
     }
+    else if (arg == "--interpolate")
+    {
+      cmd.Interpolate = true;
+    }
     else if (arg == "--no-cage")
     {
       cmd.Cage = false;
@@ -408,6 +416,23 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
       error = "--compare: '" + name + "' is not a " + (curve ? "curve" : "surface") + " scheme like " + cmd.Scheme;
       return false;
     }
+  }
+  const SchemeEntry* scheme = FindScheme(cmd.Scheme);
+  if (cmd.Interpolate && scheme->InterpolationScheme < 0)
+  {
+    error = "--interpolate: " + cmd.Scheme + " " + scheme->InterpolationNote;
+    return false;
+  }
+  if (cmd.Interpolate && cmd.Options.FeatureAngle > 0.0)
+  {
+    error = "--interpolate honours the input's creases but not --feature-angle (the solve would not know "
+            "the creases it adds)";
+    return false;
+  }
+  if (cmd.Interpolate && !cmd.Compare.empty())
+  {
+    error = "--interpolate solves for one scheme's cage: it cannot be combined with --compare";
+    return false;
   }
   const std::vector<std::string>& misplaced = curve ? cmd.SurfaceOptions : cmd.CurveOptions;
   if (!misplaced.empty())

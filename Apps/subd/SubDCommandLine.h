@@ -22,6 +22,7 @@ struct CommandLine
   std::string Color = "mean";       ///< none, mean, gaussian, k1 or k2 (curvature colouring)
   int ViewSize[2] = { 500, 500 };   ///< pixels per view
   bool Cage = true;                 ///< overlay the control cage
+  bool Interpolate = false;         ///< solve for the cage whose limit passes through the input
   bool Quiet = false;
   bool Help = false;
   bool Version = false;

@@ -8,7 +8,9 @@
 #include "vtkSubDButterflyFilter.h"
 #include "vtkSubDCatmullClarkFilter.h"
 #include "vtkSubDCurveFilter.h"
+#include "vtkSubDCurveInterpolateFilter.h"
 #include "vtkSubDDooSabinFilter.h"
+#include "vtkSubDInterpolateFilter.h"
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
 #include "vtkSubDMidpointFilter.h"
@@ -64,31 +66,35 @@ vtkSmartPointer<vtkPolyDataAlgorithm> MakeCurveFilter(const SchemeOptions& optio
   }
   return filter;
 }
+
+const char* const kNoInterpolation =
+  "has no interpolation solve (catmull-clark, loop, doo-sabin, chaikin and bspline have one)";
 }
 
 const std::vector<SchemeEntry>& Schemes()
 {
   static const std::vector<SchemeEntry> schemes = {
     { "catmull-clark", "Catmull-Clark: quads from any polygons (approximating, C2 where regular)",
-      false, true, true, &MakeSurfaceFilter<vtkSubDCatmullClarkFilter> },
+      false, true, true, &MakeSurfaceFilter<vtkSubDCatmullClarkFilter>, vtkSubDInterpolateFilter::CATMULL_CLARK,
+      nullptr },
     { "loop", "Loop: triangles (other polygons are triangulated first; approximating, C2 where regular)",
-      false, true, true, &MakeSurfaceFilter<vtkSubDLoopFilter> },
+      false, true, true, &MakeSurfaceFilter<vtkSubDLoopFilter>, vtkSubDInterpolateFilter::LOOP, nullptr },
     { "butterfly", "modified butterfly: interpolating, triangles (other polygons are triangulated), --tension W",
-      false, true, false, &MakeButterfly },
+      false, true, false, &MakeButterfly, -1, "interpolates its points already" },
     { "doo-sabin", "Doo-Sabin: corner cutting of any polygons (approximating, C1; biquadratic where regular)",
-      false, true, false, &MakeSurfaceFilter<vtkSubDDooSabinFilter> },
+      false, true, false, &MakeSurfaceFilter<vtkSubDDooSabinFilter>, vtkSubDInterpolateFilter::DOO_SABIN, nullptr },
     { "midpoint", "midpoint (Peters-Reif simplest scheme): edge midpoints, boundaries kept (C1)",
-      false, true, false, &MakeSurfaceFilter<vtkSubDMidpointFilter> },
+      false, true, false, &MakeSurfaceFilter<vtkSubDMidpointFilter>, -1, kNoInterpolation },
     { "sqrt3", "Kobbelt's sqrt(3): triangles, 3x faces per step (approximating, C2 where regular)",
-      false, true, false, &MakeSurfaceFilter<vtkSubDSqrt3Filter> },
+      false, true, false, &MakeSurfaceFilter<vtkSubDSqrt3Filter>, -1, kNoInterpolation },
     { "linear", "linear: more resolution, same shape (triangles split in four, other polygons into quads)",
-      false, true, false, &MakeSurfaceFilter<vtkSubDLinearFilter> },
+      false, true, false, &MakeSurfaceFilter<vtkSubDLinearFilter>, -1, "interpolates its points already" },
     { "chaikin", "curves: Chaikin corner cutting (approximating; the quadratic B-spline, C1)", true, true, false,
-      &MakeCurveFilter<vtkSubDCurveFilter::SCHEME_CHAIKIN> },
+      &MakeCurveFilter<vtkSubDCurveFilter::SCHEME_CHAIKIN>, vtkSubDCurveFilter::SCHEME_CHAIKIN, nullptr },
     { "bspline", "curves: cubic B-spline (approximating; C2)", true, true, false,
-      &MakeCurveFilter<vtkSubDCurveFilter::SCHEME_CUBIC_BSPLINE> },
+      &MakeCurveFilter<vtkSubDCurveFilter::SCHEME_CUBIC_BSPLINE>, vtkSubDCurveFilter::SCHEME_CUBIC_BSPLINE, nullptr },
     { "four-point", "curves: Dyn-Levin-Gregory 4-point (interpolating; C1), --tension W", true, true, false,
-      &MakeCurveFilter<vtkSubDCurveFilter::SCHEME_FOUR_POINT> },
+      &MakeCurveFilter<vtkSubDCurveFilter::SCHEME_FOUR_POINT>, -1, "interpolates its points already" },
   };
   return schemes;
 }
@@ -139,5 +145,46 @@ const SchemeEntry* FindScheme(const std::string& name)
     }
   }
   return nullptr;
+}
+InterpolationResult RunInterpolation(
+  const SchemeEntry& entry, const SchemeOptions& options, vtkPolyData* input, MessageCollector& messages)
+{
+  InterpolationResult result;
+  vtkSmartPointer<vtkPolyDataAlgorithm> filter;
+  if (entry.Curve)
+  {
+    auto curve = vtkSmartPointer<vtkSubDCurveInterpolateFilter>::New();
+    curve->SetScheme(entry.InterpolationScheme);
+    curve->SetClosed(options.Closed);
+    filter = curve;
+  }
+  else
+  {
+    auto surface = vtkSmartPointer<vtkSubDInterpolateFilter>::New();
+    surface->SetScheme(entry.InterpolationScheme);
+    surface->SetBoundaryRule(options.BoundaryRule);
+    surface->SetCreaseMethod(options.CreaseMethod);
+    filter = surface;
+  }
+  messages.Watch(filter);
+  filter->SetInputData(input);
+  filter->Update();
+  if (!messages.Errors.empty() || filter->GetErrorCode() != 0)
+  {
+    return result;
+  }
+  if (auto* curve = vtkSubDCurveInterpolateFilter::SafeDownCast(filter))
+  {
+    result.NumTagged = curve->GetNumberOfTaggedPoints();
+    result.Residual = curve->GetResidual();
+  }
+  else if (auto* surface = vtkSubDInterpolateFilter::SafeDownCast(filter))
+  {
+    result.NumTagged = surface->GetNumberOfTaggedVertices();
+    result.Residual = surface->GetResidual();
+  }
+  result.Cage = vtkSmartPointer<vtkPolyData>::New();
+  result.Cage->ShallowCopy(filter->GetOutput());
+  return result;
 }
 }

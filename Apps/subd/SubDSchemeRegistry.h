@@ -49,6 +49,11 @@ struct SchemeEntry
   bool LimitCurvature; ///< exact limit normals and curvature (LimitNormals, LimitCurvature)
   /// A configured filter for the options.
   vtkSmartPointer<vtkPolyDataAlgorithm> (*Make)(const SchemeOptions&);
+  /// --interpolate: the Scheme of vtkSubDInterpolateFilter (surfaces) or of
+  /// vtkSubDCurveInterpolateFilter (curves) that solves for this scheme's cage; -1 when the
+  /// scheme has none (InterpolationNote says why).
+  int InterpolationScheme;
+  const char* InterpolationNote;
 };
 
 class MessageCollector;
@@ -64,6 +69,18 @@ using SchemeProgress = std::function<bool(double)>;
 vtkSmartPointer<vtkPolyData> RunScheme(const SchemeEntry& entry, const SchemeOptions& options, vtkPolyData* input,
   MessageCollector& messages, const SchemeProgress& progress = nullptr);
 const SchemeEntry* FindScheme(const std::string& name);
+
+/// The cage (or control polygons) whose limit passes through the points of `input`
+/// (SchemeEntry::InterpolationScheme must be >= 0), or nullptr with the messages; the
+/// number of interpolated points and the solve's residual.
+struct InterpolationResult
+{
+  vtkSmartPointer<vtkPolyData> Cage;
+  long long NumTagged = 0;
+  double Residual = 0.0;
+};
+InterpolationResult RunInterpolation(
+  const SchemeEntry& entry, const SchemeOptions& options, vtkPolyData* input, MessageCollector& messages);
 }
 
 #endif

@@ -134,6 +134,21 @@ int main(int argc, char* argv[])
   }
 
   const subdapp::SchemeEntry* scheme = subdapp::FindScheme(cmd.Scheme);
+  const Clock::time_point start = Clock::now();
+  vtkSmartPointer<vtkPolyData> cage = input;
+  subdapp::InterpolationResult interpolation;
+  if (cmd.Interpolate)
+  {
+    subdapp::MessageCollector solverMessages;
+    interpolation = subdapp::RunInterpolation(*scheme, cmd.Options, input, solverMessages);
+    PrintMessages(solverMessages.Warnings, "warning");
+    if (!interpolation.Cage)
+    {
+      PrintMessages(solverMessages.Errors.empty() ? "the interpolation failed\n" : solverMessages.Errors, "error");
+      return 1;
+    }
+    cage = interpolation.Cage;
+  }
   vtkSmartPointer<vtkPolyDataAlgorithm> filter = scheme->Make(cmd.Options);
   subdapp::MessageCollector messages;
   messages.Watch(filter);
@@ -142,9 +157,7 @@ int main(int argc, char* argv[])
   progressCallback->SetClientData(&progress);
   progressCallback->SetCallback(&ProgressBar::OnProgress);
   filter->AddObserver(vtkCommand::ProgressEvent, progressCallback);
-  filter->SetInputData(input);
-
-  const Clock::time_point start = Clock::now();
+  filter->SetInputData(cage);
   filter->Update();
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
   progress.Finish();
@@ -163,7 +176,7 @@ int main(int argc, char* argv[])
   if (!cmd.Image.empty())
   {
     std::string warnings;
-    const bool rendered = subdapp::RenderImage(cmd, input, result, warnings, error);
+    const bool rendered = subdapp::RenderImage(cmd, cage, result, warnings, error);
     PrintMessages(warnings, "warning");
     if (!rendered)
     {
@@ -173,16 +186,23 @@ int main(int argc, char* argv[])
   }
   if (!cmd.Quiet)
   {
-    std::cout << "subd: " << inputName << " (" << input->GetNumberOfPoints() << " points, ";
+    std::cout << "subd: " << inputName << " (" << input->GetNumberOfPoints() << " points, "
+              << (scheme->Curve ? input->GetNumberOfLines() : input->GetNumberOfPolys() + input->GetNumberOfStrips())
+              << (scheme->Curve ? " curves) -> " : " faces) -> ");
+    if (cmd.Interpolate)
+    {
+      std::cout << "interpolating " << (scheme->Curve ? "polygons" : "cage") << " through " << interpolation.NumTagged
+                << " points (residual " << interpolation.Residual << ") -> ";
+    }
     if (scheme->Curve)
     {
-      std::cout << input->GetNumberOfLines() << " curves) -> " << cmd.Scheme << ", " << cmd.Options.Levels
+      std::cout << cmd.Scheme << ", " << cmd.Options.Levels
                 << " level(s) -> " << result->GetNumberOfPoints() << " points, " << result->GetNumberOfLines()
                 << " curves";
     }
     else
     {
-      std::cout << input->GetNumberOfPolys() + input->GetNumberOfStrips() << " faces) -> " << cmd.Scheme << ", "
+      std::cout << cmd.Scheme << ", "
                 << cmd.Options.Levels << " level(s) -> " << result->GetNumberOfPoints() << " points, "
                 << result->GetNumberOfPolys() << " faces";
       if (result->GetNumberOfLines() > 0)

@@ -49,6 +49,7 @@ int vtkSubDCurveInterpolateFilter::Execute(
   output->Initialize();
   this->SetErrorCode(vtkErrorCode::NoError);
   this->Residual = 0.0;
+  this->ConditionEstimate = 0.0;
   this->NumberOfTaggedPoints = 0;
   auto fail = [this, output](const std::string& why) {
     vtkErrorMacro(<< vtkSubDSentence(why));
@@ -111,6 +112,7 @@ int vtkSubDCurveInterpolateFilter::Execute(
   std::string error;
   const bool ok = subd::SolveInterpolation(rows, tagged, targets, this->Tolerance, solved, report, error);
   this->Residual = report.Residual;
+  this->ConditionEstimate = report.Condition;
   if (!ok)
   {
     return fail(error);
@@ -151,5 +153,6 @@ void vtkSubDCurveInterpolateFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutputRefinedCurve: " << this->OutputRefinedCurve << "\n";
   os << indent << "NumberOfSubdivisions: " << this->NumberOfSubdivisions << "\n";
   os << indent << "Residual: " << this->Residual << "\n";
+  os << indent << "ConditionEstimate: " << this->ConditionEstimate << "\n";
   os << indent << "NumberOfTaggedPoints: " << this->NumberOfTaggedPoints << "\n";
 }

@@ -94,6 +94,9 @@ public:
 
   /// After an update: the residual of the last solve and the number of tagged points.
   vtkGetMacro(Residual, double);
+  /// After an update: a lower bound of the system's condition number (SubDInterpolation.h);
+  /// above 1e10 the solve is refused as singular.
+  vtkGetMacro(ConditionEstimate, double);
   vtkGetMacro(NumberOfTaggedPoints, vtkIdType);
 
 protected:
@@ -112,6 +115,7 @@ protected:
   bool OutputRefinedCurve = false;
   int NumberOfSubdivisions = 4;
   double Residual = 0.0;
+  double ConditionEstimate = 0.0;
   vtkIdType NumberOfTaggedPoints = 0;
 
 private:

@@ -85,6 +85,7 @@ int vtkSubDInterpolateFilter::Execute(
   output->Initialize();
   this->SetErrorCode(vtkErrorCode::NoError);
   this->Residual = 0.0;
+  this->ConditionEstimate = 0.0;
   this->NumberOfTaggedVertices = 0;
   auto fail = [this, output](const std::string& why) {
     vtkErrorMacro(<< vtkSubDSentence(why));
@@ -142,9 +143,11 @@ int vtkSubDInterpolateFilter::Execute(
   if (!subd::SolveInterpolation(rows, tagged, cage.Points, this->Tolerance, solved, report, error))
   {
     this->Residual = report.Residual;
+    this->ConditionEstimate = report.Condition;
     return fail(error);
   }
   this->Residual = report.Residual;
+  this->ConditionEstimate = report.Condition;
   this->NumberOfTaggedVertices = report.NumTagged;
   this->UpdateProgress(0.9);
 
@@ -181,5 +184,6 @@ void vtkSubDInterpolateFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "OutputRefinedSurface: " << this->OutputRefinedSurface << "\n";
   os << indent << "NumberOfSubdivisions: " << this->NumberOfSubdivisions << "\n";
   os << indent << "Residual: " << this->Residual << "\n";
+  os << indent << "ConditionEstimate: " << this->ConditionEstimate << "\n";
   os << indent << "NumberOfTaggedVertices: " << this->NumberOfTaggedVertices << "\n";
 }

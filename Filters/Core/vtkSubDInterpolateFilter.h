@@ -99,6 +99,9 @@ public:
   /// After an update: the residual max |M x - t| of the last solve, and the number of
   /// tagged vertices.
   vtkGetMacro(Residual, double);
+  /// After an update: a lower bound of the system's condition number (SubDInterpolation.h);
+  /// above 1e10 the solve is refused as singular.
+  vtkGetMacro(ConditionEstimate, double);
   vtkGetMacro(NumberOfTaggedVertices, vtkIdType);
 
 protected:
@@ -117,6 +120,7 @@ protected:
   bool OutputRefinedSurface = false;
   int NumberOfSubdivisions = 3;
   double Residual = 0.0;
+  double ConditionEstimate = 0.0;
   vtkIdType NumberOfTaggedVertices = 0;
 
 private:

@@ -46,13 +46,21 @@ struct InterpolationReport
   Index NumTagged = 0;   ///< rows that are limit masks
   size_t NumNonZeros = 0; ///< entries of the matrix
   double Residual = 0;   ///< max |M x - t| over rows and coordinates
+  /// A lower bound of M's condition number in the max norm, |M| |M^-1 r| / |r| for a
+  /// pseudo-random r (one extra solve with the factors): a singular M has a pivot at
+  /// round-off level, which makes it huge even when the targets happen to be consistent.
+  double Condition = 0;
 };
+
+/// Condition numbers above this mean the cage is not determined by the targets.
+constexpr double kMaximumInterpolationCondition = 1e10;
 
 /// Solves the system above: `targets` and `points` hold 3 coordinates per vertex, `tagged`
 /// one flag per vertex, `rows` the limit masks (BuildVertexLimitRows). False, with the
-/// reason, when a tagged vertex has no row, when the matrix is singular, or when the
-/// residual exceeds `tolerance` times the targets' extent (ill-conditioned): `points` is
-/// then left empty.
+/// reason, when a tagged vertex has no row, when the matrix is singular (the factorisation
+/// fails, or the condition estimate exceeds kMaximumInterpolationCondition: then many cages
+/// have these limit points, and any one returned would be arbitrary), or when the residual
+/// exceeds `tolerance` times the targets' extent: `points` is then left empty.
 SUBDKERNEL_EXPORT bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<char>& tagged,
   const std::vector<double>& targets, double tolerance, std::vector<double>& points, InterpolationReport& report,
   std::string& error);

@@ -9,6 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace
 {
 // Runs `entry` on its kind of built-in input; null on an error.
@@ -44,4 +47,45 @@ TEST(SchemeRegistry, FlagsMatchWhatTheFiltersDo)
       EXPECT_FALSE(entry.LimitCurvature) << entry.Name;
   }
 }
+}
+
+// --interpolate: the solved cage's limit points (the scheme at level 0 with ProjectToLimit)
+// are the built-in input's points, for every scheme that has a solve.
+TEST(SchemeRegistry, InterpolationCagesHaveTheInputAsTheirLimit)
+{
+  for (const subdapp::SchemeEntry& entry : subdapp::Schemes())
+  {
+    if (entry.InterpolationScheme < 0)
+    {
+      EXPECT_NE(entry.InterpolationNote, nullptr) << entry.Name;
+      continue;
+    }
+    subdapp::SchemeOptions options;
+    vtkSmartPointer<vtkPolyData> input = subdapp::MakeBuiltinCage(
+      entry.Curve ? "star" : entry.Name == "loop" ? "octahedron" : "open-grid"); // Loop needs triangles
+    subdapp::MessageCollector messages;
+    const subdapp::InterpolationResult solved = subdapp::RunInterpolation(entry, options, input, messages);
+    ASSERT_NE(solved.Cage, nullptr) << entry.Name << ": " << messages.Errors;
+    EXPECT_EQ(solved.NumTagged, input->GetNumberOfPoints()) << entry.Name;
+    EXPECT_LT(solved.Residual, 1e-9) << entry.Name;
+    if (entry.Name == "doo-sabin")
+    {
+      continue; // its limit points are V-face centroids, not the vertices' level-0 projection
+    }
+    options.Levels = 0;
+    options.ProjectToLimit = true;
+    vtkSmartPointer<vtkPolyData> limit = subdapp::RunScheme(entry, options, solved.Cage, messages);
+    ASSERT_NE(limit, nullptr) << entry.Name << ": " << messages.Errors;
+    ASSERT_EQ(limit->GetNumberOfPoints(), input->GetNumberOfPoints()) << entry.Name;
+    double worst = 0.0;
+    for (vtkIdType v = 0; v < input->GetNumberOfPoints(); ++v)
+    {
+      double a[3], b[3];
+      input->GetPoint(v, a);
+      limit->GetPoint(v, b);
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(a[c] - b[c]));
+    }
+    EXPECT_LT(worst, 1e-9) << entry.Name;
+  }
 }
