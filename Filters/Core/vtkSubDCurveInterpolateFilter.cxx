@@ -110,7 +110,8 @@ int vtkSubDCurveInterpolateFilter::Execute(
   std::vector<double> solved;
   subd::InterpolationReport report;
   std::string error;
-  const bool ok = subd::SolveInterpolation(rows, tagged, targets, this->Tolerance, solved, report, error);
+  const bool ok = subd::SolveInterpolation(rows, tagged, targets, this->Tolerance,
+        static_cast<subd::InterpolationSolver>(this->Solver), solved, report, error);
   this->Residual = report.Residual;
   this->ConditionEstimate = report.Condition;
   if (!ok)
@@ -150,6 +151,7 @@ void vtkSubDCurveInterpolateFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "InterpolationArrayName: "
      << (this->InterpolationArrayName ? this->InterpolationArrayName : "(none)") << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "Solver: " << this->Solver << "\n";
   os << indent << "OutputRefinedCurve: " << this->OutputRefinedCurve << "\n";
   os << indent << "NumberOfSubdivisions: " << this->NumberOfSubdivisions << "\n";
   os << indent << "Residual: " << this->Residual << "\n";

@@ -140,7 +140,8 @@ int vtkSubDInterpolateFilter::Execute(
   this->UpdateProgress(0.4);
   std::vector<double> solved;
   subd::InterpolationReport report;
-  if (!subd::SolveInterpolation(rows, tagged, cage.Points, this->Tolerance, solved, report, error))
+  if (!subd::SolveInterpolation(rows, tagged, cage.Points, this->Tolerance,
+        static_cast<subd::InterpolationSolver>(this->Solver), solved, report, error))
   {
     this->Residual = report.Residual;
     this->ConditionEstimate = report.Condition;
@@ -181,6 +182,7 @@ void vtkSubDInterpolateFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BoundaryRule: " << this->BoundaryRule << "\n";
   os << indent << "CreaseMethod: " << this->CreaseMethod << "\n";
   os << indent << "Tolerance: " << this->Tolerance << "\n";
+  os << indent << "Solver: " << this->Solver << "\n";
   os << indent << "OutputRefinedSurface: " << this->OutputRefinedSurface << "\n";
   os << indent << "NumberOfSubdivisions: " << this->NumberOfSubdivisions << "\n";
   os << indent << "Residual: " << this->Residual << "\n";

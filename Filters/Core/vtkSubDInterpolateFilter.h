@@ -79,6 +79,18 @@ public:
   vtkGetMacro(CreaseMethod, int);
   ///@}
 
+  enum Solvers
+  {
+    SOLVER_AUTOMATIC = 0, ///< direct up to 20000 points, iterative above
+    SOLVER_DIRECT = 1,    ///< Eigen's SparseLU (COLAMD ordering)
+    SOLVER_ITERATIVE = 2  ///< Eigen's BiCGSTAB with a diagonal preconditioner
+  };
+  ///@{
+  /// The linear solver (default SOLVER_AUTOMATIC; SubDInterpolation.h explains the choice).
+  vtkSetClampMacro(Solver, int, SOLVER_AUTOMATIC, SOLVER_ITERATIVE);
+  vtkGetMacro(Solver, int);
+  ///@}
+
   ///@{
   /// Largest residual accepted, relative to the targets' extent (max |coordinate|, at least
   /// 1); default 1e-9, 0..1.
@@ -117,6 +129,7 @@ protected:
   int BoundaryRule = 1;
   int CreaseMethod = 0;
   double Tolerance = 1e-9;
+  int Solver = SOLVER_AUTOMATIC;
   bool OutputRefinedSurface = false;
   int NumberOfSubdivisions = 3;
   double Residual = 0.0;

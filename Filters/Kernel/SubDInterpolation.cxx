@@ -1,9 +1,11 @@
 #include "SubDInterpolation.h"
 
+#include "SubDCrease.h"
 #include "SubDLimitEvaluator.h"
 #include "SubDStencilTable.h"
 
 #include <Eigen/SparseCore>
+#include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseLU>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstring>
+#include <functional>
 #include <map>
 
 namespace subd
@@ -24,20 +27,29 @@ bool IsExactlyEvaluated(const Scheme& scheme)
 
 // Rows from LimitEvaluator: the limit at a corner of one of the vertex's faces that is not
 // a hole (any of them: the limit point is the same from every side).
-void RowsFromLimitEvaluator(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
-  std::vector<std::string>& problems)
+void RowsFromLimitEvaluator(const Scheme& scheme, const Level& level, const std::vector<Index>& vertices,
+  std::vector<SparseRow>& rows, std::vector<std::string>& problems)
 {
+  if (vertices.empty())
+  {
+    return;
+  }
   const LimitEvaluator evaluator(scheme, level);
   std::string error;
   if (!evaluator.IsValid(error))
   {
-    std::fill(problems.begin(), problems.end(), error);
+    for (Index v : vertices)
+    {
+      problems[v] = error;
+      rows[v] = SparseRow();
+    }
     return;
   }
   const bool quads = std::strcmp(scheme.GetName(), "catmull-clark") == 0;
   std::vector<LimitStencil> out;
-  for (Index v = 0; v < level.Topology.GetNumVertices(); ++v)
+  for (Index v : vertices)
   {
+    rows[v] = SparseRow();
     const IndexSpan faces = level.Topology.GetVertexFaces(v);
     const IndexSpan corners = level.Topology.GetVertexFaceCorners(v);
     problems[v] = faces.size() == 0 ? "it is on no face" : "it is only on holes";
@@ -64,7 +76,7 @@ void RowsFromLimitEvaluator(const Scheme& scheme, const Level& level, std::vecto
 
 // Rows from the scheme's limit stencils, whose entries may name earlier rows: expanded
 // into weights over the level's points.
-void RowsFromLimitStencils(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
+bool RowsFromLimitStencils(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
   std::vector<std::string>& problems)
 {
   StencilTable stencils;
@@ -72,7 +84,7 @@ void RowsFromLimitStencils(const Scheme& scheme, const Level& level, std::vector
   if (!scheme.BuildLimitStencils(level, stencils, error))
   {
     std::fill(problems.begin(), problems.end(), error);
-    return;
+    return false;
   }
   const Index numParents = stencils.GetNumParents();
   std::vector<SparseRow> expanded(static_cast<size_t>(stencils.GetNumRows()));
@@ -102,8 +114,25 @@ void RowsFromLimitStencils(const Scheme& scheme, const Level& level, std::vector
   }
   for (Index v = 0; v < level.Topology.GetNumVertices() && v < stencils.GetNumRows(); ++v)
   {
-    rows[v] = expanded[v];
+    rows[v] = std::move(expanded[v]);
   }
+  return true;
+}
+
+// Whether the vertex or one of its edges is semi-sharp (sharp for a finite number of levels):
+// only those change a vertex's limit mask away from the closed forms of the limit stencils.
+bool TouchesSemiSharpFeature(const Level& level, Index v)
+{
+  if (!level.VertexSharpness.empty() && IsSemiSharp(level.VertexSharpness[v]))
+  {
+    return true;
+  }
+  if (level.EdgeSharpness.empty())
+  {
+    return false;
+  }
+  const IndexSpan edges = level.Topology.GetVertexEdges(v);
+  return std::any_of(edges.begin(), edges.end(), [&](Index e) { return IsSemiSharp(level.EdgeSharpness[e]); });
 }
 }
 
@@ -113,19 +142,38 @@ void BuildVertexLimitRows(
   const Index numVertices = level.Topology.GetNumVertices();
   rows.assign(static_cast<size_t>(numVertices), SparseRow());
   problems.assign(static_cast<size_t>(numVertices), std::string());
+  const bool stencilsBuilt = RowsFromLimitStencils(scheme, level, rows, problems);
   if (IsExactlyEvaluated(scheme))
   {
-    RowsFromLimitEvaluator(scheme, level, rows, problems);
+    // The limit stencils are exact (and far cheaper: a closed form per vertex) except where
+    // a semi-sharp feature touches the vertex; there the limit evaluator refines the
+    // neighbourhood as often as the sharpness lasts.
+    std::vector<Index> evaluated;
+    for (Index v = 0; v < numVertices; ++v)
+    {
+      if (!stencilsBuilt || rows[v].Points.empty() || TouchesSemiSharpFeature(level, v))
+      {
+        evaluated.push_back(v);
+      }
+    }
+    RowsFromLimitEvaluator(scheme, level, evaluated, rows, problems);
   }
-  else
+  // A vertex whose faces are all holes (or that has none) is not on the limit surface.
+  for (Index v = 0; v < numVertices; ++v)
   {
-    RowsFromLimitStencils(scheme, level, rows, problems);
+    const IndexSpan faces = level.Topology.GetVertexFaces(v);
+    const bool onSurface = std::any_of(faces.begin(), faces.end(), [&](Index f) { return !level.FaceIsHole[f]; });
+    if (!onSurface)
+    {
+      rows[v] = SparseRow();
+      problems[v] = faces.size() == 0 ? "it is on no face" : "it is only on holes";
+    }
   }
 }
 
 bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<char>& tagged,
-  const std::vector<double>& targets, double tolerance, std::vector<double>& points, InterpolationReport& report,
-  std::string& error)
+  const std::vector<double>& targets, double tolerance, InterpolationSolver method, std::vector<double>& points,
+  InterpolationReport& report, std::string& error)
 {
   points.clear();
   report = InterpolationReport();
@@ -149,56 +197,94 @@ bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<ch
       entries.emplace_back(v, rows[v].Points[k], rows[v].Weights[k]);
     }
   }
-  Eigen::SparseMatrix<double> matrix(n, n);
+  Eigen::SparseMatrix<double, Eigen::RowMajor> matrix(n, n);
   matrix.setFromTriplets(entries.begin(), entries.end());
   matrix.makeCompressed();
   report.NumNonZeros = static_cast<size_t>(matrix.nonZeros());
-
-  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> solver;
-  solver.compute(matrix);
-  if (solver.info() != Eigen::Success)
+  Eigen::MatrixXd rhs(n, 3);
+  for (Index v = 0; v < n; ++v)
   {
-    error = "the interpolation system is singular (" + solver.lastErrorMessage() +
-      "): no cage of this topology has these limit points; tag fewer vertices";
-    return false;
+    rhs.row(v) << targets[3 * v], targets[3 * v + 1], targets[3 * v + 2];
   }
+
+  // solve(b, x): false when the solver failed on b.
+  std::function<bool(const Eigen::MatrixXd&, Eigen::MatrixXd&)> solve;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> direct;
+  Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::DiagonalPreconditioner<double>> iterative;
+  report.Iterative = method == InterpolationSolver::Iterative ||
+    (method == InterpolationSolver::Automatic && n > kDirectSolverLimit);
+  if (!report.Iterative)
+  {
+    direct.compute(Eigen::SparseMatrix<double>(matrix));
+    if (direct.info() != Eigen::Success)
+    {
+      error = "the interpolation system is singular (" + direct.lastErrorMessage() +
+        "): no cage of this topology has these limit points; tag fewer vertices";
+      return false;
+    }
+    solve = [&](const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
+      x = direct.solve(b);
+      return true;
+    };
+  }
+  else
+  {
+    iterative.setTolerance(1e-14);
+    iterative.setMaxIterations(1000);
+    iterative.compute(matrix);
+    solve = [&](const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
+      x.resize(b.rows(), b.cols());
+      for (Eigen::Index c = 0; c < b.cols(); ++c)
+      {
+        // The targets are a good first guess: a cage is near its limit surface.
+        const Eigen::VectorXd guess = b.cols() == rhs.cols() ? Eigen::VectorXd(rhs.col(c)) : Eigen::VectorXd::Zero(b.rows());
+        x.col(c) = iterative.solveWithGuess(b.col(c), guess);
+        report.Iterations = std::max(report.Iterations, static_cast<int>(iterative.iterations()));
+        if (iterative.info() != Eigen::Success)
+        {
+          return false;
+        }
+      }
+      return true;
+    };
+  }
+
   // Condition estimate: round-off hides an exactly singular matrix from the factorisation
   // (a closed cube's Catmull-Clark limit masks annihilate the alternating +1/-1 vertex
   // pattern), and consistent targets (the cube's own corners) even give a tiny residual, with
   // an arbitrary multiple of that pattern added. A solve with a pseudo-random right-hand side
-  // exposes the tiny pivot.
-  Eigen::VectorXd probe(n);
+  // exposes the tiny pivot (or makes the iterative solver fail to converge).
+  Eigen::MatrixXd probe(n, 1);
   std::uint64_t state = 0x9E3779B97F4A7C15ull;
   for (Index v = 0; v < n; ++v)
   {
     state = state * 6364136223846793005ull + 1442695040888963407ull;
-    probe[v] = static_cast<double>(state >> 11) * 0x1.0p-52 - 1.0; // in [-1, 1)
+    probe(v, 0) = static_cast<double>(state >> 11) * 0x1.0p-52 - 1.0; // in [-1, 1)
   }
-  const Eigen::VectorXd response = solver.solve(probe);
-  std::vector<double> rowSums(static_cast<size_t>(n), 0.0);
-  for (const Eigen::Triplet<double>& entry : entries)
+  Eigen::MatrixXd response;
+  const bool probed = solve(probe, response);
+  double matrixNorm = 0.0;
+  for (Index v = 0; v < n; ++v)
   {
-    rowSums[entry.row()] += std::abs(entry.value());
+    matrixNorm = std::max(matrixNorm, matrix.row(v).cwiseAbs().sum());
   }
-  const double matrixNorm = rowSums.empty() ? 0.0 : *std::max_element(rowSums.begin(), rowSums.end());
-  report.Condition = response.allFinite()
+  report.Condition = probed && response.allFinite()
     ? matrixNorm * response.cwiseAbs().maxCoeff() / std::max(probe.cwiseAbs().maxCoeff(), 1e-300)
     : HUGE_VAL;
   if (!(report.Condition <= kMaximumInterpolationCondition))
   {
     char number[64];
     std::snprintf(number, sizeof number, "%.3g", report.Condition);
-    error = std::string("the interpolation system is singular or ill-conditioned (condition number at least ") +
-      number + "): many cages have these limit points, so none is returned; tag fewer vertices";
+    error = std::string("the interpolation system is singular or ill-conditioned (") +
+      (probed ? std::string("condition number at least ") + number
+              : "the iterative solver does not converge on a random right-hand side in " +
+            std::to_string(report.Iterations) + " iterations") +
+      "): many cages have these limit points, so none is returned; tag fewer vertices";
     return false;
   }
-  Eigen::MatrixXd rhs(n, 3);
-  for (Index v = 0; v < n; ++v)
-  {
-    rhs.row(v) << targets[3 * v], targets[3 * v + 1], targets[3 * v + 2];
-  }
-  const Eigen::MatrixXd solution = solver.solve(rhs);
-  const double residual = solution.allFinite() ? (matrix * solution - rhs).cwiseAbs().maxCoeff() : HUGE_VAL;
+  Eigen::MatrixXd solution;
+  const bool solved = solve(rhs, solution);
+  const double residual = solved && solution.allFinite() ? (matrix * solution - rhs).cwiseAbs().maxCoeff() : HUGE_VAL;
   const double extent = std::max(1.0, rhs.cwiseAbs().maxCoeff());
   report.Residual = residual;
   if (!(residual <= tolerance * extent))

@@ -133,9 +133,11 @@ std::vector<double> DooSabinLimitPoints(vtkPolyData* cage)
   return sum;
 }
 
-vtkSmartPointer<vtkPolyData> Solve(vtkPolyData* targets, int scheme, int boundaryRule = 1)
+vtkSmartPointer<vtkPolyData> Solve(vtkPolyData* targets, int scheme, int boundaryRule = 1,
+  int solver = vtkSubDInterpolateFilter::SOLVER_AUTOMATIC)
 {
   vtkNew<vtkSubDInterpolateFilter> filter;
+  filter->SetSolver(solver);
   subdtest::Messages messages;
   messages.Watch(filter);
   filter->SetScheme(scheme);
@@ -192,8 +194,12 @@ TEST(InterpolateFilter, CatmullClarkLimitPassesThroughEveryVertex)
       subdtest::House(false).Jitter(0.1), subdtest::Grid(6, 5, true, true).Jitter(0.05) })
   {
     auto targets = ToPolyData(mesh);
-    auto cage = Solve(targets, vtkSubDInterpolateFilter::CATMULL_CLARK);
-    ExpectPointsNear(PrimalLimitPoints(cage, vtkSubDLimitFilter::CATMULL_CLARK), targets, 1e-9, mesh.Name);
+    for (int solver : { vtkSubDInterpolateFilter::SOLVER_DIRECT, vtkSubDInterpolateFilter::SOLVER_ITERATIVE })
+    {
+      auto cage = Solve(targets, vtkSubDInterpolateFilter::CATMULL_CLARK, 1, solver);
+      ExpectPointsNear(PrimalLimitPoints(cage, vtkSubDLimitFilter::CATMULL_CLARK), targets, 1e-9,
+        mesh.Name + (solver == vtkSubDInterpolateFilter::SOLVER_DIRECT ? " (SparseLU)" : " (BiCGSTAB)"));
+    }
   }
 }
 
@@ -203,16 +209,20 @@ TEST(InterpolateFilter, CatmullClarkLimitPassesThroughEveryVertex)
 // are a clear error, with no output - not an arbitrary one of many cages.
 TEST(InterpolateFilter, SingularSystemIsAClearError)
 {
-  for (const subdtest::TestMesh& cube : { subdtest::Cube().Jitter(0.1), subdtest::Cube() })
+  for (int solver : { vtkSubDInterpolateFilter::SOLVER_DIRECT, vtkSubDInterpolateFilter::SOLVER_ITERATIVE })
   {
-    vtkNew<vtkSubDInterpolateFilter> filter;
-    subdtest::Messages messages;
-    messages.Watch(filter);
-    filter->SetInputData(ToPolyData(cube));
-    filter->Update();
-    EXPECT_NE(messages.Errors.find("singular or ill-conditioned"), std::string::npos) << messages.Errors;
-    EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
-    EXPECT_GT(filter->GetConditionEstimate(), 1e10);
+    for (const subdtest::TestMesh& cube : { subdtest::Cube().Jitter(0.1), subdtest::Cube() })
+    {
+      vtkNew<vtkSubDInterpolateFilter> filter;
+      subdtest::Messages messages;
+      messages.Watch(filter);
+      filter->SetSolver(solver);
+      filter->SetInputData(ToPolyData(cube));
+      filter->Update();
+      EXPECT_NE(messages.Errors.find("singular or ill-conditioned"), std::string::npos) << messages.Errors;
+      EXPECT_EQ(filter->GetOutput()->GetNumberOfPoints(), 0);
+      EXPECT_GT(filter->GetConditionEstimate(), 1e10);
+    }
   }
   // A well-posed system reports a modest condition number.
   vtkNew<vtkSubDInterpolateFilter> filter;
