@@ -128,7 +128,10 @@ int vtkSubDInterpolateFilter::Execute(
   const std::unique_ptr<subd::Scheme> scheme = NewScheme(this->Scheme);
   std::vector<subd::SparseRow> rows;
   std::vector<std::string> problems;
-  subd::BuildVertexLimitRows(*scheme, cage.Level, rows, problems);
+  if (!subd::BuildVertexLimitRows(*scheme, cage.Level, rows, problems, error))
+  {
+    return fail(std::string("the ") + this->GetSchemeAsString() + " scheme has no limit points for this cage: " + error);
+  }
   for (vtkIdType v = 0; v < numPoints; ++v)
   {
     if (tagged[v] && !problems[v].empty())

@@ -76,14 +76,11 @@ void RowsFromLimitEvaluator(const Scheme& scheme, const Level& level, const std:
 
 // Rows from the scheme's limit stencils, whose entries may name earlier rows: expanded
 // into weights over the level's points.
-bool RowsFromLimitStencils(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
-  std::vector<std::string>& problems)
+bool RowsFromLimitStencils(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows, std::string& error)
 {
   StencilTable stencils;
-  std::string error;
   if (!scheme.BuildLimitStencils(level, stencils, error))
   {
-    std::fill(problems.begin(), problems.end(), error);
     return false;
   }
   const Index numParents = stencils.GetNumParents();
@@ -136,13 +133,18 @@ bool TouchesSemiSharpFeature(const Level& level, Index v)
 }
 }
 
-void BuildVertexLimitRows(
-  const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows, std::vector<std::string>& problems)
+bool BuildVertexLimitRows(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
+  std::vector<std::string>& problems, std::string& error)
 {
   const Index numVertices = level.Topology.GetNumVertices();
   rows.assign(static_cast<size_t>(numVertices), SparseRow());
   problems.assign(static_cast<size_t>(numVertices), std::string());
-  const bool stencilsBuilt = RowsFromLimitStencils(scheme, level, rows, problems);
+  const bool stencilsBuilt = RowsFromLimitStencils(scheme, level, rows, error);
+  if (!stencilsBuilt && !IsExactlyEvaluated(scheme))
+  {
+    rows.assign(static_cast<size_t>(numVertices), SparseRow());
+    return false;
+  }
   if (IsExactlyEvaluated(scheme))
   {
     // The limit stencils are exact (and far cheaper: a closed form per vertex) except where
@@ -169,6 +171,7 @@ void BuildVertexLimitRows(
       problems[v] = faces.size() == 0 ? "it is on no face" : "it is only on holes";
     }
   }
+  return true;
 }
 
 bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<char>& tagged,

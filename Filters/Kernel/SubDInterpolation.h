@@ -40,10 +40,12 @@ struct SparseRow
 /// The limit point of every vertex of `level` that some face uses, as weights over the
 /// level's points: the scheme's limit stencils (closed forms; Doo-Sabin: the centroid of the
 /// vertex's V-face, SubDDualLimit.h), and for Catmull-Clark and Loop vertices touched by a
-/// semi-sharp feature, the exact LimitEvaluator (the stencils' closed forms do not hold there). A vertex that has no limit mask (one only on holes, a dart of a
-/// dual scheme, ...) gets an empty row and its reason in `problems[v]` (else empty).
-SUBDKERNEL_EXPORT void BuildVertexLimitRows(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
-  std::vector<std::string>& problems);
+/// semi-sharp feature (or where the closed forms do not apply: Catmull-Clark's need quads),
+/// the exact LimitEvaluator. A vertex without a limit mask (one only on holes, ...) gets an
+/// empty row and its reason in `problems[v]` (else empty). False, with `error`, when the
+/// scheme has no limit stencils for this cage at all (a Doo-Sabin dart, ...).
+SUBDKERNEL_EXPORT bool BuildVertexLimitRows(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
+  std::vector<std::string>& problems, std::string& error);
 
 struct InterpolationReport
 {

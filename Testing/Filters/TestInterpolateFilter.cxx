@@ -3,6 +3,7 @@
 // vtkSubDLimitFilter (exact evaluation, itself checked against OpenSubdiv), Doo-Sabin limit
 // points by the closed form (the centroid of the vertex's V-face, Doo and Sabin's weights).
 #include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDDooSabinFilter.h"
 #include "vtkSubDInterpolateFilter.h"
 #include "vtkSubDLimitFilter.h"
 
@@ -10,6 +11,7 @@
 #include "SubDTestMeshes.h"
 
 #include "vtkCellArray.h"
+#include "vtkCellLocator.h"
 #include "vtkCellData.h"
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
@@ -263,6 +265,70 @@ TEST(InterpolateFilter, DooSabinVFaceCentroidsPassThroughEveryVertex)
     auto cage = Solve(targets, vtkSubDInterpolateFilter::DOO_SABIN);
     ExpectPointsNear(DooSabinLimitPoints(cage), targets, 1e-9, mesh.Name);
   }
+}
+
+// Open meshes and creases, checked by convergence instead of a closed form: Doo-Sabin maps
+// every face to a polygon with the same centroid that shrinks onto it, so the limit point of
+// a vertex lies on the surface that refinement approaches (O(h^2): 7 levels put the refined
+// faces within about 1e-4 of it). The distance from each target to the refined faces is
+// measured by VTK's cell locator.
+TEST(InterpolateFilter, DooSabinOnOpenAndCreasedMeshesPassesThroughTheTargets)
+{
+  vtkSmartPointer<vtkPolyData> open = ToPolyData(subdtest::Grid(4, 3, false, false).Jitter(0.1));
+  vtkSmartPointer<vtkPolyData> creased = ToPolyData(subdtest::Grid(4, 3, false, false).Jitter(0.1));
+  vtkNew<vtkCellArray> crease; // across the grid, boundary to boundary: Doo-Sabin has no dart rule
+  const vtkIdType row[5] = { 5, 6, 7, 8, 9 };
+  crease->InsertNextCell(5, row);
+  creased->SetLines(crease);
+  vtkNew<vtkFloatArray> sharpness;
+  sharpness->SetName("Sharpness");
+  sharpness->InsertNextValue(10.0f);
+  for (vtkIdType f = 0; f < creased->GetNumberOfPolys(); ++f)
+  {
+    sharpness->InsertNextValue(0.0f);
+  }
+  creased->GetCellData()->AddArray(sharpness);
+  for (vtkPolyData* targets : { open.GetPointer(), creased.GetPointer() })
+  {
+    auto largestDistance = [targets](vtkPolyData* cage) {
+      vtkNew<vtkSubDDooSabinFilter> refine;
+      refine->SetInputData(cage);
+      refine->SetNumberOfSubdivisions(7);
+      refine->Update();
+      vtkNew<vtkPolyData> faces; // without the crease lines, which are no surface
+      faces->SetPoints(refine->GetOutput()->GetPoints());
+      faces->SetPolys(refine->GetOutput()->GetPolys());
+      vtkNew<vtkCellLocator> locator;
+      locator->SetDataSet(faces);
+      locator->BuildLocator();
+      double worst = 0.0;
+      for (vtkIdType v = 0; v < targets->GetNumberOfPoints(); ++v)
+      {
+        double target[3], closest[3], distance2;
+        vtkIdType cell;
+        int subId;
+        targets->GetPoint(v, target);
+        locator->FindClosestPoint(target, closest, cell, subId, distance2);
+        worst = std::max(worst, std::sqrt(distance2));
+      }
+      return worst;
+    };
+    auto cage = Solve(targets, vtkSubDInterpolateFilter::DOO_SABIN);
+    EXPECT_LT(largestDistance(cage), 1e-3);
+    EXPECT_GT(largestDistance(targets), 1e-2); // the unsolved cage misses them
+  }
+
+  // With a dart (the semi-sharp crease of CreasedGrid ends inside), Doo-Sabin has no limit
+  // point there, and the error says so.
+  vtkNew<vtkSubDInterpolateFilter> filter;
+  subdtest::Messages messages;
+  messages.Watch(filter);
+  filter->SetSchemeToDooSabin();
+  filter->SetInputData(CreasedGrid());
+  filter->Update();
+  EXPECT_NE(messages.Errors.find("The doo-sabin scheme has no limit points for this cage: vertex 8 (a dart"),
+    std::string::npos)
+    << messages.Errors;
 }
 
 TEST(InterpolateFilter, UntaggedVerticesKeepTheirPositions)
