@@ -150,7 +150,7 @@ InterpolationResult RunInterpolation(
   const SchemeEntry& entry, const SchemeOptions& options, vtkPolyData* input, MessageCollector& messages)
 {
   InterpolationResult result;
-  vtkSmartPointer<vtkPolyDataAlgorithm> filter;
+  vtkSmartPointer<vtkSubDInterpolationAlgorithm> filter;
   if (entry.Curve)
   {
     auto curve = vtkSmartPointer<vtkSubDCurveInterpolateFilter>::New();
@@ -173,16 +173,8 @@ InterpolationResult RunInterpolation(
   {
     return result;
   }
-  if (auto* curve = vtkSubDCurveInterpolateFilter::SafeDownCast(filter))
-  {
-    result.NumTagged = curve->GetNumberOfTaggedPoints();
-    result.Residual = curve->GetResidual();
-  }
-  else if (auto* surface = vtkSubDInterpolateFilter::SafeDownCast(filter))
-  {
-    result.NumTagged = surface->GetNumberOfTaggedVertices();
-    result.Residual = surface->GetResidual();
-  }
+  result.NumTagged = filter->GetNumberOfTaggedPoints();
+  result.Residual = filter->GetResidual();
   result.Cage = vtkSmartPointer<vtkPolyData>::New();
   result.Cage->ShallowCopy(filter->GetOutput());
   return result;

@@ -67,7 +67,7 @@ int main(int argc, char* argv[])
   refine->SetInputConnection(solve->GetOutputPort());
   refine->SetNumberOfSubdivisions(4);
   refine->Update();
-  std::cout << "Catmull-Clark cage through " << solve->GetNumberOfTaggedVertices()
+  std::cout << "Catmull-Clark cage through " << solve->GetNumberOfTaggedPoints()
             << " points, residual " << solve->GetResidual() << "\n";
 
   // Check: the limit points of the cage's vertices are the measurements.

@@ -52,7 +52,7 @@ def loop_through_sphere(prefix):
     worst = max(math.dist(sphere.GetPoint(v), limit.GetOutput().GetPoint(v))
                 for v in range(sphere.GetNumberOfPoints()) if tags.GetValue(v))
     print("Loop cage through %d of %d sphere points: residual %.2g, largest miss %.2g" % (
-        solve.GetNumberOfTaggedVertices(), sphere.GetNumberOfPoints(), solve.GetResidual(), worst))
+        solve.GetNumberOfTaggedPoints(), sphere.GetNumberOfPoints(), solve.GetResidual(), worst))
     refine = subd.vtkSubDLoopFilter()
     refine.SetInputConnection(solve.GetOutputPort())
     refine.SetNumberOfSubdivisions(3)

@@ -5,7 +5,6 @@
 #include "vtkSubDInputFaces.h"
 #include "vtkSubDInputLines.h"
 #include "vtkSubDInterpolationSupport.h"
-#include "vtkSubDOutOfMemory.h"
 
 #include "vtkErrorCode.h"
 #include "vtkObjectFactory.h"
@@ -18,27 +17,9 @@
 
 vtkStandardNewMacro(vtkSubDCurveInterpolateFilter);
 
-vtkSubDCurveInterpolateFilter::vtkSubDCurveInterpolateFilter()
-{
-  this->SetInterpolationArrayName("Interpolate");
-}
-
-vtkSubDCurveInterpolateFilter::~vtkSubDCurveInterpolateFilter()
-{
-  this->SetInterpolationArrayName(nullptr);
-}
-
 const char* vtkSubDCurveInterpolateFilter::GetSchemeAsString()
 {
   return subd::ToString(static_cast<subd::CurveScheme>(this->Scheme));
-}
-
-int vtkSubDCurveInterpolateFilter::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  return vtkSubDRunCatchingOutOfMemory(
-    this, vtkPolyData::GetData(outputVector), [&]() { return this->Execute(request, inputVector, outputVector); },
-    [this](unsigned long code) { this->SetErrorCode(code); });
 }
 
 int vtkSubDCurveInterpolateFilter::Execute(
@@ -46,17 +27,7 @@ int vtkSubDCurveInterpolateFilter::Execute(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  output->Initialize();
-  this->SetErrorCode(vtkErrorCode::NoError);
-  this->Residual = 0.0;
-  this->ConditionEstimate = 0.0;
-  this->NumberOfTaggedPoints = 0;
-  auto fail = [this, output](const std::string& why) {
-    vtkErrorMacro(<< vtkSubDSentence(why));
-    output->Initialize();
-    this->SetErrorCode(vtkErrorCode::UserError);
-    return 0;
-  };
+  auto fail = [this, output](const std::string& why) { return this->Fail(output, why); };
 
   if (!input || input->GetNumberOfLines() == 0)
   {
@@ -108,17 +79,11 @@ int vtkSubDCurveInterpolateFilter::Execute(
     input->GetPoint(v, targets.data() + 3 * v);
   }
   std::vector<double> solved;
-  subd::InterpolationReport report;
   std::string error;
-  const bool ok = subd::SolveInterpolation(rows, tagged, targets, this->Tolerance,
-        static_cast<subd::InterpolationSolver>(this->Solver), solved, report, error);
-  this->Residual = report.Residual;
-  this->ConditionEstimate = report.Condition;
-  if (!ok)
+  if (!this->Solve(rows, tagged, targets, solved, error))
   {
     return fail(error);
   }
-  this->NumberOfTaggedPoints = report.NumTagged;
   this->UpdateProgress(0.8);
 
   vtkSmartPointer<vtkPolyData> polygons = vtkSubDWithSolvedPoints(input, solved);
@@ -148,13 +113,6 @@ void vtkSubDCurveInterpolateFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Scheme: " << this->GetSchemeAsString() << "\n";
   os << indent << "Tension: " << this->Tension << "\n";
   os << indent << "Closed: " << this->Closed << "\n";
-  os << indent << "InterpolationArrayName: "
-     << (this->InterpolationArrayName ? this->InterpolationArrayName : "(none)") << "\n";
-  os << indent << "Tolerance: " << this->Tolerance << "\n";
-  os << indent << "Solver: " << this->Solver << "\n";
   os << indent << "OutputRefinedCurve: " << this->OutputRefinedCurve << "\n";
   os << indent << "NumberOfSubdivisions: " << this->NumberOfSubdivisions << "\n";
-  os << indent << "Residual: " << this->Residual << "\n";
-  os << indent << "ConditionEstimate: " << this->ConditionEstimate << "\n";
-  os << indent << "NumberOfTaggedPoints: " << this->NumberOfTaggedPoints << "\n";
 }

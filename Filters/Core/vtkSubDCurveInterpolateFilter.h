@@ -35,13 +35,13 @@
 #define vtkSubDCurveInterpolateFilter_h
 
 #include "SubDFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSubDInterpolationAlgorithm.h"
 
-class SUBDFILTERS_EXPORT vtkSubDCurveInterpolateFilter : public vtkPolyDataAlgorithm
+class SUBDFILTERS_EXPORT vtkSubDCurveInterpolateFilter : public vtkSubDInterpolationAlgorithm
 {
 public:
   static vtkSubDCurveInterpolateFilter* New();
-  vtkTypeMacro(vtkSubDCurveInterpolateFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSubDCurveInterpolateFilter, vtkSubDInterpolationAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -69,32 +69,6 @@ public:
   ///@}
 
   ///@{
-  /// The point-data array that tags the points to interpolate (non-zero: tagged; default
-  /// "Interpolate"). Without such an array every point is tagged.
-  vtkSetStringMacro(InterpolationArrayName);
-  vtkGetStringMacro(InterpolationArrayName);
-  ///@}
-
-  enum Solvers
-  {
-    SOLVER_AUTOMATIC = 0, ///< direct up to 20000 points, iterative above
-    SOLVER_DIRECT = 1,    ///< Eigen's SparseLU (COLAMD ordering)
-    SOLVER_ITERATIVE = 2  ///< Eigen's BiCGSTAB with a diagonal preconditioner
-  };
-  ///@{
-  /// The linear solver (default SOLVER_AUTOMATIC; SubDInterpolation.h explains the choice).
-  vtkSetClampMacro(Solver, int, SOLVER_AUTOMATIC, SOLVER_ITERATIVE);
-  vtkGetMacro(Solver, int);
-  ///@}
-
-  ///@{
-  /// Largest residual accepted, relative to the targets' extent (max |coordinate|, at least
-  /// 1); default 1e-9, 0..1.
-  vtkSetClampMacro(Tolerance, double, 0.0, 1.0);
-  vtkGetMacro(Tolerance, double);
-  ///@}
-
-  ///@{
   /// Output the refined interpolating curves (NumberOfSubdivisions levels of the scheme,
   /// default 4, 1..20) instead of the control polygons (default off).
   vtkSetMacro(OutputRefinedCurve, bool);
@@ -104,32 +78,17 @@ public:
   vtkGetMacro(NumberOfSubdivisions, int);
   ///@}
 
-  /// After an update: the residual of the last solve and the number of tagged points.
-  vtkGetMacro(Residual, double);
-  /// After an update: a lower bound of the system's condition number (SubDInterpolation.h);
-  /// above 1e10 the solve is refused as singular.
-  vtkGetMacro(ConditionEstimate, double);
-  vtkGetMacro(NumberOfTaggedPoints, vtkIdType);
-
 protected:
-  vtkSubDCurveInterpolateFilter();
-  ~vtkSubDCurveInterpolateFilter() override;
+  vtkSubDCurveInterpolateFilter() = default;
+  ~vtkSubDCurveInterpolateFilter() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /// RequestData's work; RequestData runs it and turns running out of memory into an error.
-  int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Scheme = 1;
   double Tension = 1.0 / 16.0;
   bool Closed = false;
-  char* InterpolationArrayName = nullptr;
-  double Tolerance = 1e-9;
-  int Solver = SOLVER_AUTOMATIC;
   bool OutputRefinedCurve = false;
   int NumberOfSubdivisions = 4;
-  double Residual = 0.0;
-  double ConditionEstimate = 0.0;
-  vtkIdType NumberOfTaggedPoints = 0;
 
 private:
   vtkSubDCurveInterpolateFilter(const vtkSubDCurveInterpolateFilter&) = delete;

@@ -7,7 +7,6 @@
 #include "vtkSubDInterpolationSupport.h"
 #include "vtkSubDDooSabinFilter.h"
 #include "vtkSubDLoopFilter.h"
-#include "vtkSubDOutOfMemory.h"
 
 #include "vtkDataArray.h"
 #include "vtkDoubleArray.h"
@@ -24,28 +23,10 @@
 
 vtkStandardNewMacro(vtkSubDInterpolateFilter);
 
-vtkSubDInterpolateFilter::vtkSubDInterpolateFilter()
-{
-  this->SetInterpolationArrayName("Interpolate");
-}
-
-vtkSubDInterpolateFilter::~vtkSubDInterpolateFilter()
-{
-  this->SetInterpolationArrayName(nullptr);
-}
-
 const char* vtkSubDInterpolateFilter::GetSchemeAsString()
 {
   static const char* const names[] = { "catmull-clark", "loop", "doo-sabin" };
   return names[this->Scheme];
-}
-
-int vtkSubDInterpolateFilter::RequestData(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  return vtkSubDRunCatchingOutOfMemory(
-    this, vtkPolyData::GetData(outputVector), [&]() { return this->Execute(request, inputVector, outputVector); },
-    [this](unsigned long code) { this->SetErrorCode(code); });
 }
 
 namespace
@@ -82,17 +63,7 @@ int vtkSubDInterpolateFilter::Execute(
 {
   vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
-  output->Initialize();
-  this->SetErrorCode(vtkErrorCode::NoError);
-  this->Residual = 0.0;
-  this->ConditionEstimate = 0.0;
-  this->NumberOfTaggedVertices = 0;
-  auto fail = [this, output](const std::string& why) {
-    vtkErrorMacro(<< vtkSubDSentence(why));
-    output->Initialize();
-    this->SetErrorCode(vtkErrorCode::UserError);
-    return 0;
-  };
+  auto fail = [this, output](const std::string& why) { return this->Fail(output, why); };
 
   vtkSubDCage cage;
   std::string error, warning;
@@ -142,17 +113,10 @@ int vtkSubDInterpolateFilter::Execute(
   }
   this->UpdateProgress(0.4);
   std::vector<double> solved;
-  subd::InterpolationReport report;
-  if (!subd::SolveInterpolation(rows, tagged, cage.Points, this->Tolerance,
-        static_cast<subd::InterpolationSolver>(this->Solver), solved, report, error))
+  if (!this->Solve(rows, tagged, cage.Points, solved, error))
   {
-    this->Residual = report.Residual;
-    this->ConditionEstimate = report.Condition;
     return fail(error);
   }
-  this->Residual = report.Residual;
-  this->ConditionEstimate = report.Condition;
-  this->NumberOfTaggedVertices = report.NumTagged;
   this->UpdateProgress(0.9);
 
   vtkSmartPointer<vtkPolyData> newCage = vtkSubDWithSolvedPoints(input, solved);
@@ -180,15 +144,8 @@ void vtkSubDInterpolateFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Scheme: " << this->GetSchemeAsString() << "\n";
-  os << indent << "InterpolationArrayName: "
-     << (this->InterpolationArrayName ? this->InterpolationArrayName : "(none)") << "\n";
   os << indent << "BoundaryRule: " << this->BoundaryRule << "\n";
   os << indent << "CreaseMethod: " << this->CreaseMethod << "\n";
-  os << indent << "Tolerance: " << this->Tolerance << "\n";
-  os << indent << "Solver: " << this->Solver << "\n";
   os << indent << "OutputRefinedSurface: " << this->OutputRefinedSurface << "\n";
   os << indent << "NumberOfSubdivisions: " << this->NumberOfSubdivisions << "\n";
-  os << indent << "Residual: " << this->Residual << "\n";
-  os << indent << "ConditionEstimate: " << this->ConditionEstimate << "\n";
-  os << indent << "NumberOfTaggedVertices: " << this->NumberOfTaggedVertices << "\n";
 }

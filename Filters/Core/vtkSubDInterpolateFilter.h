@@ -37,13 +37,13 @@
 #define vtkSubDInterpolateFilter_h
 
 #include "SubDFiltersModule.h" // for export macro
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkSubDInterpolationAlgorithm.h"
 
-class SUBDFILTERS_EXPORT vtkSubDInterpolateFilter : public vtkPolyDataAlgorithm
+class SUBDFILTERS_EXPORT vtkSubDInterpolateFilter : public vtkSubDInterpolationAlgorithm
 {
 public:
   static vtkSubDInterpolateFilter* New();
-  vtkTypeMacro(vtkSubDInterpolateFilter, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkSubDInterpolateFilter, vtkSubDInterpolationAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum Schemes
@@ -64,38 +64,12 @@ public:
   ///@}
 
   ///@{
-  /// The point-data array that tags the vertices to interpolate (non-zero: tagged; default
-  /// "Interpolate"). Without such an array every vertex is tagged.
-  vtkSetStringMacro(InterpolationArrayName);
-  vtkGetStringMacro(InterpolationArrayName);
-  ///@}
-
-  ///@{
   /// As vtkSubDSurfaceFilter: 0 none, 1 edge only (default), 2 edge and corner.
   vtkSetClampMacro(BoundaryRule, int, 0, 2);
   vtkGetMacro(BoundaryRule, int);
   /// As vtkSubDSurfaceFilter: 0 uniform (default), 1 Chaikin.
   vtkSetClampMacro(CreaseMethod, int, 0, 1);
   vtkGetMacro(CreaseMethod, int);
-  ///@}
-
-  enum Solvers
-  {
-    SOLVER_AUTOMATIC = 0, ///< direct up to 20000 points, iterative above
-    SOLVER_DIRECT = 1,    ///< Eigen's SparseLU (COLAMD ordering)
-    SOLVER_ITERATIVE = 2  ///< Eigen's BiCGSTAB with a diagonal preconditioner
-  };
-  ///@{
-  /// The linear solver (default SOLVER_AUTOMATIC; SubDInterpolation.h explains the choice).
-  vtkSetClampMacro(Solver, int, SOLVER_AUTOMATIC, SOLVER_ITERATIVE);
-  vtkGetMacro(Solver, int);
-  ///@}
-
-  ///@{
-  /// Largest residual accepted, relative to the targets' extent (max |coordinate|, at least
-  /// 1); default 1e-9, 0..1.
-  vtkSetClampMacro(Tolerance, double, 0.0, 1.0);
-  vtkGetMacro(Tolerance, double);
   ///@}
 
   ///@{
@@ -108,33 +82,17 @@ public:
   vtkGetMacro(NumberOfSubdivisions, int);
   ///@}
 
-  /// After an update: the residual max |M x - t| of the last solve, and the number of
-  /// tagged vertices.
-  vtkGetMacro(Residual, double);
-  /// After an update: a lower bound of the system's condition number (SubDInterpolation.h);
-  /// above 1e10 the solve is refused as singular.
-  vtkGetMacro(ConditionEstimate, double);
-  vtkGetMacro(NumberOfTaggedVertices, vtkIdType);
-
 protected:
-  vtkSubDInterpolateFilter();
-  ~vtkSubDInterpolateFilter() override;
+  vtkSubDInterpolateFilter() = default;
+  ~vtkSubDInterpolateFilter() override = default;
 
-  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /// RequestData's work; RequestData runs it and turns running out of memory into an error.
-  int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Scheme = CATMULL_CLARK;
-  char* InterpolationArrayName = nullptr;
   int BoundaryRule = 1;
   int CreaseMethod = 0;
-  double Tolerance = 1e-9;
-  int Solver = SOLVER_AUTOMATIC;
   bool OutputRefinedSurface = false;
   int NumberOfSubdivisions = 3;
-  double Residual = 0.0;
-  double ConditionEstimate = 0.0;
-  vtkIdType NumberOfTaggedVertices = 0;
 
 private:
   vtkSubDInterpolateFilter(const vtkSubDInterpolateFilter&) = delete;

@@ -346,7 +346,7 @@ TEST(InterpolateFilter, UntaggedVerticesKeepTheirPositions)
   filter->Update();
   vtkPolyData* cage = filter->GetOutput();
   ASSERT_EQ(cage->GetNumberOfPoints(), targets->GetNumberOfPoints());
-  EXPECT_EQ(filter->GetNumberOfTaggedVertices(), (targets->GetNumberOfPoints() + 2) / 3);
+  EXPECT_EQ(filter->GetNumberOfTaggedPoints(), (targets->GetNumberOfPoints() + 2) / 3);
   const std::vector<double> limit = PrimalLimitPoints(cage, vtkSubDLimitFilter::CATMULL_CLARK);
   bool moved = false;
   for (vtkIdType v = 0; v < targets->GetNumberOfPoints(); ++v)
