@@ -267,11 +267,13 @@ TEST(InterpolateFilter, DooSabinVFaceCentroidsPassThroughEveryVertex)
   }
 }
 
-// Open meshes and creases, checked by convergence instead of a closed form: Doo-Sabin maps
-// every face to a polygon with the same centroid that shrinks onto it, so the limit point of
-// a vertex lies on the surface that refinement approaches (O(h^2): 7 levels put the refined
-// faces within about 1e-4 of it). The distance from each target to the refined faces is
-// measured by VTK's cell locator.
+// Open meshes and creases, checked through refinement instead of a closed form. Doo-Sabin
+// maps every face to a polygon with the same centroid, and along boundaries and creases
+// Chaikin's rule keeps the midpoint of every edge; so a vertex's limit point is, at every
+// level, the centroid of a face (its V-face's descendant), the midpoint of a boundary or
+// crease edge, or (a pinned corner) a vertex. Two levels of vtkSubDDooSabinFilter make these
+// landmarks; each target must be one of them to round-off. The distance to 7 refined levels'
+// faces (VTK's cell locator) checks the same independently of those facts, more loosely.
 TEST(InterpolateFilter, DooSabinOnOpenAndCreasedMeshesPassesThroughTheTargets)
 {
   vtkSmartPointer<vtkPolyData> open = ToPolyData(subdtest::Grid(4, 3, false, false).Jitter(0.1));
@@ -313,9 +315,41 @@ TEST(InterpolateFilter, DooSabinOnOpenAndCreasedMeshesPassesThroughTheTargets)
       }
       return worst;
     };
+    auto largestMissOfLandmarks = [targets](vtkPolyData* cage) {
+      vtkNew<vtkSubDDooSabinFilter> refine;
+      refine->SetInputData(cage);
+      refine->SetNumberOfSubdivisions(2);
+      refine->Update();
+      vtkPolyData* refined = refine->GetOutput();
+      vtkNew<vtkPolyData> landmarks;
+      vtkNew<vtkPoints> points;
+      points->SetDataTypeToDouble();
+      for (vtkIdType c = 0; c < refined->GetNumberOfCells(); ++c)
+      {
+        vtkIdType n;
+        const vtkIdType* ids;
+        refined->GetCellPoints(c, n, ids);
+        double centroid[3] = { 0, 0, 0 };
+        for (vtkIdType k = 0; k < n; ++k)
+        {
+          double a[3], b[3];
+          refined->GetPoint(ids[k], a);
+          refined->GetPoint(ids[(k + 1) % n], b);
+          points->InsertNextPoint(a);
+          points->InsertNextPoint((a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2);
+          for (int d = 0; d < 3; ++d)
+            centroid[d] += a[d] / n;
+        }
+        points->InsertNextPoint(centroid);
+      }
+      landmarks->SetPoints(points);
+      return subdtest::LargestDistanceToNearestPoint(targets, landmarks);
+    };
     auto cage = Solve(targets, vtkSubDInterpolateFilter::DOO_SABIN);
+    EXPECT_LT(largestMissOfLandmarks(cage), 1e-9);
     EXPECT_LT(largestDistance(cage), 1e-3);
     EXPECT_GT(largestDistance(targets), 1e-2); // the unsolved cage misses them
+    EXPECT_GT(largestMissOfLandmarks(targets), 1e-3);
   }
 
   // With a dart (the semi-sharp crease of CreasedGrid ends inside), Doo-Sabin has no limit
