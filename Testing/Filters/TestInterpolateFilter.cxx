@@ -16,6 +16,7 @@
 #include "vtkDoubleArray.h"
 #include "vtkFloatArray.h"
 #include "vtkIntArray.h"
+#include "vtkMath.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
@@ -363,6 +364,34 @@ TEST(InterpolateFilter, DooSabinOnOpenAndCreasedMeshesPassesThroughTheTargets)
   EXPECT_NE(messages.Errors.find("The doo-sabin scheme has no limit points for this cage: vertex 8 (a dart"),
     std::string::npos)
     << messages.Errors;
+}
+
+// Scale: a 100k-vertex cage takes the automatic choice's iterative path (BiCGSTAB). Its limit
+// points, by the Catmull-Clark filter's ProjectToLimit (OpenSubdiv's masks), are the targets.
+TEST(InterpolateFilter, AHundredThousandVertexCageSolves)
+{
+  auto targets = ToPolyData(subdtest::Grid(316, 316, false, false).Jitter(0.2));
+  ASSERT_GT(targets->GetNumberOfPoints(), 100000);
+  vtkNew<vtkSubDInterpolateFilter> filter;
+  filter->SetInputData(targets);
+  filter->Update();
+  ASSERT_EQ(filter->GetErrorCode(), 0UL);
+  EXPECT_EQ(filter->GetNumberOfTaggedPoints(), targets->GetNumberOfPoints());
+  EXPECT_LT(filter->GetConditionEstimate(), 100.0);
+  vtkNew<vtkSubDCatmullClarkFilter> limit;
+  limit->SetInputConnection(filter->GetOutputPort());
+  limit->SetNumberOfSubdivisions(0);
+  limit->ProjectToLimitOn();
+  limit->Update();
+  double worst = 0.0;
+  for (vtkIdType v = 0; v < targets->GetNumberOfPoints(); ++v)
+  {
+    double a[3], b[3];
+    targets->GetPoint(v, a);
+    limit->GetOutput()->GetPoint(v, b);
+    worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(a, b)));
+  }
+  EXPECT_LT(worst, 1e-9);
 }
 
 TEST(InterpolateFilter, UntaggedVerticesKeepTheirPositions)
