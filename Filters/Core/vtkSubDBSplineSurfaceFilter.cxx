@@ -4,6 +4,7 @@
 #include "SubDQuadGrid.h"
 #include "vtkSubDInputFaces.h"
 #include "vtkSubDInterpolationSupport.h"
+#include "vtkSubDMemoryBudget.h"
 #include "vtkSubDOutOfMemory.h"
 
 #include "vtkCellArray.h"
@@ -37,13 +38,13 @@ struct CarriedArrays
   std::vector<vtkDataArray*> Arrays;
   int Components = 3; // x y z, then each array's components
 
-  CarriedArrays(vtkPointData* pointData, vtkDataArray* skip)
+  CarriedArrays(vtkPointData* pointData, vtkIdType numPoints, vtkDataArray* skip)
   {
     for (int a = 0; a < pointData->GetNumberOfArrays(); ++a)
     {
       vtkDataArray* array = pointData->GetArray(a);
       if (!array || array == skip || !array->GetName() || vtkIdTypeArray::SafeDownCast(array) ||
-        std::string(array->GetName()) == "vtkGhostType")
+        std::string(array->GetName()) == "vtkGhostType" || array->GetNumberOfTuples() != numPoints)
       {
         continue;
       }
@@ -251,8 +252,40 @@ int vtkSubDBSplineSurfaceFilter::Execute(
         "\" and no texture coordinates: scattered points need (u, v) parameters");
     }
   }
-  const CarriedArrays carried(input->GetPointData(), parameters);
+  if (parameters && parameters->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    return fail("the parameter array has " + std::to_string(parameters->GetNumberOfTuples()) + " tuples for " +
+      std::to_string(input->GetNumberOfPoints()) + " points");
+  }
+  const CarriedArrays carried(input->GetPointData(), input->GetNumberOfPoints(), parameters);
   const size_t K = static_cast<size_t>(carried.Components);
+  // Size guard before anything large exists: the fit's banded normal matrix (49 doubles per
+  // control point), the net and the evaluated surface.
+  {
+    double D = this->NumberOfControlPoints[0], E = this->NumberOfControlPoints[1];
+    if (this->Mode == MODE_INTERPOLATE_GRID)
+    {
+      D = E = std::sqrt(static_cast<double>(input->GetNumberOfPoints())) + 2; // a P x Q grid has P Q points
+      if (auto* structured = vtkStructuredGrid::SafeDownCast(input))
+      {
+        int dims[3];
+        structured->GetDimensions(dims);
+        std::sort(dims, dims + 3);
+        D = dims[1] + 2.0;
+        E = dims[2] + 2.0;
+      }
+    }
+    const double samples = ((D - 3) * this->SamplesPerSpan + 1) * ((E - 3) * this->SamplesPerSpan + 1);
+    const double bytes = 8.0 * (D * E * (49.0 + K) + samples * (K + 3.0));
+    const double budget = vtkSubDDefaultMemoryBudget() * 1024.0 * 1024.0;
+    if (bytes > budget)
+    {
+      return fail("refusing: about " + std::to_string(static_cast<long long>(samples)) +
+        " surface samples and a net of " + std::to_string(static_cast<long long>(D * E)) + " points need " +
+        std::to_string(static_cast<long long>(bytes / (1024.0 * 1024.0))) +
+        " MiB, above half the physical memory; lower SamplesPerSpan or NumberOfControlPoints");
+    }
+  }
   std::vector<double> control;
   subd::Index D = 0, E = 0;
   std::string error;

@@ -13,18 +13,21 @@
  * Method (SubDInterpolation.h; Halstead, Kass, DeRose, "Efficient, fair interpolation using
  * Catmull-Clark surfaces", SIGGRAPH 1993): each limit point is a sparse linear combination of
  * the cage points, its limit mask; the masks of the tagged vertices and identity rows for the
- * others form a square sparse system M x = t, solved for the three coordinates at once with
- * Eigen's SparseLU (COLAMD ordering: M is not symmetric; a direct solver is exact to round-off
- * and reports a singular system instead of stopping short). The masks are exact for
- * Catmull-Clark and Loop, semi-sharp creases included (the limit evaluator of
- * vtkSubDLimitFilter); for Doo-Sabin a semi-sharp feature counts as sharp. Sharp features are
+ * others form a square sparse system M x = t, solved for the three coordinates at once
+ * (Solver: Eigen's SparseLU with a COLAMD ordering up to 20000 points - M is not symmetric -,
+ * BiCGSTAB with a Jacobi preconditioner above; limit-mask matrices are well conditioned). The
+ * masks are the schemes' closed forms, and for Catmull-Clark and Loop the exact limit
+ * evaluator of vtkSubDLimitFilter next to semi-sharp creases; for Doo-Sabin a semi-sharp
+ * feature counts as sharp. Sharp features are
  * read as vtkSubDSurfaceFilter reads them ("Sharpness", "CornerSharpness", "Hole"), with the
  * same BoundaryRule and CreaseMethod.
  *
- * After solving, the residual max |M x - t| is checked against Tolerance times the targets'
- * extent and reported (GetResidual). A tagged vertex without a limit point (only on holes, a
- * Doo-Sabin dart), a singular system or one whose residual exceeds the tolerance is an error
- * naming the cause, with an empty output - never a silent wrong cage.
+ * The condition number is estimated (GetConditionEstimate) and the residual max |M x - t|
+ * checked against Tolerance times the targets' extent (GetResidual). A tagged vertex without
+ * a limit point (only on holes, a Doo-Sabin dart), a singular system (a closed cube's
+ * Catmull-Clark masks are singular, even for targets that happen to be consistent: many cages
+ * would do) or one whose residual exceeds the tolerance is an error naming the cause, with an
+ * empty output - never a silent wrong or arbitrary cage.
  *
  * The output is the new cage (the input's cells and point, cell and field data with the
  * solved points, in double precision); feed it to the scheme's filter to see the

@@ -440,6 +440,14 @@ TEST(BSplineSurfaceFilter, ScatteredInputErrorsAndTextureCoordinates)
   filter->Update();
   EXPECT_NE(messages.Errors.find("Sample 17 has parameters (1.5,"), std::string::npos) << messages.Errors;
 
+  // Far too large a request is refused before anything is allocated.
+  samples->GetPointData()->GetTCoords()->SetComponent(17, 0, 0.5);
+  filter->SetNumberOfControlPoints(4096, 4096);
+  filter->SetSamplesPerSpan(256);
+  filter->Update();
+  EXPECT_NE(messages.Errors.find("above half the physical memory"), std::string::npos) << messages.Errors;
+  EXPECT_EQ(filter->GetControlNet()->GetNumberOfPoints(), 0);
+
   samples->GetPointData()->Initialize();
   filter->Modified();
   filter->Update();
