@@ -19,6 +19,17 @@ vtkStandardNewMacro(vtkSubDOFFReader);
 
 namespace
 {
+// The first word of a line (as written: a count can be too large for any integer type).
+std::string FirstWord(const std::string& line)
+{
+  const auto begin = line.find_first_not_of(" \t\r");
+  if (begin == std::string::npos)
+  {
+    return std::string();
+  }
+  return line.substr(begin, line.find_first_of(" \t\r", begin) - begin);
+}
+
 // Splits the file into lines without comments or blank lines, remembering line numbers so
 // errors can point at the offending line.
 class OFFLines
@@ -220,12 +231,12 @@ bool vtkSubDOFFReader::ReadFile(std::istream& file, vtkPolyData* output)
     const double n = values[0];
     if (n < 1 || n != std::floor(n))
     {
-      return fail("face " + std::to_string(f) + " announces " + line.substr(0, line.find_first_of(" \t")) +
+      return fail("face " + std::to_string(f) + " announces " + FirstWord(line) +
         " vertices; a face lists a whole number of them, at least one.");
     }
     if (static_cast<double>(values.size()) < n + 1)
     {
-      return fail("face " + std::to_string(f) + " announces " + std::to_string(static_cast<long long>(n)) +
+      return fail("face " + std::to_string(f) + " announces " + FirstWord(line) +
         " vertices but lists " + std::to_string(values.size() - 1) + ".");
     }
     for (vtkIdType k = 1; k <= static_cast<vtkIdType>(n); ++k)

@@ -133,6 +133,10 @@ TEST(OFF, BrokenFilesGiveClearErrors)
   EXPECT_NE(ReadErrors("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n").find("ends after 0 of 1 faces"), std::string::npos);
   EXPECT_NE(ReadErrors("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n").find("uses vertex 7"), std::string::npos);
   EXPECT_NE(ReadErrors("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n").find("announces 4"), std::string::npos);
+  // A face size beyond any integer type is reported as written (fuzzing found the cast).
+  EXPECT_NE(ReadErrors("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n  477777777777777777777 0 1 2\n")
+              .find("announces 477777777777777777777 vertices but lists 3"),
+    std::string::npos);
   EXPECT_NE(ReadErrors("OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n").find("line 4"), std::string::npos);
   EXPECT_NE(ReadErrors("OFF\n-3 1 0\n").find("invalid vertex or face count"), std::string::npos);
   EXPECT_NE(ReadErrors("NOFF\n3 1 0\n").find("not supported"), std::string::npos);
