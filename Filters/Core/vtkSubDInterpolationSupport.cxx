@@ -14,7 +14,7 @@ std::vector<char> vtkSubDReadInterpolationTags(vtkPolyData* input, const char* n
   const vtkIdType numPoints = input->GetNumberOfPoints();
   std::vector<char> tagged(static_cast<size_t>(numPoints), 1);
   vtkDataArray* tags = name ? input->GetPointData()->GetArray(name) : nullptr;
-  if (tags)
+  if (tags && tags->GetNumberOfTuples() == numPoints)
   {
     for (vtkIdType v = 0; v < numPoints; ++v)
     {

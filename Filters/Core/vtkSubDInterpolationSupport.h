@@ -11,7 +11,7 @@
 class vtkPolyData;
 
 // One flag per input point: the array `name`'s first component is non-zero; every point when
-// the input has no such array (or `name` is null).
+// the input has no such array of one tuple per point (or `name` is null).
 std::vector<char> vtkSubDReadInterpolationTags(vtkPolyData* input, const char* name);
 
 // The input (cells, point, cell and field data) with `coordinates` (3 per point) as its

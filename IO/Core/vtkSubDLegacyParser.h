@@ -71,8 +71,10 @@ private:
   vtkNew<vtkCellData> CellData;
   vtkDataSetAttributes* Attributes = nullptr; // the section being read (POINT_DATA/CELL_DATA)
   vtkIdType AttributeTuples = -1;
-  vtkAbstractArray* LastArray = nullptr; // METADATA blocks describe the array before them
-  std::multimap<std::string, vtkDataArray*> ScalarsByTable;
+  // Held, not borrowed: a later array of the same name replaces (and frees) one in the
+  // attributes, and cell arrays are temporaries.
+  vtkSmartPointer<vtkAbstractArray> LastArray; // METADATA blocks describe the array before them
+  std::multimap<std::string, vtkSmartPointer<vtkDataArray>> ScalarsByTable;
 };
 }
 

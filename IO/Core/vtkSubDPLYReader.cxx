@@ -27,6 +27,11 @@ vtkStandardNewMacro(vtkSubDPLYReader);
 
 namespace
 {
+bool IsFaceIndexList(const std::string& name)
+{
+  return name == "vertex_indices" || name == "vertex_index";
+}
+
 struct PLYProperty
 {
   std::string Name;
@@ -241,8 +246,7 @@ bool PLYParser::ReadList(PLYElement& element, const PLYProperty& property, vtkId
     return this->Fail(element.Name + " " + std::to_string(index) + ": expected the length of list '" +
       property.Name + "'.");
   }
-  const bool faceIndices =
-    element.Name == "face" && (property.Name == "vertex_indices" || property.Name == "vertex_index");
+  const bool faceIndices = element.Name == "face" && IsFaceIndexList(property.Name);
   for (double k = 0; k < count; ++k)
   {
     double value = 0;
@@ -431,6 +435,17 @@ bool PLYParser::Parse(vtkPolyData* output)
         return this->Fail("the header must declare one vertex element with properties x, y and z.");
       }
       this->NumVertices = element.Count;
+    }
+    if (element.Name == "face" && element.Count > 0)
+    {
+      // Exactly one face index list: with none or two, faces would be lost or doubled.
+      const auto lists = std::count_if(element.Properties.begin(), element.Properties.end(),
+        [](const PLYProperty& p) { return p.CountType != 0 && IsFaceIndexList(p.Name); });
+      if (lists != 1)
+      {
+        return this->Fail("the face element must have one list property vertex_indices (or vertex_index); it has " +
+          std::to_string(lists) + ".");
+      }
     }
   }
   if (this->NumVertices < 0)

@@ -253,6 +253,23 @@ TEST(LegacyReader, ValuesMayCarryASignOrUnderflow)
   EXPECT_EQ(p[2], -2500.0);
 }
 
+// Arrays the parser refers to after they may be gone (both were use-after-free before the
+// parser held them; the sanitizer build checks): a lookup table naming an array that a later
+// array of the same name replaced, and METADATA after a cell section (a temporary array).
+TEST(LegacyReader, ReplacedAndTemporaryArraysAreNotReachedAfterTheyAreGone)
+{
+  vtkNew<vtkPolyData> mesh;
+  const std::string replaced = Square + "POINT_DATA 4\nSCALARS s float\nLOOKUP_TABLE t\n1 2 3 4\n"
+                                        "SCALARS s int\nLOOKUP_TABLE default\n5 6 7 8\n"
+                                        "LOOKUP_TABLE t 1\n0 0 0 1\n";
+  ASSERT_EQ(LegacyErrors(replaced, mesh), "");
+  ASSERT_NE(mesh->GetPointData()->GetArray("s"), nullptr);
+  EXPECT_EQ(mesh->GetPointData()->GetArray("s")->GetComponent(3, 0), 8); // the later one
+  const std::string afterCells = Square + "METADATA\nCOMPONENT_NAMES\nfirst\n\n";
+  EXPECT_EQ(LegacyErrors(afterCells, mesh), "");
+  EXPECT_EQ(mesh->GetNumberOfPolys(), 1);
+}
+
 TEST(LegacyReader, BrokenFilesNameTheirProblem)
 {
   struct Case

@@ -207,6 +207,11 @@ TEST(PLYReader, BrokenFilesNameTheirProblem)
       "value 1 is missing or not a number" },
     { header + "element face 1\nproperty list char int vertex_indices\nend_header\n0 0 0\n1 1 1\n-1 0\n",
       "length of list" },
+    { header + "element face 1\nproperty list uchar int corners\nend_header\n0 0 0\n1 1 1\n2 0 1\n",
+      "one list property vertex_indices (or vertex_index); it has 0" },
+    { header + "element face 1\nproperty list uchar int vertex_indices\nproperty list uchar int vertex_index\n"
+               "end_header\n0 0 0\n1 1 1\n2 0 1 2 0 1\n",
+      "it has 2" },
     { "ply\nformat binary_little_endian 1.0\nelement vertex 2\nproperty float x\nproperty float y\n"
       "property float z\nend_header\n" + std::string(23, '\0'),
       "near byte" },
