@@ -259,56 +259,39 @@ int vtkSubDBSplineSurfaceFilter::Execute(
   }
   const CarriedArrays carried(input->GetPointData(), input->GetNumberOfPoints(), parameters);
   const size_t K = static_cast<size_t>(carried.Components);
+  // The net's size: the grid's plus 2 (interpolation), or as asked (fit).
+  std::string error;
+  subd::QuadGrid grid;
+  if (this->Mode == MODE_INTERPOLATE_GRID && !ReadGrid(input, grid, error))
+  {
+    return fail(error);
+  }
+  const subd::Index D = this->Mode == MODE_INTERPOLATE_GRID ? grid.P + 2 : this->NumberOfControlPoints[0];
+  const subd::Index E = this->Mode == MODE_INTERPOLATE_GRID ? grid.Q + 2 : this->NumberOfControlPoints[1];
   // Size guard before anything large exists: the fit's banded normal matrix (49 doubles per
   // control point), the net and the evaluated surface.
+  const double numSamples =
+    (static_cast<double>(D - 3) * this->SamplesPerSpan + 1) * (static_cast<double>(E - 3) * this->SamplesPerSpan + 1);
+  const double bytes = 8.0 * (static_cast<double>(D) * E * (49.0 + K) + numSamples * (K + 3.0));
+  if (bytes > vtkSubDDefaultMemoryBudget() * 1024.0 * 1024.0)
   {
-    double D = this->NumberOfControlPoints[0], E = this->NumberOfControlPoints[1];
-    if (this->Mode == MODE_INTERPOLATE_GRID)
-    {
-      D = E = std::sqrt(static_cast<double>(input->GetNumberOfPoints())) + 2; // a P x Q grid has P Q points
-      if (auto* structured = vtkStructuredGrid::SafeDownCast(input))
-      {
-        int dims[3];
-        structured->GetDimensions(dims);
-        std::sort(dims, dims + 3);
-        D = dims[1] + 2.0;
-        E = dims[2] + 2.0;
-      }
-    }
-    const double samples = ((D - 3) * this->SamplesPerSpan + 1) * ((E - 3) * this->SamplesPerSpan + 1);
-    const double bytes = 8.0 * (D * E * (49.0 + K) + samples * (K + 3.0));
-    const double budget = vtkSubDDefaultMemoryBudget() * 1024.0 * 1024.0;
-    if (bytes > budget)
-    {
-      return fail("refusing: about " + std::to_string(static_cast<long long>(samples)) +
-        " surface samples and a net of " + std::to_string(static_cast<long long>(D * E)) + " points need " +
-        std::to_string(static_cast<long long>(bytes / (1024.0 * 1024.0))) +
-        " MiB, above half the physical memory; lower SamplesPerSpan or NumberOfControlPoints");
-    }
+    return fail("refusing: about " + std::to_string(static_cast<long long>(numSamples)) + " surface samples and a net of " +
+      std::to_string(static_cast<long long>(D) * E) + " points need " +
+      std::to_string(static_cast<long long>(bytes / (1024.0 * 1024.0))) +
+      " MiB, above half the physical memory; lower SamplesPerSpan or NumberOfControlPoints");
   }
   std::vector<double> control;
-  subd::Index D = 0, E = 0;
-  std::string error;
   if (this->Mode == MODE_INTERPOLATE_GRID)
   {
-    subd::QuadGrid grid;
-    if (!ReadGrid(input, grid, error))
-    {
-      return fail(error);
-    }
     std::vector<double> data(grid.Points.size() * K);
     for (size_t p = 0; p < grid.Points.size(); ++p)
     {
       carried.Gather(input, grid.Points[p], &data[p * K]);
     }
     subd::InterpolateGrid(grid.P, grid.Q, data, carried.Components, control);
-    D = grid.P + 2;
-    E = grid.Q + 2;
   }
   else
   {
-    D = this->NumberOfControlPoints[0];
-    E = this->NumberOfControlPoints[1];
     const vtkIdType n = input->GetNumberOfPoints();
     std::vector<double> uv(static_cast<size_t>(n) * 2), values(static_cast<size_t>(n) * K);
     for (vtkIdType p = 0; p < n; ++p)

@@ -82,11 +82,7 @@ int vtkSubDInterpolateFilter::Execute(
   vtkIdType offSurface = 0;
   for (vtkIdType v = 0; v < numPoints; ++v)
   {
-    bool onSurface = false;
-    for (subd::Index f : cage.Level.Topology.GetVertexFaces(static_cast<subd::Index>(v)))
-    {
-      onSurface = onSurface || !cage.Level.FaceIsHole[f];
-    }
+    const bool onSurface = subd::IsOnLimitSurface(cage.Level, static_cast<subd::Index>(v));
     offSurface += tagged[v] && !onSurface ? 1 : 0;
     tagged[v] = tagged[v] && onSurface;
   }

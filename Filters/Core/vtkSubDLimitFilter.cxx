@@ -4,6 +4,7 @@
 #include "SubDMeshValidation.h"
 #include "SubDScheme.h"
 #include "vtkSubDCage.h"
+#include "vtkSubDInterpolationSupport.h"
 #include "vtkSubDInputFaces.h"
 #include "vtkSubDLimitGeometry.h"
 #include "vtkSubDOutOfMemory.h"
@@ -86,8 +87,7 @@ int vtkSubDLimitFilter::Execute(
     static_cast<subd::CreaseMethod>(this->CreaseMethod), cage, error, warning);
   if (!warning.empty())
   {
-    warning[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(warning[0])));
-    vtkWarningMacro(<< warning << ".");
+    vtkWarningMacro(<< vtkSubDSentence(warning));
   }
   if (!read)
   {

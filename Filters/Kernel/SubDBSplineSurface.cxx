@@ -1,5 +1,7 @@
 #include "SubDBSplineSurface.h"
 
+#include "SubDPatchBasis.h"
+
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 
@@ -9,22 +11,6 @@
 
 namespace subd
 {
-void UniformCubicBasis(double x, double values[4], double* derivatives)
-{
-  const double y = 1.0 - x, x2 = x * x, x3 = x2 * x;
-  values[0] = y * y * y / 6.0;
-  values[1] = (3.0 * x3 - 6.0 * x2 + 4.0) / 6.0;
-  values[2] = (-3.0 * x3 + 3.0 * x2 + 3.0 * x + 1.0) / 6.0;
-  values[3] = x3 / 6.0;
-  if (derivatives)
-  {
-    derivatives[0] = -0.5 * y * y;
-    derivatives[1] = 0.5 * (3.0 * x2 - 4.0 * x);
-    derivatives[2] = 0.5 * (-3.0 * x2 + 2.0 * x + 1.0);
-    derivatives[3] = 0.5 * x2;
-  }
-}
-
 namespace
 {
 // One line of data (n points, `stride` values apart) to its n + 2 control points: natural
@@ -85,7 +71,7 @@ void InterpolateGrid(Index P, Index Q, const std::vector<double>& data, int comp
       InterpolateLine(&data[(static_cast<size_t>(j) * P) * K + k], K, P, factorsP, &rows[(static_cast<size_t>(j) * D) * K + k], K);
     }
   }
-  net.assign(static_cast<size_t>(D) * E * K, 0.0);
+  net.resize(static_cast<size_t>(D) * E * K); // every entry is written below
   for (Index i = 0; i < D; ++i)
   {
     for (size_t k = 0; k < K; ++k)
@@ -110,22 +96,18 @@ Index SpanOf(double s, Index spans, double& local)
 void EvaluateBicubic(const std::vector<double>& net, Index D, Index E, int components, double s, double t,
   double* value, double* ds, double* dt)
 {
-  double x, y, bu[4], bv[4], du[4], dv[4];
+  double x, y, basis[NumPatchDerivatives][16];
   const Index k = SpanOf(s, D - 3, x), l = SpanOf(t, E - 3, y);
-  UniformCubicBasis(x, bu, du);
-  UniformCubicBasis(y, bv, dv);
+  EvaluatePatchBasis(PatchKind::BSpline, x, y, basis); // basis[d][4 n + m]: control (k + m, l + n)
   for (int c = 0; c < components; ++c)
   {
     double v = 0.0, vs = 0.0, vt = 0.0;
-    for (int n = 0; n < 4; ++n)
+    for (int a = 0; a < 16; ++a)
     {
-      for (int m = 0; m < 4; ++m)
-      {
-        const double p = net[(static_cast<size_t>(l + n) * D + (k + m)) * components + c];
-        v += bu[m] * bv[n] * p;
-        vs += du[m] * bv[n] * p;
-        vt += bu[m] * dv[n] * p;
-      }
+      const double p = net[(static_cast<size_t>(l + a / 4) * D + (k + a % 4)) * components + c];
+      v += basis[PatchValue][a] * p;
+      vs += basis[PatchDu][a] * p;
+      vt += basis[PatchDv][a] * p;
     }
     value[c] = v;
     if (ds)
@@ -191,18 +173,18 @@ bool FitBicubic(Index D, Index E, const std::vector<double>& uv, const std::vect
       error = text;
       return false;
     }
-    double x, y, bu[4], bv[4];
+    double x, y, basis[NumPatchDerivatives][16];
     const Index k = SpanOf(u * (D - 3), D - 3, x), l = SpanOf(v * (E - 3), E - 3, y);
     spanUsed[static_cast<size_t>(l) * (D - 3) + k] = 1;
-    UniformCubicBasis(x, bu);
-    UniformCubicBasis(y, bv);
+    EvaluatePatchBasis(PatchKind::BSpline, x, y, basis);
+    const double* w = basis[PatchValue];
     for (int a = 0; a < 16; ++a)
     {
-      const double wa = bu[a % 4] * bv[a / 4];
+      const double wa = w[a];
       const Index ia = k + a % 4, ja = l + a / 4;
       for (int b = 0; b < 16; ++b)
       {
-        normal.Add(ia, ja, k + b % 4, l + b / 4, wa * bu[b % 4] * bv[b / 4]);
+        normal.Add(ia, ja, k + b % 4, l + b / 4, wa * w[b]);
       }
       for (size_t c = 0; c < K; ++c)
       {

@@ -5,7 +5,8 @@
 // A net of D x E control points c_{i,j} (point (i, j) at index i + j D) defines the surface
 //     S(s, t) = sum_{m,n=0..3} B_m(s - k) B_n(t - l) c_{k+m, l+n},  k = floor(s), l = floor(t),
 // over s in [0, D - 3], t in [0, E - 3], with the uniform cubic B-spline basis
-//     B_0 = (1 - x)^3 / 6,  B_1 = (3x^3 - 6x^2 + 4) / 6,  B_2 = (-3x^3 + 3x^2 + 3x + 1) / 6,  B_3 = x^3 / 6.
+//     B_0 = (1 - x)^3 / 6,  B_1 = (3x^3 - 6x^2 + 4) / 6,  B_2 = (-3x^3 + 3x^2 + 3x + 1) / 6,  B_3 = x^3 / 6
+// (the regular Catmull-Clark patch's basis, SubDPatchBasis.h, which evaluates it).
 // At integer parameters (the knots) a span's point is (c_{k} + 4 c_{k+1} + c_{k+2}) / 6 per
 // direction, the regular Catmull-Clark limit mask.
 //
@@ -21,9 +22,6 @@
 
 namespace subd
 {
-/// The four basis values at x in [0, 1] (and, if `derivatives` is not null, their derivatives).
-SUBDKERNEL_EXPORT void UniformCubicBasis(double x, double values[4], double* derivatives = nullptr);
-
 /// The control net (P+2) x (Q+2) of the bicubic B-spline that interpolates a P x Q grid of
 /// points (data (i, j) at index i + j P) at its knots: S(i, j) = data(i, j). The end
 /// conditions are natural (zero second derivative across the border: c_0 - 2 c_1 + c_2 = 0),

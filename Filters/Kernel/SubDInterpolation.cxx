@@ -14,7 +14,6 @@
 #include <cstdio>
 #include <cstring>
 #include <functional>
-#include <map>
 
 namespace subd
 {
@@ -74,8 +73,7 @@ void RowsFromLimitEvaluator(const Scheme& scheme, const Level& level, const std:
   }
 }
 
-// Rows from the scheme's limit stencils, whose entries may name earlier rows: expanded
-// into weights over the level's points.
+// Rows from the scheme's limit stencils (entries naming earlier rows expanded by AddRow).
 bool RowsFromLimitStencils(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows, std::string& error)
 {
   StencilTable stencils;
@@ -83,35 +81,13 @@ bool RowsFromLimitStencils(const Scheme& scheme, const Level& level, std::vector
   {
     return false;
   }
-  const Index numParents = stencils.GetNumParents();
-  std::vector<SparseRow> expanded(static_cast<size_t>(stencils.GetNumRows()));
-  for (Index r = 0; r < stencils.GetNumRows(); ++r)
-  {
-    std::map<Index, double> row;
-    const IndexSpan sources = stencils.GetSources(r);
-    const double* weights = stencils.GetWeights(r);
-    for (Index k = 0; k < sources.size(); ++k)
-    {
-      if (sources[k] < numParents)
-      {
-        row[sources[k]] += weights[k];
-        continue;
-      }
-      const SparseRow& earlier = expanded[sources[k] - numParents];
-      for (size_t j = 0; j < earlier.Points.size(); ++j)
-      {
-        row[earlier.Points[j]] += weights[k] * earlier.Weights[j];
-      }
-    }
-    for (const auto& [point, weight] : row)
-    {
-      expanded[r].Points.push_back(point);
-      expanded[r].Weights.push_back(weight);
-    }
-  }
+  StencilRows row;
   for (Index v = 0; v < level.Topology.GetNumVertices() && v < stencils.GetNumRows(); ++v)
   {
-    rows[v] = std::move(expanded[v]);
+    row.Clear();
+    row.AddRow(stencils, v, 1.0);
+    rows[v].Points.assign(row.Sources.begin(), row.Sources.end());
+    rows[v].Weights.assign(row.Weights.begin(), row.Weights.end());
   }
   return true;
 }
@@ -131,6 +107,12 @@ bool TouchesSemiSharpFeature(const Level& level, Index v)
   const IndexSpan edges = level.Topology.GetVertexEdges(v);
   return std::any_of(edges.begin(), edges.end(), [&](Index e) { return IsSemiSharp(level.EdgeSharpness[e]); });
 }
+}
+
+bool IsOnLimitSurface(const Level& level, Index v)
+{
+  const IndexSpan faces = level.Topology.GetVertexFaces(v);
+  return std::any_of(faces.begin(), faces.end(), [&](Index f) { return !level.FaceIsHole[f]; });
 }
 
 bool BuildVertexLimitRows(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
@@ -163,12 +145,10 @@ bool BuildVertexLimitRows(const Scheme& scheme, const Level& level, std::vector<
   // A vertex whose faces are all holes (or that has none) is not on the limit surface.
   for (Index v = 0; v < numVertices; ++v)
   {
-    const IndexSpan faces = level.Topology.GetVertexFaces(v);
-    const bool onSurface = std::any_of(faces.begin(), faces.end(), [&](Index f) { return !level.FaceIsHole[f]; });
-    if (!onSurface)
+    if (!IsOnLimitSurface(level, v))
     {
       rows[v] = SparseRow();
-      problems[v] = faces.size() == 0 ? "it is on no face" : "it is only on holes";
+      problems[v] = level.Topology.GetVertexFaces(v).empty() ? "it is on no face" : "it is only on holes";
     }
   }
   return true;
@@ -210,8 +190,9 @@ bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<ch
     rhs.row(v) << targets[3 * v], targets[3 * v + 1], targets[3 * v + 2];
   }
 
-  // solve(b, x): false when the solver failed on b.
-  std::function<bool(const Eigen::MatrixXd&, Eigen::MatrixXd&)> solve;
+  // solve(b, guess, x): false when the solver failed on b. The iterative solver starts from
+  // `guess` when there is one (the targets: a cage is near its limit surface).
+  std::function<bool(const Eigen::MatrixXd&, const Eigen::MatrixXd*, Eigen::MatrixXd&)> solve;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> direct;
   Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::DiagonalPreconditioner<double>> iterative;
   report.Iterative = method == InterpolationSolver::Iterative ||
@@ -225,7 +206,7 @@ bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<ch
         "): no cage of this topology has these limit points; tag fewer vertices";
       return false;
     }
-    solve = [&](const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
+    solve = [&](const Eigen::MatrixXd& b, const Eigen::MatrixXd*, Eigen::MatrixXd& x) {
       x = direct.solve(b);
       return true;
     };
@@ -235,13 +216,14 @@ bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<ch
     iterative.setTolerance(1e-14);
     iterative.setMaxIterations(1000);
     iterative.compute(matrix);
-    solve = [&](const Eigen::MatrixXd& b, Eigen::MatrixXd& x) {
+    solve = [&](const Eigen::MatrixXd& b, const Eigen::MatrixXd* guess, Eigen::MatrixXd& x) {
       x.resize(b.rows(), b.cols());
       for (Eigen::Index c = 0; c < b.cols(); ++c)
       {
-        // The targets are a good first guess: a cage is near its limit surface.
-        const Eigen::VectorXd guess = b.cols() == rhs.cols() ? Eigen::VectorXd(rhs.col(c)) : Eigen::VectorXd::Zero(b.rows());
-        x.col(c) = iterative.solveWithGuess(b.col(c), guess);
+        if (guess)
+          x.col(c) = iterative.solveWithGuess(b.col(c), guess->col(c));
+        else
+          x.col(c) = iterative.solve(b.col(c));
         report.Iterations = std::max(report.Iterations, static_cast<int>(iterative.iterations()));
         if (iterative.info() != Eigen::Success)
         {
@@ -265,7 +247,7 @@ bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<ch
     probe(v, 0) = static_cast<double>(state >> 11) * 0x1.0p-52 - 1.0; // in [-1, 1)
   }
   Eigen::MatrixXd response;
-  const bool probed = solve(probe, response);
+  const bool probed = solve(probe, nullptr, response);
   double matrixNorm = 0.0;
   for (Index v = 0; v < n; ++v)
   {
@@ -286,7 +268,7 @@ bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<ch
     return false;
   }
   Eigen::MatrixXd solution;
-  const bool solved = solve(rhs, solution);
+  const bool solved = solve(rhs, &rhs, solution);
   const double residual = solved && solution.allFinite() ? (matrix * solution - rhs).cwiseAbs().maxCoeff() : HUGE_VAL;
   const double extent = std::max(1.0, rhs.cwiseAbs().maxCoeff());
   report.Residual = residual;

@@ -47,6 +47,9 @@ struct SparseRow
 SUBDKERNEL_EXPORT bool BuildVertexLimitRows(const Scheme& scheme, const Level& level, std::vector<SparseRow>& rows,
   std::vector<std::string>& problems, std::string& error);
 
+/// Whether vertex v is on the limit surface: some face of v is not a hole.
+SUBDKERNEL_EXPORT bool IsOnLimitSurface(const Level& level, Index v);
+
 struct InterpolationReport
 {
   Index NumTagged = 0;   ///< rows that are limit masks

@@ -330,3 +330,19 @@ TEST(CurveInterpolateFilter, NoLinesIsAnError)
   EXPECT_NE(filter->GetErrorCode(), 0UL);
   EXPECT_NE(messages.Errors.find("no lines"), std::string::npos) << messages.Errors;
 }
+
+// A tag array without one value per point cannot say which points are meant: it is ignored
+// (every point tagged), never read past its end.
+TEST(CurveInterpolateFilter, ATagArrayOfTheWrongLengthIsIgnored)
+{
+  vtkSmartPointer<vtkPolyData> input = WavyPolyline(9, true);
+  vtkNew<vtkIntArray> tags;
+  tags->SetName("Interpolate");
+  tags->InsertNextValue(0);
+  input->GetPointData()->AddArray(tags);
+  vtkNew<vtkSubDCurveInterpolateFilter> filter;
+  filter->SetInputData(input);
+  filter->Update();
+  ASSERT_EQ(filter->GetErrorCode(), 0UL);
+  EXPECT_EQ(filter->GetNumberOfTaggedPoints(), 9);
+}
