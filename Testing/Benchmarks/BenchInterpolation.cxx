@@ -2,8 +2,9 @@
 // `minVertices` vertices (Loop: linear levels, triangles stay triangles; Catmull-Clark:
 // Catmull-Clark levels, which make the all-quad cages that scheme is used with); the Catmull-Clark (quads) or Loop (triangles)
 // cage whose limit passes through all of them is then solved. No peer offers this, so the
-// program prints absolute figures: time, peak memory (RSS of a child process that only reads
-// the mesh and solves), matrix size, residual and condition estimate.
+// program prints absolute figures: time, peak memory (RSS of the child process that solves; it
+// is forked after the refinement, so this includes the refined mesh), residual and condition
+// estimate.
 //
 //   BenchInterpolation mesh.off [catmull-clark|loop] [minVertices=100000] [repeats=3]
 #include "SubDBenchSupport.h"
@@ -62,13 +63,13 @@ int main(int argc, char* argv[])
       solve->Update();
       subdbench::Work work;
       work.Seconds = subdbench::SecondsSince(start);
-      work.Faces = solve->GetErrorCode() == 0 ? solve->GetResidual() : -1.0; // the residual rides along
-      work.OutputBytes = solve->GetConditionEstimate();
+      work.Extra[0] = solve->GetErrorCode() == 0 ? solve->GetResidual() : -1.0;
+      work.Extra[1] = solve->GetConditionEstimate();
       return work;
     },
     repeats);
-  residual = result.Faces;
-  condition = result.OutputBytes;
+  residual = result.Extra[0];
+  condition = result.Extra[1];
   if (residual < 0)
   {
     std::fprintf(stderr, "bench: the solve failed\n");

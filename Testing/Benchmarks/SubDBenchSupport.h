@@ -35,6 +35,7 @@ struct Work
   double Seconds = 0;
   double Faces = 0;
   double OutputBytes = 0;
+  double Extra[2] = { 0, 0 }; ///< anything else a benchmark reports (its meaning is the benchmark's)
 };
 
 struct Result
@@ -42,6 +43,7 @@ struct Result
   double Seconds = 0;
   double Faces = 0;
   double OutputBytes = 0;
+  double Extra[2] = { 0, 0 };
   double PeakMiB = 0;
 };
 
@@ -67,13 +69,13 @@ inline Result Measure(const std::function<Work()>& work, int repeats)
     {
       close(pipeFd[0]);
       const Work w = work();
-      const double message[3] = { w.Seconds, w.Faces, w.OutputBytes };
+      const double message[5] = { w.Seconds, w.Faces, w.OutputBytes, w.Extra[0], w.Extra[1] };
       if (write(pipeFd[1], message, sizeof(message)) != sizeof(message))
         _exit(1);
       _exit(0);
     }
     close(pipeFd[1]);
-    double message[3] = { 0, 0, 0 };
+    double message[5] = { 0, 0, 0, 0, 0 };
     const bool ok = read(pipeFd[0], message, sizeof(message)) == sizeof(message);
     close(pipeFd[0]);
     int status = 0;
@@ -89,6 +91,8 @@ inline Result Measure(const std::function<Work()>& work, int repeats)
       best.Seconds = message[0];
       best.Faces = message[1];
       best.OutputBytes = message[2];
+      best.Extra[0] = message[3];
+      best.Extra[1] = message[4];
       best.PeakMiB = usage.ru_maxrss / 1024.0;
     }
   }

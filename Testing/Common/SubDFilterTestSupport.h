@@ -15,6 +15,8 @@
 #include "vtkSmartPointer.h"
 
 #include <string>
+#include <cmath>
+#include <limits>
 #include <vector>
 
 namespace subdtest
@@ -97,6 +99,22 @@ inline double DistanceToNearestPoint(vtkPolyData* mesh, const double p[3])
   double distance;
   NearestPoint(Coordinates(mesh), p, distance);
   return distance;
+}
+
+// The largest coordinate difference between the i-th points of two point lists (3 values
+// each); infinite when they differ in length.
+inline double LargestPointwiseDifference(const std::vector<double>& a, const std::vector<double>& b)
+{
+  if (a.size() != b.size())
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  double worst = 0.0;
+  for (size_t k = 0; k < a.size(); ++k)
+  {
+    worst = std::max(worst, std::abs(a[k] - b[k]));
+  }
+  return worst;
 }
 
 // The largest max-norm distance from a point of `a` to its nearest point of `b`: 0 when

@@ -6,6 +6,7 @@
 #include "vtkSubDCatmullClarkFilter.h"
 
 #include "SubDFilterTestSupport.h"
+#include "SubDOutputChecks.h"
 
 #include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
@@ -221,6 +222,7 @@ TEST(BSplineSurfaceFilter, NaturalSplinesReproduceBilinearData)
     surface->GetPointData()->GetNormals()->GetTuple(p, n);
     const double length = std::sqrt(s * s + t * t + 1.0);
     EXPECT_NEAR(n[0], -t / length, 1e-12);
+    EXPECT_NEAR(n[1], -s / length, 1e-12);
     EXPECT_NEAR(n[2], 1.0 / length, 1e-12);
   }
 }
@@ -357,12 +359,7 @@ std::vector<double> AffineNet(int D, int E)
 
 void ExpectNetNear(vtkPolyData* net, const std::vector<double>& expected, double tolerance)
 {
-  const std::vector<double> got = Coordinates(net);
-  ASSERT_EQ(got.size(), expected.size());
-  double worst = 0.0;
-  for (size_t k = 0; k < got.size(); ++k)
-    worst = std::max(worst, std::abs(got[k] - expected[k]));
-  EXPECT_LT(worst, tolerance);
+  EXPECT_LT(subdtest::LargestPointwiseDifference(Coordinates(net), expected), tolerance);
 }
 }
 
@@ -411,9 +408,10 @@ TEST(BSplineSurfaceFilter, AHoleInTheDataNeedsTheShapeEquations)
     }
     else
     {
-      EXPECT_LT(filter->GetRmsError(), 1e-2); // close to the data where there is data
+      EXPECT_LT(filter->GetRmsError(), 2e-3); // measured 4.3e-4: the shape equations bias a twisted net a little
     }
-    EXPECT_TRUE(std::isfinite(Coordinates(filter->GetControlNet())[0]));
+    EXPECT_EQ(subdtest::OutputProblems(filter->GetControlNet()), "");
+    EXPECT_EQ(subdtest::OutputProblems(filter->GetSurface()), "");
   }
 }
 

@@ -148,7 +148,7 @@ vtkSmartPointer<vtkPolyData> Solve(vtkPolyData* targets, int scheme, int boundar
   filter->SetInputData(targets);
   filter->Update();
   EXPECT_EQ(messages.Errors, "");
-  EXPECT_LT(filter->GetResidual(), 1e-10);
+  EXPECT_LT(filter->GetResidual(), 1e-13);
   auto cage = vtkSmartPointer<vtkPolyData>::New();
   cage->DeepCopy(filter->GetOutput());
   return cage;
@@ -200,7 +200,7 @@ TEST(InterpolateFilter, CatmullClarkLimitPassesThroughEveryVertex)
     for (int solver : { vtkSubDInterpolateFilter::SOLVER_DIRECT, vtkSubDInterpolateFilter::SOLVER_ITERATIVE })
     {
       auto cage = Solve(targets, vtkSubDInterpolateFilter::CATMULL_CLARK, 1, solver);
-      ExpectPointsNear(PrimalLimitPoints(cage, vtkSubDLimitFilter::CATMULL_CLARK), targets, 1e-9,
+      ExpectPointsNear(PrimalLimitPoints(cage, vtkSubDLimitFilter::CATMULL_CLARK), targets, 1e-12,
         mesh.Name + (solver == vtkSubDInterpolateFilter::SOLVER_DIRECT ? " (SparseLU)" : " (BiCGSTAB)"));
     }
   }
@@ -232,14 +232,14 @@ TEST(InterpolateFilter, SingularSystemIsAClearError)
   filter->SetInputData(ToPolyData(subdtest::Grid(5, 4, false, false).Jitter(0.1)));
   filter->Update();
   EXPECT_GT(filter->GetConditionEstimate(), 1.0);
-  EXPECT_LT(filter->GetConditionEstimate(), 1e3);
+  EXPECT_LT(filter->GetConditionEstimate(), 20.0);
 }
 
 TEST(InterpolateFilter, CatmullClarkWithSharpAndSemiSharpCreases)
 {
   auto targets = CreasedGrid();
   auto cage = Solve(targets, vtkSubDInterpolateFilter::CATMULL_CLARK);
-  ExpectPointsNear(PrimalLimitPoints(cage, vtkSubDLimitFilter::CATMULL_CLARK), targets, 1e-9, "creased grid");
+  ExpectPointsNear(PrimalLimitPoints(cage, vtkSubDLimitFilter::CATMULL_CLARK), targets, 1e-12, "creased grid");
   // The creases matter: without them the same targets need another cage.
   targets->SetLines(nullptr);
   targets->GetCellData()->Initialize();
@@ -254,7 +254,7 @@ TEST(InterpolateFilter, LoopLimitPassesThroughEveryVertex)
   {
     auto targets = ToPolyData(mesh);
     auto cage = Solve(targets, vtkSubDInterpolateFilter::LOOP);
-    ExpectPointsNear(PrimalLimitPoints(cage, vtkSubDLimitFilter::LOOP), targets, 1e-9, mesh.Name);
+    ExpectPointsNear(PrimalLimitPoints(cage, vtkSubDLimitFilter::LOOP), targets, 1e-12, mesh.Name);
   }
 }
 
@@ -264,7 +264,7 @@ TEST(InterpolateFilter, DooSabinVFaceCentroidsPassThroughEveryVertex)
   {
     auto targets = ToPolyData(mesh);
     auto cage = Solve(targets, vtkSubDInterpolateFilter::DOO_SABIN);
-    ExpectPointsNear(DooSabinLimitPoints(cage), targets, 1e-9, mesh.Name);
+    ExpectPointsNear(DooSabinLimitPoints(cage), targets, 1e-12, mesh.Name);
   }
 }
 
@@ -347,7 +347,7 @@ TEST(InterpolateFilter, DooSabinOnOpenAndCreasedMeshesPassesThroughTheTargets)
       return subdtest::LargestDistanceToNearestPoint(targets, landmarks);
     };
     auto cage = Solve(targets, vtkSubDInterpolateFilter::DOO_SABIN);
-    EXPECT_LT(largestMissOfLandmarks(cage), 1e-9);
+    EXPECT_LT(largestMissOfLandmarks(cage), 1e-12);
     EXPECT_LT(largestDistance(cage), 1e-3);
     EXPECT_GT(largestDistance(targets), 1e-2); // the unsolved cage misses them
     EXPECT_GT(largestMissOfLandmarks(targets), 1e-3);
@@ -377,21 +377,13 @@ TEST(InterpolateFilter, AHundredThousandVertexCageSolves)
   filter->Update();
   ASSERT_EQ(filter->GetErrorCode(), 0UL);
   EXPECT_EQ(filter->GetNumberOfTaggedPoints(), targets->GetNumberOfPoints());
-  EXPECT_LT(filter->GetConditionEstimate(), 100.0);
+  EXPECT_LT(filter->GetConditionEstimate(), 20.0);
   vtkNew<vtkSubDCatmullClarkFilter> limit;
   limit->SetInputConnection(filter->GetOutputPort());
   limit->SetNumberOfSubdivisions(0);
   limit->ProjectToLimitOn();
   limit->Update();
-  double worst = 0.0;
-  for (vtkIdType v = 0; v < targets->GetNumberOfPoints(); ++v)
-  {
-    double a[3], b[3];
-    targets->GetPoint(v, a);
-    limit->GetOutput()->GetPoint(v, b);
-    worst = std::max(worst, std::sqrt(vtkMath::Distance2BetweenPoints(a, b)));
-  }
-  EXPECT_LT(worst, 1e-9);
+  EXPECT_LT(subdtest::LargestPointwiseDifference(subdtest::Coordinates(targets), subdtest::Coordinates(limit->GetOutput())), 1e-10);
 }
 
 TEST(InterpolateFilter, UntaggedVerticesKeepTheirPositions)
@@ -421,7 +413,7 @@ TEST(InterpolateFilter, UntaggedVerticesKeepTheirPositions)
     {
       if (v % 3 == 0)
       {
-        EXPECT_NEAR(limit[3 * v + d], t[d], 1e-9) << "tagged vertex " << v;
+        EXPECT_NEAR(limit[3 * v + d], t[d], 1e-12) << "tagged vertex " << v;
         moved = moved || c[d] != t[d];
       }
       else

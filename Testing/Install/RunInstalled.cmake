@@ -1,6 +1,7 @@
 # Installs SubD into a scratch prefix, builds Examples/Installed against it with
 # find_package(SubD), runs it, and imports the installed Python package.
-#   cmake -DBUILD=dir -DSOURCE=dir -DWORK=dir -DPYTHON=python3 [-DWITH_PYTHON=ON] -P RunInstalled.cmake
+#   cmake -DBUILD=dir -DSOURCE=dir -DWORK=dir -DGENERATOR=Ninja -DPYTHON=python3
+#         -DPYTHON_DESTINATION=lib/python3/dist-packages [-DWITH_PYTHON=ON] -P RunInstalled.cmake
 file(REMOVE_RECURSE "${WORK}")
 set(prefix "${WORK}/prefix")
 function(run)
@@ -16,7 +17,10 @@ if (NOT EXISTS "${prefix}/bin/subd")
   message(FATAL_ERROR "subd was not installed")
 endif ()
 run("${prefix}/bin/subd" --levels 1 -o "${WORK}/cube.vtp")
-run("${CMAKE_COMMAND}" -S "${SOURCE}/Examples/Installed" -B "${WORK}/build" -G Ninja
+if (NOT EXISTS "${WORK}/cube.vtp")
+  message(FATAL_ERROR "the installed subd wrote no cube.vtp")
+endif ()
+run("${CMAKE_COMMAND}" -S "${SOURCE}/Examples/Installed" -B "${WORK}/build" -G "${GENERATOR}"
   "-DCMAKE_PREFIX_PATH=${prefix}")
 run("${CMAKE_COMMAND}" --build "${WORK}/build")
 run("${WORK}/build/SmoothSphere")
@@ -24,7 +28,7 @@ if (NOT last_output MATCHES "Loop, 2 levels: 64 -> 1024 triangles, normals: yes"
   message(FATAL_ERROR "unexpected output from the installed example")
 endif ()
 if (WITH_PYTHON)
-  set(ENV{PYTHONPATH} "${prefix}/lib/python3/dist-packages")
+  set(ENV{PYTHONPATH} "${prefix}/${PYTHON_DESTINATION}")
   file(WRITE "${WORK}/check.py"
     "import subd\nf = subd.vtkSubDCatmullClarkFilter()\nprint(f.GetClassName(), 'Catmull' in f.__doc__)\n")
   run("${PYTHON}" "${WORK}/check.py")
