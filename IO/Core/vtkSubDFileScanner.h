@@ -105,14 +105,22 @@ public:
     const char* first = this->Bytes.data() + this->Position;
     const char* last = this->Bytes.data() + this->Bytes.size();
     const char* wordEnd = std::find_if(first, last, IsSpace);
-    const char* digits = (first != wordEnd && *first == '+') ? first + 1 : first; // from_chars refuses '+'
-    ParseResult result = Parse(digits, wordEnd, value);
-    if (result.ptr != wordEnd || result.ec != std::errc() || digits == wordEnd)
+    if (!ParseWord(first, wordEnd, value))
     {
       return false;
     }
     this->Position = static_cast<size_t>(wordEnd - this->Bytes.data());
     return true;
+  }
+
+  /// Parses the whole word [first, last) as a number of type T, as NextNumber does, whatever
+  /// the C locale (readers that tokenise on their own use it too).
+  template <typename T>
+  static bool ParseWord(const char* first, const char* last, T& value)
+  {
+    const char* digits = (first != last && *first == '+') ? first + 1 : first; // from_chars refuses '+'
+    const ParseResult result = Parse(digits, last, value);
+    return digits != last && result.ptr == last && result.ec == std::errc();
   }
 
   /// Copies `count` raw values of type T, swapping their bytes when the file's byte order

@@ -1,5 +1,7 @@
 #include "vtkSubDOBJReader.h"
 
+#include "vtkSubDFileScanner.h"
+
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkFloatArray.h"
@@ -44,20 +46,15 @@ bool ParseLong(const std::string& token, long& value)
   return end != token.c_str() && errno != ERANGE;
 }
 
+// Real numbers are parsed whatever the C locale (a Qt application sets the user's).
 bool ParseDouble(const std::string& token, double& value)
 {
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtod(token.c_str(), &end);
-  return end != token.c_str() && *end == '\0' && errno != ERANGE && std::isfinite(value);
+  return subdio::FileScanner::ParseWord(token.data(), token.data() + token.size(), value) && std::isfinite(value);
 }
 
 bool ParseFloat(const std::string& token, float& value)
 {
-  char* end = nullptr;
-  errno = 0;
-  value = std::strtof(token.c_str(), &end);
-  return end != token.c_str() && *end == '\0' && errno != ERANGE;
+  return subdio::FileScanner::ParseWord(token.data(), token.data() + token.size(), value);
 }
 
 // An OBJ index (1-based, or negative: relative to the vertices read so far) to 0-based.

@@ -1,5 +1,7 @@
 #include "vtkSubDOFFReader.h"
 
+#include "vtkSubDFileScanner.h"
+
 #include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkObjectFactory.h"
@@ -8,7 +10,7 @@
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
-#include <cerrno>
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <sstream>
@@ -69,26 +71,24 @@ private:
 bool ParseNumbers(const std::string& line, std::vector<double>& values)
 {
   values.clear();
-  const char* p = line.c_str();
-  char* end = nullptr;
+  // Whatever the C locale (a Qt application sets the user's, with its decimal comma).
+  const char* p = line.data();
+  const char* const last = line.data() + line.size();
   while (true)
   {
-    while (*p == ' ' || *p == '\t' || *p == '\r' || *p == '\n')
-    {
-      ++p;
-    }
-    if (*p == '\0')
+    p = std::find_if_not(p, last, subdio::FileScanner::IsSpace);
+    if (p == last)
     {
       return true;
     }
-    errno = 0;
-    const double v = std::strtod(p, &end);
-    if (end == p || errno == ERANGE)
+    const char* wordEnd = std::find_if(p, last, subdio::FileScanner::IsSpace);
+    double v;
+    if (!subdio::FileScanner::ParseWord(p, wordEnd, v))
     {
       return false;
     }
     values.push_back(v);
-    p = end;
+    p = wordEnd;
   }
 }
 }
