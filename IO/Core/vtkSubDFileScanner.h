@@ -29,7 +29,21 @@ public:
   /// Reads the whole stream. False (with nothing read) when it cannot be read.
   bool Load(std::istream& in)
   {
-    this->Bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    // One read of the known size where the stream can seek (files); else byte by byte.
+    const std::streamoff start = in.tellg();
+    const std::streamoff end = start >= 0 && in.seekg(0, std::ios::end) ? std::streamoff(in.tellg()) : -1;
+    if (start >= 0 && end >= start && in.seekg(start))
+    {
+      this->Bytes.resize(static_cast<size_t>(end - start));
+      in.read(&this->Bytes[0], static_cast<std::streamsize>(this->Bytes.size()));
+      this->Bytes.resize(static_cast<size_t>(in.gcount()));
+      in.clear(in.rdstate() & ~(std::ios::failbit | std::ios::eofbit)); // a short read is not an error
+    }
+    else
+    {
+      in.clear(in.rdstate() & ~std::ios::failbit);
+      this->Bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    }
     this->Position = 0;
     this->LineNumber = 1;
     return !in.bad();
