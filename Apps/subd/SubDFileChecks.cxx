@@ -59,9 +59,11 @@ bool CheckXMLPolyDataFile(const std::string& path, std::string& error)
     const double values = (text.compare(at, 14, "NumberOfPoints") == 0 ? 3.0 : 2.0) * count;
     if (!(values <= limit))
     {
-      error = "'" + path + "' is not a valid VTK XML file: '" + text.substr(at, quote - at) +
-        std::to_string(static_cast<long long>(count)) + "' announces more than its " + std::to_string(bytes.size()) +
-        " bytes can hold";
+      // The count as written: it may be beyond any integer type (or not a number at all).
+      const size_t close = text.find('"', quote + 1);
+      const std::string written = text.substr(quote + 1, std::min<size_t>(close, quote + 41) - quote - 1);
+      error = "'" + path + "' is not a valid VTK XML file: '" + text.substr(at, quote - at + 1) + written +
+        "\"' announces more than its " + std::to_string(bytes.size()) + " bytes can hold";
       return false;
     }
   }
