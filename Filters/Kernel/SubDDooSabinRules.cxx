@@ -1,6 +1,7 @@
 #include "SubDDooSabinRules.h"
 #include "SubDDualSplit.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace subd
@@ -29,8 +30,8 @@ Index BoundaryCornerRow(const Level& level, const DualPoints& points, Index f, I
   const IndexSpan fe = topo.GetFaceEdges(f);
   const Index n = fv.size();
   const Index v = fv[j];
-  const bool outgoing = ActsAsBoundary(level, fe[j]);
-  const bool incoming = ActsAsBoundary(level, fe[(j + n - 1) % n]);
+  const bool outgoing = points.EdgeActsAsBoundary[fe[j]];
+  const bool incoming = points.EdgeActsAsBoundary[fe[(j + n - 1) % n]];
   if (!outgoing && !incoming && !points.PinsEveryCorner[v])
   {
     return 0;
@@ -48,64 +49,89 @@ Index BoundaryCornerRow(const Level& level, const DualPoints& points, Index f, I
   wts[1] = toward;
   return 2;
 }
+
+// The weights alpha_n(d), d = 0..n-1, of the face sizes most meshes have, tabulated once:
+// the cosines would otherwise be most of the cost of writing a row.
+class DooSabinWeightTable
+{
+public:
+  DooSabinWeightTable()
+  {
+    for (Index n = 3; n <= MaxSize; ++n)
+    {
+      for (Index d = 0; d < n; ++d)
+      {
+        this->Weights[n][d] = DooSabinWeight(n, d);
+      }
+    }
+  }
+  /// alpha_n((i - k) mod n) for k = 0..n-1 into `out`.
+  void WriteRow(Index n, Index i, double* out) const
+  {
+    for (Index k = 0; k < n; ++k)
+    {
+      const Index d = (i - k + n) % n;
+      out[k] = n <= MaxSize ? this->Weights[n][d] : DooSabinWeight(n, d);
+    }
+  }
+
+private:
+  static constexpr Index MaxSize = 8;
+  double Weights[MaxSize + 1][MaxSize] = {};
+};
 }
 
-StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points)
+StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points, const ParallelFor& parallelFor)
 {
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
   // Welded corners have equal rows; each point takes its first corner's.
-  auto ownsRow = [&points](Index corner) { return points.CornerOfPoint[points.PointOfCorner[corner]] == corner; };
+  auto ownsRow = [&points](Index corner) {
+    return points.Unwelded || points.CornerOfPoint[points.PointOfCorner[corner]] == corner;
+  };
   StencilTable table(topo.GetNumVertices());
   table.ReserveRows(static_cast<Index>(points.CornerOfPoint.size()));
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    const Index n = topo.GetFaceSize(f);
-    for (Index j = 0; j < n; ++j)
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
     {
-      const Index corner = topo.GetFaceOffset(f) + j;
-      if (!ownsRow(corner))
+      const Index n = topo.GetFaceSize(f);
+      for (Index j = 0; j < n; ++j)
       {
-        continue;
-      }
-      Index scratchSource[2];
-      double scratchWeight[2];
-      const Index boundary = BoundaryCornerRow(parent, points, f, j, scratchSource, scratchWeight);
-      table.SetRowSize(points.PointOfCorner[corner], boundary > 0 ? boundary : n);
-    }
-  }
-  table.FinalizeSizes();
-  std::vector<double> weights;
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    const IndexSpan fv = topo.GetFaceVertices(f);
-    const Index n = fv.size();
-    // Weights depend on (i - k) mod n only: tabulate once per face.
-    weights.resize(static_cast<size_t>(n));
-    for (Index d = 0; d < n; ++d)
-    {
-      weights[d] = DooSabinWeight(n, d);
-    }
-    for (Index i = 0; i < n; ++i)
-    {
-      const Index corner = topo.GetFaceOffset(f) + i;
-      if (!ownsRow(corner))
-      {
-        continue;
-      }
-      Index* src = table.GetMutableSources(points.PointOfCorner[corner]);
-      double* wts = table.GetMutableWeights(points.PointOfCorner[corner]);
-      if (BoundaryCornerRow(parent, points, f, i, src, wts) > 0)
-      {
-        continue;
-      }
-      for (Index k = 0; k < n; ++k)
-      {
-        src[k] = fv[k];
-        wts[k] = weights[(i - k + n) % n];
+        const Index corner = topo.GetFaceOffset(f) + j;
+        if (ownsRow(corner))
+        {
+          Index scratchSource[2];
+          double scratchWeight[2];
+          const Index boundary = BoundaryCornerRow(parent, points, f, j, scratchSource, scratchWeight);
+          table.SetRowSize(points.PointOfCorner[corner], boundary > 0 ? boundary : n);
+        }
       }
     }
-  }
+  });
+  table.FinalizeSizesUnfilled();
+  const DooSabinWeightTable weights;
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
+    {
+      const IndexSpan fv = topo.GetFaceVertices(f);
+      const Index n = fv.size();
+      for (Index i = 0; i < n; ++i)
+      {
+        const Index corner = topo.GetFaceOffset(f) + i;
+        if (!ownsRow(corner))
+        {
+          continue;
+        }
+        Index* src = table.GetMutableSources(points.PointOfCorner[corner]);
+        double* wts = table.GetMutableWeights(points.PointOfCorner[corner]);
+        if (BoundaryCornerRow(parent, points, f, i, src, wts) == 0)
+        {
+          std::copy(fv.begin(), fv.end(), src);
+          weights.WriteRow(n, i, wts);
+        }
+      }
+    }
+  });
   table.EndBlock(static_cast<Index>(points.CornerOfPoint.size()));
   return table;
 }

@@ -32,8 +32,10 @@ namespace subd
 {
 /// alpha_ik for an n-gon, with d = i - k.
 SUBDKERNEL_EXPORT double DooSabinWeight(Index n, Index d);
-/// The rows of the child points `points` (NumberDualPoints(parent)).
-SUBDKERNEL_EXPORT StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points);
+/// The rows of the child points `points` (NumberDualPoints(parent)), written in parallel by
+/// `parallelFor` (each row by one task: the same table for any number of threads).
+SUBDKERNEL_EXPORT StencilTable BuildDooSabinStencils(
+  const Level& parent, const DualPoints& points, const ParallelFor& parallelFor = SerialFor);
 }
 
 #endif

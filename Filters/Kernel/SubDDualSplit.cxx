@@ -1,4 +1,6 @@
 #include "SubDDualSplit.h"
+#include "SubDDualChildTopology.h"
+#include "SubDFaceBlocks.h"
 
 #include <algorithm>
 #include <numeric>
@@ -36,7 +38,11 @@ void Unite(std::vector<Index>& parent, Index a, Index b)
 }
 }
 
-bool IsDualCornerVertex(const Level& level, Index v)
+namespace
+{
+// IsDualCornerVertex with `actsAsBoundary(e)` answering ActsAsBoundary.
+template <typename EdgeTest>
+bool IsCornerVertexWith(const Level& level, Index v, EdgeTest&& actsAsBoundary)
 {
   const MeshTopology& topo = level.Topology;
   const IndexSpan faces = topo.GetVertexFaces(v);
@@ -47,16 +53,17 @@ bool IsDualCornerVertex(const Level& level, Index v)
   Index creases = 0;
   for (Index e : topo.GetVertexEdges(v))
   {
-    creases += ActsAsBoundary(level, e);
+    creases += actsAsBoundary(e);
   }
   if (creases == 0 || creases > 2)
   {
     return creases > 2;
   }
-  for (Index f : faces)
+  const IndexSpan corners = topo.GetVertexFaceCorners(v);
+  for (Index i = 0; i < faces.size(); ++i)
   {
-    const auto edges = CornerEdges(topo, f, topo.FindCorner(v, f));
-    if (ActsAsBoundary(level, edges.first) && ActsAsBoundary(level, edges.second))
+    const auto edges = CornerEdges(topo, faces[i], corners[i]);
+    if (actsAsBoundary(edges.first) && actsAsBoundary(edges.second))
     {
       return true;
     }
@@ -64,10 +71,13 @@ bool IsDualCornerVertex(const Level& level, Index v)
   return false;
 }
 
-DualPoints NumberDualPoints(const Level& level)
+// The welded numbering (creases or corner vertices): union-find over the corners, each
+// point represented by its first corner.
+void NumberWeldedPoints(const Level& level, DualPoints& points)
 {
   const MeshTopology& topo = level.Topology;
   const Index numCorners = topo.GetNumFaceCorners();
+  const std::vector<std::uint8_t>& acts = points.EdgeActsAsBoundary;
   std::vector<Index> parent(static_cast<size_t>(numCorners));
   std::iota(parent.begin(), parent.end(), 0);
   auto corner = [&topo](Index f, Index v) { return topo.GetFaceOffset(f) + topo.FindCorner(v, f); };
@@ -75,7 +85,7 @@ DualPoints NumberDualPoints(const Level& level)
   for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
     const IndexSpan ef = topo.GetEdgeFaces(e);
-    if (ef.size() != 2 || topo.GetEdgeTag(e).NonManifold || !IsSharp(level.EdgeSharpness[e]))
+    if (ef.size() != 2 || topo.GetEdgeTag(e).NonManifold || !acts[e])
     {
       continue;
     }
@@ -86,36 +96,28 @@ DualPoints NumberDualPoints(const Level& level)
     }
   }
   // At a corner vertex every corner next to a crease edge is the vertex itself.
-  DualPoints points;
-  points.IsCornerVertex.resize(static_cast<size_t>(topo.GetNumVertices()));
-  points.PinsEveryCorner.resize(static_cast<size_t>(topo.GetNumVertices()));
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
-    points.IsCornerVertex[v] = IsDualCornerVertex(level, v);
     if (!points.IsCornerVertex[v])
     {
       continue;
     }
-    Index creases = 0;
-    for (Index e : topo.GetVertexEdges(v))
-    {
-      creases += ActsAsBoundary(level, e);
-    }
-    points.PinsEveryCorner[v] = creases < 2;
     Index first = InvalidIndex;
-    for (Index f : topo.GetVertexFaces(v))
+    const IndexSpan faces = topo.GetVertexFaces(v);
+    const IndexSpan corners = topo.GetVertexFaceCorners(v);
+    for (Index i = 0; i < faces.size(); ++i)
     {
-      const Index j = topo.FindCorner(v, f);
-      const auto edges = CornerEdges(topo, f, j);
-      if (points.PinsEveryCorner[v] || ActsAsBoundary(level, edges.first) || ActsAsBoundary(level, edges.second))
+      const auto edges = CornerEdges(topo, faces[i], corners[i]);
+      if (points.PinsEveryCorner[v] || acts[edges.first] || acts[edges.second])
       {
-        const Index c = topo.GetFaceOffset(f) + j;
+        const Index c = topo.GetFaceOffset(faces[i]) + corners[i];
         first = first == InvalidIndex ? c : first;
         Unite(parent, first, c);
       }
     }
   }
   points.PointOfCorner.resize(static_cast<size_t>(numCorners));
+  points.CornerOfPoint.clear();
   for (Index c = 0; c < numCorners; ++c)
   {
     const Index root = Find(parent, c);
@@ -129,184 +131,286 @@ DualPoints NumberDualPoints(const Level& level)
       points.PointOfCorner[c] = points.PointOfCorner[root]; // root < c: numbered already
     }
   }
+  points.Unwelded = points.CornerOfPoint.size() == points.PointOfCorner.size();
+}
+}
+
+bool IsDualCornerVertex(const Level& level, Index v)
+{
+  return IsCornerVertexWith(level, v, [&level](Index e) { return ActsAsBoundary(level, e); });
+}
+
+DualPoints NumberDualPoints(const Level& level, const ParallelFor& parallelFor)
+{
+  const MeshTopology& topo = level.Topology;
+  const Index numCorners = topo.GetNumFaceCorners();
+  const Index numEdges = topo.GetNumEdges();
+  const Index numVertices = topo.GetNumVertices();
+  DualPoints points;
+  std::vector<std::uint8_t>& acts = points.EdgeActsAsBoundary;
+  acts.resize(static_cast<size_t>(numEdges));
+  parallelFor(0, numEdges, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e)
+    {
+      acts[e] = ActsAsBoundary(level, e);
+    }
+  });
+  points.IsCornerVertex.resize(static_cast<size_t>(numVertices));
+  points.PinsEveryCorner.resize(static_cast<size_t>(numVertices));
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v)
+    {
+      const bool isCorner = IsCornerVertexWith(level, v, [&acts](Index e) { return acts[e] != 0; });
+      points.IsCornerVertex[v] = isCorner;
+      points.PinsEveryCorner[v] = isCorner && CountVertexEdges(level, v, [&acts](const Level&, Index e) {
+        return acts[e] != 0;
+      }) < 2;
+    }
+  });
+  // Only a sharp edge between two faces or a corner vertex welds corners.
+  bool welds = std::any_of(points.IsCornerVertex.begin(), points.IsCornerVertex.end(), [](std::uint8_t c) { return c != 0; });
+  for (Index e = 0; e < numEdges && !welds; ++e)
+  {
+    welds = acts[e] && topo.GetEdgeFaces(e).size() == 2 && !topo.GetEdgeTag(e).NonManifold;
+  }
+  if (welds)
+  {
+    NumberWeldedPoints(level, points);
+    return points;
+  }
+  points.PointOfCorner.resize(static_cast<size_t>(numCorners));
+  points.CornerOfPoint.resize(static_cast<size_t>(numCorners));
+  parallelFor(0, numCorners, [&points](Index begin, Index end) {
+    std::iota(points.PointOfCorner.begin() + begin, points.PointOfCorner.begin() + end, begin);
+    std::iota(points.CornerOfPoint.begin() + begin, points.CornerOfPoint.begin() + end, begin);
+  });
   return points;
 }
 
-Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology depth, const ParallelFor& parallelFor)
+namespace
 {
-  const MeshTopology& topo = parent.Topology;
-  const Index numFaces = topo.GetNumFaces();
-  // The child point of corner `corner` of face f.
-  auto cornerPoint = [&](Index f, Index corner) { return points.PointOfCorner[topo.GetFaceOffset(f) + corner]; };
+// Writes the F-, E- and V-faces of the parent's elements numbered in one sequence: faces,
+// then edges, then vertices.
+class DualFaceWriter
+{
+public:
+  DualFaceWriter(const Level& parent, const DualPoints& points)
+    : Parent(parent)
+    , Topo(parent.Topology)
+    , Points(points)
+  {
+  }
+  Index GetNumElements() const { return this->Topo.GetNumFaces() + this->Topo.GetNumEdges() + this->Topo.GetNumVertices(); }
 
-  Level child;
-  IndexArray offsets{ 0 }, vertices;
-  std::vector<Index> origins, holes;
-  // Adds the face of the points from `first` on, without repeats of welded points; a face
-  // left with fewer than three points is dropped.
-  auto addFace = [&](size_t first, Index origin, std::uint8_t hole) {
-    auto end = std::unique(vertices.begin() + static_cast<std::ptrdiff_t>(first), vertices.end());
-    if (end - vertices.begin() > static_cast<std::ptrdiff_t>(first) + 1 && *(end - 1) == vertices[first])
+  void WriteBlock(Index begin, Index end, FaceBlock& out)
+  {
+    const Index numFaces = this->Topo.GetNumFaces();
+    const Index firstVertex = numFaces + this->Topo.GetNumEdges();
+    for (Index element = begin; element < end; ++element)
     {
-      --end;
+      if (element < numFaces)
+      {
+        this->WriteFaceFace(element, out);
+      }
+      else if (element < firstVertex)
+      {
+        this->WriteEdgeFace(element - numFaces, out);
+      }
+      else
+      {
+        this->WriteVertexFaces(element - firstVertex, out);
+      }
     }
-    vertices.erase(end, vertices.end());
-    if (vertices.size() - first < 3)
+  }
+
+private:
+  Index CornerPoint(Index f, Index corner) const
+  {
+    const Index c = this->Topo.GetFaceOffset(f) + corner;
+    return this->Points.Unwelded ? c : this->Points.PointOfCorner[c]; // spares a random read
+  }
+
+  // F-face: the corner points of face f.
+  void WriteFaceFace(Index f, FaceBlock& out) const
+  {
+    const size_t first = out.BeginFace();
+    for (Index j = 0; j < this->Topo.GetFaceSize(f); ++j)
     {
-      vertices.resize(first);
+      out.Vertices.push_back(this->CornerPoint(f, j));
+    }
+    out.EndFaceWithoutRepeats(first, this->Parent.FaceOrigin[f], this->Parent.FaceIsHole[f]);
+  }
+
+  // E-face: edge (a, b) runs a->b in face f0 and b->a in f1; the quad runs against f0's side
+  // of the edge and then along f1's, so that it is oriented like its neighbours.
+  void WriteEdgeFace(Index e, FaceBlock& out) const
+  {
+    if (this->Points.EdgeActsAsBoundary[e])
+    {
       return;
     }
-    offsets.push_back(static_cast<Index>(vertices.size()));
-    origins.push_back(origin);
-    holes.push_back(hole);
-  };
-  // F-faces: the corner points of each face.
-  vertices.reserve(static_cast<size_t>(topo.GetNumFaceCorners()) * 3);
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    const size_t first = vertices.size();
-    for (Index j = 0; j < topo.GetFaceSize(f); ++j)
-    {
-      vertices.push_back(cornerPoint(f, j));
-    }
-    addFace(first, parent.FaceOrigin[f], parent.FaceIsHole[f]);
-  }
-  // E-faces: edge (a, b) runs a->b in face f0 and b->a in f1; the quad runs against f0's
-  // side of the edge and then along f1's, so that it is oriented like its neighbours.
-  for (Index e = 0; e < topo.GetNumEdges(); ++e)
-  {
-    if (ActsAsBoundary(parent, e))
-    {
-      continue;
-    }
-    const IndexSpan ef = topo.GetEdgeFaces(e);
-    const Index* ev = topo.GetEdgeVertices(e);
+    const IndexSpan ef = this->Topo.GetEdgeFaces(e);
     Index f0 = ef[0], f1 = ef[1];
-    Index a = ev[0], b = ev[1];
-    Index ca = topo.FindCorner(a, f0);
-    if (topo.GetFaceVertices(f0)[(ca + 1) % topo.GetFaceSize(f0)] != b)
+    Index i0 = this->EdgePosition(f0, e), i1 = this->EdgePosition(f1, e);
+    if (this->Topo.GetFaceVertices(f0)[i0] != this->Topo.GetEdgeVertices(e)[0])
     {
       std::swap(f0, f1); // make f0 the face that runs a->b
-      ca = topo.FindCorner(a, f0);
+      std::swap(i0, i1);
     }
-    const size_t first = vertices.size();
-    vertices.insert(vertices.end(), { cornerPoint(f0, topo.FindCorner(b, f0)), cornerPoint(f0, ca),
-                                      cornerPoint(f1, topo.FindCorner(a, f1)),
-                                      cornerPoint(f1, topo.FindCorner(b, f1)) });
-    addFace(first, parent.FaceOrigin[f0], parent.FaceIsHole[f0] && parent.FaceIsHole[f1]);
+    // Edge i of a face joins its corners i and i + 1: in f0 those are a and b, in f1 b and a.
+    const size_t first = out.BeginFace();
+    out.Vertices.insert(out.Vertices.end(),
+      { this->CornerPoint(f0, (i0 + 1) % this->Topo.GetFaceSize(f0)), this->CornerPoint(f0, i0),
+        this->CornerPoint(f1, (i1 + 1) % this->Topo.GetFaceSize(f1)), this->CornerPoint(f1, i1) });
+    out.EndFaceWithoutRepeats(first, this->Parent.FaceOrigin[f0], this->Parent.FaceIsHole[f0] && this->Parent.FaceIsHole[f1]);
   }
-  // V-faces: one per sector (run of faces between sharp edges) of at least three faces.
-  std::vector<Index> fan, fanCorners;
-  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+
+  // The position of edge e among face f's edges.
+  Index EdgePosition(Index f, Index e) const
   {
-    if (!topo.GetOrderedVertexFaces(v, fan, fanCorners))
+    const IndexSpan fe = this->Topo.GetFaceEdges(f);
+    Index position = 0;
+    while (fe[position] != e)
     {
-      continue;
+      ++position;
     }
-    const Index m = static_cast<Index>(fan.size());
-    const bool closed = !topo.GetVertexTag(v).Boundary;
-    // sharpAfter[i]: the edge between fan[i] and the next face is sharp (for the last face
-    // of an open fan: the boundary).
-    std::vector<std::uint8_t> sharpAfter(static_cast<size_t>(m), 0);
+    return position;
+  }
+
+  // V-faces: one per sector (run of faces between sharp edges) of at least three faces.
+  void WriteVertexFaces(Index v, FaceBlock& out)
+  {
+    if (!this->Topo.GetOrderedVertexFaces(v, this->Fan, this->FanCorners))
+    {
+      return;
+    }
+    const Index m = static_cast<Index>(this->Fan.size());
+    const bool closed = !this->Topo.GetVertexTag(v).Boundary;
+    // SharpAfter[i]: the edge between Fan[i] and the next face, the edge entering v in
+    // Fan[i], is sharp; an open fan ends at the boundary.
+    this->SharpAfter.assign(static_cast<size_t>(m), 0);
     Index start = 0;
     for (Index i = 0; i < m; ++i)
     {
-      const Index next = fan[(i + 1) % m];
-      const auto edges = CornerEdges(topo, fan[i], fanCorners[i]);
-      for (Index e : { edges.first, edges.second })
-      {
-        const IndexSpan ef = topo.GetEdgeFaces(e);
-        const bool shared = std::find(ef.begin(), ef.end(), next) != ef.end() && next != fan[i];
-        if ((shared || (!closed && i == m - 1)) && ActsAsBoundary(parent, e))
-        {
-          sharpAfter[i] = 1;
-        }
-      }
-      if (sharpAfter[i] && closed && start == 0)
+      const Index entering = CornerEdges(this->Topo, this->Fan[i], this->FanCorners[i]).second;
+      this->SharpAfter[i] = this->Points.EdgeActsAsBoundary[entering] || (!closed && i == m - 1);
+      if (this->SharpAfter[i] && closed && start == 0)
       {
         start = (i + 1) % m; // sectors of a closed fan start after a sharp edge
       }
     }
-    if (!closed)
-    {
-      sharpAfter[m - 1] = 1;
-    }
     // Walk the fan from `start`, cutting after each sharp edge.
-    std::vector<Index> sector;
+    Index sectorBegin = 0;
     for (Index k = 0; k < m; ++k)
     {
-      const Index i = (start + k) % m;
-      sector.push_back(i);
-      if (sharpAfter[i] || k == m - 1)
+      if (!this->SharpAfter[(start + k) % m] && k != m - 1)
       {
-        if (sector.size() >= 3)
-        {
-          const size_t first = vertices.size();
-          std::uint8_t allHoles = 1;
-          for (Index s : sector)
-          {
-            vertices.push_back(cornerPoint(fan[s], fanCorners[s]));
-            allHoles &= parent.FaceIsHole[fan[s]];
-          }
-          addFace(first, parent.FaceOrigin[fan[sector[0]]], allHoles);
-        }
-        sector.clear();
+        continue;
       }
+      if (k + 1 - sectorBegin >= 3)
+      {
+        const size_t first = out.BeginFace();
+        std::uint8_t allHoles = 1;
+        for (Index s = sectorBegin; s <= k; ++s)
+        {
+          const Index i = (start + s) % m;
+          out.Vertices.push_back(this->CornerPoint(this->Fan[i], this->FanCorners[i]));
+          allHoles &= this->Parent.FaceIsHole[this->Fan[i]];
+        }
+        out.EndFaceWithoutRepeats(first, this->Parent.FaceOrigin[this->Fan[(start + sectorBegin) % m]], allHoles);
+      }
+      sectorBegin = k + 1;
     }
   }
 
-  child.FaceOrigin.assign(origins.begin(), origins.end());
-  child.FaceIsHole.assign(holes.begin(), holes.end());
-  const Index numPoints = static_cast<Index>(points.CornerOfPoint.size());
-  SetChildTopology(parent, child, numPoints, std::move(offsets), std::move(vertices), depth, parallelFor);
-  if (depth == ChildTopology::Full)
+  const Level& Parent;
+  const MeshTopology& Topo;
+  const DualPoints& Points;
+  std::vector<Index> Fan, FanCorners;     // scratch of WriteVertexFaces
+  std::vector<std::uint8_t> SharpAfter;
+};
+
+// The sharpness the child inherits: the child edge between the two welded points of a sharp
+// edge, and, at a vertex on a crease, between the points of its two crease edges.
+void InheritDualSharpness(const Level& parent, const DualPoints& points, Level& child)
+{
+  const MeshTopology& topo = parent.Topology;
+  const MeshTopology& childTopo = child.Topology;
+  auto pointAt = [&](Index f, Index v) { return points.PointOfCorner[topo.GetFaceOffset(f) + topo.FindCorner(v, f)]; };
+  for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
-    // Crease segments: the child edge between the two welded points of a sharp edge, and,
-    // at a vertex on a crease, between the points of its two crease edges.
-    const MeshTopology& childTopo = child.Topology;
-    auto pointAt = [&](Index f, Index v) { return cornerPoint(f, topo.FindCorner(v, f)); };
-    for (Index e = 0; e < topo.GetNumEdges(); ++e)
+    if (!IsSharp(parent.EdgeSharpness[e]) || topo.GetEdgeFaces(e).empty())
     {
-      if (!IsSharp(parent.EdgeSharpness[e]) || topo.GetEdgeFaces(e).empty())
+      continue;
+    }
+    const Index f = topo.GetEdgeFaces(e)[0];
+    const Index* ev = topo.GetEdgeVertices(e);
+    const Index segment = childTopo.FindEdge(pointAt(f, ev[0]), pointAt(f, ev[1]));
+    if (segment != InvalidIndex)
+    {
+      child.EdgeSharpness[segment] = DecaySharpness(parent.EdgeSharpness[e]);
+    }
+  }
+  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+  {
+    if (IsSharp(parent.VertexSharpness[v]) && !topo.GetVertexFaces(v).empty())
+    {
+      child.VertexSharpness[pointAt(topo.GetVertexFaces(v)[0], v)] = DecaySharpness(parent.VertexSharpness[v]);
+    }
+    if (parent.GetNumSharpEdges(v) != 2 || points.IsCornerVertex[v])
+    {
+      continue;
+    }
+    // The points next to the two crease edges, and the smaller of their decayed values.
+    Index ends[2] = { InvalidIndex, InvalidIndex };
+    float sharpness = SharpnessInfinite;
+    int found = 0;
+    for (Index e : topo.GetVertexEdges(v))
+    {
+      if (IsSharp(parent.EdgeSharpness[e]) && found < 2 && !topo.GetEdgeFaces(e).empty())
       {
-        continue;
-      }
-      const Index f = topo.GetEdgeFaces(e)[0];
-      const Index* ev = topo.GetEdgeVertices(e);
-      const Index segment = childTopo.FindEdge(pointAt(f, ev[0]), pointAt(f, ev[1]));
-      if (segment != InvalidIndex)
-      {
-        child.EdgeSharpness[segment] = DecaySharpness(parent.EdgeSharpness[e]);
+        ends[found++] = pointAt(topo.GetEdgeFaces(e)[0], v);
+        sharpness = std::min(sharpness, DecaySharpness(parent.EdgeSharpness[e]));
       }
     }
-    for (Index v = 0; v < topo.GetNumVertices(); ++v)
+    const Index segment = found == 2 ? childTopo.FindEdge(ends[0], ends[1]) : InvalidIndex;
+    if (segment != InvalidIndex)
     {
-      if (IsSharp(parent.VertexSharpness[v]) && !topo.GetVertexFaces(v).empty())
-      {
-        child.VertexSharpness[pointAt(topo.GetVertexFaces(v)[0], v)] = DecaySharpness(parent.VertexSharpness[v]);
-      }
-      if (parent.GetNumSharpEdges(v) != 2 || points.IsCornerVertex[v])
-      {
-        continue;
-      }
-      // The points next to the two crease edges, and the smaller of their decayed values.
-      Index ends[2] = { InvalidIndex, InvalidIndex };
-      float sharpness = SharpnessInfinite;
-      int found = 0;
-      for (Index e : topo.GetVertexEdges(v))
-      {
-        if (IsSharp(parent.EdgeSharpness[e]) && found < 2 && !topo.GetEdgeFaces(e).empty())
-        {
-          ends[found++] = pointAt(topo.GetEdgeFaces(e)[0], v);
-          sharpness = std::min(sharpness, DecaySharpness(parent.EdgeSharpness[e]));
-        }
-      }
-      const Index segment = found == 2 ? childTopo.FindEdge(ends[0], ends[1]) : InvalidIndex;
-      if (segment != InvalidIndex)
-      {
-        child.EdgeSharpness[segment] = sharpness;
-      }
+      child.EdgeSharpness[segment] = sharpness;
     }
+  }
+}
+
+bool HasSharpFeatures(const Level& level)
+{
+  auto sharp = [](float s) { return IsSharp(s); };
+  return std::any_of(level.EdgeSharpness.begin(), level.EdgeSharpness.end(), sharp) ||
+    std::any_of(level.VertexSharpness.begin(), level.VertexSharpness.end(), sharp);
+}
+}
+
+Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology depth, const ParallelFor& parallelFor)
+{
+  EmittedFaces faces = EmitFacesInParallel(DualFaceWriter(parent, points).GetNumElements(), parallelFor,
+    [&](Index begin, Index end, FaceBlock& block) { DualFaceWriter(parent, points).WriteBlock(begin, end, block); });
+  Level child;
+  child.FaceOrigin = std::move(faces.Origins);
+  child.FaceIsHole = std::move(faces.Holes);
+  const Index numPoints = static_cast<Index>(points.CornerOfPoint.size());
+  if (depth == ChildTopology::Full && DualChildTopology::Applies(parent, points))
+  {
+    child.Depth = parent.Depth + 1;
+    child.Creasing = parent.Creasing;
+    child.Topology = DualChildTopology::OfDualSplit(
+      parent.Topology, std::move(faces.Offsets), std::move(faces.Vertices), parallelFor);
+    child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), SharpnessSmooth);
+    child.VertexSharpness.assign(static_cast<size_t>(numPoints), SharpnessSmooth);
+    return child; // nothing sharp to inherit
+  }
+  SetChildTopology(parent, child, numPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
+  if (depth == ChildTopology::Full && HasSharpFeatures(parent))
+  {
+    InheritDualSharpness(parent, points, child);
   }
   return child;
 }

@@ -35,15 +35,26 @@ SUBDKERNEL_EXPORT bool IsDualCornerVertex(const Level& level, Index v);
 /// vertices (IsDualCornerVertex). Computed once per level, shared by split and stencils.
 struct DualPoints
 {
-  std::vector<Index> PointOfCorner;
-  std::vector<Index> CornerOfPoint;
+  IndexArray PointOfCorner;
+  IndexArray CornerOfPoint;
   std::vector<std::uint8_t> IsCornerVertex;
   /// Corner vertices with fewer than two crease edges (a sharp vertex inside smooth
   /// surface, or at the end of a crease): every corner around them is the vertex itself.
   std::vector<std::uint8_t> PinsEveryCorner;
+  /// ActsAsBoundary for every edge of the level: split, stencils and numbering each ask it
+  /// several times per edge, and a byte is cheaper to read than the sharpness, the edge's
+  /// faces and its tags.
+  std::vector<std::uint8_t> EdgeActsAsBoundary;
+  /// No corner is welded to another: PointOfCorner is the identity (no crease, no corner
+  /// vertex, which is every level of a smooth closed mesh).
+  bool Unwelded = true;
 };
-SUBDKERNEL_EXPORT DualPoints NumberDualPoints(const Level& level);
+/// `parallelFor` runs the per-edge and per-vertex classification and, when nothing is
+/// welded, the numbering.
+SUBDKERNEL_EXPORT DualPoints NumberDualPoints(const Level& level, const ParallelFor& parallelFor = SerialFor);
 
+/// Writes the child faces in parallel (in blocks of parent elements, copied to their place
+/// in order), so that the result does not depend on the number of threads.
 SUBDKERNEL_EXPORT Level SplitDual(
   const Level& parent, const DualPoints& points, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
 }

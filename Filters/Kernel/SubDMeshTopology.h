@@ -130,6 +130,7 @@ public:
 private:
   // Splits that know their child's relations write them directly (SubDPrimalChildTopology).
   friend struct PrimalChildAssembly;
+  friend class DualChildTopology;
 
   static IndexSpan Span(const IndexArray& data, const IndexArray& offsets, Index i)
   {

@@ -97,20 +97,20 @@ StencilTable LinearTriangleScheme::BuildStencils(const Level& parent) const
 
 Level DooSabinScheme::Split(const Level& parent, ChildTopology depth) const
 {
-  return SplitDual(parent, NumberDualPoints(parent), depth, this->GetParallelFor());
+  return SplitDual(parent, NumberDualPoints(parent, this->GetParallelFor()), depth, this->GetParallelFor());
 }
 
 StencilTable DooSabinScheme::BuildStencils(const Level& parent) const
 {
-  return BuildDooSabinStencils(parent, NumberDualPoints(parent));
+  return BuildDooSabinStencils(parent, NumberDualPoints(parent, this->GetParallelFor()), this->GetParallelFor());
 }
 
 LevelRefinement DooSabinScheme::RefineLevel(const Level& parent, ChildTopology depth) const
 {
   // The welded point numbering is needed by both: compute it once.
-  const DualPoints points = NumberDualPoints(parent);
+  const DualPoints points = NumberDualPoints(parent, this->GetParallelFor());
   LevelRefinement r;
-  r.Stencils = BuildDooSabinStencils(parent, points);
+  r.Stencils = BuildDooSabinStencils(parent, points, this->GetParallelFor());
   r.Child = SplitDual(parent, points, depth, this->GetParallelFor());
   return r;
 }

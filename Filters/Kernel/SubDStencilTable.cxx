@@ -14,12 +14,19 @@ StencilTable StencilTable::FromSource(std::shared_ptr<const RowSource> source)
 
 void StencilTable::FinalizeSizes()
 {
+  this->FinalizeSizesUnfilled();
+  std::fill(this->Sources.begin(), this->Sources.end(), InvalidIndex);
+  std::fill(this->Weights.begin(), this->Weights.end(), 0.0);
+}
+
+void StencilTable::FinalizeSizesUnfilled()
+{
   for (size_t i = 1; i < this->Offsets.size(); ++i)
   {
     this->Offsets[i] += this->Offsets[i - 1];
   }
-  this->Sources.assign(static_cast<size_t>(this->Offsets.back()), InvalidIndex);
-  this->Weights.assign(static_cast<size_t>(this->Offsets.back()), 0.0);
+  this->Sources.resize(static_cast<size_t>(this->Offsets.back()));
+  this->Weights.resize(static_cast<size_t>(this->Offsets.back()));
 }
 
 double StencilTable::GetRowSum(Index row) const

@@ -71,6 +71,9 @@ public:
   void ReserveRows(Index numRows) { Offsets.assign(static_cast<size_t>(numRows) + 1, 0); }
   void SetRowSize(Index row, Index size) { Offsets[row + 1] = size; }
   void FinalizeSizes();
+  /// The same without filling the entries: for writers that write every entry of every row
+  /// (in parallel, so that each page is first touched by the thread that fills it).
+  void FinalizeSizesUnfilled();
   Index* GetMutableSources(Index row) { return Sources.data() + Offsets[row]; }
   double* GetMutableWeights(Index row) { return Weights.data() + Offsets[row]; }
   /// Ends the current block at `rowEnd` (exclusive).
@@ -112,8 +115,8 @@ private:
   Index NumParents = 0;
   std::shared_ptr<const RowSource> Source;
   std::vector<Index> Offsets{ 0 };
-  std::vector<Index> Sources;
-  std::vector<double> Weights;
+  LevelArray<Index> Sources;
+  LevelArray<double> Weights;
   std::vector<Index> BlockEnds;
 };
 

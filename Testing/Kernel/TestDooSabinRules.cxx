@@ -7,11 +7,13 @@
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
 #include "SubDTestMeshes.h"
+#include "SubDTestParallel.h"
 
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <algorithm>
 #include <array>
+#include <cmath>
 
 using subd::Index;
 
@@ -56,6 +58,53 @@ TEST(DualSplit, CountsOrientationAndEulerOnClosedMeshes)
       EXPECT_EQ(c.GetNumNonManifoldEdges(), 0) << mesh.Name;
       EXPECT_EQ(c.GetNumNonManifoldVertices(), 0) << mesh.Name;
       level = std::move(child);
+    }
+  }
+}
+
+// The numbering, the faces (written in blocks) and the rows on threads equal the serial
+// ones, smooth and with creases and semi-sharp edges (welded corners).
+TEST(DualSplit, ThreadsGiveTheSerialPointsFacesAndRows)
+{
+  for (const subdtest::TestMesh& mesh : subdtest::StandardMeshes())
+  {
+    for (bool creased : { false, true })
+    {
+      subd::Level level = subdtest::BaseLevel(mesh);
+      for (Index e = 0; creased && e < level.Topology.GetNumEdges(); ++e)
+      {
+        level.EdgeSharpness[e] = e % 5 == 0 ? 1.6f : (e % 7 == 0 ? subd::SharpnessInfinite : 0.0f);
+      }
+      for (int l = 1; l <= 2; ++l)
+      {
+        SCOPED_TRACE(mesh.Name + (creased ? " creased" : "") + " level " + std::to_string(l));
+        const subd::DualPoints serial = subd::NumberDualPoints(level);
+        const subd::DualPoints threaded = subd::NumberDualPoints(level, subdtest::ThreeThreadFor);
+        EXPECT_EQ(serial.PointOfCorner, threaded.PointOfCorner);
+        EXPECT_EQ(serial.CornerOfPoint, threaded.CornerOfPoint);
+        EXPECT_EQ(serial.IsCornerVertex, threaded.IsCornerVertex);
+        EXPECT_EQ(serial.PinsEveryCorner, threaded.PinsEveryCorner);
+        EXPECT_EQ(serial.Unwelded, threaded.Unwelded);
+        const subd::StencilTable rows = subd::BuildDooSabinStencils(level, serial);
+        const subd::StencilTable threadedRows = subd::BuildDooSabinStencils(level, threaded, subdtest::ThreeThreadFor);
+        ASSERT_EQ(rows.GetNumRows(), threadedRows.GetNumRows());
+        for (Index r = 0; r < rows.GetNumRows(); ++r)
+        {
+          const subd::IndexSpan s = rows.GetSources(r), t = threadedRows.GetSources(r);
+          ASSERT_EQ(s.size(), t.size()) << "row " << r;
+          EXPECT_TRUE(std::equal(s.begin(), s.end(), t.begin())) << "row " << r;
+          EXPECT_TRUE(std::equal(rows.GetWeights(r), rows.GetWeights(r) + s.size(), threadedRows.GetWeights(r)))
+            << "row " << r;
+        }
+        subd::Level child = subd::SplitDual(level, serial, subd::ChildTopology::Full);
+        const subd::Level threadedChild = subd::SplitDual(level, threaded, subd::ChildTopology::Full, subdtest::ThreeThreadFor);
+        EXPECT_EQ(child.Topology.GetFaceOffsetArray(), threadedChild.Topology.GetFaceOffsetArray());
+        EXPECT_EQ(child.Topology.GetFaceVertexArray(), threadedChild.Topology.GetFaceVertexArray());
+        EXPECT_EQ(child.FaceOrigin, threadedChild.FaceOrigin);
+        EXPECT_EQ(child.FaceIsHole, threadedChild.FaceIsHole);
+        EXPECT_EQ(child.EdgeSharpness, threadedChild.EdgeSharpness);
+        level = std::move(child);
+      }
     }
   }
 }

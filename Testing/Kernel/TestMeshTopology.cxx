@@ -1,14 +1,16 @@
 // Kernel unit tests: topology construction, tags, and face screening.
+#include "SubDDualChildTopology.h"
+#include "SubDDualSplit.h"
 #include "SubDMeshTopology.h"
 #include "SubDMeshValidation.h"
 #include "SubDQuadSplit.h"
 #include "SubDTestMeshes.h"
+#include "SubDTestParallel.h"
 #include "SubDTriangleSplit.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <thread>
 
 using subd::Index;
 using subd::MeshTopology;
@@ -159,32 +161,12 @@ void ExpectSameTopology(const MeshTopology& known, const MeshTopology& searched,
   }
 }
 
-// A ParallelFor on three threads, each taking ranges of two items in turn: results must not
-// depend on how a loop is split.
-void ThreeThreadFor(Index begin, Index end, const subd::RangeTask& task)
-{
-  std::vector<std::thread> threads;
-  for (Index t = 0; t < 3; ++t)
-  {
-    threads.emplace_back([=, &task]() {
-      for (Index b = begin + 2 * t; b < end; b += 6)
-      {
-        task(b, std::min(end, b + 2));
-      }
-    });
-  }
-  for (std::thread& thread : threads)
-  {
-    thread.join();
-  }
-}
-
 // Splits `mesh` twice with `split`, serially and on threads, and checks each child's
 // topology, derived from its parent, against the general builder on the same faces.
 template <typename Split>
 void ExpectSplitKnowsItsChild(const subdtest::TestMesh& mesh, Split split, const std::string& what)
 {
-  for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(ThreeThreadFor) })
+  for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor) })
   {
     subd::Level level = subdtest::BaseLevel(mesh);
     for (int l = 1; l <= 2; ++l)
@@ -233,6 +215,24 @@ TEST(MeshTopology, TriangleSplitChildEqualsSearchedTopology)
   }
 }
 
+// The dual split's child, in closed form where it applies (closed manifold parents: the
+// cube, the torus, the triangulated meshes, every level below them) and through the general
+// builder elsewhere, equals the general builder's on the same faces.
+TEST(MeshTopology, DualSplitChildEqualsSearchedTopology)
+{
+  int i = 0, closedForms = 0;
+  for (const subdtest::TestMesh& mesh : TagFixtures())
+  {
+    auto split = [&closedForms](const subd::Level& level, subd::ChildTopology depth, const subd::ParallelFor& parallelFor) {
+      const subd::DualPoints points = subd::NumberDualPoints(level, parallelFor);
+      closedForms += subd::DualChildTopology::Applies(level, points) ? 1 : 0;
+      return subd::SplitDual(level, points, depth, parallelFor);
+    };
+    ExpectSplitKnowsItsChild(mesh, split, "mesh " + std::to_string(i++));
+  }
+  EXPECT_GT(closedForms, 10);
+}
+
 // The general builder's per-vertex passes give the same tags on threads.
 TEST(MeshTopology, BuildOnThreadsEqualsSerialBuild)
 {
@@ -240,7 +240,7 @@ TEST(MeshTopology, BuildOnThreadsEqualsSerialBuild)
   for (const subdtest::TestMesh& mesh : TagFixtures())
   {
     const MeshTopology serial = Build(mesh);
-    ExpectSameTopology(MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices, ThreeThreadFor), serial,
+    ExpectSameTopology(MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices, subdtest::ThreeThreadFor), serial,
       "mesh " + std::to_string(i++));
   }
 }

@@ -1,0 +1,97 @@
+#include "SubDFaceBlocks.h"
+
+#include <algorithm>
+#include <mutex>
+#include <utility>
+
+namespace subd
+{
+void FaceBlock::EndFaceWithoutRepeats(size_t first, Index origin, std::uint8_t hole)
+{
+  auto end = std::unique(this->Vertices.begin() + static_cast<std::ptrdiff_t>(first), this->Vertices.end());
+  if (end - this->Vertices.begin() > static_cast<std::ptrdiff_t>(first) + 1 && *(end - 1) == this->Vertices[first])
+  {
+    --end;
+  }
+  this->Vertices.erase(end, this->Vertices.end());
+  if (this->Vertices.size() - first < 3)
+  {
+    this->Vertices.resize(first);
+    return;
+  }
+  this->EndFace(origin, hole);
+}
+
+namespace
+{
+std::ptrdiff_t Offset(size_t i)
+{
+  return static_cast<std::ptrdiff_t>(i);
+}
+
+// Calls copy(block, localBegin, localEnd, globalBegin) for every part of the concatenation
+// [0, firsts.back()) of blocks (block b starting at firsts[b]), in parallel ranges.
+template <typename Copy>
+void ForEachBlockPart(const ParallelFor& parallelFor, const std::vector<size_t>& firsts, Copy&& copy)
+{
+  parallelFor(0, static_cast<Index>(firsts.back()), [&](Index begin, Index end) {
+    // The block holding `begin`: the last one starting at or before it.
+    size_t b = static_cast<size_t>(std::upper_bound(firsts.begin(), firsts.end(), static_cast<size_t>(begin)) - firsts.begin()) - 1;
+    for (size_t at = static_cast<size_t>(begin); at < static_cast<size_t>(end); ++b)
+    {
+      const size_t stop = std::min(firsts[b + 1], static_cast<size_t>(end));
+      if (stop > at)
+      {
+        copy(b, at - firsts[b], stop - firsts[b], at);
+      }
+      at = std::max(at, stop);
+    }
+  });
+}
+}
+
+EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelFor,
+  const std::function<void(Index begin, Index end, FaceBlock& block)>& write)
+{
+  // Each range's block, keyed by its first element: sorted afterwards, so the ranges the
+  // ParallelFor chose do not matter.
+  std::vector<std::pair<Index, FaceBlock>> written;
+  std::mutex writtenMutex;
+  parallelFor(0, numElements, [&](Index begin, Index end) {
+    FaceBlock block;
+    write(begin, end, block);
+    std::lock_guard<std::mutex> lock(writtenMutex);
+    written.emplace_back(begin, std::move(block));
+  });
+  std::sort(written.begin(), written.end(),
+    [](const std::pair<Index, FaceBlock>& a, const std::pair<Index, FaceBlock>& b) { return a.first < b.first; });
+
+  std::vector<size_t> firstFace(written.size() + 1, 0), firstCorner(written.size() + 1, 0);
+  for (size_t b = 0; b < written.size(); ++b)
+  {
+    firstFace[b + 1] = firstFace[b] + written[b].second.Ends.size();
+    firstCorner[b + 1] = firstCorner[b] + written[b].second.Vertices.size();
+  }
+  EmittedFaces faces;
+  faces.Offsets.resize(firstFace.back() + 1);
+  faces.Offsets[0] = 0;
+  faces.Vertices.resize(firstCorner.back());
+  faces.Origins.resize(firstFace.back());
+  faces.Holes.resize(firstFace.back());
+  ForEachBlockPart(parallelFor, firstFace, [&](size_t b, size_t from, size_t to, size_t at) {
+    const FaceBlock& block = written[b].second;
+    const Index base = static_cast<Index>(firstCorner[b]);
+    for (size_t i = from; i < to; ++i)
+    {
+      faces.Offsets[at + (i - from) + 1] = base + block.Ends[i];
+    }
+    std::copy(block.Origins.begin() + Offset(from), block.Origins.begin() + Offset(to), faces.Origins.begin() + Offset(at));
+    std::copy(block.Holes.begin() + Offset(from), block.Holes.begin() + Offset(to), faces.Holes.begin() + Offset(at));
+  });
+  ForEachBlockPart(parallelFor, firstCorner, [&](size_t b, size_t from, size_t to, size_t at) {
+    const std::vector<Index>& vertices = written[b].second.Vertices;
+    std::copy(vertices.begin() + Offset(from), vertices.begin() + Offset(to), faces.Vertices.begin() + Offset(at));
+  });
+  return faces;
+}
+}

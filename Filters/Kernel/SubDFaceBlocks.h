@@ -1,0 +1,65 @@
+// SubD kernel: child faces written in parallel, in the serial order, by splits that cannot
+// tell beforehand how many faces (and corners) each parent element gives: the dual split
+// (welded corners, one V-face per sector, vanishing faces) and sqrt(3) (flipped, kept or
+// trisected edges).
+//
+// The parent's elements (numbered in the order their faces must come) are cut into ranges,
+// each range writes its faces into a block of its own, and the blocks are then concatenated
+// in element order, again in parallel. How the ranges are cut (the number of threads) does
+// not change the result. Writing into blocks costs a copy of the faces, which is small next
+// to working out what they are, and spares a counting pass that would do that work twice.
+#ifndef SubDFaceBlocks_h
+#define SubDFaceBlocks_h
+
+#include "SubDParallel.h"
+#include "SubDTypes.h"
+
+#include <functional>
+#include <vector>
+
+namespace subd
+{
+/// The faces written for one range of parent elements.
+struct SUBDKERNEL_EXPORT FaceBlock
+{
+  std::vector<Index> Ends;          ///< corner count after each face
+  std::vector<Index> Vertices;      ///< faces' corners; a face in progress is at the end
+  std::vector<Index> Origins;       ///< one per face
+  std::vector<std::uint8_t> Holes;  ///< one per face
+
+  /// Starts a face: returns where its corners begin, for EndFace.
+  size_t BeginFace() const { return this->Vertices.size(); }
+  /// Closes the face of the corners pushed since `first` (BeginFace).
+  void EndFace(Index origin, std::uint8_t hole)
+  {
+    this->Ends.push_back(static_cast<Index>(this->Vertices.size()));
+    this->Origins.push_back(origin);
+    this->Holes.push_back(hole);
+  }
+  /// The same, without repeats of welded points (consecutive, or last = first); a face left
+  /// with fewer than three corners is dropped.
+  void EndFaceWithoutRepeats(size_t first, Index origin, std::uint8_t hole);
+  /// Appends a triangle.
+  void AddTriangle(Index a, Index b, Index c, Index origin, std::uint8_t hole)
+  {
+    this->Vertices.insert(this->Vertices.end(), { a, b, c });
+    this->EndFace(origin, hole);
+  }
+};
+
+/// The concatenated faces of all blocks.
+struct EmittedFaces
+{
+  IndexArray Offsets;                ///< numFaces + 1 entries, from 0
+  IndexArray Vertices;
+  std::vector<Index> Origins;
+  std::vector<std::uint8_t> Holes;
+};
+
+/// Runs write(begin, end, block) over ranges covering [0, numElements), each writing the
+/// faces of its elements in order, and concatenates the blocks in element order.
+SUBDKERNEL_EXPORT EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelFor,
+  const std::function<void(Index begin, Index end, FaceBlock& block)>& write);
+}
+
+#endif
