@@ -128,9 +128,11 @@ public:
   Index FindEdge(Index a, Index b) const;
 
 private:
-  // Splits that know their child's relations write them directly (SubDPrimalChildTopology).
+  // Splits that know their child's relations write them directly (SubDPrimalChildTopology,
+  // SubDDualChildTopology, SubDSqrt3ChildTopology).
   friend struct PrimalChildAssembly;
   friend class DualChildTopology;
+  friend class Sqrt3ChildTopology;
 
   static IndexSpan Span(const IndexArray& data, const IndexArray& offsets, Index i)
   {

@@ -1,4 +1,6 @@
 #include "SubDSqrt3Rules.h"
+#include "SubDFaceBlocks.h"
+#include "SubDSqrt3ChildTopology.h"
 
 #include <algorithm>
 #include <cmath>
@@ -137,72 +139,89 @@ void InheritSqrt3Sharpness(const Level& parent, const std::vector<Index>& firstE
 }
 }
 
-LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
+namespace
+{
+// The child points of one step (see the header): centroids, old vertices, trisection points.
+struct Sqrt3Points
+{
+  std::vector<Index> TrisectedEdge;  // per face (ChooseTrisectedEdges)
+  std::vector<Index> CentroidPoint;  // per face, InvalidIndex for a trisecting face
+  Index FirstVertexPoint = 0;
+  std::vector<Index> FirstEdgePoint; // per edge, InvalidIndex unless trisected
+  Index NumPoints = 0;
+
+  Sqrt3Points(const Level& parent, bool evenStep)
+    : TrisectedEdge(ChooseTrisectedEdges(parent, evenStep))
+  {
+    const MeshTopology& topo = parent.Topology;
+    const Index numFaces = topo.GetNumFaces();
+    this->CentroidPoint.assign(static_cast<size_t>(numFaces), InvalidIndex);
+    for (Index f = 0; f < numFaces; ++f)
+    {
+      if (this->TrisectedEdge[f] == InvalidIndex)
+      {
+        this->CentroidPoint[f] = this->NumPoints++;
+      }
+    }
+    this->FirstVertexPoint = this->NumPoints;
+    this->NumPoints += topo.GetNumVertices();
+    this->FirstEdgePoint.assign(static_cast<size_t>(topo.GetNumEdges()), InvalidIndex);
+    for (Index f = 0; f < numFaces; ++f)
+    {
+      const Index e = this->TrisectedEdge[f];
+      if (e != InvalidIndex && this->FirstEdgePoint[e] == InvalidIndex)
+      {
+        this->FirstEdgePoint[e] = this->NumPoints;
+        this->NumPoints += 2;
+      }
+    }
+  }
+  // The trisection point of edge e next to its end v.
+  Index TrisectionPoint(const MeshTopology& topo, Index e, Index v) const
+  {
+    return this->FirstEdgePoint[e] + (topo.GetEdgeVertices(e)[0] == v ? 0 : 1);
+  }
+};
+
+// The rows of one step, written in parallel (each row by one task).
+StencilTable BuildSqrt3Stencils(const Level& parent, const Sqrt3Points& points, bool evenStep, const ParallelFor& parallelFor)
 {
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
   const Index numVertices = topo.GetNumVertices();
-  const bool evenStep = (parent.Depth % 2) == 1; // the step making level Depth + 1
-  const std::vector<Index> trisectedEdge = ChooseTrisectedEdges(parent, evenStep);
-
-  // Child point numbering.
-  std::vector<Index> centroidPoint(static_cast<size_t>(numFaces), InvalidIndex);
-  Index numChildPoints = 0;
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    if (trisectedEdge[f] == InvalidIndex)
-    {
-      centroidPoint[f] = numChildPoints++;
-    }
-  }
-  const Index firstVertexPoint = numChildPoints;
-  numChildPoints += numVertices;
-  std::vector<Index> firstEdgePoint(static_cast<size_t>(topo.GetNumEdges()), InvalidIndex);
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    const Index e = trisectedEdge[f];
-    if (e != InvalidIndex && firstEdgePoint[e] == InvalidIndex)
-    {
-      firstEdgePoint[e] = numChildPoints;
-      numChildPoints += 2;
-    }
-  }
-  // The trisection point of edge e next to its end v.
-  auto trisectionPoint = [&](Index e, Index v) {
-    return firstEdgePoint[e] + (topo.GetEdgeVertices(e)[0] == v ? 0 : 1);
-  };
-
-  LevelRefinement result;
-  StencilTable& table = result.Stencils;
-  table = StencilTable(numVertices);
-  table.ReserveRows(numChildPoints);
+  const Index numEdges = topo.GetNumEdges();
+  StencilTable table(numVertices);
+  table.ReserveRows(points.NumPoints);
   std::vector<Sqrt3VertexRule> rules(static_cast<size_t>(numVertices));
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    rules[v] = ClassifySqrt3Vertex(parent, v, evenStep);
-  }
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    if (centroidPoint[f] != InvalidIndex)
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v)
     {
-      table.SetRowSize(centroidPoint[f], 3);
+      rules[v] = ClassifySqrt3Vertex(parent, v, evenStep);
+      const Index size = rules[v] == Sqrt3VertexRule::Relax ? 1 + topo.GetVertexEdges(v).size()
+                                                             : (rules[v] == Sqrt3VertexRule::Curve ? 3 : 1);
+      table.SetRowSize(points.FirstVertexPoint + v, size);
     }
-  }
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    const Index size = rules[v] == Sqrt3VertexRule::Relax ? 1 + topo.GetVertexEdges(v).size()
-                                                           : (rules[v] == Sqrt3VertexRule::Curve ? 3 : 1);
-    table.SetRowSize(firstVertexPoint + v, size);
-  }
-  for (Index e = 0; e < topo.GetNumEdges(); ++e)
-  {
-    if (firstEdgePoint[e] != InvalidIndex)
+  });
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
     {
-      table.SetRowSize(firstEdgePoint[e], 3);
-      table.SetRowSize(firstEdgePoint[e] + 1, 3);
+      if (points.CentroidPoint[f] != InvalidIndex)
+      {
+        table.SetRowSize(points.CentroidPoint[f], 3);
+      }
     }
-  }
-  table.FinalizeSizes();
+  });
+  parallelFor(0, numEdges, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e)
+    {
+      if (points.FirstEdgePoint[e] != InvalidIndex)
+      {
+        table.SetRowSize(points.FirstEdgePoint[e], 3);
+        table.SetRowSize(points.FirstEdgePoint[e] + 1, 3);
+      }
+    }
+  });
+  table.FinalizeSizesUnfilled();
   auto setRow = [&](Index row, std::initializer_list<std::pair<Index, double>> entries) {
     Index* src = table.GetMutableSources(row);
     double* wts = table.GetMutableWeights(row);
@@ -212,131 +231,206 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const Para
       *wts++ = entry.second;
     }
   };
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    if (centroidPoint[f] != InvalidIndex)
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
     {
-      const IndexSpan fv = topo.GetFaceVertices(f);
-      setRow(centroidPoint[f], { { fv[0], 1.0 / 3.0 }, { fv[1], 1.0 / 3.0 }, { fv[2], 1.0 / 3.0 } });
-    }
-  }
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    const Index row = firstVertexPoint + v;
-    if (rules[v] == Sqrt3VertexRule::Relax)
-    {
-      const IndexSpan edges = topo.GetVertexEdges(v);
-      const Index n = edges.size();
-      const double alpha = Sqrt3Alpha(n);
-      Index* src = table.GetMutableSources(row);
-      double* wts = table.GetMutableWeights(row);
-      src[0] = v;
-      wts[0] = 1.0 - alpha;
-      for (Index i = 0; i < n; ++i)
+      if (points.CentroidPoint[f] != InvalidIndex)
       {
-        src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
-        wts[1 + i] = alpha / n;
+        const IndexSpan fv = topo.GetFaceVertices(f);
+        setRow(points.CentroidPoint[f], { { fv[0], 1.0 / 3.0 }, { fv[1], 1.0 / 3.0 }, { fv[2], 1.0 / 3.0 } });
       }
     }
-    else if (rules[v] == Sqrt3VertexRule::Curve)
-    {
-      const Index p = Sqrt3CurveNeighbour(parent, v, InvalidIndex);
-      const Index q = Sqrt3CurveNeighbour(parent, v, p);
-      setRow(row, { { p, 4.0 / 27.0 }, { v, 19.0 / 27.0 }, { q, 4.0 / 27.0 } });
-    }
-    else
-    {
-      setRow(row, { { v, 1.0 } });
-    }
-  }
-  for (Index e = 0; e < topo.GetNumEdges(); ++e)
+  });
+  // Kobbelt's alpha_n for the valences most meshes have, tabulated: the cosine would be
+  // most of the cost of a row.
+  std::vector<double> alphas(16);
+  for (Index n = 1; n < static_cast<Index>(alphas.size()); ++n)
   {
-    if (firstEdgePoint[e] == InvalidIndex)
-    {
-      continue;
-    }
-    const Index a = topo.GetEdgeVertices(e)[0], b = topo.GetEdgeVertices(e)[1];
-    const Index p = Sqrt3CurveNeighbour(parent, a, b), q = Sqrt3CurveNeighbour(parent, b, a);
-    setRow(firstEdgePoint[e], { { p, 1.0 / 27.0 }, { a, 16.0 / 27.0 }, { b, 10.0 / 27.0 } });
-    setRow(firstEdgePoint[e] + 1, { { a, 10.0 / 27.0 }, { b, 16.0 / 27.0 }, { q, 1.0 / 27.0 } });
+    alphas[n] = Sqrt3Alpha(n);
   }
-  table.EndBlock(numChildPoints);
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v)
+    {
+      const Index row = points.FirstVertexPoint + v;
+      if (rules[v] == Sqrt3VertexRule::Relax)
+      {
+        const IndexSpan edges = topo.GetVertexEdges(v);
+        const Index n = edges.size();
+        const double alpha = n < static_cast<Index>(alphas.size()) ? alphas[n] : Sqrt3Alpha(n);
+        Index* src = table.GetMutableSources(row);
+        double* wts = table.GetMutableWeights(row);
+        src[0] = v;
+        wts[0] = 1.0 - alpha;
+        for (Index i = 0; i < n; ++i)
+        {
+          src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
+          wts[1 + i] = alpha / n;
+        }
+      }
+      else if (rules[v] == Sqrt3VertexRule::Curve)
+      {
+        const Index p = Sqrt3CurveNeighbour(parent, v, InvalidIndex);
+        const Index q = Sqrt3CurveNeighbour(parent, v, p);
+        setRow(row, { { p, 4.0 / 27.0 }, { v, 19.0 / 27.0 }, { q, 4.0 / 27.0 } });
+      }
+      else
+      {
+        setRow(row, { { v, 1.0 } });
+      }
+    }
+  });
+  parallelFor(0, numEdges, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e)
+    {
+      if (points.FirstEdgePoint[e] == InvalidIndex)
+      {
+        continue;
+      }
+      const Index a = topo.GetEdgeVertices(e)[0], b = topo.GetEdgeVertices(e)[1];
+      const Index p = Sqrt3CurveNeighbour(parent, a, b), q = Sqrt3CurveNeighbour(parent, b, a);
+      setRow(points.FirstEdgePoint[e], { { p, 1.0 / 27.0 }, { a, 16.0 / 27.0 }, { b, 10.0 / 27.0 } });
+      setRow(points.FirstEdgePoint[e] + 1, { { a, 10.0 / 27.0 }, { b, 16.0 / 27.0 }, { q, 1.0 / 27.0 } });
+    }
+  });
+  table.EndBlock(points.NumPoints);
+  return table;
+}
 
-  // Topology.
-  Level& child = result.Child;
-  IndexArray offsets{ 0 }, vertices;
-  auto addTriangle = [&](Index x, Index y, Index z, Index originFace, std::uint8_t hole) {
-    vertices.insert(vertices.end(), { x, y, z });
-    offsets.push_back(static_cast<Index>(vertices.size()));
-    child.FaceOrigin.push_back(parent.FaceOrigin[originFace]);
-    child.FaceIsHole.push_back(hole);
-  };
-  auto vertexPoint = [firstVertexPoint](Index v) { return firstVertexPoint + v; };
+// Writes the child triangles of the parent's edges (flipped or kept), then of its faces
+// (the middle triangle of a trisected one).
+class Sqrt3FaceWriter
+{
+public:
+  Sqrt3FaceWriter(const Level& parent, const Sqrt3Points& points)
+    : Parent(parent)
+    , Topo(parent.Topology)
+    , Points(points)
+  {
+  }
+  Index GetNumElements() const { return this->Topo.GetNumEdges() + this->Topo.GetNumFaces(); }
+
+  void WriteBlock(Index begin, Index end, FaceBlock& out) const
+  {
+    const Index numEdges = this->Topo.GetNumEdges();
+    for (Index element = begin; element < end; ++element)
+    {
+      if (element < numEdges)
+      {
+        this->WriteEdgeTriangles(element, out);
+      }
+      else
+      {
+        this->WriteMiddleTriangle(element - numEdges, out);
+      }
+    }
+  }
+
+private:
+  Index VertexPoint(Index v) const { return this->Points.FirstVertexPoint + v; }
+
   // Edge e's ends (a, b) in the order face f runs them.
-  auto orientedEnds = [&](Index e, Index f, Index& a, Index& b) {
-    const Index* ev = topo.GetEdgeVertices(e);
-    const IndexSpan fv = topo.GetFaceVertices(f); // a triangle: its corners, not v's faces
+  void OrientedEnds(Index e, Index f, Index& a, Index& b) const
+  {
+    const Index* ev = this->Topo.GetEdgeVertices(e);
+    const IndexSpan fv = this->Topo.GetFaceVertices(f); // a triangle: its corners, not v's faces
     const Index corner = fv[0] == ev[0] ? 0 : (fv[1] == ev[0] ? 1 : 2);
     const bool forward = fv[(corner + 1) % 3] == ev[1];
     a = forward ? ev[0] : ev[1];
     b = forward ? ev[1] : ev[0];
-  };
+  }
+
   // The point an old edge e of face f is flipped to: the centroid, or in a triangle that
   // trisects another edge the trisection point next to the end the two edges share.
-  auto apex = [&](Index f, Index e) {
-    if (centroidPoint[f] != InvalidIndex)
-    {
-      return centroidPoint[f];
-    }
-    const Index t = trisectedEdge[f];
-    const Index* ev = topo.GetEdgeVertices(e);
-    const Index* tv = topo.GetEdgeVertices(t);
-    const Index shared = (ev[0] == tv[0] || ev[0] == tv[1]) ? ev[0] : ev[1];
-    return trisectionPoint(t, shared);
-  };
-  for (Index e = 0; e < topo.GetNumEdges(); ++e)
+  Index Apex(Index f, Index e) const
   {
-    const IndexSpan ef = topo.GetEdgeFaces(e);
-    if (!ActsAsBoundary(parent, e))
+    if (this->Points.CentroidPoint[f] != InvalidIndex)
+    {
+      return this->Points.CentroidPoint[f];
+    }
+    const Index t = this->Points.TrisectedEdge[f];
+    const Index* ev = this->Topo.GetEdgeVertices(e);
+    const Index* tv = this->Topo.GetEdgeVertices(t);
+    const Index shared = (ev[0] == tv[0] || ev[0] == tv[1]) ? ev[0] : ev[1];
+    return this->Points.TrisectionPoint(this->Topo, t, shared);
+  }
+
+  void WriteEdgeTriangles(Index e, FaceBlock& out) const
+  {
+    const IndexSpan ef = this->Topo.GetEdgeFaces(e);
+    const std::vector<std::uint8_t>& isHole = this->Parent.FaceIsHole;
+    if (!ActsAsBoundary(this->Parent, e))
     {
       Index f1 = ef[0], f2 = ef[1], a, b;
-      orientedEnds(e, f1, a, b);
-      const std::uint8_t hole = parent.FaceIsHole[f1] && parent.FaceIsHole[f2];
-      addTriangle(vertexPoint(a), apex(f2, e), apex(f1, e), f1, hole);
-      addTriangle(vertexPoint(b), apex(f1, e), apex(f2, e), f2, hole);
-      continue;
+      this->OrientedEnds(e, f1, a, b);
+      const std::uint8_t hole = isHole[f1] && isHole[f2];
+      out.AddTriangle(this->VertexPoint(a), this->Apex(f2, e), this->Apex(f1, e), this->Parent.FaceOrigin[f1], hole);
+      out.AddTriangle(this->VertexPoint(b), this->Apex(f1, e), this->Apex(f2, e), this->Parent.FaceOrigin[f2], hole);
+      return;
     }
     // Not flipped (boundary, crease, non-manifold): each face keeps its part next to e,
-    // unless e is the edge the face trisects (handled below).
+    // unless e is the edge the face trisects (its middle triangle comes with the face).
     for (Index f : ef)
     {
-      if (e == trisectedEdge[f])
+      if (e != this->Points.TrisectedEdge[f])
       {
-        continue;
+        Index a, b;
+        this->OrientedEnds(e, f, a, b);
+        out.AddTriangle(this->VertexPoint(a), this->VertexPoint(b), this->Apex(f, e), this->Parent.FaceOrigin[f], isHole[f]);
       }
-      Index a, b;
-      orientedEnds(e, f, a, b);
-      addTriangle(vertexPoint(a), vertexPoint(b), apex(f, e), f, parent.FaceIsHole[f]);
     }
   }
+
   // Triangles (a, b, m) trisecting (a, b): the middle triangle (x_a, x_b, m); the triangles
-  // (a, x_a, m) and (x_b, b, m) were made above, through the flips of (m, a) and (b, m).
-  for (Index f = 0; f < numFaces; ++f)
+  // (a, x_a, m) and (x_b, b, m) come from the flips of (m, a) and (b, m).
+  void WriteMiddleTriangle(Index f, FaceBlock& out) const
   {
-    const Index e = trisectedEdge[f];
+    const Index e = this->Points.TrisectedEdge[f];
     if (e == InvalidIndex)
     {
-      continue;
+      return;
     }
     Index a, b;
-    orientedEnds(e, f, a, b);
-    const Index m = topo.GetTriangleOppositeVertex(f, e);
-    addTriangle(trisectionPoint(e, a), trisectionPoint(e, b), vertexPoint(m), f, parent.FaceIsHole[f]);
+    this->OrientedEnds(e, f, a, b);
+    const Index m = this->Topo.GetTriangleOppositeVertex(f, e);
+    out.AddTriangle(this->Points.TrisectionPoint(this->Topo, e, a), this->Points.TrisectionPoint(this->Topo, e, b),
+      this->VertexPoint(m), this->Parent.FaceOrigin[f], this->Parent.FaceIsHole[f]);
   }
-  SetChildTopology(parent, child, numChildPoints, std::move(offsets), std::move(vertices), depth, parallelFor);
+
+  const Level& Parent;
+  const MeshTopology& Topo;
+  const Sqrt3Points& Points;
+};
+}
+
+LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
+{
+  const bool evenStep = (parent.Depth % 2) == 1; // the step making level Depth + 1
+  const Sqrt3Points points(parent, evenStep);
+  LevelRefinement result;
+  result.Stencils = BuildSqrt3Stencils(parent, points, evenStep, parallelFor);
+
+  const Sqrt3FaceWriter writer(parent, points);
+  EmittedFaces faces = EmitFacesInParallel(writer.GetNumElements(), parallelFor,
+    [&writer](Index begin, Index end, FaceBlock& block) { writer.WriteBlock(begin, end, block); });
+  Level& child = result.Child;
+  child.FaceOrigin = std::move(faces.Origins);
+  child.FaceIsHole = std::move(faces.Holes);
+  if (depth == ChildTopology::Full && Sqrt3ChildTopology::Applies(parent, points.NumPoints))
+  {
+    child.Depth = parent.Depth + 1;
+    child.Creasing = parent.Creasing;
+    child.Topology = Sqrt3ChildTopology::OfSqrt3Step(
+      parent.Topology, std::move(faces.Offsets), std::move(faces.Vertices), parallelFor);
+    child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), SharpnessSmooth);
+    child.VertexSharpness.assign(static_cast<size_t>(points.NumPoints), SharpnessSmooth);
+  }
+  else
+  {
+    SetChildTopology(parent, child, points.NumPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
+  }
   if (depth == ChildTopology::Full)
   {
-    InheritSqrt3Sharpness(parent, firstEdgePoint, firstVertexPoint, child);
+    InheritSqrt3Sharpness(parent, points.FirstEdgePoint, points.FirstVertexPoint, child);
   }
   return result;
 }

@@ -1,0 +1,233 @@
+#include "SubDSqrt3ChildTopology.h"
+
+#include <algorithm>
+
+namespace subd
+{
+bool Sqrt3ChildTopology::Applies(const Level& parent, Index numPoints)
+{
+  const MeshTopology& topo = parent.Topology;
+  if (numPoints != topo.GetNumFaces() + topo.GetNumVertices() || topo.GetNumBoundaryEdges() > 0 ||
+    topo.GetNumNonManifoldEdges() > 0 || topo.GetNumNonManifoldVertices() > 0 ||
+    topo.GetNumFaceCorners() != 3 * topo.GetNumFaces())
+  {
+    return false;
+  }
+  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+  {
+    if (topo.GetVertexFaces(v).empty())
+    {
+      return false;
+    }
+  }
+  // A sharp edge is not flipped.
+  return std::none_of(parent.EdgeSharpness.begin(), parent.EdgeSharpness.end(), [](float s) { return IsSharp(s); });
+}
+
+namespace
+{
+// One old edge: its faces and its ends in the order its first face runs them.
+struct FlippedEdge
+{
+  Index F1, F2, A, B;
+
+  FlippedEdge(const MeshTopology& topo, Index e)
+  {
+    const IndexSpan ef = topo.GetEdgeFaces(e);
+    const Index* ev = topo.GetEdgeVertices(e);
+    const IndexSpan fv = topo.GetFaceVertices(ef[0]);
+    const Index corner = fv[0] == ev[0] ? 0 : (fv[1] == ev[0] ? 1 : 2);
+    const bool forward = fv[(corner + 1) % 3] == ev[1];
+    this->F1 = ef[0];
+    this->F2 = ef[1];
+    this->A = forward ? ev[0] : ev[1];
+    this->B = forward ? ev[1] : ev[0];
+  }
+  // The child triangle of this edge holding old vertex v (an end).
+  Index TriangleAt(Index e, Index v) const { return 2 * e + (v == this->A ? 0 : 1); }
+};
+
+// The spoke from old vertex v to the centroid of triangle f: its parent corner (the key of
+// the spoke) and the other edge of f at v.
+struct Spoke
+{
+  Index Corner, OtherEdge;
+
+  Spoke(const MeshTopology& topo, Index f, Index v, Index e)
+  {
+    const IndexSpan fv = topo.GetFaceVertices(f);
+    const IndexSpan fe = topo.GetFaceEdges(f);
+    const Index j = fv[0] == v ? 0 : (fv[1] == v ? 1 : 2);
+    this->Corner = topo.GetFaceOffset(f) + j;
+    this->OtherEdge = fe[j] == e ? fe[(j + 2) % 3] : fe[j];
+  }
+};
+
+void FillStrided(IndexArray& offsets, Index count, Index stride, const ParallelFor& parallelFor)
+{
+  offsets.resize(static_cast<size_t>(count) + 1);
+  parallelFor(0, count + 1, [&](Index begin, Index end) {
+    for (Index i = begin; i < end; ++i)
+    {
+      offsets[i] = stride * i;
+    }
+  });
+}
+}
+
+MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
+  const MeshTopology& parent, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
+{
+  const Index numFaces = parent.GetNumFaces();
+  const Index numEdges = parent.GetNumEdges();
+  const Index numVertices = parent.GetNumVertices();
+  MeshTopology child = MeshTopology::BuildFacesOnly(numFaces + numVertices, std::move(offsets), std::move(vertices));
+  auto vertexPoint = [numFaces](Index v) { return numFaces + v; };
+
+  // The spokes of edge e's triangles, in the order the walk meets them: triangle 2e at its
+  // corners 0 and 2, then triangle 2e + 1 at its corners 0 and 2 (corner 1 of both is the
+  // flipped edge). `visit(spoke, from, to)` gets each with the ends it runs there.
+  auto visitSpokes = [&](Index e, const FlippedEdge& edge, auto&& visit) {
+    visit(Spoke(parent, edge.F2, edge.A, e), vertexPoint(edge.A), edge.F2);
+    visit(Spoke(parent, edge.F1, edge.A, e), edge.F1, vertexPoint(edge.A));
+    visit(Spoke(parent, edge.F1, edge.B, e), vertexPoint(edge.B), edge.F1);
+    visit(Spoke(parent, edge.F2, edge.B, e), edge.F2, vertexPoint(edge.B));
+  };
+
+  // Edges met first in each old edge's triangles: its flipped edge and the spokes whose
+  // other edge comes later.
+  IndexArray firstNewEdge(static_cast<size_t>(numEdges) + 1);
+  firstNewEdge[0] = 0;
+  parallelFor(0, numEdges, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e)
+    {
+      Index count = 1;
+      visitSpokes(e, FlippedEdge(parent, e), [&](const Spoke& spoke, Index, Index) { count += spoke.OtherEdge > e; });
+      firstNewEdge[e + 1] = count;
+    }
+  });
+  for (Index e = 0; e < numEdges; ++e)
+  {
+    firstNewEdge[e + 1] += firstNewEdge[e];
+  }
+  const Index numChildEdges = firstNewEdge[numEdges];
+
+  // Number them: each edge's ends (as first met) and two triangles.
+  IndexArray flippedEdge(static_cast<size_t>(numEdges)), spokeEdge(static_cast<size_t>(parent.GetNumFaceCorners()));
+  child.EdgeVertices.resize(2 * static_cast<size_t>(numChildEdges));
+  child.EdgeFaces.resize(2 * static_cast<size_t>(numChildEdges));
+  parallelFor(0, numEdges, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e)
+    {
+      const FlippedEdge edge(parent, e);
+      Index next = firstNewEdge[e];
+      auto add = [&](Index from, Index to, Index t0, Index t1) {
+        child.EdgeVertices[2 * static_cast<size_t>(next)] = from;
+        child.EdgeVertices[2 * static_cast<size_t>(next) + 1] = to;
+        child.EdgeFaces[2 * static_cast<size_t>(next)] = t0;
+        child.EdgeFaces[2 * static_cast<size_t>(next) + 1] = t1;
+        return next++;
+      };
+      int k = 0;
+      visitSpokes(e, edge, [&](const Spoke& spoke, Index from, Index to) {
+        const Index v = from < numFaces ? to - numFaces : from - numFaces;
+        if (k++ == 1)
+        {
+          flippedEdge[e] = add(edge.F2, edge.F1, 2 * e, 2 * e + 1); // triangle 2e, corner 1
+        }
+        if (spoke.OtherEdge > e)
+        {
+          spokeEdge[spoke.Corner] = add(from, to, edge.TriangleAt(e, v), FlippedEdge(parent, spoke.OtherEdge).TriangleAt(spoke.OtherEdge, v));
+        }
+      });
+    }
+  });
+  FillStrided(child.EdgeFaceOffsets, numChildEdges, 2, parallelFor);
+
+  // Face edges: triangle 2e (spoke, flipped, spoke), triangle 2e + 1 (spoke, flipped, spoke).
+  child.FaceEdges.resize(child.FaceVertices.size());
+  parallelFor(0, numEdges, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e)
+    {
+      Index* edges = child.FaceEdges.data() + 6 * static_cast<size_t>(e);
+      int k = 0;
+      visitSpokes(e, FlippedEdge(parent, e), [&](const Spoke& spoke, Index, Index) {
+        const int slot = k < 2 ? 2 * k : 3 + 2 * (k - 2); // 0, 2, 3, 5
+        edges[slot] = spokeEdge[spoke.Corner];
+        ++k;
+      });
+      edges[1] = flippedEdge[e];
+      edges[4] = flippedEdge[e];
+    }
+  });
+
+  // Centroids: six triangles (two per edge of their face) and six edges (three flipped,
+  // three spokes). Old vertices: one triangle per edge, one spoke per face.
+  const size_t centroidSlots = 6 * static_cast<size_t>(numFaces);
+  child.VertexFaces.resize(centroidSlots + parent.VertexFaces.size());
+  child.VertexFaceCorners.resize(child.VertexFaces.size());
+  child.VertexEdges.resize(centroidSlots + parent.VertexEdges.size());
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
+    {
+      Index faceEdges[3] = { parent.GetFaceEdges(f)[0], parent.GetFaceEdges(f)[1], parent.GetFaceEdges(f)[2] };
+      std::sort(faceEdges, faceEdges + 3);
+      Index* faces = child.VertexFaces.data() + 6 * static_cast<size_t>(f);
+      Index* corners = child.VertexFaceCorners.data() + 6 * static_cast<size_t>(f);
+      Index* edges = child.VertexEdges.data() + 6 * static_cast<size_t>(f);
+      for (int i = 0; i < 3; ++i)
+      {
+        const Index e = faceEdges[i];
+        const bool first = parent.GetEdgeFaces(e)[0] == f; // m1 of (a, m2, m1), (b, m1, m2)
+        faces[2 * i] = 2 * e;
+        faces[2 * i + 1] = 2 * e + 1;
+        corners[2 * i] = first ? 2 : 1;
+        corners[2 * i + 1] = first ? 1 : 2;
+        edges[i] = flippedEdge[e];
+        edges[3 + i] = spokeEdge[parent.GetFaceOffset(f) + i];
+      }
+      std::sort(edges, edges + 6);
+    }
+  });
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v)
+    {
+      const size_t first = centroidSlots + static_cast<size_t>(parent.VertexEdgeOffsets[v]);
+      const IndexSpan vertexEdges = parent.GetVertexEdges(v);
+      for (Index i = 0; i < vertexEdges.size(); ++i) // edges sorted: so are their triangles
+      {
+        child.VertexFaces[first + i] = FlippedEdge(parent, vertexEdges[i]).TriangleAt(vertexEdges[i], v);
+        child.VertexFaceCorners[first + i] = 0;
+      }
+      const IndexSpan faces = parent.GetVertexFaces(v), corners = parent.GetVertexFaceCorners(v);
+      Index* edges = child.VertexEdges.data() + centroidSlots + parent.VertexFaceOffsets[v];
+      for (Index i = 0; i < faces.size(); ++i)
+      {
+        edges[i] = spokeEdge[parent.GetFaceOffset(faces[i]) + corners[i]];
+      }
+      std::sort(edges, edges + faces.size());
+    }
+  });
+  auto offsetsOf = [&](const IndexArray& parentOffsets, IndexArray& out) {
+    FillStrided(out, numFaces, 6, parallelFor);
+    out.resize(static_cast<size_t>(numFaces + numVertices) + 1);
+    const Index base = 6 * numFaces;
+    parallelFor(0, numVertices, [&](Index begin, Index end) {
+      for (Index v = begin; v < end; ++v)
+      {
+        out[numFaces + v + 1] = base + parentOffsets[v + 1];
+      }
+    });
+  };
+  offsetsOf(parent.VertexEdgeOffsets, child.VertexFaceOffsets); // a closed manifold vertex:
+  offsetsOf(parent.VertexEdgeOffsets, child.VertexEdgeOffsets); // as many faces as edges
+
+  child.EdgeTags.assign(static_cast<size_t>(numChildEdges), EdgeTag{ 0, 0 });
+  child.VertexTags.assign(static_cast<size_t>(numFaces + numVertices), VertexTag{ 0, 0 });
+  child.NumNonManifoldEdges = 0;
+  child.NumNonManifoldVertices = 0;
+  child.NumBoundaryEdges = 0;
+  child.MaxValence = numFaces > 0 ? std::max<Index>(6, parent.GetMaxValence()) : 0;
+  return child;
+}
+}
