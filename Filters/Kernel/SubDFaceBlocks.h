@@ -27,9 +27,17 @@ struct SUBDKERNEL_EXPORT FaceBlock
   std::vector<Index> Origins;       ///< one per face
   std::vector<std::uint8_t> Holes;  ///< one per face
 
-  /// Starts a face: returns where its corners begin, for EndFace.
+  /// Room for `faces` faces of `corners` corners in all (a writer's estimate).
+  void Reserve(size_t faces, size_t corners)
+  {
+    this->Ends.reserve(faces);
+    this->Origins.reserve(faces);
+    this->Holes.reserve(faces);
+    this->Vertices.reserve(corners);
+  }
+  /// Starts a face: returns where its corners begin, for EndFaceWithoutRepeats.
   size_t BeginFace() const { return this->Vertices.size(); }
-  /// Closes the face of the corners pushed since `first` (BeginFace).
+  /// Closes the face of the corners pushed since the last face ended.
   void EndFace(Index origin, std::uint8_t hole)
   {
     this->Ends.push_back(static_cast<Index>(this->Vertices.size()));

@@ -43,8 +43,6 @@ struct FlippedEdge
     this->A = forward ? ev[0] : ev[1];
     this->B = forward ? ev[1] : ev[0];
   }
-  // The child triangle of this edge holding old vertex v (an end).
-  Index TriangleAt(Index e, Index v) const { return 2 * e + (v == this->A ? 0 : 1); }
 };
 
 // The spoke from old vertex v to the centroid of triangle f: its parent corner (the key of
@@ -94,6 +92,17 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
     visit(Spoke(parent, edge.F2, edge.B, e), edge.F2, vertexPoint(edge.B));
   };
 
+  // Each old edge's first end as its first face runs it: which of its triangles holds a
+  // vertex, asked for other edges than the one at hand below.
+  IndexArray edgeStart(static_cast<size_t>(numEdges));
+  parallelFor(0, numEdges, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e)
+    {
+      edgeStart[e] = FlippedEdge(parent, e).A;
+    }
+  });
+  auto triangleAt = [&edgeStart](Index e, Index v) { return 2 * e + (v == edgeStart[e] ? 0 : 1); };
+
   // Edges met first in each old edge's triangles: its flipped edge and the spokes whose
   // other edge comes later.
   IndexArray firstNewEdge(static_cast<size_t>(numEdges) + 1);
@@ -137,7 +146,7 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
         }
         if (spoke.OtherEdge > e)
         {
-          spokeEdge[spoke.Corner] = add(from, to, edge.TriangleAt(e, v), FlippedEdge(parent, spoke.OtherEdge).TriangleAt(spoke.OtherEdge, v));
+          spokeEdge[spoke.Corner] = add(from, to, triangleAt(e, v), triangleAt(spoke.OtherEdge, v));
         }
       });
     }
@@ -196,7 +205,7 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
       const IndexSpan vertexEdges = parent.GetVertexEdges(v);
       for (Index i = 0; i < vertexEdges.size(); ++i) // edges sorted: so are their triangles
       {
-        child.VertexFaces[first + i] = FlippedEdge(parent, vertexEdges[i]).TriangleAt(vertexEdges[i], v);
+        child.VertexFaces[first + i] = triangleAt(vertexEdges[i], v);
         child.VertexFaceCorners[first + i] = 0;
       }
       const IndexSpan faces = parent.GetVertexFaces(v), corners = parent.GetVertexFaceCorners(v);

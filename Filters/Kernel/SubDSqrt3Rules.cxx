@@ -312,6 +312,8 @@ public:
   void WriteBlock(Index begin, Index end, FaceBlock& out) const
   {
     const Index numEdges = this->Topo.GetNumEdges();
+    const size_t flips = static_cast<size_t>(std::max<Index>(0, std::min(end, numEdges) - begin));
+    out.Reserve(2 * flips, 6 * flips); // two triangles per flipped edge: most of a block
     for (Index element = begin; element < end; ++element)
     {
       if (element < numEdges)
