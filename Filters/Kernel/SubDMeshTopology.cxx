@@ -70,7 +70,11 @@ void MeshTopology::BuildEdges()
   const Index numFaces = this->GetNumFaces();
   const size_t numHalfEdges = this->FaceVertices.size();
 
-  std::vector<Index> upper(numHalfEdges);
+  // Each half-edge h as one key, (upper vertex, h): sorting a bucket compares the keys
+  // themselves, not values looked up elsewhere.
+  auto key = [](Index upper, Index h) {
+    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(upper)) << 32) | static_cast<std::uint32_t>(h);
+  };
   IndexArray bucketOffsets(static_cast<size_t>(this->NumVertices) + 1, 0);
   for (Index f = 0; f < numFaces; ++f)
   {
@@ -79,13 +83,12 @@ void MeshTopology::BuildEdges()
     {
       const Index a = this->FaceVertices[h];
       const Index b = this->FaceVertices[h + 1 < end ? h + 1 : begin];
-      upper[h] = std::max(a, b);
       ++bucketOffsets[std::min(a, b) + 1];
     }
   }
   CountsToOffsets(bucketOffsets);
 
-  std::vector<Index> buckets(numHalfEdges);
+  LevelArray<std::uint64_t> buckets(numHalfEdges);
   {
     IndexArray fill(bucketOffsets.begin(), bucketOffsets.end() - 1);
     for (Index f = 0; f < numFaces; ++f)
@@ -95,31 +98,27 @@ void MeshTopology::BuildEdges()
       {
         const Index a = this->FaceVertices[h];
         const Index b = this->FaceVertices[h + 1 < end ? h + 1 : begin];
-        buckets[fill[std::min(a, b)]++] = h;
+        buckets[fill[std::min(a, b)]++] = key(std::max(a, b), h);
       }
     }
   }
 
   // representative[h]: the first half-edge (lowest index) with the same vertex pair as h.
-  std::vector<Index> representative(numHalfEdges);
+  IndexArray representative(numHalfEdges);
   for (Index v = 0; v < this->NumVertices; ++v)
   {
-    Index* first = buckets.data() + bucketOffsets[v];
-    Index* last = buckets.data() + bucketOffsets[v + 1];
-    if (last - first > 1)
+    std::uint64_t* first = buckets.data() + bucketOffsets[v];
+    std::uint64_t* last = buckets.data() + bucketOffsets[v + 1];
+    std::sort(first, last);
+    for (std::uint64_t* it = first; it != last; ++it)
     {
-      std::sort(first, last, [&upper](Index x, Index y) {
-        return upper[x] != upper[y] ? upper[x] < upper[y] : x < y;
-      });
-    }
-    for (Index* it = first; it != last; ++it)
-    {
-      const bool startsRun = (it == first) || upper[*(it - 1)] != upper[*it];
-      representative[*it] = startsRun ? *it : representative[*(it - 1)];
+      const Index h = static_cast<Index>(*it & 0xffffffffu);
+      const bool startsRun = (it == first) || (*(it - 1) >> 32) != (*it >> 32);
+      representative[h] = startsRun ? h : representative[static_cast<Index>(*(it - 1) & 0xffffffffu)];
     }
   }
 
-  this->FaceEdges.assign(numHalfEdges, InvalidIndex);
+  this->FaceEdges.resize(numHalfEdges); // every entry written below
   this->EdgeVertices.clear();
   this->EdgeVertices.reserve(numHalfEdges + 8);
   Index numEdges = 0;
@@ -280,6 +279,44 @@ Index MeshTopology::CountFans(Index v, std::vector<Index>& parent) const
   if (faces.size() <= 1)
   {
     return faces.size();
+  }
+  constexpr Index smallValence = 32;
+  if (faces.size() <= smallValence)
+  {
+    // Faces j and k share an edge at v when one leaves v along the edge the other enters
+    // by (called for vertices whose edges are manifold and consistently oriented): a
+    // union-find over at most 32 local slots, the edges read from the faces' own lists.
+    const IndexSpan corners = this->GetVertexFaceCorners(v);
+    const Index n = faces.size();
+    Index leaving[smallValence], entering[smallValence], group[smallValence];
+    for (Index k = 0; k < n; ++k)
+    {
+      const IndexSpan fe = this->GetFaceEdges(faces[k]);
+      leaving[k] = fe[corners[k]];
+      entering[k] = fe[corners[k] == 0 ? fe.size() - 1 : corners[k] - 1];
+      group[k] = k;
+    }
+    auto root = [&group](Index i) {
+      while (group[i] != i)
+      {
+        i = group[i] = group[group[i]];
+      }
+      return i;
+    };
+    Index groups = n;
+    for (Index j = 0; j < n; ++j)
+    {
+      for (Index k = 0; k < n; ++k)
+      {
+        if (j != k && leaving[j] == entering[k])
+        {
+          const Index rj = root(j), rk = root(k);
+          groups -= rj != rk;
+          group[rj] = rk;
+        }
+      }
+    }
+    return groups;
   }
   parent.resize(faces.size());
   std::iota(parent.begin(), parent.end(), 0);
