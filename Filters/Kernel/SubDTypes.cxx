@@ -1,7 +1,32 @@
 #include "SubDTypes.h"
 
+#include <cstdlib>
+#ifdef __linux__
+#include <sys/mman.h>
+#endif
+
 namespace subd
 {
+void* AllocateLargeBlock(std::size_t bytes)
+{
+  constexpr std::size_t hugePage = std::size_t(2) << 20;
+  const std::size_t rounded = (bytes + hugePage - 1) / hugePage * hugePage;
+  void* block = rounded >= bytes ? std::aligned_alloc(hugePage, rounded) : nullptr;
+  if (!block)
+  {
+    throw std::bad_alloc();
+  }
+#ifdef __linux__
+  madvise(block, rounded, MADV_HUGEPAGE); // a hint: without huge pages nothing changes
+#endif
+  return block;
+}
+
+void FreeLargeBlock(void* block) noexcept
+{
+  std::free(block);
+}
+
 const char* ToString(BoundaryRule rule)
 {
   switch (rule)
