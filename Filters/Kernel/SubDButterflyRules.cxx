@@ -270,6 +270,56 @@ void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
   }
 }
 
+Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* weights) const
+{
+  const MeshTopology& topo = this->Topology;
+  const IndexSpan ef = topo.GetEdgeFaces(e);
+  if (ef.size() != 2 || topo.GetEdgeTag(e).NonManifold || this->Parent.EdgeSharpness[e] != 0.0f)
+  {
+    return 0;
+  }
+  const Index a0 = topo.GetEdgeVertices(e)[0], a1 = topo.GetEdgeVertices(e)[1];
+  if (!this->SmoothRing[a0] || !this->SmoothRing[a1] || this->RingValence(a0) != 6 || this->RingValence(a1) != 6)
+  {
+    return 0;
+  }
+  // AddSmoothRule's butterfly, entry by entry: with nothing sharp, every wing is in its
+  // end's ring and every tip too.
+  const double w = this->Tension;
+  const Index b0 = topo.GetTriangleThirdVertex(ef[0], a0, a1), b1 = topo.GetTriangleThirdVertex(ef[1], a0, a1);
+  Index size = 0;
+  auto add = [&](Index source, double weight) {
+    sources[size] = source;
+    weights[size++] = weight;
+  };
+  add(a0, 0.5 - w);
+  add(a1, 0.5 - w);
+  add(b0, 0.125 + 2.0 * w);
+  add(b1, 0.125 + 2.0 * w);
+  for (Index b : { b0, b1 })
+  {
+    add(this->RingBeyond(a0, a1, b), -0.0625 - w);
+    add(this->RingBeyond(a1, a0, b), -0.0625 - w);
+  }
+  if (w != 0.0)
+  {
+    add(this->RingFrom(a0, a1, 3), w);
+    add(this->RingFrom(a1, a0, 3), w);
+  }
+  // WriteRow merges repeated points (tiny closed meshes): leave those rows to it.
+  for (Index i = 1; i < size; ++i)
+  {
+    for (Index j = 0; j < i; ++j)
+    {
+      if (sources[i] == sources[j])
+      {
+        return 0;
+      }
+    }
+  }
+  return size;
+}
+
 Index ButterflyRowWriter::WriteRow(Index row, Index* sources, double* weights) const
 {
   const MeshTopology& topo = this->Topology;

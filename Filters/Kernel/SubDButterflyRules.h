@@ -61,9 +61,15 @@ public:
   /// buffers before blending it into the row.
   Index GetMaxRowSize() const { return 2 * this->RowBound; }
   Index WriteRow(Index row, Index* sources, double* weights) const;
-  /// Vertex points (copies of the parent's vertices); edge points are written.
+  /// Vertex points (copies of the parent's vertices) and the edge points of the regular
+  /// butterfly (RegularButterflyRow); the other edge points are written.
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+  /// The row of edge e when it is the regular butterfly, as WriteRow writes it (same sources,
+  /// weights and order): e smooth between two triangles, both ends of valence 6 with nothing
+  /// sharp at them, and its 10 points (8 without tension) distinct. Returns the row's size,
+  /// 0 for any other edge. `sources` and `weights` need room for 10.
+  Index RegularButterflyRow(Index e, Index* sources, double* weights) const;
 
   /// A row under construction in caller storage: weights accumulated per source.
   struct Row
@@ -102,11 +108,19 @@ template <typename T>
 bool ButterflyRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
 {
   const Index numEdges = this->Topology.GetNumEdges();
+  PointSum point;
   if (row < numEdges)
   {
-    return false;
+    Index sources[10];
+    double weights[10];
+    const Index size = this->RegularButterflyRow(row, sources, weights);
+    for (Index k = 0; k < size; ++k)
+    {
+      point.Add(weights[k], parents + 3 * static_cast<size_t>(sources[k]));
+    }
+    point.Store(dst);
+    return size > 0;
   }
-  PointSum point;
   point.Add(1.0, parents + 3 * static_cast<size_t>(row - numEdges));
   point.Store(dst);
   return true;
