@@ -1,5 +1,6 @@
 #include "vtkSubDAdoptedArray.h"
 
+#include <memory>
 #include <mutex>
 #include <type_traits>
 #include <unordered_map>
@@ -11,7 +12,7 @@ namespace
 struct AdoptedVectors
 {
   std::mutex Mutex;
-  std::unordered_map<const void*, subd::IndexArray> ByStorage;
+  std::unordered_map<const void*, std::shared_ptr<void>> ByStorage; // the vector owning it
 };
 
 AdoptedVectors& Registry()
@@ -22,7 +23,7 @@ AdoptedVectors& Registry()
 
 void FreeAdopted(void* storage)
 {
-  subd::IndexArray released;
+  std::shared_ptr<void> released;
   {
     AdoptedVectors& registry = Registry();
     std::lock_guard<std::mutex> lock(registry.Mutex);
@@ -36,26 +37,44 @@ void FreeAdopted(void* storage)
   }
   // `released` is freed here, outside the lock.
 }
+
+// Gives `array` the storage of `values` (not empty), which the registry keeps until VTK
+// frees it.
+template <typename ArrayType, typename Vector>
+void Adopt(ArrayType* array, Vector&& values)
+{
+  auto owner = std::make_shared<std::decay_t<Vector>>(std::move(values)); // moving keeps the storage
+  auto* storage = owner->data();
+  const vtkIdType size = static_cast<vtkIdType>(owner->size());
+  {
+    AdoptedVectors& registry = Registry();
+    std::lock_guard<std::mutex> lock(registry.Mutex);
+    registry.ByStorage.emplace(storage, std::move(owner));
+  }
+  array->SetArray(storage, size, 0, vtkAbstractArray::VTK_DATA_ARRAY_USER_DEFINED);
+  array->SetArrayFreeFunction(&FreeAdopted);
+}
 }
 
 vtkSmartPointer<vtkTypeInt32Array> vtkSubDAdoptVector(subd::IndexArray&& values)
 {
   auto array = vtkSmartPointer<vtkTypeInt32Array>::New();
-  if (values.empty())
+  if (!values.empty())
   {
-    values = subd::IndexArray();
-    return array;
-  }
-  std::int32_t* storage = values.data();
-  const vtkIdType size = static_cast<vtkIdType>(values.size());
-  {
-    AdoptedVectors& registry = Registry();
-    std::lock_guard<std::mutex> lock(registry.Mutex);
-    registry.ByStorage.emplace(storage, std::move(values)); // moving keeps the storage
+    Adopt(array.Get(), std::move(values));
   }
   values = subd::IndexArray();
-  array->SetArray(storage, size, 0, vtkAbstractArray::VTK_DATA_ARRAY_USER_DEFINED);
-  array->SetArrayFreeFunction(&FreeAdopted);
+  return array;
+}
+
+vtkSmartPointer<vtkDoubleArray> vtkSubDNewDoubleArray(int components, vtkIdType tuples)
+{
+  auto array = vtkSmartPointer<vtkDoubleArray>::New();
+  array->SetNumberOfComponents(components);
+  if (tuples > 0 && components > 0)
+  {
+    Adopt(array.Get(), subd::LevelArray<double>(static_cast<size_t>(tuples) * static_cast<size_t>(components)));
+  }
   return array;
 }
 

@@ -11,11 +11,18 @@
 
 #include "SubDFiltersModule.h" // export macro
 #include "SubDTypes.h"          // IndexArray
+#include "vtkDoubleArray.h"
 #include "vtkSmartPointer.h"
 #include "vtkTypeInt32Array.h"
 
 /// A single-component array over `values`' storage; `values` is left empty.
 SUBDFILTERS_EXPORT vtkSmartPointer<vtkTypeInt32Array> vtkSubDAdoptVector(subd::IndexArray&& values);
+
+/// A new double array of `tuples` tuples, its values not initialised, whose storage comes
+/// from the kernel's allocator: a large output (the refined points) is then backed by huge
+/// pages where the system grants them (subd::AllocateLargeBlock), so that filling it costs
+/// a page fault per 2 MiB rather than per 4 KiB.
+SUBDFILTERS_EXPORT vtkSmartPointer<vtkDoubleArray> vtkSubDNewDoubleArray(int components, vtkIdType tuples);
 
 /// How many adopted vectors VTK arrays still hold (for tests: 0 once they are all freed).
 SUBDFILTERS_EXPORT std::size_t vtkSubDNumberOfAdoptedVectors();

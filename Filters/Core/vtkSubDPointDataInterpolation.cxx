@@ -1,4 +1,5 @@
 #include "vtkSubDPointDataInterpolation.h"
+#include "vtkSubDAdoptedArray.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkSMPTools.h"
@@ -88,9 +89,21 @@ vtkSmartPointer<vtkDataArray> vtkSubDPointDataInterpolation::Interpolate(
   const vtkIdType numOut = this->Selection ? static_cast<vtkIdType>(this->Selection->size()) : numFinest;
   const bool recycle = recycled && recycled->GetDataType() == outputType &&
     recycled->GetNumberOfComponents() == components && recycled->GetNumberOfTuples() == numOut;
-  vtkSmartPointer<vtkDataArray> out = recycle
-    ? vtkSmartPointer<vtkDataArray>(recycled)
-    : vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(outputType));
+  // Evaluate straight into a double output when nothing needs converting.
+  const bool direct = outputType == VTK_DOUBLE && !this->Selection && !normalize;
+  vtkSmartPointer<vtkDataArray> out;
+  if (recycle)
+  {
+    out = recycled;
+  }
+  else if (direct)
+  {
+    out = vtkSubDNewDoubleArray(components, numOut); // the kernel's allocator: huge pages
+  }
+  else
+  {
+    out = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(outputType));
+  }
   out->SetName(base->GetName());
   out->SetNumberOfComponents(components);
   for (int c = 0; c < components; ++c)
@@ -102,8 +115,6 @@ vtkSmartPointer<vtkDataArray> vtkSubDPointDataInterpolation::Interpolate(
   }
   out->SetNumberOfTuples(numOut);
 
-  // Evaluate straight into a double output when nothing needs converting.
-  const bool direct = outputType == VTK_DOUBLE && !this->Selection && !normalize;
   subd::LevelArray<double> finest;
   double* finestValues = nullptr;
   if (direct)

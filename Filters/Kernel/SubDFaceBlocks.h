@@ -60,8 +60,8 @@ struct EmittedFaces
 {
   IndexArray Offsets;                ///< numFaces + 1 entries, from 0
   IndexArray Vertices;
-  std::vector<Index> Origins;
-  std::vector<std::uint8_t> Holes;
+  LevelArray<Index> Origins;
+  LevelArray<std::uint8_t> Holes;
 };
 
 /// Runs write(begin, end, block) over ranges covering [0, numElements), each writing the

@@ -229,11 +229,11 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
   const Index numVertices = topo.GetNumVertices();
   const Index numFaces = topo.GetNumFaces();
 
-  level.EdgeSharpness = tags.EdgeSharpness;
+  level.EdgeSharpness.assign(tags.EdgeSharpness.begin(), tags.EdgeSharpness.end());
   level.EdgeSharpness.resize(static_cast<size_t>(numEdges), SharpnessSmooth);
-  level.VertexSharpness = tags.VertexSharpness;
+  level.VertexSharpness.assign(tags.VertexSharpness.begin(), tags.VertexSharpness.end());
   level.VertexSharpness.resize(static_cast<size_t>(numVertices), SharpnessSmooth);
-  level.FaceIsHole = tags.FaceIsHole;
+  level.FaceIsHole.assign(tags.FaceIsHole.begin(), tags.FaceIsHole.end());
   level.FaceIsHole.resize(static_cast<size_t>(numFaces), 0);
   level.Creasing = tags.Creasing;
   level.FaceOrigin.resize(static_cast<size_t>(numFaces));

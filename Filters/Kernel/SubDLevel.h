@@ -15,10 +15,10 @@ namespace subd
 struct SUBDKERNEL_EXPORT Level
 {
   MeshTopology Topology;
-  std::vector<float> EdgeSharpness;      ///< one per edge, OpenSubdiv's scale
-  std::vector<float> VertexSharpness;    ///< one per vertex
-  std::vector<std::uint8_t> FaceIsHole;  ///< one per face; holes shape neighbours, aren't emitted
-  std::vector<Index> FaceOrigin;         ///< one per face: the base-level face it comes from
+  LevelArray<float> EdgeSharpness;        ///< one per edge, OpenSubdiv's scale
+  LevelArray<float> VertexSharpness;      ///< one per vertex
+  LevelArray<std::uint8_t> FaceIsHole;    ///< one per face; holes shape neighbours, aren't emitted
+  LevelArray<Index> FaceOrigin;           ///< one per face: the base-level face it comes from
   int Depth = 0;                         ///< 0 for the base level, then 1, 2, ...
   CreaseMethod Creasing = CreaseMethod::Uniform; ///< how semi-sharp edges decay
 

@@ -359,7 +359,7 @@ private:
   void WriteEdgeTriangles(Index e, FaceBlock& out) const
   {
     const IndexSpan ef = this->Topo.GetEdgeFaces(e);
-    const std::vector<std::uint8_t>& isHole = this->Parent.FaceIsHole;
+    const LevelArray<std::uint8_t>& isHole = this->Parent.FaceIsHole;
     if (!ActsAsBoundary(this->Parent, e))
     {
       Index f1 = ef[0], f2 = ef[1], a, b;

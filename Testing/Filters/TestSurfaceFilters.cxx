@@ -345,16 +345,21 @@ TYPED_TEST(AnySurfaceFilter, OutputFacesOutliveTheFilterAndAreFreed)
     vtkNew<TypeParam> filter;
     filter->SetInputData(Cube());
     filter->SetNumberOfSubdivisions(2);
+    filter->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
     filter->Update();
     kept = filter->GetOutput();
-    // The last level has faces only, which the output adopts: offsets and point ids.
-    EXPECT_EQ(vtkSubDNumberOfAdoptedVectors(), adoptedBefore + 2);
+    // The last level has faces only, which the output adopts (offsets and point ids), and
+    // double points are evaluated into the kernel's storage.
+    EXPECT_EQ(vtkSubDNumberOfAdoptedVectors(), adoptedBefore + 3);
     vtkNew<vtkPolyData> deep;
     deep->DeepCopy(kept);
     copied = subdtest::Faces(deep);
   }
   ASSERT_FALSE(copied.empty());
   EXPECT_EQ(subdtest::Faces(kept), copied);
+  double point[3];
+  kept->GetPoint(kept->GetNumberOfPoints() - 1, point); // readable after the filter is gone
+  EXPECT_TRUE(std::isfinite(point[0]) && std::isfinite(point[1]) && std::isfinite(point[2]));
   const vtkIdType extra[3] = { 0, 1, 2 };
   kept->GetPolys()->InsertNextCell(3, extra); // grows (reallocates) the adopted arrays
   copied.push_back({ 0, 1, 2 });
