@@ -7,6 +7,19 @@
 
 namespace subd
 {
+namespace
+{
+// SUBD_HUGE_PAGES=1 in the environment (read once).
+bool HugePagesRequested()
+{
+  static const bool requested = [] {
+    const char* value = std::getenv("SUBD_HUGE_PAGES");
+    return value && value[0] == '1';
+  }();
+  return requested;
+}
+}
+
 void* AllocateLargeBlock(std::size_t bytes)
 {
   constexpr std::size_t hugePage = std::size_t(2) << 20;
@@ -17,7 +30,10 @@ void* AllocateLargeBlock(std::size_t bytes)
     throw std::bad_alloc();
   }
 #ifdef __linux__
-  madvise(block, rounded, MADV_HUGEPAGE); // a hint: without huge pages nothing changes
+  if (HugePagesRequested())
+  {
+    madvise(block, rounded, MADV_HUGEPAGE); // a hint: without huge pages nothing changes
+  }
 #endif
   return block;
 }
