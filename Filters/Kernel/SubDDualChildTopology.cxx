@@ -26,21 +26,6 @@ bool DualChildTopology::Applies(const Level& parent, const DualPoints& points)
     std::none_of(parent.VertexSharpness.begin(), parent.VertexSharpness.end(), sharp);
 }
 
-namespace
-{
-// Fills offsets[i] = stride * i in parallel.
-void FillStrided(IndexArray& offsets, Index count, Index stride, const ParallelFor& parallelFor)
-{
-  offsets.resize(static_cast<size_t>(count) + 1);
-  parallelFor(0, count + 1, [&](Index begin, Index end) {
-    for (Index i = begin; i < end; ++i)
-    {
-      offsets[i] = stride * i;
-    }
-  });
-}
-}
-
 MeshTopology DualChildTopology::OfDualSplit(
   const MeshTopology& parent, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
 {

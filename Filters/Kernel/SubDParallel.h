@@ -15,6 +15,19 @@ namespace subd
 using RangeTask = std::function<void(Index, Index)>;
 using ParallelFor = std::function<void(Index, Index, const RangeTask&)>;
 
+/// offsets[i] = stride * i for i = 0..count (count + 1 entries): the offsets of lists that all
+/// have `stride` entries, written in parallel.
+inline void FillStrided(IndexArray& offsets, Index count, Index stride, const ParallelFor& parallelFor)
+{
+  offsets.resize(static_cast<size_t>(count) + 1);
+  parallelFor(0, count + 1, [&](Index begin, Index end) {
+    for (Index i = begin; i < end; ++i)
+    {
+      offsets[i] = stride * i;
+    }
+  });
+}
+
 /// The ParallelFor of a single thread: runs the whole range at once.
 inline void SerialFor(Index begin, Index end, const RangeTask& task)
 {

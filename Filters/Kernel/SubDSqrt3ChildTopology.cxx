@@ -60,17 +60,6 @@ struct Spoke
     this->OtherEdge = fe[j] == e ? fe[(j + 2) % 3] : fe[j];
   }
 };
-
-void FillStrided(IndexArray& offsets, Index count, Index stride, const ParallelFor& parallelFor)
-{
-  offsets.resize(static_cast<size_t>(count) + 1);
-  parallelFor(0, count + 1, [&](Index begin, Index end) {
-    for (Index i = begin; i < end; ++i)
-    {
-      offsets[i] = stride * i;
-    }
-  });
-}
 }
 
 MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
