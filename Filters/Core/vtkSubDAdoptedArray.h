@@ -5,7 +5,8 @@
 // vectors whose storage VTK arrays hold are kept in a registry keyed by that pointer; the
 // array's free function takes its vector out and destroys it. An output's connectivity
 // (the largest array of a refined mesh after its points) is then written once, by the
-// kernel, instead of built there and copied here.
+// kernel, instead of built there and copied here, and its double points live in the
+// kernel's allocator (large blocks, SubDTypes.h).
 #ifndef vtkSubDAdoptedArray_h
 #define vtkSubDAdoptedArray_h
 
