@@ -21,9 +21,7 @@ bool DualChildTopology::Applies(const Level& parent, const DualPoints& points)
   }
   // Unwelded with two faces at every edge already rules out sharp edges and sharp vertices
   // (both weld corners); asked again so that this test stands on its own.
-  auto sharp = [](float s) { return IsSharp(s); };
-  return std::none_of(parent.EdgeSharpness.begin(), parent.EdgeSharpness.end(), sharp) &&
-    std::none_of(parent.VertexSharpness.begin(), parent.VertexSharpness.end(), sharp);
+  return !parent.HasSharpFeatures();
 }
 
 MeshTopology DualChildTopology::OfDualSplit(

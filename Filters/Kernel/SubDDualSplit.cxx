@@ -251,7 +251,7 @@ private:
     }
     const IndexSpan ef = this->Topo.GetEdgeFaces(e);
     Index f0 = ef[0], f1 = ef[1];
-    Index i0 = this->EdgePosition(f0, e), i1 = this->EdgePosition(f1, e);
+    Index i0 = this->Topo.GetEdgePosition(f0, e), i1 = this->Topo.GetEdgePosition(f1, e);
     if (this->Topo.GetFaceVertices(f0)[i0] != this->Topo.GetEdgeVertices(e)[0])
     {
       std::swap(f0, f1); // make f0 the face that runs a->b
@@ -263,18 +263,6 @@ private:
       { this->CornerPoint(f0, (i0 + 1) % this->Topo.GetFaceSize(f0)), this->CornerPoint(f0, i0),
         this->CornerPoint(f1, (i1 + 1) % this->Topo.GetFaceSize(f1)), this->CornerPoint(f1, i1) });
     out.EndFaceWithoutRepeats(first, this->Parent.FaceOrigin[f0], this->Parent.FaceIsHole[f0] && this->Parent.FaceIsHole[f1]);
-  }
-
-  // The position of edge e among face f's edges.
-  Index EdgePosition(Index f, Index e) const
-  {
-    const IndexSpan fe = this->Topo.GetFaceEdges(f);
-    Index position = 0;
-    while (fe[position] != e)
-    {
-      ++position;
-    }
-    return position;
   }
 
   // V-faces: one per sector (run of faces between sharp edges) of at least three faces.
@@ -380,13 +368,6 @@ void InheritDualSharpness(const Level& parent, const DualPoints& points, Level& 
     }
   }
 }
-
-bool HasSharpFeatures(const Level& level)
-{
-  auto sharp = [](float s) { return IsSharp(s); };
-  return std::any_of(level.EdgeSharpness.begin(), level.EdgeSharpness.end(), sharp) ||
-    std::any_of(level.VertexSharpness.begin(), level.VertexSharpness.end(), sharp);
-}
 }
 
 Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology depth, const ParallelFor& parallelFor)
@@ -408,7 +389,7 @@ Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology dep
     return child; // nothing sharp to inherit
   }
   SetChildTopology(parent, child, numPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
-  if (depth == ChildTopology::Full && HasSharpFeatures(parent))
+  if (depth == ChildTopology::Full && parent.HasSharpFeatures())
   {
     InheritDualSharpness(parent, points, child);
   }

@@ -28,6 +28,13 @@ bool Level::HasHoles() const
     this->FaceIsHole.begin(), this->FaceIsHole.end(), [](std::uint8_t h) { return h != 0; });
 }
 
+bool Level::HasSharpFeatures() const
+{
+  auto sharp = [](float s) { return IsSharp(s); };
+  return std::any_of(this->EdgeSharpness.begin(), this->EdgeSharpness.end(), sharp) ||
+    std::any_of(this->VertexSharpness.begin(), this->VertexSharpness.end(), sharp);
+}
+
 float ChildEdgeSharpness(const Level& level, Index e, int end)
 {
   const float sharpness = level.EdgeSharpness[e];

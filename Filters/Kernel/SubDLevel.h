@@ -24,6 +24,8 @@ struct SUBDKERNEL_EXPORT Level
 
   Index GetNumSharpEdges(Index v) const;
   bool HasHoles() const;
+  /// Some edge or vertex is sharp (semi-sharp included).
+  bool HasSharpFeatures() const;
 };
 
 /// True for an edge that schemes without a crease rule of their own (Doo-Sabin, midpoint,

@@ -127,6 +127,10 @@ public:
   /// Returns the edge joining a and b, or InvalidIndex.
   Index FindEdge(Index a, Index b) const;
 
+  /// The position of edge e among face f's edges (e must be one of them). Edge i of a face
+  /// joins its corners i and i + 1, so f runs e from GetFaceVertices(f)[i].
+  Index GetEdgePosition(Index f, Index e) const;
+
 private:
   // Splits that know their child's relations write them directly (SubDPrimalChildTopology,
   // SubDDualChildTopology, SubDSqrt3ChildTopology).

@@ -8,25 +8,6 @@ namespace subd
 {
 namespace
 {
-// The position of edge e among the edges of face f (e is one of them).
-Index EdgePosition(const MeshTopology& topo, Index f, Index e)
-{
-  const IndexSpan fe = topo.GetFaceEdges(f);
-  if (fe.size() <= 16)
-  {
-    Index i = 0;
-    while (fe[i] != e)
-    {
-      ++i;
-    }
-    return i;
-  }
-  // A large polygon (a scan would make its edges quadratic): the edge starts or ends at the
-  // corner of its first vertex, found through that vertex's faces.
-  const Index i = topo.FindCorner(topo.GetEdgeVertices(e)[0], f);
-  return fe[i] == e ? i : (i == 0 ? fe.size() - 1 : i - 1);
-}
-
 // Walking the faces in order, an edge is first met in the first of its faces (they are
 // listed in increasing order).
 bool IsFirstFace(const MeshTopology& topo, Index e, Index f)
@@ -258,7 +239,7 @@ MeshTopology PrimalChildAssembly::Assemble(
         for (Index k = 0; k < faces.size(); ++k)
         {
           const Index g = faces[k];
-          const Index i = EdgePosition(parent, g, e);
+          const Index i = parent.GetEdgePosition(g, e);
           const Index n = parent.GetFaceSize(g);
           const Index corner = parent.GetFaceVertices(g)[i] == v ? i : (i + 1 == n ? 0 : i + 1);
           out[k] = shape.CornerChild(g, corner);
@@ -347,7 +328,7 @@ MeshTopology PrimalChildAssembly::Assemble(
       for (Index k = 0; k < parentFaces.size(); ++k)
       {
         const Index g = parentFaces[k];
-        const Index i = EdgePosition(parent, g, e);
+        const Index i = parent.GetEdgePosition(g, e);
         shape.WriteEdgePointFaces(
           g, i, faces + Shape::EdgePointFacesPerFace * k, corners + Shape::EdgePointFacesPerFace * k);
         shape.WriteEdgePointEdges(g, i, edgeOfKey.data(), edges + 2 + Shape::EdgePointEdgesPerFace * k);

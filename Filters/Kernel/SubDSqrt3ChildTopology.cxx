@@ -34,14 +34,11 @@ struct FlippedEdge
   FlippedEdge(const MeshTopology& topo, Index e)
   {
     const IndexSpan ef = topo.GetEdgeFaces(e);
-    const Index* ev = topo.GetEdgeVertices(e);
-    const IndexSpan fv = topo.GetFaceVertices(ef[0]);
-    const Index corner = fv[0] == ev[0] ? 0 : (fv[1] == ev[0] ? 1 : 2);
-    const bool forward = fv[(corner + 1) % 3] == ev[1];
+    const Index i = topo.GetEdgePosition(ef[0], e);
     this->F1 = ef[0];
     this->F2 = ef[1];
-    this->A = forward ? ev[0] : ev[1];
-    this->B = forward ? ev[1] : ev[0];
+    this->A = topo.GetFaceVertices(ef[0])[i];
+    this->B = topo.GetFaceVertices(ef[0])[(i + 1) % 3];
   }
 };
 
@@ -73,12 +70,13 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
 
   // The spokes of edge e's triangles, in the order the walk meets them: triangle 2e at its
   // corners 0 and 2, then triangle 2e + 1 at its corners 0 and 2 (corner 1 of both is the
-  // flipped edge). `visit(spoke, from, to)` gets each with the ends it runs there.
+  // flipped edge). `visit(spoke, from, to, slot)` gets each with the ends it runs there and
+  // its place among the six face edges of the two triangles.
   auto visitSpokes = [&](Index e, const FlippedEdge& edge, auto&& visit) {
-    visit(Spoke(parent, edge.F2, edge.A, e), vertexPoint(edge.A), edge.F2);
-    visit(Spoke(parent, edge.F1, edge.A, e), edge.F1, vertexPoint(edge.A));
-    visit(Spoke(parent, edge.F1, edge.B, e), vertexPoint(edge.B), edge.F1);
-    visit(Spoke(parent, edge.F2, edge.B, e), edge.F2, vertexPoint(edge.B));
+    visit(Spoke(parent, edge.F2, edge.A, e), vertexPoint(edge.A), edge.F2, 0);
+    visit(Spoke(parent, edge.F1, edge.A, e), edge.F1, vertexPoint(edge.A), 2);
+    visit(Spoke(parent, edge.F1, edge.B, e), vertexPoint(edge.B), edge.F1, 3);
+    visit(Spoke(parent, edge.F2, edge.B, e), edge.F2, vertexPoint(edge.B), 5);
   };
 
   // Each old edge's first end as its first face runs it: which of its triangles holds a
@@ -100,7 +98,7 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
     for (Index e = begin; e < end; ++e)
     {
       Index count = 1;
-      visitSpokes(e, FlippedEdge(parent, e), [&](const Spoke& spoke, Index, Index) { count += spoke.OtherEdge > e; });
+      visitSpokes(e, FlippedEdge(parent, e), [&](const Spoke& spoke, Index, Index, int) { count += spoke.OtherEdge > e; });
       firstNewEdge[e + 1] = count;
     }
   });
@@ -126,10 +124,9 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
         child.EdgeFaces[2 * static_cast<size_t>(next) + 1] = t1;
         return next++;
       };
-      int k = 0;
-      visitSpokes(e, edge, [&](const Spoke& spoke, Index from, Index to) {
+      visitSpokes(e, edge, [&](const Spoke& spoke, Index from, Index to, int slot) {
         const Index v = from < numFaces ? to - numFaces : from - numFaces;
-        if (k++ == 1)
+        if (slot == 2)
         {
           flippedEdge[e] = add(edge.F2, edge.F1, 2 * e, 2 * e + 1); // triangle 2e, corner 1
         }
@@ -148,12 +145,8 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
     for (Index e = begin; e < end; ++e)
     {
       Index* edges = child.FaceEdges.data() + 6 * static_cast<size_t>(e);
-      int k = 0;
-      visitSpokes(e, FlippedEdge(parent, e), [&](const Spoke& spoke, Index, Index) {
-        const int slot = k < 2 ? 2 * k : 3 + 2 * (k - 2); // 0, 2, 3, 5
-        edges[slot] = spokeEdge[spoke.Corner];
-        ++k;
-      });
+      visitSpokes(e, FlippedEdge(parent, e),
+        [&](const Spoke& spoke, Index, Index, int slot) { edges[slot] = spokeEdge[spoke.Corner]; });
       edges[1] = flippedEdge[e];
       edges[4] = flippedEdge[e];
     }

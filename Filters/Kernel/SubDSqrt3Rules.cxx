@@ -330,15 +330,12 @@ public:
 private:
   Index VertexPoint(Index v) const { return this->Points.FirstVertexPoint + v; }
 
-  // Edge e's ends (a, b) in the order face f runs them.
+  // Edge e's ends (a, b) in the order triangle f runs them.
   void OrientedEnds(Index e, Index f, Index& a, Index& b) const
   {
-    const Index* ev = this->Topo.GetEdgeVertices(e);
-    const IndexSpan fv = this->Topo.GetFaceVertices(f); // a triangle: its corners, not v's faces
-    const Index corner = fv[0] == ev[0] ? 0 : (fv[1] == ev[0] ? 1 : 2);
-    const bool forward = fv[(corner + 1) % 3] == ev[1];
-    a = forward ? ev[0] : ev[1];
-    b = forward ? ev[1] : ev[0];
+    const Index i = this->Topo.GetEdgePosition(f, e);
+    a = this->Topo.GetFaceVertices(f)[i];
+    b = this->Topo.GetFaceVertices(f)[(i + 1) % 3];
   }
 
   // The point an old edge e of face f is flipped to: the centroid, or in a triangle that

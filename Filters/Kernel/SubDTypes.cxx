@@ -22,19 +22,28 @@ bool HugePagesRequested()
 
 void* AllocateLargeBlock(std::size_t bytes)
 {
-  constexpr std::size_t hugePage = std::size_t(2) << 20;
-  const std::size_t rounded = (bytes + hugePage - 1) / hugePage * hugePage;
-  void* block = rounded >= bytes ? std::aligned_alloc(hugePage, rounded) : nullptr;
+  void* block = nullptr;
+#ifdef __linux__
+  if (HugePagesRequested())
+  {
+    // Whole 2 MiB pages: aligned, and rounded up to a multiple.
+    constexpr std::size_t hugePage = std::size_t(2) << 20;
+    const std::size_t rounded = (bytes + hugePage - 1) / hugePage * hugePage;
+    block = rounded >= bytes ? std::aligned_alloc(hugePage, rounded) : nullptr;
+    if (block)
+    {
+      madvise(block, rounded, MADV_HUGEPAGE); // a hint: without huge pages nothing changes
+    }
+  }
+  else
+#endif
+  {
+    block = std::malloc(bytes);
+  }
   if (!block)
   {
     throw std::bad_alloc();
   }
-#ifdef __linux__
-  if (HugePagesRequested())
-  {
-    madvise(block, rounded, MADV_HUGEPAGE); // a hint: without huge pages nothing changes
-  }
-#endif
   return block;
 }
 

@@ -21,8 +21,8 @@ constexpr Index InvalidIndex = -1;
 
 /// Blocks of at least this size come from AllocateLargeBlock.
 constexpr std::size_t LargeBlockBytes = std::size_t(4) << 20;
-/// Memory for a large array, aligned to 2 MiB. With SUBD_HUGE_PAGES=1 in the environment it
-/// is also marked for transparent huge pages (Linux "madvise" mode, Debian's default):
+/// Memory for a large array (freed by FreeLargeBlock). With SUBD_HUGE_PAGES=1 in the
+/// environment it is aligned to 2 MiB and marked for transparent huge pages (Linux "madvise" mode, Debian's default):
 /// filling a fresh array then takes one page fault per 2 MiB instead of one per 4 KiB. That
 /// is opt-in because on the 2-core VM of the benchmarks it made refinements faster in the
 /// median (Catmull-Clark armadillo L3 on one thread: 0.31 s against 0.36 s) but now and then
