@@ -45,6 +45,15 @@ public:
   vtkTypeMacro(vtkSubDButterflyFilter, vtkSubDSurfaceFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * Ghost levels a piece needs (vtkSubDSurfaceFilter::GetRequiredGhostLevels): 1 for one
+   * level; 2 for more, since an edge point reads the butterfly's wings two rings out, which
+   * at the next level lie in cells that touch the piece only through other ghost cells. Each
+   * level halves the reach in cells of the input, so 2 is enough for any number of levels
+   * (checked by TestPieces and the MPI tests).
+   */
+  int GetRequiredGhostLevels() override { return this->NumberOfSubdivisions > 1 ? 2 : this->NumberOfSubdivisions; }
+
   ///@{
   /**
    * Tension w of the regular 10-point stencil (default 0, the 8-point butterfly), clamped to

@@ -41,11 +41,20 @@ public:
   vtkTypeMacro(vtkSubDDooSabinFilter, vtkSubDSurfaceFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * Ghost levels a piece needs (vtkSubDSurfaceFilter::GetRequiredGhostLevels): 2. A corner
+   * point reads its whole face, and a face next to a boundary or crease edge is cut by the
+   * boundary rule (so a ghost face's corners depend on its far edges); each level halves the
+   * reach in input cells. Checked through 5 levels (TestPieces).
+   */
+  int GetRequiredGhostLevels() override { return this->NumberOfSubdivisions > 0 ? 2 : 0; }
+
 protected:
   vtkSubDDooSabinFilter() = default;
   ~vtkSubDDooSabinFilter() override = default;
 
   subd::Scheme* NewScheme(bool allTriangles) override;
+  bool MakesFacesFromSeveralFaces() override { return true; }
 
 private:
   vtkSubDDooSabinFilter(const vtkSubDDooSabinFilter&) = delete;

@@ -42,6 +42,19 @@ public:
   vtkTypeMacro(vtkSubDSqrt3Filter, vtkSubDSurfaceFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /**
+   * Ghost levels a piece needs (vtkSubDSurfaceFilter::GetRequiredGhostLevels): 1 for one
+   * level, 2 for two, 3 for 3-5 and 4 beyond. A level reads 1-rings (creases: two edges along
+   * the crease), and each level scales the mesh by 1/sqrt(3), so the reach in input cells
+   * is bounded by a geometric series; the values through 5 levels were measured (TestPieces,
+   * where creases need the third layer), the last bounds the series.
+   */
+  int GetRequiredGhostLevels() override
+  {
+    const int levels = this->NumberOfSubdivisions;
+    return levels <= 2 ? levels : (levels <= 5 ? 3 : 4);
+  }
+
 protected:
   vtkSubDSqrt3Filter() = default;
   ~vtkSubDSqrt3Filter() override = default;

@@ -11,6 +11,7 @@
 #include "vtkSubDAdoptedArray.h"
 #include "vtkSubDInputFaces.h"
 #include "vtkSubDLimitGeometry.h"
+#include "vtkSubDPieces.h"
 #include "vtkSubDPointDataInterpolation.h"
 #include "vtkSubDSharpFeatures.h"
 
@@ -29,6 +30,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTypeInt32Array.h"
 
 #include <algorithm>
@@ -111,6 +113,7 @@ public:
   vtkIdType NumInputPoints = 0;
   std::vector<subd::Index> Offsets, Vertices;
   std::vector<subd::Index> KeptFaces;
+  std::vector<std::uint8_t> FaceIsGhost; // per kept face; empty unless the input is a piece with ghosts
   vtkSubDSharpFeatures Features;
   std::vector<subd::Index> UnmatchedSegments; // crease segments that are not surface edges
   subd::Hierarchy Hierarchy;
@@ -153,6 +156,8 @@ public:
   void SelectOutput(bool someBaseVertexUnused);
 };
 
+// Which finest faces and points are output: all of them, except faces in holes, children of
+// ghost faces (another piece outputs them) and the points no output face uses.
 void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
 {
   const subd::Level& finest = this->Hierarchy.Finest;
@@ -160,17 +165,15 @@ void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
   this->OutputPointOfFinest.clear();
   this->FinestPointOfOutput.clear();
   this->NumFinestFaces = finest.Topology.GetNumFaces();
-  this->CompactPoints = someBaseVertexUnused || finest.HasHoles();
+  this->CompactPoints = someBaseVertexUnused || finest.HasHoles() || !this->FaceIsGhost.empty();
   if (!this->CompactPoints)
   {
     return;
   }
-  // Faces inside holes are not output, nor are the points no output face uses (isolated
-  // input points, points inside holes).
   const subd::Index numFinestFaces = finest.Topology.GetNumFaces();
   for (subd::Index f = 0; f < numFinestFaces; ++f)
   {
-    if (!finest.FaceIsHole[f])
+    if (!finest.FaceIsHole[f] && (this->FaceIsGhost.empty() || !this->FaceIsGhost[finest.FaceOrigin[f]]))
     {
       this->EmittedFaces.push_back(f);
     }
@@ -223,6 +226,19 @@ int vtkSubDSurfaceFilter::RequestData(
     [this](unsigned long code) { this->SetErrorCode(code); });
 }
 
+int vtkSubDSurfaceFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  using Pipeline = vtkStreamingDemandDrivenPipeline;
+  const int numPieces = outInfo->Get(Pipeline::UPDATE_NUMBER_OF_PIECES());
+  inInfo->Set(Pipeline::UPDATE_PIECE_NUMBER(), outInfo->Get(Pipeline::UPDATE_PIECE_NUMBER()));
+  inInfo->Set(Pipeline::UPDATE_NUMBER_OF_PIECES(), numPieces);
+  inInfo->Set(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), numPieces > 1 ? this->GetRequiredGhostLevels() : 0);
+  return 1;
+}
+
 int vtkSubDSurfaceFilter::Execute(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -240,6 +256,13 @@ int vtkSubDSurfaceFilter::Execute(
     output->Initialize();
     return 1;
   };
+  // One of several pieces may hold no polygon at all: nothing to output, nothing wrong.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const bool onePieceOfMany = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1;
+  if (onePieceOfMany && (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0))
+  {
+    return 1;
+  }
 
   const vtkIdType numPoints = (input && input->GetPoints()) ? input->GetNumberOfPoints() : 0;
   if (numPoints == 0)
@@ -314,6 +337,13 @@ int vtkSubDSurfaceFilter::Execute(
   {
     faceCells[f] = faces.CellIdOf(screened.KeptFaces[f], numPolys);
   }
+  // A piece with ghost faces (vtkSubDPieces.h).
+  std::vector<std::uint8_t> faceIsGhost = vtkSubDGhostFaces(input, faceCells);
+  if (!faceIsGhost.empty() && this->MakesFacesFromSeveralFaces())
+  {
+    vtkSubDOrderFacesAlikeInEveryPiece(input, screened, faceCells);
+    faceIsGhost = vtkSubDGhostFaces(input, faceCells);
+  }
   vtkSubDSharpFeatures features;
   std::string featureError;
   if (!features.Read(input, faceCells, featureError))
@@ -326,7 +356,8 @@ int vtkSubDSurfaceFilter::Execute(
   const int inputDepth = ReadInputDepth(input);
   const bool reuse = cache.Valid && cache.FilterMTime == this->GetMTime() && cache.InputDepth == inputDepth &&
     cache.NumInputPoints == numPoints && cache.Offsets == screened.Offsets &&
-    cache.Vertices == screened.Vertices && cache.Features == features && !this->AutomaticCreases;
+    cache.Vertices == screened.Vertices && cache.FaceIsGhost == faceIsGhost && cache.Features == features &&
+    !this->AutomaticCreases;
   auto refineProgress = [this](double fraction) {
     this->UpdateProgress(0.5 * fraction);
     return !this->GetAbortExecute();
@@ -403,6 +434,11 @@ int vtkSubDSurfaceFilter::Execute(
     const subd::BaseTags tags = features.ToBaseTags(topology, input->GetPoints(),
       this->AutomaticCreases ? this->FeatureAngle : 0.0,
       static_cast<subd::CreaseMethod>(this->CreaseMethod), cache.UnmatchedSegments);
+    // Ghost line cells are passed through by the piece that owns them.
+    std::vector<subd::Index>& unmatched = cache.UnmatchedSegments;
+    unmatched.erase(std::remove_if(unmatched.begin(), unmatched.end(),
+                      [&](subd::Index segment) { return vtkSubDIsGhostCell(input, features.SegmentCell[segment]); }),
+      unmatched.end());
     if (!cache.UnmatchedSegments.empty())
     {
       const subd::Index first = cache.UnmatchedSegments[0];
@@ -457,6 +493,7 @@ int vtkSubDSurfaceFilter::Execute(
     }
     ++this->NumberOfStencilBuilds;
 
+    cache.FaceIsGhost = std::move(faceIsGhost);
     cache.SelectOutput(someBaseVertexUnused);
     cache.NumInputPoints = numPoints;
     cache.InputDepth = inputDepth;
@@ -533,6 +570,10 @@ int vtkSubDSurfaceFilter::Execute(
     {
       continue; // not interpolated: decayed on the vertices it belongs to (below)
     }
+    if (array == input->GetPointGhostArray())
+    {
+      continue; // bit flags of the input's piece, meaningless for the output's points
+    }
     if (array->GetNumberOfTuples() != numPoints)
     {
       vtkWarningMacro(<< "Point-data array '" << (array->GetName() ? array->GetName() : "")
@@ -602,6 +643,7 @@ int vtkSubDSurfaceFilter::Execute(
     outCD->NullData(c);
   }
   outCD->CopyData(inCD, sourceCells, targetCells);
+  outCD->RemoveArray(vtkDataSetAttributes::GhostArrayName()); // the output has no ghost cells
   if (numLines > 0)
   {
     vtkNew<vtkFloatArray> sharpness;

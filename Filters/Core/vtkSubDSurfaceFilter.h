@@ -54,6 +54,16 @@
  * hole faces are not output, so the next filter cannot see them). Output line cells come
  * before the faces (VTK's cell order); their other cell-data values are zero.
  *
+ * Distributed meshes (VTK's pieces and ghost cells: MPI runs with pvbatch or pvserver,
+ * vtkExtractPolyDataPiece, parallel readers): asked for one of several pieces, the filter asks
+ * upstream for GetRequiredGhostLevels() layers of ghost cells, subdivides its own and the ghost
+ * faces together and outputs only the children of its own faces, so that the pieces' outputs
+ * together are the serial output. Points on a seam between pieces appear in every piece that
+ * uses them, as do crease lines along a seam; the output has no ghost cells. Doo-Sabin and the
+ * midpoint scheme make faces from faces of two pieces: every piece numbers its faces alike
+ * (by global cell id, else by their points' coordinates) to agree on which one outputs such
+ * a face (vtkSubDPieces.h). A piece without polygons gives an empty output, no error.
+ *
  * BoundaryRule has OpenSubdiv's meanings (Sdc::Options::VtxBoundaryInterpolation):
  * None (faces at the boundary become holes that shape the surface but are not output),
  * EdgeOnly (default: boundary edges are sharp creases) and EdgeAndCorner (also pins corners,
@@ -232,6 +242,15 @@ public:
   ///@}
 
   /**
+   * Layers of ghost cells a piece of a distributed mesh needs around its own cells for its
+   * children to be those of the whole mesh, at the current NumberOfSubdivisions (0 for none):
+   * how far the stencils of all levels together reach, in cells. 1 for the schemes whose
+   * stencils read a point's 1-ring (Catmull-Clark, Loop, linear, Doo-Sabin, midpoint); see
+   * the butterfly and sqrt(3) filters for theirs. Requested upstream by RequestUpdateExtent.
+   */
+  virtual int GetRequiredGhostLevels() { return this->NumberOfSubdivisions > 0 ? 1 : 0; }
+
+  /**
    * Number of times the stencils were rebuilt (not reused from the previous execution).
    * Lets applications and tests verify that point-only changes are cheap.
    */
@@ -242,6 +261,9 @@ protected:
   ~vtkSubDSurfaceFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  /// Passes the requested piece upstream, with GetRequiredGhostLevels() ghost levels when the
+  /// mesh is split into several pieces.
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// RequestData's work; RequestData runs it and turns running out of memory into an error.
   int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
@@ -255,6 +277,11 @@ protected:
   vtkSmartPointer<vtkCellArray> MakeOutputFaces();
   /// The normals from the scheme's tangent masks (schemes LimitEvaluator does not handle).
   void AddTangentMaskNormals(const std::vector<double>& control, vtkIdType numOut, vtkPointData* outPD);
+
+  /// True for schemes that make faces from several faces (the edge and vertex faces of
+  /// Doo-Sabin and the midpoint scheme): their pieces must number faces alike to agree on
+  /// which of them outputs such a face.
+  virtual bool MakesFacesFromSeveralFaces() { return false; }
 
   /// True for schemes defined on triangles only; polygons are then triangulated first (ear
   /// clipping, correct for concave polygons), with one warning, instead of being refused.

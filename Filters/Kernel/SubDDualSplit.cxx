@@ -3,6 +3,7 @@
 #include "SubDFaceBlocks.h"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 
 namespace subd
@@ -262,7 +263,10 @@ private:
     out.Vertices.insert(out.Vertices.end(),
       { this->CornerPoint(f0, (i0 + 1) % this->Topo.GetFaceSize(f0)), this->CornerPoint(f0, i0),
         this->CornerPoint(f1, (i1 + 1) % this->Topo.GetFaceSize(f1)), this->CornerPoint(f1, i1) });
-    out.EndFaceWithoutRepeats(first, this->Parent.FaceOrigin[f0], this->Parent.FaceIsHole[f0] && this->Parent.FaceIsHole[f1]);
+    // The lower-numbered origin, not f0's: a rule that does not depend on how edges are
+    // numbered, so that pieces of a mesh (numbered alike, by global id) agree on it.
+    out.EndFaceWithoutRepeats(first, std::min(this->Parent.FaceOrigin[f0], this->Parent.FaceOrigin[f1]),
+      this->Parent.FaceIsHole[f0] && this->Parent.FaceIsHole[f1]);
   }
 
   // V-faces: one per sector (run of faces between sharp edges) of at least three faces.
@@ -299,13 +303,15 @@ private:
       {
         const size_t first = out.BeginFace();
         std::uint8_t allHoles = 1;
+        Index origin = std::numeric_limits<Index>::max(); // the sector's lowest, as for E-faces
         for (Index s = sectorBegin; s <= k; ++s)
         {
           const Index i = (start + s) % m;
           out.Vertices.push_back(this->CornerPoint(this->Fan[i], this->FanCorners[i]));
           allHoles &= this->Parent.FaceIsHole[this->Fan[i]];
+          origin = std::min(origin, this->Parent.FaceOrigin[this->Fan[i]]);
         }
-        out.EndFaceWithoutRepeats(first, this->Parent.FaceOrigin[this->Fan[(start + sectorBegin) % m]], allHoles);
+        out.EndFaceWithoutRepeats(first, origin, allHoles);
       }
       sectorBegin = k + 1;
     }

@@ -1,5 +1,8 @@
 #include "SubDMidpointSplit.h"
 
+#include <algorithm>
+#include <limits>
+
 namespace subd
 {
 bool MidpointKeepsVertex(const Level& level, Index v)
@@ -169,12 +172,14 @@ void AddVertexFaces(const Level& parent, const std::vector<Index>& keptPoint, st
         vertices.push_back(entering(i));
       }
       std::uint8_t allHoles = 1;
+      Index origin = std::numeric_limits<Index>::max(); // the sector's lowest: see the dual split
       for (Index s = sectorFirst; s <= k; ++s)
       {
         allHoles &= parent.FaceIsHole[fan[(start + s) % m]];
+        origin = std::min(origin, parent.FaceOrigin[fan[(start + s) % m]]);
       }
       offsets.push_back(static_cast<Index>(vertices.size()));
-      origins.push_back(parent.FaceOrigin[fan[(start + sectorFirst) % m]]);
+      origins.push_back(origin);
       holes.push_back(allHoles);
       sectorFirst = k + 1;
     }

@@ -1,0 +1,102 @@
+#include "vtkSubDPieces.h"
+
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkDataSetAttributes.h"
+#include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
+
+#include <algorithm>
+#include <array>
+#include <numeric>
+
+std::vector<std::uint8_t> vtkSubDGhostFaces(vtkPolyData* input, const std::vector<vtkIdType>& faceCells)
+{
+  std::vector<std::uint8_t> ghost;
+  vtkUnsignedCharArray* marks = input->GetCellGhostArray();
+  if (!marks)
+  {
+    return ghost;
+  }
+  ghost.resize(faceCells.size());
+  bool any = false;
+  for (size_t f = 0; f < faceCells.size(); ++f)
+  {
+    ghost[f] = (marks->GetValue(faceCells[f]) & vtkDataSetAttributes::DUPLICATECELL) != 0;
+    any = any || ghost[f];
+  }
+  if (!any)
+  {
+    ghost.clear();
+  }
+  return ghost;
+}
+
+bool vtkSubDIsGhostCell(vtkPolyData* input, vtkIdType cell)
+{
+  vtkUnsignedCharArray* marks = input->GetCellGhostArray();
+  return marks && (marks->GetValue(cell) & vtkDataSetAttributes::DUPLICATECELL) != 0;
+}
+
+namespace
+{
+// A face's corners' coordinates, sorted: equal only for faces on the same points.
+std::vector<double> SortedCorners(vtkPolyData* input, const subd::Index* corners, subd::Index n)
+{
+  std::vector<std::array<double, 3>> points(static_cast<size_t>(n));
+  for (subd::Index k = 0; k < n; ++k)
+  {
+    input->GetPoint(corners[k], points[k].data());
+  }
+  std::sort(points.begin(), points.end());
+  std::vector<double> key;
+  key.reserve(3 * static_cast<size_t>(n));
+  for (const auto& p : points)
+  {
+    key.insert(key.end(), p.begin(), p.end());
+  }
+  return key;
+}
+}
+
+void vtkSubDOrderFacesAlikeInEveryPiece(vtkPolyData* input, subd::FaceScreening& faces, std::vector<vtkIdType>& faceCells)
+{
+  const size_t numFaces = faceCells.size();
+  std::vector<subd::Index> order(numFaces);
+  std::iota(order.begin(), order.end(), 0);
+  vtkDataArray* ids = input->GetCellData()->GetGlobalIds();
+  if (ids && ids->GetNumberOfComponents() == 1 && ids->GetNumberOfTuples() == input->GetNumberOfCells())
+  {
+    std::vector<double> id(numFaces);
+    for (size_t f = 0; f < numFaces; ++f)
+    {
+      id[f] = ids->GetComponent(faceCells[f], 0);
+    }
+    std::stable_sort(order.begin(), order.end(), [&id](subd::Index a, subd::Index b) { return id[a] < id[b]; });
+  }
+  else
+  {
+    std::vector<std::vector<double>> key(numFaces);
+    for (size_t f = 0; f < numFaces; ++f)
+    {
+      key[f] = SortedCorners(input, faces.Vertices.data() + faces.Offsets[f], faces.Offsets[f + 1] - faces.Offsets[f]);
+    }
+    std::stable_sort(order.begin(), order.end(), [&key](subd::Index a, subd::Index b) { return key[a] < key[b]; });
+  }
+  std::vector<subd::Index> offsets{ 0 }, vertices, kept;
+  std::vector<vtkIdType> cells;
+  vertices.reserve(faces.Vertices.size());
+  kept.reserve(numFaces);
+  cells.reserve(numFaces);
+  for (subd::Index f : order)
+  {
+    vertices.insert(vertices.end(), faces.Vertices.begin() + faces.Offsets[f], faces.Vertices.begin() + faces.Offsets[f + 1]);
+    offsets.push_back(static_cast<subd::Index>(vertices.size()));
+    kept.push_back(faces.KeptFaces[f]);
+    cells.push_back(faceCells[f]);
+  }
+  faces.Offsets.swap(offsets);
+  faces.Vertices.swap(vertices);
+  faces.KeptFaces.swap(kept);
+  faceCells.swap(cells);
+}

@@ -1,0 +1,42 @@
+// Private helper of vtkSubDSurfaceFilter: one piece of a distributed mesh, as VTK's parallel
+// pipeline hands it over (vtkExtractPolyDataPiece, parallel readers, ParaView's pvbatch and
+// pvserver): the piece's own cells plus layers of ghost cells around them, marked by the
+// DUPLICATECELL bit of the cell-data array "vtkGhostType".
+//
+// The filter subdivides own and ghost faces together, so that every point its own faces'
+// children need sees the whole neighbourhood its stencils read, and outputs only the children
+// of its own faces: the union of the pieces' outputs is the serial output. A child face comes
+// from one base face (Level::FaceOrigin). For the primal schemes and sqrt(3) that face is
+// determined by the child's place in it; children made from several faces (Doo-Sabin's and
+// the midpoint scheme's edge and vertex faces) come from the lowest-numbered of them. So that
+// every piece agrees on it, such schemes number a piece's faces in an order all pieces share:
+// by global id (the cell data's GlobalIds attribute) when there is one, else by their corners'
+// coordinates, which are the same bits in every piece that holds the face. (With global ids
+// equal to the serial cell ids, the children inherit the cell data the serial ones do; in
+// coordinate order a face made from two faces may inherit the other one's. Two faces on the
+// very same points would be ordered by chance.)
+#ifndef vtkSubDPieces_h
+#define vtkSubDPieces_h
+
+#include "SubDMeshValidation.h"
+#include "vtkType.h"
+
+#include <cstdint>
+#include <vector>
+
+class vtkPolyData;
+
+/// Per kept face (`faceCells` gives its input cell): 1 where that cell is a ghost cell. Empty
+/// when none is.
+std::vector<std::uint8_t> vtkSubDGhostFaces(vtkPolyData* input, const std::vector<vtkIdType>& faceCells);
+
+/// True when input cell `cell` is a ghost cell.
+bool vtkSubDIsGhostCell(vtkPolyData* input, vtkIdType cell);
+
+/// Reorders the kept faces (and `faceCells`, their input cells) into an order every piece
+/// agrees on: increasing global cell id, else increasing sorted corner coordinates. Faces of
+/// one cell (the triangles of a split polygon) keep their order.
+void vtkSubDOrderFacesAlikeInEveryPiece(
+  vtkPolyData* input, subd::FaceScreening& faces, std::vector<vtkIdType>& faceCells);
+
+#endif

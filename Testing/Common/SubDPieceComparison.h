@@ -1,0 +1,229 @@
+// Comparing a subdivided mesh made in pieces (VTK's pieces and ghost cells) with the serial
+// one: the pieces' faces together must be the serial faces, with the same points and point
+// data, and their crease lines the serial lines. Used by the in-process piece tests and by
+// the MPI tests, which gather the pieces on one rank first.
+//
+// Faces are compared as sequences of corners, each rotated to start at its lowest corner (so
+// orientation counts), and sorted, since a piece numbers them differently. With `byInputCell`
+// they are first grouped by the cell-data array "TestCellId" (the input cell each face
+// inherits from; the input must carry it), which checks the inherited cell data too.
+#ifndef SubDPieceComparison_h
+#define SubDPieceComparison_h
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkIdTypeArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSmartPointer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace subdtest
+{
+/// A corner's values: coordinates, then every point-data array's components.
+using Corner = std::vector<double>;
+using Face = std::vector<Corner>;
+
+inline Corner CornerOf(vtkPolyData* mesh, vtkIdType point)
+{
+  Corner c(3);
+  mesh->GetPoint(point, c.data());
+  vtkPointData* pd = mesh->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    for (int k = 0; array && k < array->GetNumberOfComponents(); ++k)
+    {
+      c.push_back(array->GetComponent(point, k));
+    }
+  }
+  return c;
+}
+
+// Orders corners by their coordinates rounded to 1e-9: a piece's round-off (a coordinate of
+// 1e-17 where the serial one is -1e-17) must not change the order.
+inline bool CoordinatesLess(const Corner& a, const Corner& b)
+{
+  for (int k = 0; k < 3; ++k)
+  {
+    const double qa = std::round(a[k] * 1e9), qb = std::round(b[k] * 1e9);
+    if (qa != qb)
+    {
+      return qa < qb;
+    }
+  }
+  return false;
+}
+
+inline bool FaceLess(const Face& a, const Face& b)
+{
+  return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), CoordinatesLess);
+}
+
+/// The faces of `mesh`, canonical and sorted; with `byInputCell`, grouped by the input cell
+/// they come from ("TestCellId"), else all in group 0.
+inline std::map<vtkIdType, std::vector<Face>> FacesByInputCell(vtkPolyData* mesh, bool byInputCell, std::string& error)
+{
+  std::map<vtkIdType, std::vector<Face>> faces;
+  vtkDataArray* origin = mesh->GetCellData()->GetArray("TestCellId");
+  if (byInputCell && mesh->GetNumberOfPolys() > 0 && !origin)
+  {
+    error = "no TestCellId cell data";
+    return faces;
+  }
+  const vtkIdType firstPoly = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
+  vtkIdType c = 0;
+  vtkIdType n;
+  const vtkIdType* pts;
+  vtkCellArray* polys = mesh->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts); ++c)
+  {
+    Face face;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      face.push_back(CornerOf(mesh, pts[k]));
+    }
+    std::rotate(face.begin(), std::min_element(face.begin(), face.end(), CoordinatesLess), face.end());
+    faces[byInputCell ? static_cast<vtkIdType>(origin->GetComponent(firstPoly + c, 0)) : 0].push_back(face);
+  }
+  for (auto& group : faces)
+  {
+    std::sort(group.second.begin(), group.second.end(), FaceLess);
+  }
+  return faces;
+}
+
+/// The crease lines of all `meshes` as (lower end, upper end, sharpness), sorted; a line that
+/// several pieces hold (within `tolerance`) once.
+inline std::vector<Corner> Lines(const std::vector<vtkPolyData*>& meshes, double tolerance)
+{
+  std::vector<Corner> lines;
+  for (vtkPolyData* mesh : meshes)
+  {
+    vtkDataArray* sharpness = mesh->GetCellData()->GetArray("Sharpness");
+    vtkIdType n;
+    const vtkIdType* pts;
+    vtkIdType c = mesh->GetNumberOfVerts();
+    vtkCellArray* cells = mesh->GetLines();
+    for (cells->InitTraversal(); cells->GetNextCell(n, pts); ++c)
+    {
+      Corner a(3), b(3);
+      mesh->GetPoint(pts[0], a.data());
+      mesh->GetPoint(pts[n - 1], b.data());
+      if (CoordinatesLess(b, a))
+      {
+        std::swap(a, b);
+      }
+      a.insert(a.end(), b.begin(), b.end());
+      a.push_back(sharpness ? sharpness->GetComponent(c, 0) : -1.0);
+      lines.push_back(a);
+    }
+  }
+  std::sort(lines.begin(), lines.end());
+  auto same = [tolerance](const Corner& a, const Corner& b) {
+    for (size_t k = 0; k < a.size(); ++k)
+    {
+      if (std::abs(a[k] - b[k]) > tolerance)
+        return false;
+    }
+    return true;
+  };
+  lines.erase(std::unique(lines.begin(), lines.end(), same), lines.end());
+  return lines;
+}
+
+/// "" when the pieces together are `serial` (faces, their corners' coordinates and point
+/// data to `tolerance`, crease lines), else what differs first.
+inline std::string ComparePieces(
+  vtkPolyData* serial, const std::vector<vtkPolyData*>& pieces, double tolerance, bool byInputCell)
+{
+  std::string error;
+  const auto expected = FacesByInputCell(serial, byInputCell, error);
+  std::map<vtkIdType, std::vector<Face>> got;
+  for (vtkPolyData* piece : pieces)
+  {
+    for (auto& group : FacesByInputCell(piece, byInputCell, error))
+    {
+      std::vector<Face>& faces = got[group.first];
+      faces.insert(faces.end(), group.second.begin(), group.second.end());
+    }
+  }
+  if (!error.empty())
+  {
+    return error;
+  }
+  std::ostringstream why;
+  for (auto& group : got)
+  {
+    std::sort(group.second.begin(), group.second.end(), FaceLess);
+  }
+  if (expected.size() != got.size())
+  {
+    why << "faces come from " << got.size() << " input cells, serially from " << expected.size();
+    return why.str();
+  }
+  for (const auto& group : expected)
+  {
+    const auto found = got.find(group.first);
+    if (found == got.end() || found->second.size() != group.second.size())
+    {
+      why << "input cell " << group.first << ": " << (found == got.end() ? 0 : found->second.size())
+          << " faces, serially " << group.second.size();
+      return why.str();
+    }
+    for (size_t f = 0; f < group.second.size(); ++f)
+    {
+      const Face& a = group.second[f];
+      const Face& b = found->second[f];
+      if (a.size() != b.size())
+      {
+        why << "input cell " << group.first << ", face " << f << ": " << b.size() << " corners, serially " << a.size();
+        return why.str();
+      }
+      for (size_t k = 0; k < a.size(); ++k)
+      {
+        for (size_t i = 0; i < a[k].size(); ++i)
+        {
+          if (a[k].size() != b[k].size() || std::abs(a[k][i] - b[k][i]) > tolerance)
+          {
+            why.precision(17);
+            why << "input cell " << group.first << ", face " << f << ", corner " << k << ", value " << i << ": "
+                << b[k][i] << ", serially " << a[k][i] << " at (" << a[0][0] << ", " << a[0][1] << ", " << a[0][2] << ")";
+            return why.str();
+          }
+        }
+      }
+    }
+  }
+  const std::vector<Corner> serialLines = Lines({ serial }, tolerance);
+  const std::vector<Corner> pieceLines = Lines(pieces, tolerance);
+  if (serialLines.size() != pieceLines.size())
+  {
+    why << pieceLines.size() << " distinct crease lines, serially " << serialLines.size();
+    return why.str();
+  }
+  for (size_t l = 0; l < serialLines.size(); ++l)
+  {
+    for (size_t i = 0; i < serialLines[l].size(); ++i)
+    {
+      if (std::abs(serialLines[l][i] - pieceLines[l][i]) > tolerance)
+      {
+        why << "crease line " << l << " differs";
+        return why.str();
+      }
+    }
+  }
+  return "";
+}
+}
+
+#endif
