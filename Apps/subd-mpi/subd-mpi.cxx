@@ -3,9 +3,10 @@
 //   mpirun -np N subd-mpi [--scheme NAME] [--levels L] [--boundary RULE] [--limit]
 //                         [--builtin CAGE | INPUT] OUTPUT.pvtp
 //
-// Every rank reads the input (or builds the built-in cage) and keeps its piece: a band of
-// cells by id (vtkExtractPolyDataPiece) plus the layers of ghost cells the scheme needs
-// (vtkSubDSurfaceFilter::GetRequiredGhostLevels). It subdivides the piece, which outputs the
+// Every rank reads the input (or builds the built-in cage) and keeps its piece: a run of
+// polygons in Z order of their centroids, so that pieces are compact patches of the surface
+// (vtkExtractPolyDataPiece cuts runs of cell ids, and a file's cell order is often scattered),
+// plus the layers of ghost cells the scheme needs (vtkSubDSurfaceFilter::GetRequiredGhostLevels). It subdivides the piece, which outputs the
 // children of its own cells only, and writes them as OUTPUT_<rank>.vtp beside OUTPUT.pvtp,
 // which rank 0 writes and which names every piece: ParaView or vtkXMLPPolyDataReader read
 // them as one mesh, equal to the serial `subd` output. Rank 0 prints a summary.
@@ -22,12 +23,16 @@
 #include "vtkCommand.h"
 #include "vtkDoubleArray.h"
 #include "vtkExtractPolyDataPiece.h"
+#include "vtkIdList.h"
+#include "vtkIdTypeArray.h"
+#include "vtkCellArray.h"
 #include "vtkLogger.h"
 #include "vtkMPIController.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkSubDSurfaceFilter.h"
 #include "vtkXMLPPolyDataWriter.h"
 
@@ -36,18 +41,23 @@
 #include <cstdlib>
 #include <iostream>
 #include <sstream>
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
 #include <string>
+#include <thread>
 #include <sys/resource.h>
 
 namespace
 {
 const char* const Usage =
   "usage: mpirun -np N subd-mpi [--scheme NAME] [--levels L] [--boundary RULE] [--limit]\n"
-  "                             [--builtin CAGE | INPUT] OUTPUT.pvtp\n"
+  "                             [--threads T] [--builtin CAGE | INPUT] OUTPUT.pvtp\n"
   "  --scheme NAME     a surface scheme of `subd --help` (default catmull-clark)\n"
   "  --levels L        subdivision levels (default 2)\n"
   "  --boundary RULE   edge-only (default), edge-and-corner or none\n"
   "  --limit           move the output points to the limit surface\n"
+  "  --threads T       threads per rank (default: the cores shared by the ranks on a node)\n"
   "  --builtin CAGE    subdivide a built-in cage instead of a file (default cube)\n"
   "Each rank writes its piece as OUTPUT_<rank>.vtp; rank 0 writes OUTPUT.pvtp naming them.\n";
 
@@ -57,6 +67,7 @@ struct Arguments
   subdapp::SchemeOptions Options;
   std::string Builtin = "cube";
   std::string Input, Output;
+  int Threads = 0; // 0: the node's cores over its ranks
   bool Help = false;
 };
 
@@ -118,6 +129,19 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
       }
       args.Options.BoundaryRule = rule;
     }
+    else if (a == "--threads")
+    {
+      if (!value(v))
+        return false;
+      char* end = nullptr;
+      const long threads = std::strtol(v.c_str(), &end, 10);
+      if (*end != '\0' || threads < 1 || threads > 1024)
+      {
+        error = "--threads wants an integer from 1 to 1024, not '" + v + "'";
+        return false;
+      }
+      args.Threads = static_cast<int>(threads);
+    }
     else if (a == "--limit")
     {
       args.Options.ProjectToLimit = true;
@@ -151,6 +175,15 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
   return true;
 }
 
+// Threads for this rank: the node's cores shared among the ranks on it (Open MPI tells their
+// number), so that ranks on one machine do not oversubscribe its cores.
+int DefaultThreads()
+{
+  const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
+  const int ranksHere = local ? std::max(1, std::atoi(local)) : 1;
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / ranksHere);
+}
+
 // Prints each line of `lines` as "subd-mpi: rank R: <kind>: <line>".
 void PrintMessages(int rank, const std::string& lines, const char* kind)
 {
@@ -165,14 +198,104 @@ void PrintMessages(int rank, const std::string& lines, const char* kind)
   }
 }
 
+// Interleaves the bits of three 21-bit integers: the Z-order (Morton) key.
+std::uint64_t MortonKey(const double p[3], const double lo[3], const double scale[3])
+{
+  std::uint64_t key = 0;
+  std::uint32_t q[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    q[k] = static_cast<std::uint32_t>(std::min(2097151.0, std::max(0.0, (p[k] - lo[k]) * scale[k])));
+  }
+  for (int bit = 20; bit >= 0; --bit)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      key = (key << 1) | ((q[k] >> bit) & 1u);
+    }
+  }
+  return key;
+}
+
+// `mesh` with its polygons in Z order of their centroids (verts, lines and strips as they are,
+// cell data following its cells) and each cell's id in `mesh` as the cell-data array
+// `globalIdName`, so that pieces can tell faces apart the same way whatever the order.
+// The cell-data array that carries the input's cell ids through the pieces.
+const char* const GlobalIdName = "SubDGlobalCellIds";
+
+vtkSmartPointer<vtkPolyData> OrderPolygonsSpatially(vtkPolyData* mesh, const char* globalIdName)
+{
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  double lo[3], scale[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    lo[k] = bounds[2 * k];
+    scale[k] = bounds[2 * k + 1] > bounds[2 * k] ? 2097151.0 / (bounds[2 * k + 1] - bounds[2 * k]) : 0.0;
+  }
+  const vtkIdType firstPoly = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
+  const vtkIdType numPolys = mesh->GetNumberOfPolys();
+  std::vector<std::pair<std::uint64_t, vtkIdType>> order;
+  order.reserve(static_cast<size_t>(numPolys));
+  vtkIdType n;
+  const vtkIdType* pts;
+  vtkCellArray* polys = mesh->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
+  {
+    double centroid[3] = { 0, 0, 0 }, p[3];
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      mesh->GetPoint(pts[k], p);
+      for (int c = 0; c < 3; ++c)
+        centroid[c] += p[c] / n;
+    }
+    order.emplace_back(MortonKey(centroid, lo, scale), static_cast<vtkIdType>(order.size()));
+  }
+  std::stable_sort(order.begin(), order.end());
+  vtkNew<vtkCellArray> sorted;
+  vtkNew<vtkIdList> cell;
+  auto ordered = vtkSmartPointer<vtkPolyData>::New();
+  ordered->SetPoints(mesh->GetPoints());
+  ordered->GetPointData()->ShallowCopy(mesh->GetPointData());
+  ordered->SetVerts(mesh->GetVerts());
+  ordered->SetLines(mesh->GetLines());
+  for (const auto& entry : order)
+  {
+    polys->GetCellAtId(entry.second, cell);
+    sorted->InsertNextCell(cell);
+  }
+  ordered->SetPolys(sorted);
+  ordered->SetStrips(mesh->GetStrips());
+  // Cell data in VTK's cell order: verts and lines, the polygons in their new order, strips.
+  const vtkIdType numCells = mesh->GetNumberOfCells();
+  vtkNew<vtkIdList> from;
+  from->SetNumberOfIds(numCells);
+  for (vtkIdType c = 0; c < numCells; ++c)
+  {
+    const bool poly = c >= firstPoly && c < firstPoly + numPolys;
+    from->SetId(c, poly ? firstPoly + order[c - firstPoly].second : c);
+  }
+  vtkNew<vtkIdList> to;
+  to->SetNumberOfIds(numCells);
+  std::iota(to->GetPointer(0), to->GetPointer(0) + numCells, 0);
+  ordered->GetCellData()->CopyAllocate(mesh->GetCellData(), numCells);
+  ordered->GetCellData()->CopyData(mesh->GetCellData(), from, to);
+  vtkNew<vtkIdTypeArray> ids;
+  ids->SetName(globalIdName);
+  ids->SetNumberOfTuples(numCells);
+  std::copy(from->GetPointer(0), from->GetPointer(0) + numCells, ids->GetPointer(0));
+  ordered->GetCellData()->AddArray(ids);
+  return ordered;
+}
+
 // The piece of `mesh` for this rank, with `ghostLevels` layers of ghost cells. The coordinates
-// travel as point data, which vtkExtractPolyDataPiece copies exactly (it would store the points
-// themselves in single precision).
+// travel as point data and the global cell ids as a plain array, which vtkExtractPolyDataPiece
+// copies exactly (it would store the points in single precision and drop the GlobalIds
+// attribute); the piece gets them back as its points and its GlobalIds.
 vtkSmartPointer<vtkPolyData> ExtractPiece(vtkPolyData* mesh, int rank, int numRanks, int ghostLevels)
 {
   const char* const name = "SubDExactCoordinates";
-  vtkNew<vtkPolyData> source;
-  source->ShallowCopy(mesh);
+  vtkSmartPointer<vtkPolyData> source = OrderPolygonsSpatially(mesh, GlobalIdName);
   vtkNew<vtkDoubleArray> coordinates;
   coordinates->SetName(name);
   coordinates->SetNumberOfComponents(3);
@@ -197,6 +320,7 @@ vtkSmartPointer<vtkPolyData> ExtractPiece(vtkPolyData* mesh, int rank, int numRa
   }
   piece->SetPoints(points);
   piece->GetPointData()->RemoveArray(name);
+  piece->GetCellData()->SetGlobalIds(piece->GetCellData()->GetArray(GlobalIdName));
   return piece;
 }
 }
@@ -248,6 +372,12 @@ int main(int argc, char* argv[])
     return fail(args.Input.empty() ? "no built-in cage named '" + args.Builtin + "'" : error, 1);
   }
 
+  const int threads = args.Threads > 0 ? args.Threads : DefaultThreads();
+  if (threads == 1)
+  {
+    vtkSMPTools::SetBackend("Sequential"); // no thread pool at all (TBB would warn about one of 0)
+  }
+  vtkSMPTools::Initialize(threads);
   const auto start = std::chrono::steady_clock::now();
   vtkSmartPointer<vtkPolyDataAlgorithm> algorithm = entry->Make(args.Options);
   vtkSubDSurfaceFilter* filter = vtkSubDSurfaceFilter::SafeDownCast(algorithm);
@@ -273,12 +403,18 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkXMLPPolyDataWriter> writer;
   writer->SetController(controller);
-  writer->SetInputConnection(filter->GetOutputPort());
+  // The output as the serial one: without the ids the pieces agreed by.
+  vtkNew<vtkPolyData> result;
+  result->ShallowCopy(filter->GetOutput());
+  result->GetCellData()->RemoveArray(GlobalIdName);
+  writer->SetInputData(result);
   writer->SetFileName(args.Output.c_str());
   writer->SetNumberOfPieces(numRanks);
   writer->SetStartPiece(rank);
   writer->SetEndPiece(rank);
   writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff(); // raw bytes: compressing and encoding cost more than writing
+  writer->SetCompressorTypeToNone();
   failed = writer->Write() == 1 ? 0 : 1;
   controller->AllReduce(&failed, &anyFailed, 1, vtkCommunicator::MAX_OP);
   if (anyFailed)

@@ -8,6 +8,7 @@
 #include "vtkPolyData.h"
 #include "vtkTypeInt64Array.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace
@@ -117,14 +118,34 @@ vtkIdType vtkSubDFirstCellOutsidePoints(vtkPolyData* input)
   return -1;
 }
 
-std::string vtkSubDNonManifoldWarning(const subd::MeshTopology& topology)
+std::string vtkSubDNonManifoldWarning(const subd::MeshTopology& topology, const std::vector<std::uint8_t>& faceIsGhost)
 {
   if (topology.GetNumNonManifoldEdges() == 0 && topology.GetNumNonManifoldVertices() == 0)
   {
     return "";
   }
-  return "Input is non-manifold (" + std::to_string(topology.GetNumNonManifoldEdges()) +
-    " edges with more than two faces or inconsistent orientation, " +
-    std::to_string(topology.GetNumNonManifoldVertices()) +
+  subd::Index edges = topology.GetNumNonManifoldEdges(), vertices = topology.GetNumNonManifoldVertices();
+  if (!faceIsGhost.empty())
+  {
+    // A piece: only what touches its own faces (the rim of its ghost layers is cut anywhere).
+    auto touchesOwnFace = [&faceIsGhost](subd::IndexSpan faces) {
+      return std::any_of(faces.begin(), faces.end(), [&faceIsGhost](subd::Index f) { return !faceIsGhost[f]; });
+    };
+    edges = vertices = 0;
+    for (subd::Index e = 0; e < topology.GetNumEdges(); ++e)
+    {
+      edges += topology.GetEdgeTag(e).NonManifold && touchesOwnFace(topology.GetEdgeFaces(e));
+    }
+    for (subd::Index v = 0; v < topology.GetNumVertices(); ++v)
+    {
+      vertices += topology.GetVertexTag(v).NonManifold && touchesOwnFace(topology.GetVertexFaces(v));
+    }
+    if (edges == 0 && vertices == 0)
+    {
+      return "";
+    }
+  }
+  return "Input is non-manifold (" + std::to_string(edges) +
+    " edges with more than two faces or inconsistent orientation, " + std::to_string(vertices) +
     " non-manifold vertices); they are subdivided as infinitely sharp";
 }

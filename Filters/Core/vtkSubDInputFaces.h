@@ -6,6 +6,7 @@
 
 #include "vtkType.h"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,9 @@ vtkIdType vtkSubDFirstNonFinitePoint(vtkPoints* points);
 vtkIdType vtkSubDFirstCellOutsidePoints(vtkPolyData* input);
 
 /// The warning for a non-manifold input ("" when it is manifold): such edges and vertices are
-/// subdivided as infinitely sharp, as OpenSubdiv does.
-std::string vtkSubDNonManifoldWarning(const subd::MeshTopology& topology);
+/// subdivided as infinitely sharp, as OpenSubdiv does. For a piece with ghost faces (1 in
+/// `faceIsGhost`), only the edges and vertices of its own faces count.
+std::string vtkSubDNonManifoldWarning(
+  const subd::MeshTopology& topology, const std::vector<std::uint8_t>& faceIsGhost = {});
 
 #endif

@@ -379,7 +379,7 @@ int vtkSubDSurfaceFilter::Execute(
     subd::MeshTopology topology =
       subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices,
         &vtkSubDPointDataInterpolation::SMPFor);
-    const std::string nonManifold = vtkSubDNonManifoldWarning(topology);
+    const std::string nonManifold = vtkSubDNonManifoldWarning(topology, faceIsGhost);
     if (!nonManifold.empty())
     {
       vtkWarningMacro(<< nonManifold << ".");
