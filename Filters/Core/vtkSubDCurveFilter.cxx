@@ -6,6 +6,7 @@
 #include "SubDCurveRefiner.h"
 #include "vtkSubDInputFaces.h"
 #include "vtkSubDInputLines.h"
+#include "vtkSubDPieces.h"
 #include "vtkSubDPointDataInterpolation.h"
 
 #include "vtkCellArray.h"
@@ -20,6 +21,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <cmath>
 #include <limits>
@@ -293,6 +295,10 @@ int vtkSubDCurveFilter::Execute(
     vtkAbstractArray* abstractArray = inPD->GetAbstractArray(a);
     vtkDataArray* array = vtkDataArray::SafeDownCast(abstractArray);
     const std::string name = abstractArray->GetName() ? abstractArray->GetName() : "";
+    if (array && array == input->GetPointGhostArray())
+    {
+      continue; // bit flags, made anew for the output below
+    }
     if (!array || array->GetNumberOfTuples() != numPoints)
     {
       vtkWarningMacro(<< "Point-data array '" << name << "' is not numeric or has "
@@ -361,6 +367,19 @@ int vtkSubDCurveFilter::Execute(
   {
     outCD->CopyData(inCD, sources->GetId(c), c);
   }
+  if (vtkUnsignedCharArray* inputMarks = input->GetCellGhostArray())
+  {
+    // A piece's ghost cells stay ghosts (CopyData leaves the ghost array out).
+    vtkNew<vtkUnsignedCharArray> marks;
+    marks->SetName(vtkDataSetAttributes::GhostArrayName());
+    marks->SetNumberOfTuples(sources->GetNumberOfIds());
+    for (vtkIdType c = 0; c < sources->GetNumberOfIds(); ++c)
+    {
+      marks->SetValue(c, inputMarks->GetValue(sources->GetId(c)));
+    }
+    outCD->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+    outCD->AddArray(marks);
+  }
   if (outVerts->GetNumberOfCells() > 0)
   {
     output->SetVerts(outVerts);
@@ -374,6 +393,7 @@ int vtkSubDCurveFilter::Execute(
   {
     output->SetStrips(input->GetStrips());
   }
+  vtkSubDMarkGhostPoints(output); // a piece's ghost lines (asked for downstream) keep their mark
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -36,6 +36,11 @@
  * and curve ends and is zero on the new points, so running the filter N times with one level
  * equals running it once with N levels.
  *
+ * Pieces of a distributed mesh: each line is refined by itself, so a piece needs no ghost
+ * cells, and the pieces' outputs together are the serial output. Ghost levels asked of the
+ * output are asked of the input: its ghost lines are refined too and keep their cells'
+ * "vtkGhostType" marks; points on no own cell are marked DUPLICATEPOINT.
+ *
  * Polygons, triangle strips and vertices of the input pass through untouched, with their cell
  * data: a surface with crease lines can go through this filter. The output points are then
  * the input points followed by the curves' points; without such cells, only the curves'

@@ -1,8 +1,13 @@
 #include "vtkSubDPieces.h"
 
+#include "SubDMeshTopology.h"
+
+#include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
@@ -30,6 +35,71 @@ std::vector<std::uint8_t> vtkSubDGhostFaces(vtkPolyData* input, const std::vecto
     ghost.clear();
   }
   return ghost;
+}
+
+std::vector<std::uint8_t> vtkSubDGhostLayers(
+  const subd::MeshTopology& topology, const std::vector<std::uint8_t>& faceIsGhost, int maxLayer)
+{
+  const subd::Index numFaces = topology.GetNumFaces();
+  std::vector<std::uint8_t> layer(static_cast<size_t>(numFaces), 255);
+  std::vector<subd::Index> front, next;
+  for (subd::Index f = 0; f < numFaces; ++f)
+  {
+    if (!faceIsGhost[f])
+    {
+      layer[f] = 0;
+      front.push_back(f);
+    }
+  }
+  for (int k = 1; k <= maxLayer && !front.empty(); ++k)
+  {
+    next.clear();
+    for (subd::Index f : front)
+    {
+      for (subd::Index v : topology.GetFaceVertices(f))
+      {
+        for (subd::Index g : topology.GetVertexFaces(v))
+        {
+          if (layer[g] == 255)
+          {
+            layer[g] = static_cast<std::uint8_t>(k);
+            next.push_back(g);
+          }
+        }
+      }
+    }
+    front.swap(next);
+  }
+  return layer;
+}
+
+void vtkSubDMarkGhostPoints(vtkPolyData* output)
+{
+  vtkUnsignedCharArray* cellMarks = output->GetCellGhostArray();
+  if (!cellMarks)
+  {
+    return;
+  }
+  vtkNew<vtkUnsignedCharArray> pointMarks;
+  pointMarks->SetName(vtkDataSetAttributes::GhostArrayName());
+  pointMarks->SetNumberOfTuples(output->GetNumberOfPoints());
+  pointMarks->FillValue(vtkDataSetAttributes::DUPLICATEPOINT);
+  vtkIdType cell = 0, n;
+  const vtkIdType* points;
+  for (vtkCellArray* cells : { output->GetVerts(), output->GetLines(), output->GetPolys(), output->GetStrips() })
+  {
+    for (cells->InitTraversal(); cells->GetNextCell(n, points); ++cell)
+    {
+      if ((cellMarks->GetValue(cell) & vtkDataSetAttributes::DUPLICATECELL) == 0)
+      {
+        for (vtkIdType k = 0; k < n; ++k)
+        {
+          pointMarks->SetValue(points[k], 0);
+        }
+      }
+    }
+  }
+  output->GetPointData()->AddArray(pointMarks);
 }
 
 bool vtkSubDIsGhostCell(vtkPolyData* input, vtkIdType cell)

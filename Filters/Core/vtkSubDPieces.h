@@ -15,6 +15,9 @@
 // equal to the serial cell ids, the children inherit the cell data the serial ones do; in
 // coordinate order a face made from two faces may inherit the other one's. Two faces on the
 // very same points would be ordered by chance.)
+//
+// Asked for G ghost levels itself, the filter asks upstream for G more layers than it needs
+// and also outputs the children of the first G layers of ghost faces, marked as ghost cells.
 #ifndef vtkSubDPieces_h
 #define vtkSubDPieces_h
 
@@ -24,11 +27,25 @@
 #include <cstdint>
 #include <vector>
 
+namespace subd
+{
+class MeshTopology;
+}
 class vtkPolyData;
 
 /// Per kept face (`faceCells` gives its input cell): 1 where that cell is a ghost cell. Empty
 /// when none is.
 std::vector<std::uint8_t> vtkSubDGhostFaces(vtkPolyData* input, const std::vector<vtkIdType>& faceCells);
+
+/// Per face of `topology`: 0 for the piece's own faces, k for ghost faces k layers out (sharing a
+/// vertex with a face of layer k - 1), up to `maxLayer`; 255 beyond. `faceIsGhost` as above.
+std::vector<std::uint8_t> vtkSubDGhostLayers(
+  const subd::MeshTopology& topology, const std::vector<std::uint8_t>& faceIsGhost, int maxLayer);
+
+/// Gives `output`, whose cells carry "vtkGhostType", the matching point array: DUPLICATEPOINT
+/// on the points of no cell of its own (vtkSubDCurveFilter, whose ghost lines are refined
+/// like the others).
+void vtkSubDMarkGhostPoints(vtkPolyData* output);
 
 /// True when input cell `cell` is a ghost cell.
 bool vtkSubDIsGhostCell(vtkPolyData* input, vtkIdType cell);

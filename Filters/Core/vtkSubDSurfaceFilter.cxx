@@ -32,6 +32,7 @@
 #include "vtkSMPTools.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkTypeInt32Array.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
 #include <cmath>
@@ -114,6 +115,10 @@ public:
   std::vector<subd::Index> Offsets, Vertices;
   std::vector<subd::Index> KeptFaces;
   std::vector<std::uint8_t> FaceIsGhost; // per kept face; empty unless the input is a piece with ghosts
+  // With ghosts: per kept face, 0 if the piece's own, else its ghost layer (vtkSubDGhostLayers);
+  // the children of faces up to layer OutputGhostLevels are output, those beyond 0 as ghosts.
+  std::vector<std::uint8_t> FaceGhostLayer;
+  int OutputGhostLevels = 0;
   vtkSubDSharpFeatures Features;
   std::vector<subd::Index> UnmatchedSegments; // crease segments that are not surface edges
   subd::Hierarchy Hierarchy;
@@ -154,10 +159,59 @@ public:
     return this->CompactPoints ? this->OutputPointOfFinest[finestPoint] : finestPoint;
   }
   void SelectOutput(bool someBaseVertexUnused);
+  void AddGhostArrays(vtkPolyData* output, vtkIdType numLines) const;
 };
 
+// When ghost levels were asked of the output: "vtkGhostType" for its cells (children of ghost
+// faces, and crease lines with an end on no own face, are DUPLICATECELL) and its points (those
+// on no own face are DUPLICATEPOINT).
+void vtkSubDSurfaceFilter::vtkInternals::AddGhostArrays(vtkPolyData* output, vtkIdType numLines) const
+{
+  if (this->OutputGhostLevels == 0 || this->FaceGhostLayer.empty())
+  {
+    return;
+  }
+  const subd::Level& finest = this->Hierarchy.Finest;
+  const vtkIdType numOut = this->GetNumberOfOutputFaces();
+  vtkNew<vtkUnsignedCharArray> pointGhosts, cellGhosts;
+  pointGhosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  cellGhosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  pointGhosts->SetNumberOfTuples(output->GetNumberOfPoints());
+  cellGhosts->SetNumberOfTuples(numLines + numOut);
+  // Points past the finest ones (copies of unmatched crease segments' ends) are no ghosts.
+  const vtkIdType numFinestOutput =
+    this->CompactPoints ? static_cast<vtkIdType>(this->FinestPointOfOutput.size()) : finest.Topology.GetNumVertices();
+  std::fill_n(pointGhosts->GetPointer(0), numFinestOutput, vtkDataSetAttributes::DUPLICATEPOINT);
+  std::fill(pointGhosts->GetPointer(0) + numFinestOutput, pointGhosts->GetPointer(0) + output->GetNumberOfPoints(), 0);
+  for (vtkIdType c = 0; c < numOut; ++c)
+  {
+    const subd::Index f = this->FinestFace(c);
+    const bool ghost = this->FaceGhostLayer[finest.FaceOrigin[f]] > 0;
+    cellGhosts->SetValue(numLines + c, ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
+    if (ghost)
+    {
+      continue;
+    }
+    for (subd::Index v : finest.Topology.GetFaceVertices(f))
+    {
+      pointGhosts->SetValue(this->OutputPoint(v), 0);
+    }
+  }
+  vtkIdType c = 0, n;
+  const vtkIdType* ends;
+  vtkCellArray* lines = output->GetLines();
+  for (lines->InitTraversal(); c < numLines && lines->GetNextCell(n, ends); ++c)
+  {
+    const bool ghost = pointGhosts->GetValue(ends[0]) != 0 || pointGhosts->GetValue(ends[n - 1]) != 0;
+    cellGhosts->SetValue(c, ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
+  }
+  output->GetPointData()->AddArray(pointGhosts);
+  output->GetCellData()->AddArray(cellGhosts);
+}
+
 // Which finest faces and points are output: all of them, except faces in holes, children of
-// ghost faces (another piece outputs them) and the points no output face uses.
+// ghost faces beyond the ghost levels asked for (another piece outputs them) and the points
+// no output face uses.
 void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
 {
   const subd::Level& finest = this->Hierarchy.Finest;
@@ -165,7 +219,7 @@ void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
   this->OutputPointOfFinest.clear();
   this->FinestPointOfOutput.clear();
   this->NumFinestFaces = finest.Topology.GetNumFaces();
-  this->CompactPoints = someBaseVertexUnused || finest.HasHoles() || !this->FaceIsGhost.empty();
+  this->CompactPoints = someBaseVertexUnused || finest.HasHoles() || !this->FaceGhostLayer.empty();
   if (!this->CompactPoints)
   {
     return;
@@ -173,7 +227,8 @@ void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
   const subd::Index numFinestFaces = finest.Topology.GetNumFaces();
   for (subd::Index f = 0; f < numFinestFaces; ++f)
   {
-    if (!finest.FaceIsHole[f] && (this->FaceIsGhost.empty() || !this->FaceIsGhost[finest.FaceOrigin[f]]))
+    if (!finest.FaceIsHole[f] &&
+      (this->FaceGhostLayer.empty() || this->FaceGhostLayer[finest.FaceOrigin[f]] <= this->OutputGhostLevels))
     {
       this->EmittedFaces.push_back(f);
     }
@@ -235,7 +290,10 @@ int vtkSubDSurfaceFilter::RequestUpdateExtent(
   const int numPieces = outInfo->Get(Pipeline::UPDATE_NUMBER_OF_PIECES());
   inInfo->Set(Pipeline::UPDATE_PIECE_NUMBER(), outInfo->Get(Pipeline::UPDATE_PIECE_NUMBER()));
   inInfo->Set(Pipeline::UPDATE_NUMBER_OF_PIECES(), numPieces);
-  inInfo->Set(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), numPieces > 1 ? this->GetRequiredGhostLevels() : 0);
+  // Ghost cells asked of the output are children of ghost faces, which need layers beyond them.
+  const int outputGhosts = outInfo->Get(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS());
+  inInfo->Set(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
+    numPieces > 1 ? this->GetRequiredGhostLevels() + outputGhosts : 0);
   return 1;
 }
 
@@ -259,6 +317,8 @@ int vtkSubDSurfaceFilter::Execute(
   // One of several pieces may hold no polygon at all: nothing to output, nothing wrong.
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   const bool onePieceOfMany = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1;
+  const int outputGhostLevels =
+    onePieceOfMany ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
   if (onePieceOfMany && (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0))
   {
     return 1;
@@ -356,8 +416,8 @@ int vtkSubDSurfaceFilter::Execute(
   const int inputDepth = ReadInputDepth(input);
   const bool reuse = cache.Valid && cache.FilterMTime == this->GetMTime() && cache.InputDepth == inputDepth &&
     cache.NumInputPoints == numPoints && cache.Offsets == screened.Offsets &&
-    cache.Vertices == screened.Vertices && cache.FaceIsGhost == faceIsGhost && cache.Features == features &&
-    !this->AutomaticCreases;
+    cache.Vertices == screened.Vertices && cache.FaceIsGhost == faceIsGhost &&
+    cache.OutputGhostLevels == outputGhostLevels && cache.Features == features && !this->AutomaticCreases;
   auto refineProgress = [this](double fraction) {
     this->UpdateProgress(0.5 * fraction);
     return !this->GetAbortExecute();
@@ -380,6 +440,8 @@ int vtkSubDSurfaceFilter::Execute(
       subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices,
         &vtkSubDPointDataInterpolation::SMPFor);
     const std::string nonManifold = vtkSubDNonManifoldWarning(topology, faceIsGhost);
+    cache.FaceGhostLayer =
+      faceIsGhost.empty() ? std::vector<std::uint8_t>() : vtkSubDGhostLayers(topology, faceIsGhost, outputGhostLevels);
     if (!nonManifold.empty())
     {
       vtkWarningMacro(<< nonManifold << ".");
@@ -494,6 +556,7 @@ int vtkSubDSurfaceFilter::Execute(
     ++this->NumberOfStencilBuilds;
 
     cache.FaceIsGhost = std::move(faceIsGhost);
+    cache.OutputGhostLevels = outputGhostLevels;
     cache.SelectOutput(someBaseVertexUnused);
     cache.NumInputPoints = numPoints;
     cache.InputDepth = inputDepth;
@@ -623,6 +686,7 @@ int vtkSubDSurfaceFilter::Execute(
   // Cell data: each face inherits its input cell's; lines get zeros, and their sharpness.
   if (input->GetCellData()->GetNumberOfArrays() == 0 && !this->GenerateParentCellIds && numLines == 0)
   {
+    cache.AddGhostArrays(output, numLines);
     this->UpdateProgress(1.0);
     return 1;
   }
@@ -643,7 +707,7 @@ int vtkSubDSurfaceFilter::Execute(
     outCD->NullData(c);
   }
   outCD->CopyData(inCD, sourceCells, targetCells);
-  outCD->RemoveArray(vtkDataSetAttributes::GhostArrayName()); // the output has no ghost cells
+  outCD->RemoveArray(vtkDataSetAttributes::GhostArrayName()); // the input's, not the output's
   if (numLines > 0)
   {
     vtkNew<vtkFloatArray> sharpness;
@@ -675,6 +739,7 @@ int vtkSubDSurfaceFilter::Execute(
     depth->InsertNextValue(finest.Depth);
     output->GetFieldData()->AddArray(depth);
   }
+  cache.AddGhostArrays(output, numLines);
   this->UpdateProgress(1.0);
   return 1;
 }

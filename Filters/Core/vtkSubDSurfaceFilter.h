@@ -59,7 +59,9 @@
  * upstream for GetRequiredGhostLevels() layers of ghost cells, subdivides its own and the ghost
  * faces together and outputs only the children of its own faces, so that the pieces' outputs
  * together are the serial output. Points on a seam between pieces appear in every piece that
- * uses them, as do crease lines along a seam; the output has no ghost cells. Doo-Sabin and the
+ * uses them, as do crease lines along a seam. Asked for ghost levels itself, it asks upstream
+ * for that many more and also outputs the children of the first layers of ghost faces, marked
+ * in "vtkGhostType" (DUPLICATECELL; points on no own face DUPLICATEPOINT). Doo-Sabin and the
  * midpoint scheme make faces from faces of two pieces: every piece numbers its faces alike
  * (by global cell id, else by their points' coordinates) to agree on which one outputs such
  * a face (vtkSubDPieces.h). A piece without polygons gives an empty output, no error.
@@ -246,7 +248,8 @@ public:
    * children to be those of the whole mesh, at the current NumberOfSubdivisions (0 for none):
    * how far the stencils of all levels together reach, in cells. 1 for the schemes whose
    * stencils read a point's 1-ring (Catmull-Clark, Loop, linear, Doo-Sabin, midpoint); see
-   * the butterfly and sqrt(3) filters for theirs. Requested upstream by RequestUpdateExtent.
+   * the other filters for theirs. Requested upstream by RequestUpdateExtent, plus the ghost
+ * levels asked of the output.
    */
   virtual int GetRequiredGhostLevels() { return this->NumberOfSubdivisions > 0 ? 1 : 0; }
 
@@ -261,8 +264,8 @@ protected:
   ~vtkSubDSurfaceFilter() override;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /// Passes the requested piece upstream, with GetRequiredGhostLevels() ghost levels when the
-  /// mesh is split into several pieces.
+  /// Passes the requested piece upstream, with GetRequiredGhostLevels() ghost levels (plus those
+  /// asked of the output) when the mesh is split into several pieces.
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// RequestData's work; RequestData runs it and turns running out of memory into an error.
   int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);

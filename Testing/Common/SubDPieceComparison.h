@@ -13,6 +13,7 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
+#include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
@@ -29,7 +30,8 @@
 
 namespace subdtest
 {
-/// A corner's values: coordinates, then every point-data array's components.
+/// A corner's values: coordinates, then every point-data array's components (but the ghost
+/// marks, which only pieces have).
 using Corner = std::vector<double>;
 using Face = std::vector<Corner>;
 
@@ -41,6 +43,10 @@ inline Corner CornerOf(vtkPolyData* mesh, vtkIdType point)
   for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
   {
     vtkDataArray* array = pd->GetArray(a);
+    if (array && array->GetName() && std::string(array->GetName()) == "vtkGhostType")
+    {
+      continue;
+    }
     for (int k = 0; array && k < array->GetNumberOfComponents(); ++k)
     {
       c.push_back(array->GetComponent(point, k));
@@ -100,6 +106,78 @@ inline std::map<vtkIdType, std::vector<Face>> FacesByInputCell(vtkPolyData* mesh
     std::sort(group.second.begin(), group.second.end(), FaceLess);
   }
   return faces;
+}
+
+/// The cells of `mesh` (crease lines and polygons) that are ghost cells (`ghosts`) or not, with
+/// all its points and point data and the cell data the comparisons read ("TestCellId",
+/// "Sharpness").
+inline vtkSmartPointer<vtkPolyData> CellsByGhostMark(vtkPolyData* mesh, bool ghosts)
+{
+  auto part = vtkSmartPointer<vtkPolyData>::New();
+  part->SetPoints(mesh->GetPoints());
+  part->GetPointData()->PassData(mesh->GetPointData());
+  part->GetPointData()->RemoveArray("vtkGhostType");
+  vtkDataArray* marks = mesh->GetCellData()->GetArray("vtkGhostType");
+  vtkCellData* in = mesh->GetCellData();
+  vtkNew<vtkCellArray> lines, polys;
+  vtkNew<vtkIdTypeArray> origins;
+  vtkNew<vtkDoubleArray> sharpness;
+  origins->SetName("TestCellId");
+  sharpness->SetName("Sharpness");
+  auto keep = [&](vtkCellArray* from, vtkCellArray* to, vtkIdType firstCell) {
+    vtkIdType c = firstCell, n;
+    const vtkIdType* pts;
+    for (from->InitTraversal(); from->GetNextCell(n, pts); ++c)
+    {
+      const bool ghost = marks && (static_cast<int>(marks->GetComponent(c, 0)) & 1) != 0; // DUPLICATECELL
+      if (ghost == ghosts)
+      {
+        to->InsertNextCell(n, pts);
+        origins->InsertNextValue(in->GetArray("TestCellId") ? in->GetArray("TestCellId")->GetComponent(c, 0) : 0);
+        sharpness->InsertNextValue(in->GetArray("Sharpness") ? in->GetArray("Sharpness")->GetComponent(c, 0) : 0);
+      }
+    }
+  };
+  keep(mesh->GetLines(), lines, mesh->GetNumberOfVerts());
+  keep(mesh->GetPolys(), polys, mesh->GetNumberOfVerts() + mesh->GetNumberOfLines());
+  part->SetLines(lines);
+  part->SetPolys(polys);
+  part->GetCellData()->AddArray(origins);
+  if (in->GetArray("Sharpness"))
+  {
+    part->GetCellData()->AddArray(sharpness);
+  }
+  return part;
+}
+
+/// "" when every face of `part` is a face of `serial` (corners and point data to `tolerance`;
+/// with `byInputCell`, of the same input cell), else the first that is not.
+inline std::string FacesAreAmong(vtkPolyData* serial, vtkPolyData* part, double tolerance, bool byInputCell)
+{
+  std::string error;
+  const auto all = FacesByInputCell(serial, byInputCell, error);
+  auto same = [tolerance](const Face& a, const Face& b) {
+    if (a.size() != b.size())
+      return false;
+    for (size_t k = 0; k < a.size(); ++k)
+      for (size_t i = 0; i < a[k].size(); ++i)
+        if (a[k].size() != b[k].size() || std::abs(a[k][i] - b[k][i]) > tolerance)
+          return false;
+    return true;
+  };
+  for (const auto& group : FacesByInputCell(part, byInputCell, error))
+  {
+    const auto found = all.find(group.first);
+    for (size_t f = 0; f < group.second.size(); ++f)
+    {
+      if (found == all.end() ||
+        std::none_of(found->second.begin(), found->second.end(), [&](const Face& g) { return same(g, group.second[f]); }))
+      {
+        return "face " + std::to_string(f) + " of input cell " + std::to_string(group.first) + " is no serial face";
+      }
+    }
+  }
+  return error;
 }
 
 /// The crease lines of all `meshes` as (lower end, upper end, sharpness), sorted; a line that

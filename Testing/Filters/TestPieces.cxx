@@ -3,77 +3,18 @@
 // give pieces whose union is the serial output (SubDPieceComparison.h). The MPI tests
 // (Testing/Parallel) do the same across processes.
 #include "SubDPieceComparison.h"
-#include "SubDPieceTestInputs.h"
+#include "SubDPieceTestCases.h"
 
-#include "vtkExtractPolyDataPiece.h"
-#include "vtkSubDButterflyFilter.h"
-#include "vtkSubDCatmullClarkFilter.h"
-#include "vtkSubDDooSabinFilter.h"
-#include "vtkSubDLinearFilter.h"
-#include "vtkSubDLoopFilter.h"
-#include "vtkSubDMidpointFilter.h"
-#include "vtkSubDSqrt3Filter.h"
-#include "vtkTrivialProducer.h"
+#include "vtkSubDCurveFilter.h"
 
 #include <gtest/gtest.h>
 
-#include <functional>
+#include <algorithm>
 #include <string>
 
 namespace
 {
 using namespace subdtest;
-
-struct SchemeCase
-{
-  const char* Name;
-  std::function<vtkSmartPointer<vtkSubDSurfaceFilter>()> Make;
-  bool Triangles;
-  // Doo-Sabin and midpoint pieces, numbering faces by their coordinates, may give a face made
-  // from two faces the other one's cell data (vtkSubDPieces.h): compared without it.
-  bool SameCellData = true;
-};
-
-template <typename T>
-SchemeCase Scheme(const char* name, bool triangles, bool sameCellData = true)
-{
-  return { name, [] { return vtkSmartPointer<T>::New(); }, triangles, sameCellData };
-}
-
-std::vector<SchemeCase> Schemes()
-{
-  return { Scheme<vtkSubDCatmullClarkFilter>("catmull-clark", false), Scheme<vtkSubDLoopFilter>("loop", true),
-    Scheme<vtkSubDButterflyFilter>("butterfly", true), Scheme<vtkSubDLinearFilter>("linear", true),
-    Scheme<vtkSubDSqrt3Filter>("sqrt3", true), Scheme<vtkSubDDooSabinFilter>("doo-sabin", false, false),
-    Scheme<vtkSubDMidpointFilter>("midpoint", false, false) };
-}
-
-// The filter's output for piece `piece` of `numPieces` (the whole mesh for 1 piece), with
-// `ghostLevels` ghost levels instead of the filter's own request when >= 0.
-vtkSmartPointer<vtkPolyData> RunPiece(const SchemeCase& scheme, vtkPolyData* input, int levels, int piece,
-  int numPieces, Messages& messages)
-{
-  vtkNew<vtkTrivialProducer> producer;
-  producer->SetOutput(input);
-  vtkNew<vtkExtractPolyDataPiece> extract;
-  extract->SetInputConnection(producer->GetOutputPort());
-  vtkSmartPointer<vtkSubDSurfaceFilter> filter = scheme.Make();
-  filter->SetInputConnection(extract->GetOutputPort());
-  filter->SetNumberOfSubdivisions(levels);
-  // vtkExtractPolyDataPiece makes float points; double output keeps round-off apart from the
-  // float rounding of the result.
-  filter->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  messages.Watch(filter);
-  filter->UpdatePiece(piece, numPieces, 0);
-  auto output = vtkSmartPointer<vtkPolyData>::New();
-  output->DeepCopy(filter->GetOutput());
-  return output;
-}
-
-double Tolerance(vtkPolyData* mesh)
-{
-  return 1e-12 * std::max(1.0, mesh->GetLength());
-}
 
 class Pieces : public ::testing::TestWithParam<int>
 {
@@ -81,24 +22,25 @@ class Pieces : public ::testing::TestWithParam<int>
 
 TEST_P(Pieces, UnionOfPiecesIsTheSerialOutput)
 {
-  const SchemeCase scheme = Schemes()[GetParam()];
+  const PieceScheme scheme = PieceSchemes()[GetParam()];
   for (const PieceTestCase& test : PieceTestCases(scheme.Triangles))
   {
     vtkSmartPointer<vtkPolyData> input = PieceTestInput(test);
     for (int levels = 1; levels <= 3; ++levels)
     {
-      Messages serialMessages;
-      vtkSmartPointer<vtkPolyData> serial = RunPiece(scheme, input, levels, 0, 1, serialMessages);
-      ASSERT_GT(serial->GetNumberOfPolys(), 0) << serialMessages.Errors;
+      int serialErrors = 0;
+      vtkSmartPointer<vtkPolyData> serial = SubdividePiece(scheme, input, levels, 0, 1, serialErrors);
+      ASSERT_GT(serial->GetNumberOfPolys(), 0);
+      ASSERT_EQ(serialErrors, 0);
       for (int numPieces : { 2, 3, 5 })
       {
         std::vector<vtkSmartPointer<vtkPolyData>> pieces;
         std::vector<vtkPolyData*> raw;
-        Messages messages;
+        int errors = 0;
         vtkIdType total = 0;
         for (int p = 0; p < numPieces; ++p)
         {
-          pieces.push_back(RunPiece(scheme, input, levels, p, numPieces, messages));
+          pieces.push_back(SubdividePiece(scheme, input, levels, p, numPieces, errors));
           raw.push_back(pieces.back());
           total += pieces.back()->GetNumberOfPolys();
           EXPECT_EQ(pieces.back()->GetCellData()->GetArray("vtkGhostType"), nullptr);
@@ -106,9 +48,9 @@ TEST_P(Pieces, UnionOfPiecesIsTheSerialOutput)
         }
         const std::string where = std::string(scheme.Name) + " " + test.Name + ", " + std::to_string(levels) +
           " level(s), " + std::to_string(numPieces) + " pieces";
-        EXPECT_EQ(messages.NumErrors, 0) << where << ": " << messages.Errors;
+        EXPECT_EQ(errors, 0) << where;
         EXPECT_EQ(total, serial->GetNumberOfPolys()) << where;
-        EXPECT_EQ(ComparePieces(serial, raw, Tolerance(serial), scheme.SameCellData), "") << where;
+        EXPECT_EQ(ComparePieces(serial, raw, PieceTolerance(serial), scheme.SameCellData), "") << where;
       }
     }
   }
@@ -118,41 +60,212 @@ TEST_P(Pieces, UnionOfPiecesIsTheSerialOutput)
 // asked for every piece in turn (re-executing on each new piece) still gives the serial union.
 TEST_P(Pieces, EmptyPiecesAndOneFilterForAllPieces)
 {
-  const SchemeCase scheme = Schemes()[GetParam()];
+  const PieceScheme scheme = PieceSchemes()[GetParam()];
   PieceTestCase test{ "cube", scheme.Triangles ? Cube().Triangulated() : Cube(), 4, false };
   vtkSmartPointer<vtkPolyData> input = PieceTestInput(test);
-  Messages serialMessages;
-  vtkSmartPointer<vtkPolyData> serial = RunPiece(scheme, input, 2, 0, 1, serialMessages);
+  int serialErrors = 0;
+  vtkSmartPointer<vtkPolyData> serial = SubdividePiece(scheme, input, 2, 0, 1, serialErrors);
   const int numPieces = 2 * static_cast<int>(input->GetNumberOfCells());
-  vtkNew<vtkTrivialProducer> producer;
-  producer->SetOutput(input);
-  vtkNew<vtkExtractPolyDataPiece> extract;
-  extract->SetInputConnection(producer->GetOutputPort());
-  vtkSmartPointer<vtkSubDSurfaceFilter> filter = scheme.Make();
-  filter->SetInputConnection(extract->GetOutputPort());
-  filter->SetNumberOfSubdivisions(2);
-  filter->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
-  Messages messages;
-  messages.Watch(filter);
+  PiecePipeline pipeline(scheme, input, 2);
   std::vector<vtkSmartPointer<vtkPolyData>> pieces;
   std::vector<vtkPolyData*> raw;
   int empty = 0;
   for (int p = 0; p < numPieces; ++p)
   {
-    filter->UpdatePiece(p, numPieces, 0);
-    pieces.push_back(vtkSmartPointer<vtkPolyData>::New());
-    pieces.back()->DeepCopy(filter->GetOutput());
+    pieces.push_back(pipeline.Run(p, numPieces));
     raw.push_back(pieces.back());
     empty += pieces.back()->GetNumberOfCells() == 0;
   }
   EXPECT_GT(empty, 0);
-  EXPECT_EQ(messages.NumErrors, 0) << messages.Errors;
-  EXPECT_EQ(ComparePieces(serial, raw, Tolerance(serial), scheme.SameCellData), "");
+  EXPECT_EQ(serialErrors + pipeline.FilterMessages.NumErrors, 0) << pipeline.FilterMessages.Errors;
+  EXPECT_EQ(ComparePieces(serial, raw, PieceTolerance(serial), scheme.SameCellData), "");
+}
+
+// Asked for a ghost level of its output, a piece adds the children of the first layer of its
+// ghost faces, marked DUPLICATECELL: without them the pieces are still the serial output, the
+// marked faces are serial faces (of other pieces), and exactly the points of no own face are
+// marked DUPLICATEPOINT.
+TEST_P(Pieces, GhostLevelsAskedOfTheOutput)
+{
+  const PieceScheme scheme = PieceSchemes()[GetParam()];
+  const PieceTestCase test = PieceTestCases(scheme.Triangles)[2]; // the creased torus
+  vtkSmartPointer<vtkPolyData> input = PieceTestInput(test);
+  int serialErrors = 0;
+  vtkSmartPointer<vtkPolyData> serial = SubdividePiece(scheme, input, 2, 0, 1, serialErrors);
+  const double tolerance = PieceTolerance(serial);
+  const int numPieces = 3;
+  std::vector<vtkSmartPointer<vtkPolyData>> own;
+  std::vector<vtkPolyData*> raw;
+  for (int p = 0; p < numPieces; ++p)
+  {
+    PiecePipeline pipeline(scheme, input, 2);
+    pipeline.Filter->UpdatePiece(p, numPieces, 1);
+    vtkPolyData* piece = pipeline.Filter->GetOutput();
+    EXPECT_EQ(pipeline.FilterMessages.NumErrors, 0);
+    vtkDataArray* cellMarks = piece->GetCellData()->GetArray("vtkGhostType");
+    vtkDataArray* pointMarks = piece->GetPointData()->GetArray("vtkGhostType");
+    ASSERT_NE(cellMarks, nullptr);
+    ASSERT_NE(pointMarks, nullptr);
+    own.push_back(CellsByGhostMark(piece, false));
+    raw.push_back(own.back());
+    vtkSmartPointer<vtkPolyData> ghosts = CellsByGhostMark(piece, true);
+    EXPECT_GT(ghosts->GetNumberOfPolys(), 0) << "piece " << p;
+    EXPECT_EQ(FacesAreAmong(serial, ghosts, tolerance, scheme.SameCellData), "") << "piece " << p;
+    // Points: DUPLICATEPOINT exactly where no own face has a corner.
+    std::vector<char> onOwnFace(static_cast<size_t>(piece->GetNumberOfPoints()), 0);
+    vtkIdType n;
+    const vtkIdType* pts;
+    for (own.back()->GetPolys()->InitTraversal(); own.back()->GetPolys()->GetNextCell(n, pts);)
+    {
+      for (vtkIdType k = 0; k < n; ++k)
+        onOwnFace[pts[k]] = 1;
+    }
+    for (vtkIdType q = 0; q < piece->GetNumberOfPoints(); ++q)
+    {
+      ASSERT_EQ(pointMarks->GetComponent(q, 0) != 0, !onOwnFace[q]) << "piece " << p << ", point " << q;
+    }
+  }
+  EXPECT_EQ(ComparePieces(serial, raw, tolerance, scheme.SameCellData), "");
+}
+
+// Curves: each line is refined by itself, so pieces need no ghost cells; asked for one ghost
+// level, a piece adds its ghost lines refined and marked.
+namespace
+{
+// Polylines (open, closed, sharing end points) with a point-data array.
+vtkSmartPointer<vtkPolyData> CurveTestInput()
+{
+  auto curves = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> payload;
+  payload->SetName("Payload");
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIdTypeArray> cellIds;
+  cellIds->SetName("TestCellId");
+  vtkIdType shared = -1;
+  for (int c = 0; c < 12; ++c)
+  {
+    std::vector<vtkIdType> ids;
+    if (c % 2 == 0 && shared >= 0)
+    {
+      ids.push_back(shared); // starts where the previous curve ended
+    }
+    const int n = 4 + c % 5;
+    for (int k = 0; k < n; ++k)
+    {
+      ids.push_back(points->InsertNextPoint(k, c + 0.3 * std::sin(k + c), 0.1 * k * k));
+      payload->InsertNextValue(k * c);
+    }
+    if (c % 3 == 2)
+    {
+      ids.push_back(ids.front()); // closed
+    }
+    shared = ids.back();
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    cellIds->InsertNextValue(c);
+  }
+  curves->SetPoints(points);
+  curves->SetLines(lines);
+  curves->GetPointData()->AddArray(payload);
+  curves->GetCellData()->AddArray(cellIds);
+  return curves;
+}
+
+// The lines of `mesh` (without the ghost ones unless `withGhosts`) as sequences of corners
+// with their "TestCellId", sorted by it.
+std::vector<std::pair<double, Face>> Polylines(vtkPolyData* mesh, bool withGhosts)
+{
+  std::vector<std::pair<double, Face>> out;
+  vtkDataArray* marks = mesh->GetCellData()->GetArray("vtkGhostType");
+  vtkDataArray* ids = mesh->GetCellData()->GetArray("TestCellId");
+  vtkIdType c = mesh->GetNumberOfVerts(), n;
+  const vtkIdType* pts;
+  for (mesh->GetLines()->InitTraversal(); mesh->GetLines()->GetNextCell(n, pts); ++c)
+  {
+    if (!withGhosts && marks && marks->GetComponent(c, 0) != 0)
+    {
+      continue;
+    }
+    Face line;
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      line.push_back(CornerOf(mesh, pts[k]));
+    }
+    out.emplace_back(ids->GetComponent(c, 0), line);
+  }
+  std::sort(out.begin(), out.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  return out;
+}
+
+bool SameLines(const std::vector<std::pair<double, Face>>& a, const std::vector<std::pair<double, Face>>& b)
+{
+  if (a.size() != b.size())
+    return false;
+  for (size_t l = 0; l < a.size(); ++l)
+  {
+    if (a[l].first != b[l].first || a[l].second.size() != b[l].second.size())
+      return false;
+    for (size_t k = 0; k < a[l].second.size(); ++k)
+      for (size_t i = 0; i < a[l].second[k].size(); ++i)
+        if (a[l].second[k].size() != b[l].second[k].size() || std::abs(a[l].second[k][i] - b[l].second[k][i]) > 1e-12)
+          return false;
+  }
+  return true;
+}
+
+TEST(CurvePieces, UnionOfPiecesIsTheSerialOutputAndGhostLinesAreMarked)
+{
+  vtkSmartPointer<vtkPolyData> input = CurveTestInput();
+  for (int scheme : { vtkSubDCurveFilter::SCHEME_CHAIKIN, vtkSubDCurveFilter::SCHEME_CUBIC_BSPLINE,
+         vtkSubDCurveFilter::SCHEME_FOUR_POINT })
+  {
+    auto run = [&](int piece, int numPieces, int ghostLevels) {
+      vtkNew<vtkTrivialProducer> producer;
+      producer->SetOutput(input);
+      vtkNew<vtkExtractPolyDataPiece> extract;
+      extract->SetInputConnection(producer->GetOutputPort());
+      vtkNew<vtkSubDCurveFilter> filter;
+      filter->SetInputConnection(extract->GetOutputPort());
+      filter->SetScheme(scheme);
+      filter->SetNumberOfSubdivisions(3);
+      filter->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
+      filter->UpdatePiece(piece, numPieces, ghostLevels);
+      auto output = vtkSmartPointer<vtkPolyData>::New();
+      output->DeepCopy(filter->GetOutput());
+      return output;
+    };
+    const auto serial = Polylines(run(0, 1, 0), true);
+    ASSERT_EQ(serial.size(), 12u);
+    for (int ghostLevels : { 0, 1 })
+    {
+      std::vector<std::pair<double, Face>> together;
+      size_t ghostLines = 0;
+      for (int p = 0; p < 3; ++p)
+      {
+        vtkSmartPointer<vtkPolyData> piece = run(p, 3, ghostLevels);
+        const auto own = Polylines(piece, false);
+        together.insert(together.end(), own.begin(), own.end());
+        ghostLines += Polylines(piece, true).size() - own.size();
+        vtkDataArray* pointMarks = piece->GetPointData()->GetArray("vtkGhostType");
+        EXPECT_TRUE(pointMarks != nullptr || ghostLevels == 0);
+        for (vtkIdType q = 0; pointMarks && q < pointMarks->GetNumberOfTuples(); ++q)
+        {
+          const double mark = pointMarks->GetComponent(q, 0); // never an interpolated value
+          EXPECT_TRUE(mark == 0 || mark == vtkDataSetAttributes::DUPLICATEPOINT) << mark;
+        }
+      }
+      std::sort(together.begin(), together.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+      EXPECT_TRUE(SameLines(serial, together)) << "scheme " << scheme << ", ghost levels " << ghostLevels;
+      EXPECT_EQ(ghostLines > 0, ghostLevels > 0);
+    }
+  }
+}
 }
 
 INSTANTIATE_TEST_SUITE_P(AllSchemes, Pieces, ::testing::Range(0, 7),
   [](const ::testing::TestParamInfo<int>& info) {
-    std::string name = Schemes()[info.param].Name;
+    std::string name = PieceSchemes()[info.param].Name;
     std::replace(name.begin(), name.end(), '-', '_');
     return name;
   });
