@@ -86,6 +86,18 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
       out = argv[++i];
       return true;
     };
+    // The value of option `a` as an integer in [lo, hi].
+    auto integer = [&](const std::string& text, long lo, long hi, int& out) {
+      char* end = nullptr;
+      const long number = std::strtol(text.c_str(), &end, 10);
+      if (text.empty() || *end != '\0' || number < lo || number > hi)
+      {
+        error = a + " wants an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", not '" + text + "'";
+        return false;
+      }
+      out = static_cast<int>(number);
+      return true;
+    };
     std::string v;
     if (a == "-h" || a == "--help")
     {
@@ -103,16 +115,8 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
     }
     else if (a == "--levels")
     {
-      if (!value(v))
+      if (!value(v) || !integer(v, 0, 30, args.Options.Levels))
         return false;
-      char* end = nullptr;
-      const long levels = std::strtol(v.c_str(), &end, 10);
-      if (*end != '\0' || levels < 0 || levels > 30)
-      {
-        error = "--levels wants an integer from 0 to 30, not '" + v + "'";
-        return false;
-      }
-      args.Options.Levels = static_cast<int>(levels);
     }
     else if (a == "--boundary")
     {
@@ -131,16 +135,8 @@ bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
     }
     else if (a == "--threads")
     {
-      if (!value(v))
+      if (!value(v) || !integer(v, 1, 1024, args.Threads))
         return false;
-      char* end = nullptr;
-      const long threads = std::strtol(v.c_str(), &end, 10);
-      if (*end != '\0' || threads < 1 || threads > 1024)
-      {
-        error = "--threads wants an integer from 1 to 1024, not '" + v + "'";
-        return false;
-      }
-      args.Threads = static_cast<int>(threads);
     }
     else if (a == "--limit")
     {
@@ -352,7 +348,7 @@ int main(int argc, char* argv[])
   std::string error;
   if (!Parse(argc, argv, args, error))
   {
-    return fail(error + "\n" + Usage, 2);
+    return fail(error + " (see --help)", 2);
   }
   if (args.Help)
   {
