@@ -75,7 +75,8 @@ std::vector<std::uint8_t> vtkSubDGhostLayers(
 
 void vtkSubDMarkGhostPoints(vtkPolyData* output)
 {
-  vtkUnsignedCharArray* cellMarks = output->GetCellGhostArray();
+  auto* cellMarks =
+    vtkUnsignedCharArray::SafeDownCast(output->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
   if (!cellMarks)
   {
     return;
@@ -99,6 +100,7 @@ void vtkSubDMarkGhostPoints(vtkPolyData* output)
       }
     }
   }
+  output->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
   output->GetPointData()->AddArray(pointMarks);
 }
 

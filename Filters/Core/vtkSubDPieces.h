@@ -43,8 +43,7 @@ std::vector<std::uint8_t> vtkSubDGhostLayers(
   const subd::MeshTopology& topology, const std::vector<std::uint8_t>& faceIsGhost, int maxLayer);
 
 /// Gives `output`, whose cells carry "vtkGhostType", the matching point array: DUPLICATEPOINT
-/// on the points of no cell of its own (vtkSubDCurveFilter, whose ghost lines are refined
-/// like the others).
+/// on the points of no cell of its own.
 void vtkSubDMarkGhostPoints(vtkPolyData* output);
 
 /// True when input cell `cell` is a ghost cell.

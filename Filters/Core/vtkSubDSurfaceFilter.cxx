@@ -173,40 +173,34 @@ void vtkSubDSurfaceFilter::vtkInternals::AddGhostArrays(vtkPolyData* output, vtk
   }
   const subd::Level& finest = this->Hierarchy.Finest;
   const vtkIdType numOut = this->GetNumberOfOutputFaces();
-  vtkNew<vtkUnsignedCharArray> pointGhosts, cellGhosts;
-  pointGhosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  vtkNew<vtkUnsignedCharArray> cellGhosts;
   cellGhosts->SetName(vtkDataSetAttributes::GhostArrayName());
-  pointGhosts->SetNumberOfTuples(output->GetNumberOfPoints());
   cellGhosts->SetNumberOfTuples(numLines + numOut);
-  // Points past the finest ones (copies of unmatched crease segments' ends) are no ghosts.
-  const vtkIdType numFinestOutput =
-    this->CompactPoints ? static_cast<vtkIdType>(this->FinestPointOfOutput.size()) : finest.Topology.GetNumVertices();
-  std::fill_n(pointGhosts->GetPointer(0), numFinestOutput, vtkDataSetAttributes::DUPLICATEPOINT);
-  std::fill(pointGhosts->GetPointer(0) + numFinestOutput, pointGhosts->GetPointer(0) + output->GetNumberOfPoints(), 0);
+  // Lines first count as ghosts, so that the points are marked by the faces alone.
+  std::fill_n(cellGhosts->GetPointer(0), numLines, vtkDataSetAttributes::DUPLICATECELL);
   for (vtkIdType c = 0; c < numOut; ++c)
   {
-    const subd::Index f = this->FinestFace(c);
-    const bool ghost = this->FaceGhostLayer[finest.FaceOrigin[f]] > 0;
+    const bool ghost = this->FaceGhostLayer[finest.FaceOrigin[this->FinestFace(c)]] > 0;
     cellGhosts->SetValue(numLines + c, ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
-    if (ghost)
-    {
-      continue;
-    }
-    for (subd::Index v : finest.Topology.GetFaceVertices(f))
-    {
-      pointGhosts->SetValue(this->OutputPoint(v), 0);
-    }
+  }
+  output->GetCellData()->AddArray(cellGhosts);
+  vtkSubDMarkGhostPoints(output);
+  // Passed-through segments (their own copies of points) are the piece's own.
+  vtkDataArray* pointGhosts = output->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName());
+  const vtkIdType numFinestOutput =
+    this->CompactPoints ? static_cast<vtkIdType>(this->FinestPointOfOutput.size()) : finest.Topology.GetNumVertices();
+  for (vtkIdType p = numFinestOutput; p < output->GetNumberOfPoints(); ++p)
+  {
+    pointGhosts->SetComponent(p, 0, 0);
   }
   vtkIdType c = 0, n;
   const vtkIdType* ends;
   vtkCellArray* lines = output->GetLines();
   for (lines->InitTraversal(); c < numLines && lines->GetNextCell(n, ends); ++c)
   {
-    const bool ghost = pointGhosts->GetValue(ends[0]) != 0 || pointGhosts->GetValue(ends[n - 1]) != 0;
+    const bool ghost = pointGhosts->GetComponent(ends[0], 0) != 0 || pointGhosts->GetComponent(ends[n - 1], 0) != 0;
     cellGhosts->SetValue(c, ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
   }
-  output->GetPointData()->AddArray(pointGhosts);
-  output->GetCellData()->AddArray(cellGhosts);
 }
 
 // Which finest faces and points are output: all of them, except faces in holes, children of
