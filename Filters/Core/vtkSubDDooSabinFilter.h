@@ -43,9 +43,10 @@ public:
 
   /**
    * Ghost levels a piece needs (vtkSubDSurfaceFilter::GetRequiredGhostLevels): 2. A corner
-   * point reads its whole face, and a face next to a boundary or crease edge is cut by the
-   * boundary rule (so a ghost face's corners depend on its far edges); each level halves the
-   * reach in input cells. Checked through 5 levels (TestPieces).
+   * point reads its whole face, and next to a boundary or crease edge its weights depend on
+   * whether the edge's far end is a corner of the mesh (a vertex of one face), which takes
+   * that vertex's faces, a second ring; each level halves the reach in input cells. Checked
+   * through 5 levels (TestPieces).
    */
   int GetRequiredGhostLevels() override { return this->NumberOfSubdivisions > 0 ? 2 : 0; }
 
