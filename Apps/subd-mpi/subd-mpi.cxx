@@ -40,7 +40,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <sstream>
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -178,20 +177,6 @@ int DefaultThreads()
   const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_SIZE");
   const int ranksHere = local ? std::max(1, std::atoi(local)) : 1;
   return std::max(1, static_cast<int>(std::thread::hardware_concurrency()) / ranksHere);
-}
-
-// Prints each line of `lines` as "subd-mpi: rank R: <kind>: <line>".
-void PrintMessages(int rank, const std::string& lines, const char* kind)
-{
-  std::istringstream in(lines);
-  std::string line;
-  while (std::getline(in, line))
-  {
-    if (!line.empty())
-    {
-      std::cerr << "subd-mpi: rank " << rank << ": " << kind << ": " << line << "\n";
-    }
-  }
 }
 
 // Interleaves the bits of three 21-bit integers: the Z-order (Morton) key.
@@ -383,8 +368,9 @@ int main(int argc, char* argv[])
   messages.Watch(filter);
   filter->SetInputData(piece);
   filter->UpdatePiece(rank, numRanks, 0);
-  PrintMessages(rank, messages.Warnings, "warning");
-  PrintMessages(rank, messages.Errors, "error");
+  const std::string prefix = "subd-mpi: rank " + std::to_string(rank) + ": ";
+  subdapp::PrintMessageLines(prefix, messages.Warnings, "warning");
+  subdapp::PrintMessageLines(prefix, messages.Errors, "error");
   int failed = filter->GetErrorCode() != 0 || !messages.Errors.empty() ? 1 : 0;
   int anyFailed = 0;
   controller->AllReduce(&failed, &anyFailed, 1, vtkCommunicator::MAX_OP);

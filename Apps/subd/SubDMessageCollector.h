@@ -11,10 +11,26 @@
 
 #include <cctype>
 #include <cstdio>
+#include <iostream>
+#include <sstream>
 #include <string>
 
 namespace subdapp
 {
+/// Prints each non-empty line of `lines` to stderr as "<prefix><kind>: <line>".
+inline void PrintMessageLines(const std::string& prefix, const std::string& lines, const char* kind)
+{
+  std::istringstream in(lines);
+  std::string line;
+  while (std::getline(in, line))
+  {
+    if (!line.empty())
+    {
+      std::cerr << prefix << kind << ": " << line << "\n";
+    }
+  }
+}
+
 class MessageCollector
 {
 public:

@@ -18,7 +18,6 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
-#include <sstream>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -67,15 +66,7 @@ bool SameFile(const std::string& a, const std::string& b)
 
 void PrintMessages(const std::string& lines, const char* kind)
 {
-  std::istringstream in(lines);
-  std::string line;
-  while (std::getline(in, line))
-  {
-    if (!line.empty())
-    {
-      std::cerr << "subd: " << kind << ": " << line << "\n";
-    }
-  }
+  subdapp::PrintMessageLines("subd: ", lines, kind);
 }
 }
 

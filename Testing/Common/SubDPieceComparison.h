@@ -55,6 +55,30 @@ inline Corner CornerOf(vtkPolyData* mesh, vtkIdType point)
   return c;
 }
 
+/// Whether two corners hold as many values, equal to `tolerance`.
+inline bool SameCorner(const Corner& a, const Corner& b, double tolerance)
+{
+  if (a.size() != b.size())
+  {
+    return false;
+  }
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    if (std::abs(a[i] - b[i]) > tolerance)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+/// Whether two faces (or polylines) have the same corners in the same order, to `tolerance`.
+inline bool SameFace(const Face& a, const Face& b, double tolerance)
+{
+  return a.size() == b.size() &&
+    std::equal(a.begin(), a.end(), b.begin(), [tolerance](const Corner& p, const Corner& q) { return SameCorner(p, q, tolerance); });
+}
+
 // Orders corners by their coordinates rounded to 1e-9: a piece's round-off (a coordinate of
 // 1e-17 where the serial one is -1e-17) must not change the order.
 inline bool CoordinatesLess(const Corner& a, const Corner& b)
@@ -156,22 +180,13 @@ inline std::string FacesAreAmong(vtkPolyData* serial, vtkPolyData* part, double 
 {
   std::string error;
   const auto all = FacesByInputCell(serial, byInputCell, error);
-  auto same = [tolerance](const Face& a, const Face& b) {
-    if (a.size() != b.size())
-      return false;
-    for (size_t k = 0; k < a.size(); ++k)
-      for (size_t i = 0; i < a[k].size(); ++i)
-        if (a[k].size() != b[k].size() || std::abs(a[k][i] - b[k][i]) > tolerance)
-          return false;
-    return true;
-  };
   for (const auto& group : FacesByInputCell(part, byInputCell, error))
   {
     const auto found = all.find(group.first);
     for (size_t f = 0; f < group.second.size(); ++f)
     {
       if (found == all.end() ||
-        std::none_of(found->second.begin(), found->second.end(), [&](const Face& g) { return same(g, group.second[f]); }))
+        std::none_of(found->second.begin(), found->second.end(), [&](const Face& g) { return SameFace(g, group.second[f], tolerance); }))
       {
         return "face " + std::to_string(f) + " of input cell " + std::to_string(group.first) + " is no serial face";
       }
@@ -207,15 +222,9 @@ inline std::vector<Corner> Lines(const std::vector<vtkPolyData*>& meshes, double
     }
   }
   std::sort(lines.begin(), lines.end());
-  auto same = [tolerance](const Corner& a, const Corner& b) {
-    for (size_t k = 0; k < a.size(); ++k)
-    {
-      if (std::abs(a[k] - b[k]) > tolerance)
-        return false;
-    }
-    return true;
-  };
-  lines.erase(std::unique(lines.begin(), lines.end(), same), lines.end());
+  lines.erase(std::unique(lines.begin(), lines.end(),
+                [tolerance](const Corner& a, const Corner& b) { return SameCorner(a, b, tolerance); }),
+    lines.end());
   return lines;
 }
 
@@ -262,23 +271,18 @@ inline std::string ComparePieces(
     {
       const Face& a = group.second[f];
       const Face& b = found->second[f];
-      if (a.size() != b.size())
+      if (!SameFace(a, b, tolerance))
       {
-        why << "input cell " << group.first << ", face " << f << ": " << b.size() << " corners, serially " << a.size();
-        return why.str();
-      }
-      for (size_t k = 0; k < a.size(); ++k)
-      {
-        for (size_t i = 0; i < a[k].size(); ++i)
+        size_t k = 0;
+        while (k + 1 < std::min(a.size(), b.size()) && SameCorner(a[k], b[k], tolerance))
         {
-          if (a[k].size() != b[k].size() || std::abs(a[k][i] - b[k][i]) > tolerance)
-          {
-            why.precision(17);
-            why << "input cell " << group.first << ", face " << f << ", corner " << k << ", value " << i << ": "
-                << b[k][i] << ", serially " << a[k][i] << " at (" << a[0][0] << ", " << a[0][1] << ", " << a[0][2] << ")";
-            return why.str();
-          }
+          ++k;
         }
+        why.precision(17);
+        why << "input cell " << group.first << ", face " << f << " (" << b.size() << " corners, serially "
+            << a.size() << "): corner " << k << " is (" << b[k][0] << ", " << b[k][1] << ", " << b[k][2]
+            << "), serially (" << a[k][0] << ", " << a[k][1] << ", " << a[k][2] << ")";
+        return why.str();
       }
     }
   }
@@ -291,13 +295,10 @@ inline std::string ComparePieces(
   }
   for (size_t l = 0; l < serialLines.size(); ++l)
   {
-    for (size_t i = 0; i < serialLines[l].size(); ++i)
+    if (!SameCorner(serialLines[l], pieceLines[l], tolerance))
     {
-      if (std::abs(serialLines[l][i] - pieceLines[l][i]) > tolerance)
-      {
-        why << "crease line " << l << " differs";
-        return why.str();
-      }
+      why << "crease line " << l << " differs";
+      return why.str();
     }
   }
   return "";

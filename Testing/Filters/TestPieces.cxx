@@ -200,18 +200,9 @@ std::vector<std::pair<double, Face>> Polylines(vtkPolyData* mesh, bool withGhost
 
 bool SameLines(const std::vector<std::pair<double, Face>>& a, const std::vector<std::pair<double, Face>>& b)
 {
-  if (a.size() != b.size())
-    return false;
-  for (size_t l = 0; l < a.size(); ++l)
-  {
-    if (a[l].first != b[l].first || a[l].second.size() != b[l].second.size())
-      return false;
-    for (size_t k = 0; k < a[l].second.size(); ++k)
-      for (size_t i = 0; i < a[l].second[k].size(); ++i)
-        if (a[l].second[k].size() != b[l].second[k].size() || std::abs(a[l].second[k][i] - b[l].second[k][i]) > 1e-12)
-          return false;
-  }
-  return true;
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](const auto& p, const auto& q) {
+    return p.first == q.first && SameFace(p.second, q.second, 1e-12);
+  });
 }
 
 TEST(CurvePieces, UnionOfPiecesIsTheSerialOutputAndGhostLinesAreMarked)
