@@ -44,13 +44,20 @@ void FaceNormal(const subd::MeshTopology& topology, subd::Index f, vtkPoints* po
 }
 }
 
-bool vtkSubDSharpFeatures::Read(vtkPolyData* input, const std::vector<vtkIdType>& faceCells, std::string& error)
+vtkDataArray* vtkSubDNamedArray(vtkFieldData* data, const std::string& name)
+{
+  return name.empty() ? nullptr : data->GetArray(name.c_str());
+}
+
+bool vtkSubDSharpFeatures::Read(vtkPolyData* input, const std::vector<vtkIdType>& faceCells, std::string& error,
+  const vtkSubDFeatureArrayNames& names)
 {
   *this = vtkSubDSharpFeatures();
+  this->Names = names;
   vtkCellData* cd = input->GetCellData();
-  vtkDataArray* sharpness = cd->GetArray("Sharpness");
-  vtkDataArray* holes = cd->GetArray("Hole");
-  vtkDataArray* corners = input->GetPointData()->GetArray("CornerSharpness");
+  vtkDataArray* sharpness = vtkSubDNamedArray(cd, names.Sharpness);
+  vtkDataArray* holes = vtkSubDNamedArray(cd, names.Hole);
+  vtkDataArray* corners = vtkSubDNamedArray(input->GetPointData(), names.CornerSharpness);
   for (vtkDataArray* array : { sharpness, holes, corners })
   {
     const vtkIdType needed = array == corners ? input->GetNumberOfPoints() : input->GetNumberOfCells();
@@ -110,7 +117,7 @@ bool vtkSubDSharpFeatures::Read(vtkPolyData* input, const std::vector<vtkIdType>
       if (!CheckSharpness(corners->GetComponent(i, 0), this->CornerSharpness[i]))
       {
         std::ostringstream message;
-        message << "Point " << i << " has CornerSharpness " << corners->GetComponent(i, 0)
+        message << "Point " << i << " has " << names.CornerSharpness << " " << corners->GetComponent(i, 0)
                 << "; sharpness must be a number >= 0 (0 smooth, 10 or more infinitely sharp).";
         error = message.str();
         return false;
@@ -194,7 +201,7 @@ std::vector<float> vtkSubDWriteSharpFeatures(const vtkSubDSharpFeatures& feature
   {
     const vtkIdType numOutput = points->GetNumberOfPoints();
     vtkNew<vtkFloatArray> corners;
-    corners->SetName("CornerSharpness");
+    corners->SetName(features.Names.CornerSharpness.c_str());
     corners->SetNumberOfTuples(numOutput);
     for (vtkIdType o = 0; o < numOutput; ++o)
     {
@@ -223,8 +230,8 @@ std::vector<float> vtkSubDWriteSharpFeatures(const vtkSubDSharpFeatures& feature
   }
 
   // Segments that are not surface edges: unchanged, on copies of their input points.
-  vtkDataArray* inputCorners = input->GetPointData()->GetArray("CornerSharpness");
-  vtkDataArray* outputCorners = outPD->GetArray("CornerSharpness");
+  vtkDataArray* inputCorners = vtkSubDNamedArray(input->GetPointData(), features.Names.CornerSharpness);
+  vtkDataArray* outputCorners = vtkSubDNamedArray(outPD, features.Names.CornerSharpness);
   for (subd::Index segment : unmatched)
   {
     vtkIdType ends[2];

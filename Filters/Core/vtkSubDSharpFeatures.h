@@ -29,7 +29,21 @@
 
 class vtkPolyData;
 class vtkDataArray;
+class vtkFieldData;
 class vtkPoints;
+
+/// The names of the arrays that carry the sharp features (a filter's properties, so that a
+/// mesh whose creases or holes are tagged under other names needs no renaming). An empty
+/// name means "no such array".
+struct vtkSubDFeatureArrayNames
+{
+  std::string Sharpness = "Sharpness";             // cell data of the crease lines
+  std::string CornerSharpness = "CornerSharpness"; // point data
+  std::string Hole = "Hole";                       // cell data of the faces
+};
+
+/// The array of `data` called `name`; nullptr for an empty name or no such numeric array.
+vtkDataArray* vtkSubDNamedArray(vtkFieldData* data, const std::string& name);
 
 struct vtkSubDSharpFeatures
 {
@@ -40,6 +54,7 @@ struct vtkSubDSharpFeatures
   std::vector<vtkIdType> SegmentCell;   // the input line cell of each segment
   std::vector<float> CornerSharpness;   // per input point; empty when absent
   std::vector<std::uint8_t> FaceIsHole; // per kept face; empty when no "Hole" array
+  vtkSubDFeatureArrayNames Names;       // where they were read from, and are written to
 
   bool operator==(const vtkSubDSharpFeatures& other) const
   {
@@ -47,10 +62,11 @@ struct vtkSubDSharpFeatures
       CornerSharpness == other.CornerSharpness && FaceIsHole == other.FaceIsHole;
   }
 
-  /// Reads the lines, "Sharpness", "CornerSharpness" and "Hole" of `input`. `faceCells`
-  /// gives the input cell id of each kept face. Returns false with `error` set when a
-  /// sharpness is negative or not a number (naming the cell or point).
-  bool Read(vtkPolyData* input, const std::vector<vtkIdType>& faceCells, std::string& error);
+  /// Reads the lines, "Sharpness", "CornerSharpness" and "Hole" (or the arrays `names`
+  /// gives) of `input`. `faceCells` gives the input cell id of each kept face. Returns false
+  /// with `error` set when a sharpness is negative or not a number (naming the cell or point).
+  bool Read(vtkPolyData* input, const std::vector<vtkIdType>& faceCells, std::string& error,
+    const vtkSubDFeatureArrayNames& names = vtkSubDFeatureArrayNames());
 
   /// True when anything is tagged (sharp segments, sharp vertices, holes).
   bool Any() const;
@@ -71,7 +87,7 @@ struct vtkSubDOutputPointMap
 
 /// Writes the sharp features of `finest` to `output` (whose points and interpolated point
 /// data are set; `arrays` pairs each input point-data array with its output array):
-/// "CornerSharpness" (when the input had it) with the decayed vertex sharpness, and the
+/// "CornerSharpness" (features.Names; when the input had it) with the decayed vertex sharpness, and the
 /// Lines: the crease edges of `finest` (sharp, neither boundary nor non-manifold, both
 /// points output), then the `unmatched` input segments passed through with copies of their
 /// points (and point data) appended. Returns the sharpness of each line written, in order.

@@ -250,11 +250,24 @@ vtkSubDSurfaceFilter::vtkSubDSurfaceFilter()
   : MaximumMemory(vtkSubDDefaultMemoryBudget())
   , Internals(new vtkInternals)
 {
+  const vtkSubDFeatureArrayNames defaults;
+  this->SetSharpnessArrayName(defaults.Sharpness.c_str());
+  this->SetCornerSharpnessArrayName(defaults.CornerSharpness.c_str());
+  this->SetHoleArrayName(defaults.Hole.c_str());
 }
 
 vtkSubDSurfaceFilter::~vtkSubDSurfaceFilter()
 {
   delete this->Internals;
+  this->SetSharpnessArrayName(nullptr);
+  this->SetCornerSharpnessArrayName(nullptr);
+  this->SetHoleArrayName(nullptr);
+}
+
+vtkSubDFeatureArrayNames vtkSubDSurfaceFilter::GetFeatureArrayNames() const
+{
+  auto name = [](const char* n) { return std::string(n ? n : ""); };
+  return { name(this->SharpnessArrayName), name(this->CornerSharpnessArrayName), name(this->HoleArrayName) };
 }
 
 const char* vtkSubDSurfaceFilter::GetBoundaryRuleAsString()
@@ -400,7 +413,7 @@ int vtkSubDSurfaceFilter::Execute(
   }
   vtkSubDSharpFeatures features;
   std::string featureError;
-  if (!features.Read(input, faceCells, featureError))
+  if (!features.Read(input, faceCells, featureError, this->GetFeatureArrayNames()))
   {
     vtkErrorMacro(<< featureError);
     return fail();
@@ -623,7 +636,7 @@ int vtkSubDSurfaceFilter::Execute(
                       << "' is not numeric and cannot be interpolated; it is not passed on.");
       continue;
     }
-    if (array->GetName() && std::string(array->GetName()) == "CornerSharpness")
+    if (array == vtkSubDNamedArray(inPD, cache.Features.Names.CornerSharpness))
     {
       continue; // not interpolated: decayed on the vertices it belongs to (below)
     }
@@ -705,16 +718,18 @@ int vtkSubDSurfaceFilter::Execute(
   if (numLines > 0)
   {
     vtkNew<vtkFloatArray> sharpness;
-    sharpness->SetName("Sharpness");
+    const std::string& sharpnessName =
+      cache.Features.Names.Sharpness.empty() ? vtkSubDFeatureArrayNames().Sharpness : cache.Features.Names.Sharpness;
+    sharpness->SetName(sharpnessName.c_str());
     sharpness->SetNumberOfTuples(numLines + numOut);
     std::copy(lineSharpness.begin(), lineSharpness.end(), sharpness->GetPointer(0));
-    vtkDataArray* inputSharpness = inCD->GetArray("Sharpness");
+    vtkDataArray* inputSharpness = inCD->GetArray(sharpnessName.c_str());
     for (vtkIdType c = 0; c < numOut; ++c)
     {
       sharpness->SetValue(numLines + c,
         inputSharpness ? static_cast<float>(inputSharpness->GetComponent(sourceCells->GetId(c), 0)) : 0.0f);
     }
-    outCD->RemoveArray("Sharpness");
+    outCD->RemoveArray(sharpnessName.c_str());
     outCD->AddArray(sharpness);
   }
   if (this->GenerateParentCellIds)
@@ -904,6 +919,10 @@ void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ComputeLimitNormals: " << (this->ComputeLimitNormals ? "On" : "Off") << "\n";
   os << indent << "ComputeCurvature: " << (this->ComputeCurvature ? "On" : "Off") << "\n";
   os << indent << "GenerateParentCellIds: " << (this->GenerateParentCellIds ? "On" : "Off") << "\n";
+  auto name = [](const char* n) { return n ? n : "(none)"; };
+  os << indent << "SharpnessArrayName: " << name(this->SharpnessArrayName) << "\n";
+  os << indent << "CornerSharpnessArrayName: " << name(this->CornerSharpnessArrayName) << "\n";
+  os << indent << "HoleArrayName: " << name(this->HoleArrayName) << "\n";
   os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
   os << indent << "NumberOfStencilBuilds: " << this->NumberOfStencilBuilds << "\n";
 }

@@ -88,6 +88,7 @@ class Scheme;
 }
 class vtkCellArray;
 class vtkPointData;
+struct vtkSubDFeatureArrayNames;
 
 class SUBDFILTERS_EXPORT vtkSubDSurfaceFilter : public vtkPolyDataAlgorithm
 {
@@ -243,6 +244,21 @@ public:
   vtkGetMacro(MaximumMemory, double);
   ///@}
 
+  ///@{
+  /**
+   * The arrays the sharp features are read from, and written to in the output: the cell-data
+   * array of the crease lines' sharpness (default "Sharpness"), the point-data array of the
+   * vertex sharpness (default "CornerSharpness") and the cell-data array marking hole faces
+   * (default "Hole"). An empty name (or nullptr) reads no such array.
+   */
+  vtkSetStringMacro(SharpnessArrayName);
+  vtkGetStringMacro(SharpnessArrayName);
+  vtkSetStringMacro(CornerSharpnessArrayName);
+  vtkGetStringMacro(CornerSharpnessArrayName);
+  vtkSetStringMacro(HoleArrayName);
+  vtkGetStringMacro(HoleArrayName);
+  ///@}
+
   /**
    * Layers of ghost cells a piece of a distributed mesh needs around its own cells for its
    * children to be those of the whole mesh, at the current NumberOfSubdivisions (0 for none):
@@ -278,6 +294,8 @@ protected:
   /// output points; false (with an error message) if evaluation failed.
   bool AddLimitGeometry(const double* basePoints, vtkPointData* outPD);
   vtkSmartPointer<vtkCellArray> MakeOutputFaces();
+  /// SharpnessArrayName, CornerSharpnessArrayName and HoleArrayName, for vtkSubDSharpFeatures.
+  vtkSubDFeatureArrayNames GetFeatureArrayNames() const;
   /// The normals from the scheme's tangent masks (schemes LimitEvaluator does not handle).
   void AddTangentMaskNormals(const std::vector<double>& control, vtkIdType numOut, vtkPointData* outPD);
 
@@ -298,6 +316,9 @@ protected:
   int OutputPointsPrecision = DEFAULT_PRECISION;
   bool GenerateParentCellIds = false;
   bool ProjectToLimit = false;
+  char* SharpnessArrayName = nullptr;
+  char* CornerSharpnessArrayName = nullptr;
+  char* HoleArrayName = nullptr;
   bool ComputeLimitNormals = false;
   bool ComputeCurvature = false;
   double MaximumMemory; // half the physical memory (vtkSubDMemoryBudget.h)

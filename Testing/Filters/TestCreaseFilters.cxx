@@ -493,6 +493,61 @@ TEST(CreaseInput, HoleFacesAreNotOutput)
   }
 }
 
+// The feature arrays can have any names: a torus whose creases, corners and a hole are
+// tagged under other names subdivides exactly as with the default names, and its output
+// carries the decayed values under those names. An empty name reads no array.
+TEST(CreaseInput, FeatureArraysCanHaveOtherNames)
+{
+  vtkSmartPointer<vtkPolyData> standard = CreasedTorus(false);
+  vtkNew<vtkIntArray> hole;
+  hole->SetName("Hole");
+  hole->SetNumberOfTuples(standard->GetNumberOfCells());
+  hole->Fill(0);
+  hole->SetValue(standard->GetNumberOfLines() + 9, 1);
+  standard->GetCellData()->AddArray(hole);
+  vtkNew<vtkPolyData> renamed;
+  renamed->DeepCopy(standard);
+  renamed->GetCellData()->GetArray("Sharpness")->SetName("EdgeWeight");
+  renamed->GetCellData()->GetArray("Hole")->SetName("Cut");
+  renamed->GetPointData()->GetArray("CornerSharpness")->SetName("VertexWeight");
+
+  vtkSmartPointer<vtkPolyData> expected = Subdivide<vtkSubDCatmullClarkFilter>(standard, 2);
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(renamed);
+  filter->SetNumberOfSubdivisions(2);
+  filter->SetSharpnessArrayName("EdgeWeight");
+  filter->SetCornerSharpnessArrayName("VertexWeight");
+  filter->SetHoleArrayName("Cut");
+  filter->Update();
+  vtkPolyData* out = filter->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPoints(), expected->GetNumberOfPoints());
+  ASSERT_EQ(out->GetNumberOfPolys(), expected->GetNumberOfPolys());
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3];
+    out->GetPoint(i, p);
+    expected->GetPoint(i, q);
+    EXPECT_TRUE(std::equal(p, p + 3, q)) << "point " << i;
+  }
+  const auto lines = CreaseLines(expected);
+  ASSERT_FALSE(lines.empty());
+  ASSERT_NE(out->GetCellData()->GetArray("EdgeWeight"), nullptr);
+  EXPECT_EQ(out->GetCellData()->GetArray("Sharpness"), nullptr);
+  for (vtkIdType c = 0; c < out->GetNumberOfLines(); ++c)
+    EXPECT_EQ(out->GetCellData()->GetArray("EdgeWeight")->GetComponent(c, 0),
+      expected->GetCellData()->GetArray("Sharpness")->GetComponent(c, 0));
+  vtkDataArray* corners = out->GetPointData()->GetArray("VertexWeight");
+  ASSERT_NE(corners, nullptr);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    EXPECT_EQ(corners->GetComponent(i, 0), expected->GetPointData()->GetArray("CornerSharpness")->GetComponent(i, 0));
+
+  // No hole array: the hole face is output, and the standard names are not read instead.
+  filter->SetHoleArrayName("");
+  filter->SetInputData(standard);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPolys(), expected->GetNumberOfPolys() + 16);
+}
+
 // Stencils are reused while creases stay the same, rebuilt when a sharpness changes.
 TEST(CreaseInput, ChangedSharpnessRebuildsTheStencils)
 {
