@@ -411,6 +411,17 @@ int vtkSubDSurfaceFilter::Execute(
     vtkSubDOrderFacesAlikeInEveryPiece(input, screened, faceCells);
     faceIsGhost = vtkSubDGhostFaces(input, faceCells);
   }
+  if (onePieceOfMany && faceIsGhost.empty() && this->GetRequiredGhostLevels() > 0)
+  {
+    // Not an error: a piece may be a part of the mesh that touches no other piece. But more
+    // often the pipeline upstream cannot make ghost cells, and the result is silently wrong.
+    vtkWarningMacro(<< "Piece " << outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
+                    << " came without the ghost cells asked for (" << this->GetRequiredGhostLevels()
+                    << " layers): where it meets other pieces, its edges are subdivided as boundaries and "
+                       "the pieces together differ from the whole mesh subdivided. Make ghost cells upstream "
+                       "(vtkExtractPolyDataPiece, or vtkPDistributedDataFilter, ParaView's D3, which in "
+                       "ParaView 5.11 makes none for meshes with line cells).");
+  }
   vtkSubDSharpFeatures features;
   std::string featureError;
   if (!features.Read(input, faceCells, featureError, this->GetFeatureArrayNames()))

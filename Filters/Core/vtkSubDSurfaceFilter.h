@@ -64,7 +64,8 @@
  * in "vtkGhostType" (DUPLICATECELL; points on no own face DUPLICATEPOINT). Doo-Sabin and the
  * midpoint scheme make faces from faces of two pieces: every piece numbers its faces alike
  * (by global cell id, else by their points' coordinates) to agree on which one outputs such
- * a face (vtkSubDPieces.h). A piece without polygons gives an empty output, no error.
+ * a face (vtkSubDPieces.h). A piece without polygons gives an empty output, no error; a piece
+ * that came without any ghost cell gets a warning (its seams would be subdivided as boundaries).
  *
  * BoundaryRule has OpenSubdiv's meanings (Sdc::Options::VtxBoundaryInterpolation):
  * None (faces at the boundary become holes that shape the surface but are not output),

@@ -81,6 +81,23 @@ TEST_P(Pieces, EmptyPiecesAndOneFilterForAllPieces)
   EXPECT_EQ(ComparePieces(serial, raw, PieceTolerance(serial), scheme.SameCellData), "");
 }
 
+// A piece that came without the ghost cells asked for is subdivided with its seams as
+// boundaries: the filter warns (once per execution), and only then.
+TEST(PiecesWithoutGhosts, WarnThatSeamsBecomeBoundaries)
+{
+  const PieceScheme scheme = PieceSchemes()[0];
+  vtkSmartPointer<vtkPolyData> input = PieceTestInput(PieceTestCases(scheme.Triangles)[0]);
+  PiecePipeline withGhosts(scheme, input, 2);
+  withGhosts.Run(0, 2);
+  EXPECT_EQ(withGhosts.FilterMessages.NumWarnings, 0) << withGhosts.FilterMessages.Warnings;
+  PiecePipeline withoutGhosts(scheme, input, 2);
+  withoutGhosts.Extract->CreateGhostCellsOff();
+  withoutGhosts.Run(0, 2);
+  EXPECT_EQ(withoutGhosts.FilterMessages.NumWarnings, 1);
+  EXPECT_NE(withoutGhosts.FilterMessages.Warnings.find("came without the ghost cells"), std::string::npos)
+    << withoutGhosts.FilterMessages.Warnings;
+}
+
 // Asked for a ghost level of its output, a piece adds the children of the first layer of its
 // ghost faces, marked DUPLICATECELL: without them the pieces are still the serial output, the
 // marked faces are serial faces (of other pieces), and exactly the points of no own face are
