@@ -1,7 +1,9 @@
 # Installs SubD into a scratch prefix, builds Examples/Installed against it with
 # find_package(SubD), runs it, and imports the installed Python package.
 #   cmake -DBUILD=dir -DSOURCE=dir -DWORK=dir -DGENERATOR=Ninja -DPYTHON=python3
-#         -DPYTHON_DESTINATION=lib/python3/dist-packages [-DWITH_PYTHON=ON] -P RunInstalled.cmake
+#         -DPYTHON_DESTINATION=lib/python3/dist-packages [-DWITH_PYTHON=ON]
+#         [-DPVBATCH=pvbatch -DPARAVIEW_PYTHONPATH=dir] -P RunInstalled.cmake
+# With PVBATCH, the installed ParaView plugin is loaded in pvbatch and runs a filter.
 file(REMOVE_RECURSE "${WORK}")
 set(prefix "${WORK}/prefix")
 include("${CMAKE_CURRENT_LIST_DIR}/../CMake/RunStep.cmake")
@@ -27,5 +29,24 @@ if (WITH_PYTHON)
   run("${PYTHON}" "${WORK}/check.py")
   if (NOT last_output MATCHES "vtkSubDCatmullClarkFilter True")
     message(FATAL_ERROR "the installed Python package does not work")
+  endif ()
+endif ()
+if (PVBATCH)
+  set(plugin "${prefix}/lib/paraview-5.11/plugins/SubD/SubD.so")
+  if (NOT EXISTS "${plugin}")
+    message(FATAL_ERROR "the ParaView plugin was not installed")
+  endif ()
+  set(ENV{PYTHONPATH} "${PARAVIEW_PYTHONPATH}")
+  file(WRITE "${WORK}/check_plugin.py" "import paraview.simple as pvs
+pvs.LoadPlugin('${plugin}', remote=False)
+sphere = pvs.Sphere()
+sphere.UpdatePipeline()
+f = pvs.SubDLoop(Input=sphere, NumberOfSubdivisions=1)
+f.UpdatePipeline()
+print('faces', f.GetDataInformation().GetNumberOfCells(), 'of', 4 * sphere.GetDataInformation().GetNumberOfCells())
+")
+  run("${PVBATCH}" "${WORK}/check_plugin.py")
+  if (NOT last_output MATCHES "faces ([0-9]+) of ([0-9]+)" OR NOT CMAKE_MATCH_1 STREQUAL CMAKE_MATCH_2)
+    message(FATAL_ERROR "the installed ParaView plugin does not work")
   endif ()
 endif ()
