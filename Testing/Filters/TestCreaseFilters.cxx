@@ -451,14 +451,7 @@ TEST(CreaseInput, SharpnessOnABoundaryEdgeIsANoOp)
   AddCreases(tagged, { { 0, 1 }, { 1, 2 } }, { 0.5f, 2.0f });
   vtkSmartPointer<vtkPolyData> a = Subdivide<vtkSubDCatmullClarkFilter>(plain, 2);
   vtkSmartPointer<vtkPolyData> b = Subdivide<vtkSubDCatmullClarkFilter>(tagged, 2);
-  ASSERT_EQ(a->GetNumberOfPoints(), b->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < a->GetNumberOfPoints(); ++i)
-  {
-    double p[3], q[3];
-    a->GetPoint(i, p);
-    b->GetPoint(i, q);
-    EXPECT_TRUE(std::equal(p, p + 3, q)) << "point " << i;
-  }
+  EXPECT_EQ(subdtest::Coordinates(a), subdtest::Coordinates(b));
   EXPECT_TRUE(CreaseLines(b).empty()); // boundary edges are not repeated as crease lines
 }
 
@@ -520,15 +513,8 @@ TEST(CreaseInput, FeatureArraysCanHaveOtherNames)
   filter->SetHoleArrayName("Cut");
   filter->Update();
   vtkPolyData* out = filter->GetOutput();
-  ASSERT_EQ(out->GetNumberOfPoints(), expected->GetNumberOfPoints());
   ASSERT_EQ(out->GetNumberOfPolys(), expected->GetNumberOfPolys());
-  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
-  {
-    double p[3], q[3];
-    out->GetPoint(i, p);
-    expected->GetPoint(i, q);
-    EXPECT_TRUE(std::equal(p, p + 3, q)) << "point " << i;
-  }
+  EXPECT_EQ(subdtest::Coordinates(out), subdtest::Coordinates(expected));
   const auto lines = CreaseLines(expected);
   ASSERT_FALSE(lines.empty());
   ASSERT_NE(out->GetCellData()->GetArray("EdgeWeight"), nullptr);

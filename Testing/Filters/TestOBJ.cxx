@@ -106,13 +106,7 @@ TEST(OBJ, RoundTripKeepsPointsFacesAndTags)
   vtkSmartPointer<vtkPolyData> back = ReadOBJ(again, messages);
   ASSERT_EQ(back->GetNumberOfPoints(), mesh->GetNumberOfPoints());
   ASSERT_EQ(back->GetNumberOfCells(), mesh->GetNumberOfCells());
-  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
-  {
-    double a[3], b[3];
-    mesh->GetPoint(i, a);
-    back->GetPoint(i, b);
-    EXPECT_TRUE(std::equal(a, a + 3, b));
-  }
+  EXPECT_EQ(subdtest::Coordinates(back), subdtest::Coordinates(mesh));
   for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
   {
     vtkIdType n1, n2;

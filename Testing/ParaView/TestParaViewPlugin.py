@@ -128,6 +128,11 @@ cage = pvs.SubDInterpolatingCage(Input=bumpy, Scheme=0, InterpolationArrayName="
 at_limit = points_of(fetch(pvs.SubDCatmullClark(Input=cage, NumberOfSubdivisions=0, ProjectToLimit=1)))
 check(builtins.max(math.dist(a, b) for a, b in zip(at_limit, targets)) < 1e-9,
       "SubD Interpolating Cage: the Catmull-Clark limit passes through every input point")
+cage.UpdatePropertyInformation()
+check(cage.GetProperty("NumberOfTaggedPoints").GetElement(0) == len(targets)
+      and cage.GetProperty("Residual").GetElement(0) < 1e-9
+      and cage.GetProperty("ConditionEstimate").GetElement(0) >= 1,
+      "the cage reports its solve: every point tagged, residual, condition estimate >= 1")
 
 line = pvs.PolyLineSource(Points=[0, 0, 0, 1, 1, 0, 2, 0, 0, 3, 1, 0, 4, 0, 0], Closed=0)
 curve_cage = pvs.SubDInterpolatingCurve(Input=line, Scheme=1, InterpolationArrayName="(all points)")
@@ -175,6 +180,10 @@ cc.HoleArrayName = "Cut"
 check(polys(fetch(cc)) == 76, "HoleArrayName=Cut: the marked face's 4 children are not output")
 
 # Defaults the VTK object chooses are not overridden by the XML.
+curve = pvs.SubDCurve(Input=line)
+curve.UpdatePropertyInformation()
+check(curve.GetProperty("MaximumMemoryInfo").GetElement(0) > 100,
+      "the curve filter's Maximum Memory comes from the filter too")
 memory = cc.GetProperty("MaximumMemoryInfo")
 cc.UpdatePropertyInformation()
 check(memory is not None and memory.GetElement(0) > 100,
