@@ -2,6 +2,7 @@
 
 #include "SubDMeshValidation.h"
 #include "vtkSubDInputFaces.h"
+#include "vtkSubDPieces.h"
 #include "vtkSubDSharpFeatures.h"
 
 bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::BoundaryRule rule, subd::CreaseMethod creasing, vtkSubDCage& cage,
@@ -62,7 +63,8 @@ bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::BoundaryRule rule
   }
   subd::MeshTopology topology =
     subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices);
-  const std::string nonManifold = vtkSubDNonManifoldWarning(topology);
+  cage.FaceIsGhost = vtkSubDGhostFaces(input, cage.FaceCell);
+  const std::string nonManifold = vtkSubDNonManifoldWarning(topology, cage.FaceIsGhost);
   if (!nonManifold.empty())
   {
     warning += (warning.empty() ? "" : "; ") + nonManifold;

@@ -6,6 +6,7 @@
 #include "SubDLevel.h"
 #include "vtkPolyData.h"
 
+#include <cstdint>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -17,10 +18,12 @@ struct vtkSubDCage
   std::vector<double> Points;
   std::vector<vtkIdType> FaceCell;                  ///< input cell id of each face
   std::unordered_map<vtkIdType, subd::Index> FaceOfCell; ///< and back
+  std::vector<std::uint8_t> FaceIsGhost;            ///< 1 for a ghost cell of a piece; empty if none is
 };
 
 /// Reads `input`'s polygons (screened as vtkSubDSurfaceFilter screens them: degenerate ones
-/// dropped with a warning) and sharp features into `cage`. `triangles`: every face must be a
+/// dropped with a warning), their ghost marks (a piece of a distributed mesh: the non-manifold
+/// warning counts only its own faces) and sharp features into `cage`. `triangles`: every face must be a
 /// triangle (Loop). False, with the reason in `error`, for no polygons, a non-finite point,
 /// an id outside the points, or a face of the wrong kind.
 bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::BoundaryRule rule, subd::CreaseMethod creasing, vtkSubDCage& cage,

@@ -8,6 +8,7 @@
 #include "vtkSubDInputFaces.h"
 #include "vtkSubDLimitGeometry.h"
 #include "vtkSubDOutOfMemory.h"
+#include "vtkSubDPieces.h"
 #include "vtkSubDPointDataInterpolation.h"
 #include "vtkSubDSharpFeatures.h"
 
@@ -15,6 +16,7 @@
 #include "vtkCellData.h"
 #include "vtkDataSet.h"
 #include "vtkDoubleArray.h"
+#include "vtkIdList.h"
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
@@ -23,6 +25,8 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+#include "vtkUnsignedCharArray.h"
 
 #include <array>
 #include <cmath>
@@ -48,6 +52,41 @@ struct FaceGrid
 };
 }
 
+namespace
+{
+// The tessellation's cell data: each cell gets its input cell's ("FaceId" names it), and in a
+// piece with ghost faces, "vtkGhostType" marks the cells of ghost faces.
+void AddCellData(vtkPolyData* input, vtkIdTypeArray* cellFace, bool piece, vtkPolyData* output)
+{
+  const vtkIdType numCells = cellFace->GetNumberOfTuples();
+  vtkNew<vtkIdList> sources, targets;
+  sources->SetNumberOfIds(numCells);
+  targets->SetNumberOfIds(numCells);
+  for (vtkIdType c = 0; c < numCells; ++c)
+  {
+    sources->SetId(c, cellFace->GetValue(c));
+    targets->SetId(c, c);
+  }
+  vtkCellData* outCD = output->GetCellData();
+  outCD->CopyAllocate(input->GetCellData(), numCells);
+  outCD->CopyData(input->GetCellData(), sources, targets);
+  outCD->RemoveArray(vtkDataSetAttributes::GhostArrayName()); // the input's, remade below
+  outCD->AddArray(cellFace);
+  if (piece)
+  {
+    vtkNew<vtkUnsignedCharArray> ghosts;
+    ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+    ghosts->SetNumberOfTuples(numCells);
+    for (vtkIdType c = 0; c < numCells; ++c)
+    {
+      ghosts->SetValue(c, vtkSubDIsGhostCell(input, cellFace->GetValue(c)) ? vtkDataSetAttributes::DUPLICATECELL : 0);
+    }
+    outCD->AddArray(ghosts);
+    vtkSubDMarkGhostPoints(output);
+  }
+}
+}
+
 vtkSubDLimitFilter::vtkSubDLimitFilter()
 {
   this->SetNumberOfInputPorts(2);
@@ -62,6 +101,19 @@ int vtkSubDLimitFilter::FillInputPortInformation(int port, vtkInformation* info)
   }
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
+  return 1;
+}
+
+int vtkSubDLimitFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkSubDRequestPieceWithGhosts(inputVector[0]->GetInformationObject(0), outInfo, 1);
+  if (vtkInformation* locationsInfo = inputVector[1]->GetInformationObject(0))
+  {
+    vtkSubDRequestPieceWithGhosts(locationsInfo, outInfo, 0);
+    locationsInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+  }
   return 1;
 }
 
@@ -80,6 +132,15 @@ int vtkSubDLimitFilter::Execute(
   vtkDataSet* locations = vtkDataSet::GetData(inputVector[1]);
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
+  // One of several pieces may hold no polygon at all: nothing to output, nothing wrong.
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  const bool onePieceOfMany = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1;
+  if (onePieceOfMany && (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0))
+  {
+    return 1;
+  }
+  const int outputGhostLevels =
+    onePieceOfMany ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
   const bool quads = this->Scheme == CATMULL_CLARK;
   vtkSubDCage cage;
   std::string error, warning;
@@ -105,6 +166,14 @@ int vtkSubDLimitFilter::Execute(
   }
   const subd::Level& level = cage.Level;
   const subd::MeshTopology& topo = level.Topology;
+  // A piece tessellates its own faces, and the first outputGhostLevels layers of ghost faces.
+  if (onePieceOfMany && cage.FaceIsGhost.empty() && !locations)
+  {
+    vtkWarningMacro(<< vtkSubDMissingGhostsWarning(
+                      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()), 1));
+  }
+  const std::vector<std::uint8_t> ghostLayer =
+    cage.FaceIsGhost.empty() ? std::vector<std::uint8_t>() : vtkSubDGhostLayers(topo, cage.FaceIsGhost, outputGhostLevels);
   const subd::LimitEvaluator evaluator(*scheme, level);
   std::string evaluatorError;
   if (!evaluator.IsValid(evaluatorError))
@@ -179,7 +248,7 @@ int vtkSubDLimitFilter::Execute(
     };
     for (subd::Index f = 0; f < topo.GetNumFaces(); ++f)
     {
-      if (level.FaceIsHole[f])
+      if (level.FaceIsHole[f] || (!ghostLayer.empty() && ghostLayer[f] > outputGhostLevels))
       {
         continue;
       }
@@ -312,7 +381,8 @@ int vtkSubDLimitFilter::Execute(
   {
     vtkDataArray* array = inPD->GetArray(a);
     if (!array || array->GetNumberOfTuples() != input->GetNumberOfPoints() ||
-      (array->GetName() && std::string(array->GetName()) == "CornerSharpness"))
+      (array->GetName() && std::string(array->GetName()) == "CornerSharpness") ||
+      array == input->GetPointGhostArray()) // the input piece's marks: remade for the output
     {
       continue;
     }
@@ -371,7 +441,7 @@ int vtkSubDLimitFilter::Execute(
   else
   {
     output->SetPolys(cells);
-    output->GetCellData()->AddArray(cellFace);
+    AddCellData(input, cellFace, !ghostLayer.empty(), output);
   }
   for (const CarriedArray& c : carried)
   {

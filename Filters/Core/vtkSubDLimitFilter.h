@@ -10,8 +10,8 @@
  *   face that is not a quad is split at its centre into quads, one per corner, each with
  *   Resolution/2 segments, Resolution then rounded up to even), giving a watertight
  *   tessellation of the limit surface: points on shared edges and vertices are evaluated
- *   once and shared; Catmull-Clark gives quads, Loop triangles; cell data "FaceId" names the
- *   input cell each comes from; or
+ *   once and shared; Catmull-Clark gives quads, Loop triangles; each cell has the cell data
+ *   of the input cell it comes from, and "FaceId" names that cell; or
  * - at the locations given on the second input (SetLocationsConnection): any vtkDataSet
  *   whose point data has "FaceId" (the input cell id of a polygon) and "FaceUV" (2
  *   components: (u, v) in the unit square of a quad, corners 0..3 at (0,0), (1,0), (1,1),
@@ -44,6 +44,15 @@
  * warning). Bad input (no polygons, NaN points, Loop on polygons that are not triangles, a
  * location outside its face or on a missing or hole face) is an error naming the culprit,
  * with an empty output.
+ *
+ * Pieces of a distributed mesh (as vtkSubDSurfaceFilter): the tessellation of a piece asks
+ * upstream for one layer of ghost cells - the limit surface over a face depends on the faces
+ * around its corners only - and tessellates its own faces, so that the pieces together are the
+ * whole tessellation (points on the seams are in both pieces; "FaceId" is a cell id of the
+ * piece). Asked for ghost levels itself, it asks for that many more and adds the first layers
+ * of ghost faces, marked in "vtkGhostType". A piece without polygons gives an empty output.
+ * The locations are not split: each piece evaluates the locations it is given on the cells of
+ * its own input.
  *
  * @sa vtkSubDCatmullClarkFilter vtkSubDLoopFilter
  */
@@ -110,6 +119,9 @@ protected:
   ~vtkSubDLimitFilter() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  /// Passes the requested piece upstream with one layer of ghost cells (plus those asked of the
+  /// output) when the mesh is split into several pieces; the locations get the same piece.
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// RequestData's work; RequestData runs it and turns running out of memory into an error.
   int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);

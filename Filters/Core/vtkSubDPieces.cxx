@@ -6,9 +6,11 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
+#include "vtkInformation.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
@@ -102,6 +104,28 @@ void vtkSubDMarkGhostPoints(vtkPolyData* output)
   }
   output->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
   output->GetPointData()->AddArray(pointMarks);
+}
+
+void vtkSubDRequestPieceWithGhosts(vtkInformation* inInfo, vtkInformation* outInfo, int requiredLevels)
+{
+  using Pipeline = vtkStreamingDemandDrivenPipeline;
+  const int numPieces = outInfo->Get(Pipeline::UPDATE_NUMBER_OF_PIECES());
+  inInfo->Set(Pipeline::UPDATE_PIECE_NUMBER(), outInfo->Get(Pipeline::UPDATE_PIECE_NUMBER()));
+  inInfo->Set(Pipeline::UPDATE_NUMBER_OF_PIECES(), numPieces);
+  // Ghost cells asked of the output are made from ghost cells, which need layers beyond them.
+  const int outputGhosts = outInfo->Get(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS());
+  inInfo->Set(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), numPieces > 1 ? requiredLevels + outputGhosts : 0);
+}
+
+std::string vtkSubDMissingGhostsWarning(int piece, int requiredLevels)
+{
+  // Not an error: a piece may be a part of the mesh that touches no other piece. But more
+  // often the pipeline upstream cannot make ghost cells, and the result is silently wrong.
+  return "Piece " + std::to_string(piece) + " came without the ghost cells asked for (" +
+    std::to_string(requiredLevels) +
+    " layers): where it meets other pieces, its edges are treated as boundaries and the pieces together "
+    "differ from the whole mesh processed at once. Make ghost cells upstream (vtkExtractPolyDataPiece, or "
+    "vtkPDistributedDataFilter, ParaView's D3, which in ParaView 5.11 makes none for meshes with line cells).";
 }
 
 bool vtkSubDIsGhostCell(vtkPolyData* input, vtkIdType cell)

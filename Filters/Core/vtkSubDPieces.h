@@ -25,13 +25,24 @@
 #include "vtkType.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace subd
 {
 class MeshTopology;
 }
+class vtkInformation;
 class vtkPolyData;
+
+/// RequestUpdateExtent of a piece-aware filter: passes the piece asked of `outInfo` to `inInfo`
+/// with `requiredLevels` layers of ghost cells plus those asked of the output, when the data is
+/// split into several pieces (none otherwise).
+void vtkSubDRequestPieceWithGhosts(vtkInformation* inInfo, vtkInformation* outInfo, int requiredLevels);
+
+/// The warning of a filter given piece `piece` without any of the `requiredLevels` layers of
+/// ghost cells it asked for.
+std::string vtkSubDMissingGhostsWarning(int piece, int requiredLevels);
 
 /// Per kept face (`faceCells` gives its input cell): 1 where that cell is a ghost cell. Empty
 /// when none is.

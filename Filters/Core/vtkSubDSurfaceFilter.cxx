@@ -291,16 +291,8 @@ int vtkSubDSurfaceFilter::RequestData(
 int vtkSubDSurfaceFilter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  using Pipeline = vtkStreamingDemandDrivenPipeline;
-  const int numPieces = outInfo->Get(Pipeline::UPDATE_NUMBER_OF_PIECES());
-  inInfo->Set(Pipeline::UPDATE_PIECE_NUMBER(), outInfo->Get(Pipeline::UPDATE_PIECE_NUMBER()));
-  inInfo->Set(Pipeline::UPDATE_NUMBER_OF_PIECES(), numPieces);
-  // Ghost cells asked of the output are children of ghost faces, which need layers beyond them.
-  const int outputGhosts = outInfo->Get(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS());
-  inInfo->Set(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(),
-    numPieces > 1 ? this->GetRequiredGhostLevels() + outputGhosts : 0);
+  vtkSubDRequestPieceWithGhosts(inputVector[0]->GetInformationObject(0), outputVector->GetInformationObject(0),
+    this->GetRequiredGhostLevels());
   return 1;
 }
 
@@ -413,14 +405,8 @@ int vtkSubDSurfaceFilter::Execute(
   }
   if (onePieceOfMany && faceIsGhost.empty() && this->GetRequiredGhostLevels() > 0)
   {
-    // Not an error: a piece may be a part of the mesh that touches no other piece. But more
-    // often the pipeline upstream cannot make ghost cells, and the result is silently wrong.
-    vtkWarningMacro(<< "Piece " << outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER())
-                    << " came without the ghost cells asked for (" << this->GetRequiredGhostLevels()
-                    << " layers): where it meets other pieces, its edges are subdivided as boundaries and "
-                       "the pieces together differ from the whole mesh subdivided. Make ghost cells upstream "
-                       "(vtkExtractPolyDataPiece, or vtkPDistributedDataFilter, ParaView's D3, which in "
-                       "ParaView 5.11 makes none for meshes with line cells).");
+    vtkWarningMacro(<< vtkSubDMissingGhostsWarning(
+                      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()), this->GetRequiredGhostLevels()));
   }
   vtkSubDSharpFeatures features;
   std::string featureError;

@@ -6,6 +6,7 @@
 #include "SubDPieceTestCases.h"
 
 #include "vtkSubDCurveFilter.h"
+#include "vtkSubDLimitFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -79,6 +80,60 @@ TEST_P(Pieces, EmptyPiecesAndOneFilterForAllPieces)
   EXPECT_GT(empty, 0);
   EXPECT_EQ(serialErrors + pipeline.FilterMessages.NumErrors, 0) << pipeline.FilterMessages.Errors;
   EXPECT_EQ(ComparePieces(serial, raw, PieceTolerance(serial), scheme.SameCellData), "");
+}
+
+// The limit surface's tessellation in pieces: the union of the pieces' tessellations of their
+// own faces is the whole tessellation (points, carried point data, each cell's input cell),
+// for Catmull-Clark on quads and Loop on triangles, with and without creases; asked for a
+// ghost level, a piece adds the tessellations of its first layer of ghost faces, marked.
+TEST(LimitPieces, UnionOfPiecesIsTheWholeTessellation)
+{
+  for (const bool loop : { false, true })
+  {
+    for (const PieceTestCase& test : PieceTestCases(loop))
+    {
+      vtkSmartPointer<vtkPolyData> input = PieceTestInput(test);
+      vtkNew<vtkTrivialProducer> producer;
+      producer->SetOutput(input);
+      vtkNew<vtkExtractPolyDataPiece> extract;
+      extract->SetInputConnection(producer->GetOutputPort());
+      vtkNew<vtkSubDLimitFilter> limit;
+      limit->SetInputConnection(extract->GetOutputPort());
+      limit->SetScheme(loop ? vtkSubDLimitFilter::LOOP : vtkSubDLimitFilter::CATMULL_CLARK);
+      limit->SetResolution(2);
+      // On a crease each side has its normal: a point there gets the side of the face that
+      // evaluates it first, which a piece may see in another order. Positions agree.
+      limit->SetComputeNormals(!test.Creases);
+      Messages messages;
+      messages.Watch(limit);
+      limit->UpdatePiece(0, 1, 0);
+      vtkNew<vtkPolyData> serial;
+      serial->DeepCopy(limit->GetOutput());
+      ASSERT_GT(serial->GetNumberOfPolys(), 0);
+      const double tolerance = PieceTolerance(serial);
+      for (const int numPieces : { 2, 3 })
+      {
+        for (const int ghostLevels : { 0, 1 })
+        {
+          std::vector<vtkSmartPointer<vtkPolyData>> own;
+          std::vector<vtkPolyData*> raw;
+          for (int p = 0; p < numPieces; ++p)
+          {
+            limit->UpdatePiece(p, numPieces, ghostLevels);
+            own.push_back(CellsByGhostMark(limit->GetOutput(), false));
+            raw.push_back(own.back());
+            vtkSmartPointer<vtkPolyData> ghosts = CellsByGhostMark(limit->GetOutput(), true);
+            EXPECT_EQ(ghosts->GetNumberOfPolys() > 0, ghostLevels > 0) << test.Name << ", piece " << p;
+            EXPECT_EQ(FacesAreAmong(serial, ghosts, tolerance, true), "") << test.Name << ", piece " << p;
+          }
+          EXPECT_EQ(ComparePieces(serial, raw, tolerance, true), "")
+            << (loop ? "Loop, " : "Catmull-Clark, ") << test.Name << ", " << numPieces << " pieces, "
+            << ghostLevels << " ghost levels";
+        }
+      }
+      EXPECT_EQ(messages.NumErrors + messages.NumWarnings, 0) << messages.Errors << messages.Warnings;
+    }
+  }
 }
 
 // A piece that came without the ghost cells asked for is subdivided with its seams as
