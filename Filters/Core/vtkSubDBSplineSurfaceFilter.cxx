@@ -6,6 +6,7 @@
 #include "vtkSubDInterpolationSupport.h"
 #include "vtkSubDMemoryBudget.h"
 #include "vtkSubDOutOfMemory.h"
+#include "vtkSubDPieces.h"
 
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
@@ -202,6 +203,13 @@ int vtkSubDBSplineSurfaceFilter::FillInputPortInformation(int, vtkInformation* i
   return 1;
 }
 
+int vtkSubDBSplineSurfaceFilter::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  vtkSubDRequestWholeInput(inputVector, this->GetNumberOfInputPorts());
+  return 1;
+}
+
 int vtkSubDBSplineSurfaceFilter::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -220,6 +228,10 @@ int vtkSubDBSplineSurfaceFilter::Execute(
   surface->Initialize();
   this->SetErrorCode(vtkErrorCode::NoError);
   this->RmsError = this->MaxError = 0.0;
+  if (vtkSubDIsLaterPiece(outputVector->GetInformationObject(0)))
+  {
+    return 1; // piece 0 holds the whole result
+  }
   auto fail = [&](const std::string& why) {
     vtkErrorMacro(<< vtkSubDSentence(why));
     net->Initialize();

@@ -106,6 +106,9 @@ protected:
   ~vtkSubDBSplineSurfaceFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  /// The fit couples every point: asked for one piece of several, the filter asks upstream for
+  /// the whole input; piece 0 gets the whole result, the other pieces are empty.
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// RequestData's work; RequestData runs it and turns running out of memory into an error.
   int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);

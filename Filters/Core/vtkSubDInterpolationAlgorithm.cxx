@@ -3,8 +3,10 @@
 #include "SubDInterpolation.h"
 #include "vtkSubDInterpolationSupport.h"
 #include "vtkSubDOutOfMemory.h"
+#include "vtkSubDPieces.h"
 
 #include "vtkErrorCode.h"
+#include "vtkInformationVector.h"
 #include "vtkPolyData.h"
 
 vtkSubDInterpolationAlgorithm::vtkSubDInterpolationAlgorithm()
@@ -17,6 +19,13 @@ vtkSubDInterpolationAlgorithm::~vtkSubDInterpolationAlgorithm()
   this->SetInterpolationArrayName(nullptr);
 }
 
+int vtkSubDInterpolationAlgorithm::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  vtkSubDRequestWholeInput(inputVector, this->GetNumberOfInputPorts());
+  return 1;
+}
+
 int vtkSubDInterpolationAlgorithm::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -26,6 +35,10 @@ int vtkSubDInterpolationAlgorithm::RequestData(
   this->Residual = 0.0;
   this->ConditionEstimate = 0.0;
   this->NumberOfTaggedPoints = 0;
+  if (vtkSubDIsLaterPiece(outputVector->GetInformationObject(0)))
+  {
+    return 1; // piece 0 holds the whole result
+  }
   return vtkSubDRunCatchingOutOfMemory(
     this, output, [&]() { return this->Execute(request, inputVector, outputVector); },
     [this](unsigned long code) { this->SetErrorCode(code); });

@@ -7,7 +7,9 @@
  * identity rows for the others (SubDInterpolation.h). Here: which points are tagged
  * (InterpolationArrayName), the linear solver (Solver), the accepted residual (Tolerance),
  * and after an update the solve's residual, condition estimate and number of tagged points.
- * A failed solve is an error naming the cause, with an empty output.
+ * A failed solve is an error naming the cause, with an empty output. The solve couples all
+ * points, so in a distributed pipeline the filter asks for the whole mesh and outputs it as
+ * piece 0 (the other pieces are empty).
  *
  * @sa vtkSubDInterpolateFilter vtkSubDCurveInterpolateFilter
  */
@@ -68,6 +70,9 @@ protected:
   vtkSubDInterpolationAlgorithm();
   ~vtkSubDInterpolationAlgorithm() override;
 
+  /// The solve couples every point: asked for one piece of several, the filter asks upstream
+  /// for the whole mesh; piece 0 gets the whole result, the other pieces are empty.
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// Clears the report and runs Execute, turning running out of memory into an error.
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   virtual int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*) = 0;

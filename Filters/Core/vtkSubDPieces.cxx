@@ -7,6 +7,7 @@
 #include "vtkDataArray.h"
 #include "vtkDataSetAttributes.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
@@ -115,6 +116,27 @@ void vtkSubDRequestPieceWithGhosts(vtkInformation* inInfo, vtkInformation* outIn
   // Ghost cells asked of the output are made from ghost cells, which need layers beyond them.
   const int outputGhosts = outInfo->Get(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS());
   inInfo->Set(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), numPieces > 1 ? requiredLevels + outputGhosts : 0);
+}
+
+void vtkSubDRequestWholeInput(vtkInformationVector** inputVector, int numPorts)
+{
+  using Pipeline = vtkStreamingDemandDrivenPipeline;
+  for (int port = 0; port < numPorts; ++port)
+  {
+    for (int i = 0; i < inputVector[port]->GetNumberOfInformationObjects(); ++i)
+    {
+      vtkInformation* inInfo = inputVector[port]->GetInformationObject(i);
+      inInfo->Set(Pipeline::UPDATE_PIECE_NUMBER(), 0);
+      inInfo->Set(Pipeline::UPDATE_NUMBER_OF_PIECES(), 1);
+      inInfo->Set(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+    }
+  }
+}
+
+bool vtkSubDIsLaterPiece(vtkInformation* outInfo)
+{
+  using Pipeline = vtkStreamingDemandDrivenPipeline;
+  return outInfo->Get(Pipeline::UPDATE_NUMBER_OF_PIECES()) > 1 && outInfo->Get(Pipeline::UPDATE_PIECE_NUMBER()) > 0;
 }
 
 std::string vtkSubDMissingGhostsWarning(int piece, int requiredLevels)

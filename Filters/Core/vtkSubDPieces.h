@@ -33,12 +33,21 @@ namespace subd
 class MeshTopology;
 }
 class vtkInformation;
+class vtkInformationVector;
 class vtkPolyData;
 
 /// RequestUpdateExtent of a piece-aware filter: passes the piece asked of `outInfo` to `inInfo`
 /// with `requiredLevels` layers of ghost cells plus those asked of the output, when the data is
 /// split into several pieces (none otherwise).
 void vtkSubDRequestPieceWithGhosts(vtkInformation* inInfo, vtkInformation* outInfo, int requiredLevels);
+
+/// RequestUpdateExtent of a filter whose result depends on the whole mesh at once (a global
+/// solve): each of its `numPorts` inputs is asked for all of it (piece 0 of 1, no ghost cells).
+void vtkSubDRequestWholeInput(vtkInformationVector** inputVector, int numPorts);
+
+/// True when `outInfo` asks for a piece other than the first of several: a filter computing on
+/// the whole mesh then outputs nothing, and piece 0 holds its whole result.
+bool vtkSubDIsLaterPiece(vtkInformation* outInfo);
 
 /// The warning of a filter given piece `piece` without any of the `requiredLevels` layers of
 /// ghost cells it asked for.

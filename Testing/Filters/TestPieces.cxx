@@ -6,6 +6,9 @@
 #include "SubDPieceTestCases.h"
 
 #include "vtkSubDCurveFilter.h"
+#include "vtkSubDBSplineSurfaceFilter.h"
+#include "vtkSubDCurveInterpolateFilter.h"
+#include "vtkSubDInterpolateFilter.h"
 #include "vtkSubDLimitFilter.h"
 
 #include <gtest/gtest.h>
@@ -167,6 +170,54 @@ TEST(LimitPieces, UnionOfPiecesIsTheWholeTessellation)
       }
       EXPECT_EQ(messages.NumErrors + messages.NumWarnings, 0) << messages.Errors << messages.Warnings;
     }
+  }
+}
+
+// The filters whose solve couples every point (interpolation, B-spline fitting) ask for the
+// whole mesh even when one piece of several is asked of them: piece 0 is the serial output,
+// the other pieces are empty.
+TEST(WholeMeshPieces, GlobalSolvesGiveTheirResultAsPieceZero)
+{
+  vtkSmartPointer<vtkPolyData> grid = PieceTestInput(PieceTestCases(false)[1]); // open grid
+  vtkSmartPointer<vtkPolyData> curves = ToPolyData(Grid(6, 4, false, false));
+  vtkNew<vtkCellArray> rows;
+  for (vtkIdType j = 0; j < 5; ++j)
+    rows->InsertNextCell({ 7 * j, 7 * j + 1, 7 * j + 2, 7 * j + 3, 7 * j + 4, 7 * j + 5, 7 * j + 6 });
+  curves->SetPolys(nullptr);
+  curves->SetLines(rows);
+  std::vector<std::pair<vtkSmartPointer<vtkPolyDataAlgorithm>, vtkPolyData*>> cases{
+    { vtkSmartPointer<vtkSubDInterpolateFilter>::New(), grid },
+    { vtkSmartPointer<vtkSubDCurveInterpolateFilter>::New(), curves },
+    { vtkSmartPointer<vtkSubDBSplineSurfaceFilter>::New(), grid } };
+  for (auto& c : cases)
+  {
+    vtkNew<vtkTrivialProducer> producer;
+    producer->SetOutput(c.second);
+    vtkNew<vtkExtractPolyDataPiece> extract; // would cut a piece if the filter asked for one
+    extract->SetInputConnection(producer->GetOutputPort());
+    vtkPolyDataAlgorithm* filter = c.first;
+    filter->SetInputConnection(extract->GetOutputPort());
+    Messages messages;
+    messages.Watch(filter);
+    filter->UpdatePiece(0, 1, 0);
+    vtkNew<vtkPolyData> serial;
+    serial->DeepCopy(filter->GetOutput());
+    ASSERT_GT(serial->GetNumberOfPoints(), 0) << filter->GetClassName() << ": " << messages.Errors;
+    for (int p = 0; p < 3; ++p)
+    {
+      filter->UpdatePiece(p, 3, 1);
+      vtkPolyData* piece = filter->GetOutput();
+      if (p == 0)
+      {
+        EXPECT_EQ(Coordinates(piece), Coordinates(serial)) << filter->GetClassName();
+        EXPECT_EQ(piece->GetNumberOfCells(), serial->GetNumberOfCells()) << filter->GetClassName();
+      }
+      else
+      {
+        EXPECT_EQ(piece->GetNumberOfCells() + piece->GetNumberOfPoints(), 0) << filter->GetClassName();
+      }
+    }
+    EXPECT_EQ(messages.NumErrors, 0) << filter->GetClassName() << ": " << messages.Errors;
   }
 }
 
