@@ -179,6 +179,15 @@ check("Cut" in listed and "Material" in listed, "the hole selection lists the in
 cc.HoleArrayName = "Cut"
 check(polys(fetch(cc)) == 76, "HoleArrayName=Cut: the marked face's 4 children are not output")
 
+# Progress: ParaView's progress bar shows the filter's progress events; in pvbatch the filter
+# is in this process, so they can be watched directly.
+busy = pvs.SubDLoop(Input=sphere, NumberOfSubdivisions=4)
+progress = []
+busy.GetClientSideObject().AddObserver("ProgressEvent", lambda o, e: progress.append(o.GetProgress()))
+busy.UpdatePipeline()
+check(len(progress) > 3 and progress[-1] == 1.0 and progress == sorted(progress),
+      "progress is reported while subdividing, increasing to 1 (%d events)" % len(progress))
+
 # Defaults the VTK object chooses are not overridden by the XML.
 curve = pvs.SubDCurve(Input=line)
 curve.UpdatePropertyInformation()
