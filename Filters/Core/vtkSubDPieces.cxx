@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <numeric>
 
 std::vector<std::uint8_t> vtkSubDGhostFaces(vtkPolyData* input, const std::vector<vtkIdType>& faceCells)
@@ -177,7 +178,11 @@ std::vector<double> SortedCorners(vtkPolyData* input, const subd::Index* corners
 }
 }
 
-void vtkSubDOrderFacesAlikeInEveryPiece(vtkPolyData* input, subd::FaceScreening& faces, std::vector<vtkIdType>& faceCells)
+namespace
+{
+// The kept faces in the order every piece agrees on.
+std::vector<subd::Index> OrderAlike(
+  vtkPolyData* input, const subd::FaceScreening& faces, const std::vector<vtkIdType>& faceCells)
 {
   const size_t numFaces = faceCells.size();
   std::vector<subd::Index> order(numFaces);
@@ -201,6 +206,56 @@ void vtkSubDOrderFacesAlikeInEveryPiece(vtkPolyData* input, subd::FaceScreening&
     }
     std::stable_sort(order.begin(), order.end(), [&key](subd::Index a, subd::Index b) { return key[a] < key[b]; });
   }
+  return order;
+}
+}
+
+std::vector<subd::Index> vtkSubDFaceRanksAlikeInEveryPiece(
+  vtkPolyData* input, const subd::FaceScreening& faces, const std::vector<vtkIdType>& faceCells)
+{
+  const std::vector<subd::Index> order = OrderAlike(input, faces, faceCells);
+  std::vector<subd::Index> rank(order.size());
+  for (size_t i = 0; i < order.size(); ++i)
+  {
+    rank[order[i]] = static_cast<subd::Index>(i);
+  }
+  return rank;
+}
+
+std::vector<std::uint8_t> vtkSubDSeamLineCopies(
+  const subd::Level& finest, const std::vector<std::uint8_t>& faceGhostLayer, const std::vector<subd::Index>& baseFaceRank)
+{
+  const subd::MeshTopology& topology = finest.Topology;
+  std::vector<std::uint8_t> copy(static_cast<size_t>(topology.GetNumEdges()), 0);
+  for (subd::Index e = 0; e < topology.GetNumEdges() && !finest.EdgeSharpness.empty(); ++e)
+  {
+    if (!subd::IsSharp(finest.EdgeSharpness[e]))
+    {
+      continue;
+    }
+    // The line goes with the first of its faces' base faces in the shared order: a piece
+    // that holds the edge without owning that face (a seam, or a corner where three pieces
+    // meet) has a copy.
+    bool firstIsOwn = false;
+    subd::Index firstRank = std::numeric_limits<subd::Index>::max();
+    for (subd::Index f : topology.GetEdgeFaces(e))
+    {
+      const subd::Index base = finest.FaceOrigin[f];
+      if (baseFaceRank[base] < firstRank)
+      {
+        firstRank = baseFaceRank[base];
+        firstIsOwn = faceGhostLayer[base] == 0;
+      }
+    }
+    copy[e] = firstIsOwn ? 0 : 1;
+  }
+  return copy;
+}
+
+void vtkSubDOrderFacesAlikeInEveryPiece(vtkPolyData* input, subd::FaceScreening& faces, std::vector<vtkIdType>& faceCells)
+{
+  const size_t numFaces = faceCells.size();
+  const std::vector<subd::Index> order = OrderAlike(input, faces, faceCells);
   std::vector<subd::Index> offsets{ 0 }, vertices, kept;
   std::vector<vtkIdType> cells;
   vertices.reserve(faces.Vertices.size());

@@ -21,6 +21,7 @@
 #ifndef vtkSubDPieces_h
 #define vtkSubDPieces_h
 
+#include "SubDLevel.h"
 #include "SubDMeshValidation.h"
 #include "vtkType.h"
 
@@ -68,6 +69,19 @@ void vtkSubDMarkGhostPoints(vtkPolyData* output);
 
 /// True when input cell `cell` is a ghost cell.
 bool vtkSubDIsGhostCell(vtkPolyData* input, vtkIdType cell);
+
+/// Each kept face's position in the order every piece agrees on (that of
+/// vtkSubDOrderFacesAlikeInEveryPiece): of two faces several pieces hold, all find the same
+/// one first.
+std::vector<subd::Index> vtkSubDFaceRanksAlikeInEveryPiece(
+  vtkPolyData* input, const subd::FaceScreening& faces, const std::vector<vtkIdType>& faceCells);
+
+/// Per edge of `finest`: 1 where the crease line on it is a copy another piece outputs. A sharp
+/// edge on a seam, or at a corner where three pieces meet, is in several pieces; it goes with
+/// the first of its faces' base faces in the shared order (`baseFaceRank`; `faceGhostLayer` as
+/// vtkSubDGhostLayers gives), so that exactly one piece owns it.
+std::vector<std::uint8_t> vtkSubDSeamLineCopies(
+  const subd::Level& finest, const std::vector<std::uint8_t>& faceGhostLayer, const std::vector<subd::Index>& baseFaceRank);
 
 /// Reorders the kept faces (and `faceCells`, their input cells) into an order every piece
 /// agrees on: increasing global cell id, else increasing sorted corner coordinates. Faces of

@@ -193,10 +193,14 @@ subd::BaseTags vtkSubDSharpFeatures::ToBaseTags(const subd::MeshTopology& topolo
 std::vector<float> vtkSubDWriteSharpFeatures(const vtkSubDSharpFeatures& features,
   const std::vector<subd::Index>& unmatched, const subd::Level& finest, const vtkSubDOutputPointMap& map,
   vtkPolyData* input, const std::vector<std::pair<vtkDataArray*, vtkDataArray*>>& arrays,
-  vtkPolyData* output)
+  vtkPolyData* output, vtkSubDSeamLines* seams)
 {
   vtkPoints* points = output->GetPoints();
   vtkPointData* outPD = output->GetPointData();
+  if (seams)
+  {
+    seams->LineIsCopy.clear();
+  }
   if (!features.CornerSharpness.empty())
   {
     const vtkIdType numOutput = points->GetNumberOfPoints();
@@ -220,12 +224,21 @@ std::vector<float> vtkSubDWriteSharpFeatures(const vtkSubDSharpFeatures& feature
     {
       continue;
     }
+    const bool copy = seams && !seams->EdgeIsCopy.empty() && seams->EdgeIsCopy[e];
+    if (copy && !seams->WriteCopies)
+    {
+      continue; // another piece outputs it
+    }
     const subd::Index* ev = topo.GetEdgeVertices(e);
     const vtkIdType ends[2] = { map.OutputOfFinest(ev[0]), map.OutputOfFinest(ev[1]) };
     if (ends[0] >= 0 && ends[1] >= 0)
     {
       lines->InsertNextCell(2, ends);
       sharpness.push_back(finest.EdgeSharpness[e]);
+      if (seams)
+      {
+        seams->LineIsCopy.push_back(copy ? 1 : 0);
+      }
     }
   }
 

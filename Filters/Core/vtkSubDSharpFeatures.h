@@ -85,15 +85,27 @@ struct vtkSubDOutputPointMap
   std::function<subd::Index(vtkIdType)> FinestOfOutput;
 };
 
+/// Crease lines on the seams of a piece of a distributed mesh (vtkSubDSeamLineCopies): per
+/// finest edge, 1 where the line is a copy that another piece outputs. Copies are left out, or,
+/// with WriteCopies (ghost levels asked of the output), written and flagged in LineIsCopy (per
+/// line written) to be marked as ghost cells.
+struct vtkSubDSeamLines
+{
+  std::vector<std::uint8_t> EdgeIsCopy;
+  bool WriteCopies = false;
+  std::vector<std::uint8_t> LineIsCopy;
+};
+
 /// Writes the sharp features of `finest` to `output` (whose points and interpolated point
 /// data are set; `arrays` pairs each input point-data array with its output array):
 /// "CornerSharpness" (features.Names; when the input had it) with the decayed vertex sharpness, and the
 /// Lines: the crease edges of `finest` (sharp, neither boundary nor non-manifold, both
 /// points output), then the `unmatched` input segments passed through with copies of their
-/// points (and point data) appended. Returns the sharpness of each line written, in order.
+/// points (and point data) appended. With `seams`, crease lines another piece outputs are
+/// handled as it says. Returns the sharpness of each line written, in order.
 std::vector<float> vtkSubDWriteSharpFeatures(const vtkSubDSharpFeatures& features,
   const std::vector<subd::Index>& unmatched, const subd::Level& finest, const vtkSubDOutputPointMap& map,
   vtkPolyData* input, const std::vector<std::pair<vtkDataArray*, vtkDataArray*>>& arrays,
-  vtkPolyData* output);
+  vtkPolyData* output, vtkSubDSeamLines* seams = nullptr);
 
 #endif

@@ -118,6 +118,8 @@ public:
   // With ghosts: per kept face, 0 if the piece's own, else its ghost layer (vtkSubDGhostLayers);
   // the children of faces up to layer OutputGhostLevels are output, those beyond 0 as ghosts.
   std::vector<std::uint8_t> FaceGhostLayer;
+  // Per finest edge, 1 where its crease line is a copy another piece outputs (vtkSubDPieces.h).
+  std::vector<std::uint8_t> SeamLineCopies;
   int OutputGhostLevels = 0;
   vtkSubDSharpFeatures Features;
   std::vector<subd::Index> UnmatchedSegments; // crease segments that are not surface edges
@@ -159,13 +161,15 @@ public:
     return this->CompactPoints ? this->OutputPointOfFinest[finestPoint] : finestPoint;
   }
   void SelectOutput(bool someBaseVertexUnused);
-  void AddGhostArrays(vtkPolyData* output, vtkIdType numLines) const;
+  void AddGhostArrays(vtkPolyData* output, vtkIdType numLines, const std::vector<std::uint8_t>& lineIsCopy) const;
 };
 
 // When ghost levels were asked of the output: "vtkGhostType" for its cells (children of ghost
-// faces, and crease lines with an end on no own face, are DUPLICATECELL) and its points (those
-// on no own face are DUPLICATEPOINT).
-void vtkSubDSurfaceFilter::vtkInternals::AddGhostArrays(vtkPolyData* output, vtkIdType numLines) const
+// faces, crease lines with an end on no own face and the copies of other pieces' lines on the
+// seams, `lineIsCopy`, are DUPLICATECELL) and its points (those on no own face are
+// DUPLICATEPOINT).
+void vtkSubDSurfaceFilter::vtkInternals::AddGhostArrays(
+  vtkPolyData* output, vtkIdType numLines, const std::vector<std::uint8_t>& lineIsCopy) const
 {
   if (this->OutputGhostLevels == 0 || this->FaceGhostLayer.empty())
   {
@@ -198,7 +202,8 @@ void vtkSubDSurfaceFilter::vtkInternals::AddGhostArrays(vtkPolyData* output, vtk
   vtkCellArray* lines = output->GetLines();
   for (lines->InitTraversal(); c < numLines && lines->GetNextCell(n, ends); ++c)
   {
-    const bool ghost = pointGhosts->GetComponent(ends[0], 0) != 0 || pointGhosts->GetComponent(ends[n - 1], 0) != 0;
+    const bool ghost = pointGhosts->GetComponent(ends[0], 0) != 0 || pointGhosts->GetComponent(ends[n - 1], 0) != 0 ||
+      (static_cast<size_t>(c) < lineIsCopy.size() && lineIsCopy[c]);
     cellGhosts->SetValue(c, ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
   }
 }
@@ -446,6 +451,10 @@ int vtkSubDSurfaceFilter::Execute(
     const std::string nonManifold = vtkSubDNonManifoldWarning(topology, faceIsGhost);
     cache.FaceGhostLayer =
       faceIsGhost.empty() ? std::vector<std::uint8_t>() : vtkSubDGhostLayers(topology, faceIsGhost, outputGhostLevels);
+    // A piece's crease lines on its seams are also in the neighbouring piece: one must own each.
+    const std::vector<subd::Index> faceRank = faceIsGhost.empty() || !(features.Any() || this->AutomaticCreases)
+      ? std::vector<subd::Index>()
+      : vtkSubDFaceRanksAlikeInEveryPiece(input, screened, faceCells);
     if (!nonManifold.empty())
     {
       vtkWarningMacro(<< nonManifold << ".");
@@ -559,6 +568,9 @@ int vtkSubDSurfaceFilter::Execute(
     }
     ++this->NumberOfStencilBuilds;
 
+    cache.SeamLineCopies = faceRank.empty()
+      ? std::vector<std::uint8_t>()
+      : vtkSubDSeamLineCopies(cache.Hierarchy.Finest, cache.FaceGhostLayer, faceRank);
     cache.FaceIsGhost = std::move(faceIsGhost);
     cache.OutputGhostLevels = outputGhostLevels;
     cache.SelectOutput(someBaseVertexUnused);
@@ -674,8 +686,9 @@ int vtkSubDSurfaceFilter::Execute(
     [&cache](vtkIdType o) {
       return cache.CompactPoints ? cache.FinestPointOfOutput[o] : static_cast<subd::Index>(o);
     } };
-  const std::vector<float> lineSharpness = vtkSubDWriteSharpFeatures(
-    cache.Features, cache.UnmatchedSegments, finest, pointMap, input, interpolated, output);
+  vtkSubDSeamLines seams{ cache.SeamLineCopies, cache.OutputGhostLevels > 0, {} };
+  const std::vector<float> lineSharpness = vtkSubDWriteSharpFeatures(cache.Features, cache.UnmatchedSegments, finest,
+    pointMap, input, interpolated, output, cache.SeamLineCopies.empty() ? nullptr : &seams);
   const vtkIdType numLines = static_cast<vtkIdType>(lineSharpness.size());
 
   // Faces, straight into offsets/connectivity.
@@ -690,7 +703,7 @@ int vtkSubDSurfaceFilter::Execute(
   // Cell data: each face inherits its input cell's; lines get zeros, and their sharpness.
   if (input->GetCellData()->GetNumberOfArrays() == 0 && !this->GenerateParentCellIds && numLines == 0)
   {
-    cache.AddGhostArrays(output, numLines);
+    cache.AddGhostArrays(output, numLines, seams.LineIsCopy);
     this->UpdateProgress(1.0);
     return 1;
   }
@@ -745,7 +758,7 @@ int vtkSubDSurfaceFilter::Execute(
     depth->InsertNextValue(finest.Depth);
     output->GetFieldData()->AddArray(depth);
   }
-  cache.AddGhostArrays(output, numLines);
+  cache.AddGhostArrays(output, numLines, seams.LineIsCopy);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -54,6 +54,10 @@ TEST_P(Pieces, UnionOfPiecesIsTheSerialOutput)
           " level(s), " + std::to_string(numPieces) + " pieces";
         EXPECT_EQ(errors, 0) << where;
         EXPECT_EQ(total, serial->GetNumberOfPolys()) << where;
+        vtkIdType lines = 0; // each crease line is in one piece only, those on seams too
+        for (vtkPolyData* piece : raw)
+          lines += piece->GetNumberOfLines();
+        EXPECT_EQ(lines, serial->GetNumberOfLines()) << where;
         EXPECT_EQ(ComparePieces(serial, raw, PieceTolerance(serial), scheme.SameCellData), "") << where;
       }
     }
@@ -283,6 +287,10 @@ TEST_P(Pieces, GhostLevelsAskedOfTheOutput)
     }
   }
   EXPECT_EQ(ComparePieces(serial, raw, tolerance, scheme.SameCellData), "");
+  vtkIdType lines = 0; // own crease lines: each in one piece only, those on seams too
+  for (vtkPolyData* piece : raw)
+    lines += piece->GetNumberOfLines();
+  EXPECT_EQ(lines, serial->GetNumberOfLines()) << scheme.Name;
 }
 
 // Curves: each line is refined by itself, so pieces need no ghost cells; asked for one ghost
