@@ -59,7 +59,8 @@
  * upstream for GetRequiredGhostLevels() layers of ghost cells, subdivides its own and the ghost
  * faces together and outputs only the children of its own faces, so that the pieces' outputs
  * together are the serial output. Points on a seam between pieces appear in every piece that
- * uses them, as do crease lines along a seam. Asked for ghost levels itself, it asks upstream
+ * uses them; a crease line along a seam is output by one piece only (vtkSubDPieces.h). Asked
+ * for ghost levels itself, it asks upstream
  * for that many more and also outputs the children of the first layers of ghost faces, marked
  * in "vtkGhostType" (DUPLICATECELL; points on no own face DUPLICATEPOINT). Doo-Sabin and the
  * midpoint scheme make faces from faces of two pieces: every piece numbers its faces alike
