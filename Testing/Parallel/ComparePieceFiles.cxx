@@ -59,6 +59,17 @@ int main(int argc, char* argv[])
       static_cast<long long>(serial->GetNumberOfPolys()), numPieces);
     return 1;
   }
+  vtkIdType lines = 0; // each crease line in one piece only, those on seams too
+  for (vtkPolyData* piece : raw)
+  {
+    lines += piece->GetNumberOfLines();
+  }
+  if (lines != serial->GetNumberOfLines())
+  {
+    std::fprintf(stderr, "ComparePieceFiles: the pieces own %lld crease lines, serially %lld\n",
+      static_cast<long long>(lines), static_cast<long long>(serial->GetNumberOfLines()));
+    return 1;
+  }
   const std::string why = subdtest::ComparePieces(serial, raw, tolerance, false);
   if (!why.empty())
   {
