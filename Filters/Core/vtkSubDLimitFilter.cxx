@@ -50,10 +50,7 @@ struct FaceGrid
   std::vector<subd::FaceSample> Owned; ///< samples this face evaluates
   std::vector<vtkIdType> OwnedIds;     ///< their output points
 };
-}
 
-namespace
-{
 // The tessellation's cell data: each cell gets its input cell's ("FaceId" names it), and in a
 // piece with ghost faces, "vtkGhostType" marks the cells of ghost faces.
 void AddCellData(vtkPolyData* input, vtkIdTypeArray* cellFace, bool piece, vtkPolyData* output)
@@ -111,6 +108,7 @@ int vtkSubDLimitFilter::RequestUpdateExtent(
   vtkSubDRequestPieceWithGhosts(inputVector[0]->GetInformationObject(0), outInfo, 1);
   if (vtkInformation* locationsInfo = inputVector[1]->GetInformationObject(0))
   {
+    // The same piece of the locations, without ghosts: each location is evaluated once.
     vtkSubDRequestPieceWithGhosts(locationsInfo, outInfo, 0);
     locationsInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
   }

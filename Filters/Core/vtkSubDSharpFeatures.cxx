@@ -224,7 +224,7 @@ std::vector<float> vtkSubDWriteSharpFeatures(const vtkSubDSharpFeatures& feature
     {
       continue;
     }
-    const bool copy = seams && !seams->EdgeIsCopy.empty() && seams->EdgeIsCopy[e];
+    const bool copy = seams && seams->EdgeIsCopy[e];
     if (copy && !seams->WriteCopies)
     {
       continue; // another piece outputs it

@@ -22,6 +22,7 @@
 #include "SubDLevel.h"
 #include "vtkType.h"
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <utility>
@@ -91,7 +92,7 @@ struct vtkSubDOutputPointMap
 /// line written) to be marked as ghost cells.
 struct vtkSubDSeamLines
 {
-  std::vector<std::uint8_t> EdgeIsCopy;
+  const std::vector<std::uint8_t>& EdgeIsCopy;
   bool WriteCopies = false;
   std::vector<std::uint8_t> LineIsCopy;
 };
