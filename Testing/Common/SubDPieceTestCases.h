@@ -55,21 +55,34 @@ inline std::vector<PieceScheme> PieceSchemes()
     MakePieceScheme<vtkSubDMidpointFilter>("midpoint", false, false) };
 }
 
+/// A mesh cut into the piece its consumer asks for (vtkExtractPolyDataPiece, with the ghost
+/// levels asked of it).
+struct PieceSource
+{
+  vtkNew<vtkTrivialProducer> Producer;
+  vtkNew<vtkExtractPolyDataPiece> Extract;
+
+  explicit PieceSource(vtkPolyData* input)
+  {
+    this->Producer->SetOutput(input);
+    this->Extract->SetInputConnection(this->Producer->GetOutputPort());
+  }
+  vtkAlgorithmOutput* GetOutputPort() { return this->Extract->GetOutputPort(); }
+};
+
 /// input -> vtkExtractPolyDataPiece -> the scheme's filter (double output points: the piece
 /// cutter stores float points, and double output keeps round-off apart from float rounding).
 struct PiecePipeline
 {
-  vtkNew<vtkTrivialProducer> Producer;
-  vtkNew<vtkExtractPolyDataPiece> Extract;
+  PieceSource Source;
   vtkSmartPointer<vtkSubDSurfaceFilter> Filter;
   Messages FilterMessages;
 
   PiecePipeline(const PieceScheme& scheme, vtkPolyData* input, int levels)
-    : Filter(scheme.Make())
+    : Source(input)
+    , Filter(scheme.Make())
   {
-    this->Producer->SetOutput(input);
-    this->Extract->SetInputConnection(this->Producer->GetOutputPort());
-    this->Filter->SetInputConnection(this->Extract->GetOutputPort());
+    this->Filter->SetInputConnection(this->Source.GetOutputPort());
     this->Filter->SetNumberOfSubdivisions(levels);
     this->Filter->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
     this->FilterMessages.Watch(this->Filter);

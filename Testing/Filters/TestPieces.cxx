@@ -133,13 +133,9 @@ TEST(LimitPieces, UnionOfPiecesIsTheWholeTessellation)
   {
     for (const PieceTestCase& test : PieceTestCases(loop))
     {
-      vtkSmartPointer<vtkPolyData> input = PieceTestInput(test);
-      vtkNew<vtkTrivialProducer> producer;
-      producer->SetOutput(input);
-      vtkNew<vtkExtractPolyDataPiece> extract;
-      extract->SetInputConnection(producer->GetOutputPort());
+      PieceSource source(PieceTestInput(test));
       vtkNew<vtkSubDLimitFilter> limit;
-      limit->SetInputConnection(extract->GetOutputPort());
+      limit->SetInputConnection(source.GetOutputPort());
       limit->SetScheme(loop ? vtkSubDLimitFilter::LOOP : vtkSubDLimitFilter::CATMULL_CLARK);
       limit->SetResolution(2);
       // On a crease each side has its normal: a point there gets the side of the face that
@@ -195,12 +191,9 @@ TEST(WholeMeshPieces, GlobalSolvesGiveTheirResultAsPieceZero)
     { vtkSmartPointer<vtkSubDBSplineSurfaceFilter>::New(), grid } };
   for (auto& c : cases)
   {
-    vtkNew<vtkTrivialProducer> producer;
-    producer->SetOutput(c.second);
-    vtkNew<vtkExtractPolyDataPiece> extract; // would cut a piece if the filter asked for one
-    extract->SetInputConnection(producer->GetOutputPort());
+    PieceSource source(c.second); // would cut a piece if the filter asked for one
     vtkPolyDataAlgorithm* filter = c.first;
-    filter->SetInputConnection(extract->GetOutputPort());
+    filter->SetInputConnection(source.GetOutputPort());
     Messages messages;
     messages.Watch(filter);
     filter->UpdatePiece(0, 1, 0);
@@ -235,7 +228,7 @@ TEST(PiecesWithoutGhosts, WarnThatSeamsBecomeBoundaries)
   withGhosts.Run(0, 2);
   EXPECT_EQ(withGhosts.FilterMessages.NumWarnings, 0) << withGhosts.FilterMessages.Warnings;
   PiecePipeline withoutGhosts(scheme, input, 2);
-  withoutGhosts.Extract->CreateGhostCellsOff();
+  withoutGhosts.Source.Extract->CreateGhostCellsOff();
   withoutGhosts.Run(0, 2);
   EXPECT_EQ(withoutGhosts.FilterMessages.NumWarnings, 1);
   EXPECT_NE(withoutGhosts.FilterMessages.Warnings.find("came without the ghost cells"), std::string::npos)
@@ -377,12 +370,9 @@ TEST(CurvePieces, UnionOfPiecesIsTheSerialOutputAndGhostLinesAreMarked)
          vtkSubDCurveFilter::SCHEME_FOUR_POINT })
   {
     auto run = [&](int piece, int numPieces, int ghostLevels) {
-      vtkNew<vtkTrivialProducer> producer;
-      producer->SetOutput(input);
-      vtkNew<vtkExtractPolyDataPiece> extract;
-      extract->SetInputConnection(producer->GetOutputPort());
+      PieceSource source(input);
       vtkNew<vtkSubDCurveFilter> filter;
-      filter->SetInputConnection(extract->GetOutputPort());
+      filter->SetInputConnection(source.GetOutputPort());
       filter->SetScheme(scheme);
       filter->SetNumberOfSubdivisions(3);
       filter->SetOutputPointsPrecision(vtkAlgorithm::DOUBLE_PRECISION);
