@@ -228,7 +228,7 @@ int vtkSubDBSplineSurfaceFilter::Execute(
   surface->Initialize();
   this->SetErrorCode(vtkErrorCode::NoError);
   this->RmsError = this->MaxError = 0.0;
-  if (vtkSubDIsLaterPiece(outputVector->GetInformationObject(0)))
+  if (vtkSubDPieceRequest(outputVector->GetInformationObject(0)).IsLaterPiece())
   {
     return 1; // piece 0 holds the whole result
   }

@@ -35,7 +35,7 @@ int vtkSubDInterpolationAlgorithm::RequestData(
   this->Residual = 0.0;
   this->ConditionEstimate = 0.0;
   this->NumberOfTaggedPoints = 0;
-  if (vtkSubDIsLaterPiece(outputVector->GetInformationObject(0)))
+  if (vtkSubDPieceRequest(outputVector->GetInformationObject(0)).IsLaterPiece())
   {
     return 1; // piece 0 holds the whole result
   }

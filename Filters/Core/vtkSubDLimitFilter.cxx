@@ -71,12 +71,13 @@ void AddCellData(vtkPolyData* input, vtkIdTypeArray* cellFace, bool piece, vtkPo
   outCD->AddArray(cellFace);
   if (piece)
   {
+    vtkUnsignedCharArray* inputMarks = input->GetCellGhostArray(); // looked up once, not per cell
     vtkNew<vtkUnsignedCharArray> ghosts;
     ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
     ghosts->SetNumberOfTuples(numCells);
     for (vtkIdType c = 0; c < numCells; ++c)
     {
-      ghosts->SetValue(c, vtkSubDIsGhostCell(input, cellFace->GetValue(c)) ? vtkDataSetAttributes::DUPLICATECELL : 0);
+      ghosts->SetValue(c, inputMarks->GetValue(cellFace->GetValue(c)) & vtkDataSetAttributes::DUPLICATECELL);
     }
     outCD->AddArray(ghosts);
     vtkSubDMarkGhostPoints(output);
@@ -131,14 +132,12 @@ int vtkSubDLimitFilter::Execute(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
   // One of several pieces may hold no polygon at all: nothing to output, nothing wrong.
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  const bool onePieceOfMany = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1;
-  if (onePieceOfMany && (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0))
+  const vtkSubDPieceRequest request(outputVector->GetInformationObject(0));
+  if (request.IsEmptyPiece(input))
   {
     return 1;
   }
-  const int outputGhostLevels =
-    onePieceOfMany ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
+  const int outputGhostLevels = request.OutputGhostLevels;
   const bool quads = this->Scheme == CATMULL_CLARK;
   vtkSubDCage cage;
   std::string error, warning;
@@ -165,10 +164,9 @@ int vtkSubDLimitFilter::Execute(
   const subd::Level& level = cage.Level;
   const subd::MeshTopology& topo = level.Topology;
   // A piece tessellates its own faces, and the first outputGhostLevels layers of ghost faces.
-  if (onePieceOfMany && cage.FaceIsGhost.empty() && !locations)
+  if (request.OneOfMany && cage.FaceIsGhost.empty() && !locations)
   {
-    vtkWarningMacro(<< vtkSubDMissingGhostsWarning(
-                      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()), 1));
+    vtkWarningMacro(<< vtkSubDMissingGhostsWarning(request.Piece, 1));
   }
   const std::vector<std::uint8_t> ghostLayer =
     cage.FaceIsGhost.empty() ? std::vector<std::uint8_t>() : vtkSubDGhostLayers(topo, cage.FaceIsGhost, outputGhostLevels);

@@ -119,6 +119,19 @@ void vtkSubDRequestPieceWithGhosts(vtkInformation* inInfo, vtkInformation* outIn
   inInfo->Set(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), numPieces > 1 ? requiredLevels + outputGhosts : 0);
 }
 
+vtkSubDPieceRequest::vtkSubDPieceRequest(vtkInformation* outInfo)
+{
+  using Pipeline = vtkStreamingDemandDrivenPipeline;
+  this->Piece = outInfo->Get(Pipeline::UPDATE_PIECE_NUMBER());
+  this->OneOfMany = outInfo->Get(Pipeline::UPDATE_NUMBER_OF_PIECES()) > 1;
+  this->OutputGhostLevels = this->OneOfMany ? outInfo->Get(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
+}
+
+bool vtkSubDPieceRequest::IsEmptyPiece(vtkPolyData* input) const
+{
+  return this->OneOfMany && (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0);
+}
+
 void vtkSubDRequestWholeInput(vtkInformationVector** inputVector, int numPorts)
 {
   using Pipeline = vtkStreamingDemandDrivenPipeline;
@@ -132,12 +145,6 @@ void vtkSubDRequestWholeInput(vtkInformationVector** inputVector, int numPorts)
       inInfo->Set(Pipeline::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
     }
   }
-}
-
-bool vtkSubDIsLaterPiece(vtkInformation* outInfo)
-{
-  using Pipeline = vtkStreamingDemandDrivenPipeline;
-  return outInfo->Get(Pipeline::UPDATE_NUMBER_OF_PIECES()) > 1 && outInfo->Get(Pipeline::UPDATE_PIECE_NUMBER()) > 0;
 }
 
 std::string vtkSubDMissingGhostsWarning(int piece, int requiredLevels)

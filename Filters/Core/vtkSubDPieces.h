@@ -29,10 +29,6 @@
 #include <string>
 #include <vector>
 
-namespace subd
-{
-class MeshTopology;
-}
 class vtkInformation;
 class vtkInformationVector;
 class vtkPolyData;
@@ -42,13 +38,24 @@ class vtkPolyData;
 /// split into several pieces (none otherwise).
 void vtkSubDRequestPieceWithGhosts(vtkInformation* inInfo, vtkInformation* outInfo, int requiredLevels);
 
+/// The piece a filter's output was asked for (RequestData of a piece-aware filter).
+struct vtkSubDPieceRequest
+{
+  int Piece = 0;
+  bool OneOfMany = false;   ///< one piece of several
+  int OutputGhostLevels = 0; ///< ghost levels asked of the output (0 for a whole mesh)
+
+  explicit vtkSubDPieceRequest(vtkInformation* outInfo);
+  /// One of several pieces without polygons: an empty output, not an error.
+  bool IsEmptyPiece(vtkPolyData* input) const;
+  /// A piece other than the first of several: a filter computing on the whole mesh outputs
+  /// nothing there, and piece 0 holds its whole result.
+  bool IsLaterPiece() const { return this->OneOfMany && this->Piece > 0; }
+};
+
 /// RequestUpdateExtent of a filter whose result depends on the whole mesh at once (a global
 /// solve): each of its `numPorts` inputs is asked for all of it (piece 0 of 1, no ghost cells).
 void vtkSubDRequestWholeInput(vtkInformationVector** inputVector, int numPorts);
-
-/// True when `outInfo` asks for a piece other than the first of several: a filter computing on
-/// the whole mesh then outputs nothing, and piece 0 holds its whole result.
-bool vtkSubDIsLaterPiece(vtkInformation* outInfo);
 
 /// The warning of a filter given piece `piece` without any of the `requiredLevels` layers of
 /// ghost cells it asked for.

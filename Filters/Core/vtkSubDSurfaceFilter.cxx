@@ -319,11 +319,9 @@ int vtkSubDSurfaceFilter::Execute(
     return 1;
   };
   // One of several pieces may hold no polygon at all: nothing to output, nothing wrong.
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  const bool onePieceOfMany = outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_PIECES()) > 1;
-  const int outputGhostLevels =
-    onePieceOfMany ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_NUMBER_OF_GHOST_LEVELS()) : 0;
-  if (onePieceOfMany && (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0))
+  const vtkSubDPieceRequest request(outputVector->GetInformationObject(0));
+  const int outputGhostLevels = request.OutputGhostLevels;
+  if (request.IsEmptyPiece(input))
   {
     return 1;
   }
@@ -408,10 +406,9 @@ int vtkSubDSurfaceFilter::Execute(
     vtkSubDOrderFacesAlikeInEveryPiece(input, screened, faceCells);
     faceIsGhost = vtkSubDGhostFaces(input, faceCells);
   }
-  if (onePieceOfMany && faceIsGhost.empty() && this->GetRequiredGhostLevels() > 0)
+  if (request.OneOfMany && faceIsGhost.empty() && this->GetRequiredGhostLevels() > 0)
   {
-    vtkWarningMacro(<< vtkSubDMissingGhostsWarning(
-                      outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_PIECE_NUMBER()), this->GetRequiredGhostLevels()));
+    vtkWarningMacro(<< vtkSubDMissingGhostsWarning(request.Piece, this->GetRequiredGhostLevels()));
   }
   vtkSubDSharpFeatures features;
   std::string featureError;
@@ -452,9 +449,20 @@ int vtkSubDSurfaceFilter::Execute(
     cache.FaceGhostLayer =
       faceIsGhost.empty() ? std::vector<std::uint8_t>() : vtkSubDGhostLayers(topology, faceIsGhost, outputGhostLevels);
     // A piece's crease lines on its seams are also in the neighbouring piece: one must own each.
-    const std::vector<subd::Index> faceRank = faceIsGhost.empty() || !(features.Any() || this->AutomaticCreases)
-      ? std::vector<subd::Index>()
-      : vtkSubDFaceRanksAlikeInEveryPiece(input, screened, faceCells);
+    // Doo-Sabin's and midpoint's faces are in that order already (above): their rank is their index.
+    std::vector<subd::Index> faceRank;
+    if (!faceIsGhost.empty() && (features.Any() || this->AutomaticCreases))
+    {
+      if (this->MakesFacesFromSeveralFaces())
+      {
+        faceRank.resize(faceCells.size());
+        std::iota(faceRank.begin(), faceRank.end(), 0);
+      }
+      else
+      {
+        faceRank = vtkSubDFaceRanksAlikeInEveryPiece(input, screened, faceCells);
+      }
+    }
     if (!nonManifold.empty())
     {
       vtkWarningMacro(<< nonManifold << ".");

@@ -141,6 +141,10 @@ on_curve = points_of(fetch(pvs.SubDCurve(Input=curve_cage, Scheme=1, NumberOfSub
 line_points = points_of(fetch(line))
 check(len(on_curve) == len(line_points) and builtins.all(nearest(p, on_curve) < 1e-9 for p in line_points),
       "SubD Interpolating Curve: the cubic B-spline limit passes through every input point")
+curve_cage.UpdatePropertyInformation()
+check(curve_cage.GetProperty("NumberOfTaggedPoints").GetElement(0) == len(line_points)
+      and curve_cage.GetProperty("Solver") is not None and curve_cage.GetProperty("Tolerance") is not None,
+      "the curve's solve has the cage's solver options and report (every point tagged)")
 four_point = fetch(pvs.SubDCurve(Input=line, Scheme=2, NumberOfSubdivisions=3))
 check(four_point.GetNumberOfPoints() == 8 * 4 + 1 and
       builtins.all(nearest(p, points_of(four_point)) < 1e-12 for p in line_points),
