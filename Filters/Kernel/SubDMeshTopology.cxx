@@ -16,6 +16,80 @@ void CountsToOffsets(IndexArray& offsets)
     offsets[i] += offsets[i - 1];
   }
 }
+
+// Runs task(block) for blocks 0..numBlocks-1 through `parallelFor`, block b standing for
+// the items [b, b + 1) * stride of a longer range: a ParallelFor that will not split a short
+// range (its grain) still hands the blocks to different threads.
+template <typename Task>
+void ForEachBlock(Index numBlocks, const ParallelFor& parallelFor, const Task& task)
+{
+  constexpr Index stride = 4096;
+  parallelFor(0, numBlocks * stride, [&](Index begin, Index end) {
+    for (Index b = (begin + stride - 1) / stride; b * stride < end; ++b)
+    {
+      task(b);
+    }
+  });
+}
+
+// Files items under integer keys (vertices) in item order: a counting sort, on threads
+// without atomics. The items are cut into a few fixed blocks; each block counts its items
+// per key, the file of a key takes the blocks' items in block order, and each block then
+// files its own. `items(begin, end, visit)` calls visit(key, payload) for the items
+// [begin, end) in order; `place(slot, payload)` stores an item at its slot.
+template <typename Items, typename Place>
+void FileByKey(Index numKeys, Index numItems, const Items& items, const Place& place, IndexArray& offsets,
+  const ParallelFor& parallelFor)
+{
+  constexpr Index blocks = 4;
+  auto blockBegin = [numItems](Index b) { return static_cast<Index>(static_cast<std::int64_t>(numItems) * b / blocks); };
+  std::vector<IndexArray> cursors(blocks);
+  ForEachBlock(blocks, parallelFor, [&](Index b) {
+    IndexArray& counts = cursors[b];
+    counts.assign(static_cast<size_t>(numKeys), 0);
+    items(blockBegin(b), blockBegin(b + 1), [&counts](Index key, const auto&) { ++counts[key]; });
+  });
+  offsets.resize(static_cast<size_t>(numKeys) + 1);
+  offsets[0] = 0;
+  for (Index key = 0; key < numKeys; ++key)
+  {
+    Index slot = offsets[key];
+    for (IndexArray& cursor : cursors)
+    {
+      const Index count = cursor[key];
+      cursor[key] = slot;
+      slot += count;
+    }
+    offsets[key + 1] = slot;
+  }
+  ForEachBlock(blocks, parallelFor, [&](Index b) {
+    IndexArray& cursor = cursors[b];
+    items(blockBegin(b), blockBegin(b + 1), [&](Index key, const auto& payload) { place(cursor[key]++, payload); });
+  });
+}
+
+// Sorts the few values of a typical vertex's list by insertion (std::sort's set-up costs
+// more than the sort itself there), a longer list with std::sort.
+template <typename T>
+void SortShortList(T* first, T* last)
+{
+  constexpr std::ptrdiff_t shortList = 32;
+  if (last - first > shortList)
+  {
+    std::sort(first, last);
+    return;
+  }
+  for (T* i = first + (first != last); i < last; ++i)
+  {
+    const T value = *i;
+    T* j = i;
+    for (; j > first && *(j - 1) > value; --j)
+    {
+      *j = *(j - 1);
+    }
+    *j = value;
+  }
+}
 }
 
 MeshTopology MeshTopology::BuildFacesOnly(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices)
@@ -54,190 +128,194 @@ MeshTopology MeshTopology::Build(
   Index numVertices, IndexArray faceOffsets, IndexArray faceVertices, const ParallelFor& parallelFor)
 {
   MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), std::move(faceVertices));
-  topology.BuildEdges();
-  topology.BuildEdgeFaces();
-  topology.BuildVertexRelations();
-  topology.TagEdges();
+  topology.BuildVertexFaces(parallelFor);
+  const HalfEdgePairing pairing = topology.PairHalfEdges(parallelFor);
+  topology.NumberEdges(pairing, parallelFor);
+  topology.BuildEdgeFaces(pairing, parallelFor);
+  topology.BuildVertexEdges(parallelFor);
   topology.TagVertices(parallelFor);
   return topology;
 }
 
-// Edges are found by bucketing every half-edge under its lower vertex and sorting each
-// (small) bucket by the upper vertex: linear in the mesh size for bounded valence, and
-// O(k log k) for a vertex of valence k, so even a 100k-valent hub stays fast.
-void MeshTopology::BuildEdges()
+// Every pass below runs per face, per vertex or per key range and writes only its own
+// entries, so the topology is the same for any number of threads.
+void MeshTopology::BuildVertexFaces(const ParallelFor& parallelFor)
 {
-  const Index numFaces = this->GetNumFaces();
-  const size_t numHalfEdges = this->FaceVertices.size();
-
-  // Each half-edge h as one key, (upper vertex, h): sorting a bucket compares the keys
-  // themselves, not values looked up elsewhere.
-  auto key = [](Index upper, Index h) {
-    return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(upper)) << 32) | static_cast<std::uint32_t>(h);
-  };
-  IndexArray bucketOffsets(static_cast<size_t>(this->NumVertices) + 1, 0);
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    const Index begin = this->FaceOffsets[f], end = this->FaceOffsets[f + 1];
-    for (Index h = begin; h < end; ++h)
-    {
-      const Index a = this->FaceVertices[h];
-      const Index b = this->FaceVertices[h + 1 < end ? h + 1 : begin];
-      ++bucketOffsets[std::min(a, b) + 1];
-    }
-  }
-  CountsToOffsets(bucketOffsets);
-
-  LevelArray<std::uint64_t> buckets(numHalfEdges);
-  {
-    IndexArray fill(bucketOffsets.begin(), bucketOffsets.end() - 1);
-    for (Index f = 0; f < numFaces; ++f)
-    {
-      const Index begin = this->FaceOffsets[f], end = this->FaceOffsets[f + 1];
-      for (Index h = begin; h < end; ++h)
-      {
-        const Index a = this->FaceVertices[h];
-        const Index b = this->FaceVertices[h + 1 < end ? h + 1 : begin];
-        buckets[fill[std::min(a, b)]++] = key(std::max(a, b), h);
-      }
-    }
-  }
-
-  // representative[h]: the first half-edge (lowest index) with the same vertex pair as h.
-  IndexArray representative(numHalfEdges);
-  for (Index v = 0; v < this->NumVertices; ++v)
-  {
-    std::uint64_t* first = buckets.data() + bucketOffsets[v];
-    std::uint64_t* last = buckets.data() + bucketOffsets[v + 1];
-    std::sort(first, last);
-    for (std::uint64_t* it = first; it != last; ++it)
-    {
-      const Index h = static_cast<Index>(*it & 0xffffffffu);
-      const bool startsRun = (it == first) || (*(it - 1) >> 32) != (*it >> 32);
-      representative[h] = startsRun ? h : representative[static_cast<Index>(*(it - 1) & 0xffffffffu)];
-    }
-  }
-
-  this->FaceEdges.resize(numHalfEdges); // every entry written below
-  this->EdgeVertices.clear();
-  this->EdgeVertices.reserve(numHalfEdges + 8);
-  Index numEdges = 0;
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    const Index begin = this->FaceOffsets[f], end = this->FaceOffsets[f + 1];
-    for (Index h = begin; h < end; ++h)
-    {
-      if (representative[h] == h)
-      {
-        this->FaceEdges[h] = numEdges++;
-        this->EdgeVertices.push_back(this->FaceVertices[h]);
-        this->EdgeVertices.push_back(this->FaceVertices[h + 1 < end ? h + 1 : begin]);
-      }
-      else
-      {
-        this->FaceEdges[h] = this->FaceEdges[representative[h]];
-      }
-    }
-  }
-  this->EdgeVertices.shrink_to_fit();
-}
-
-void MeshTopology::BuildEdgeFaces()
-{
-  const Index numFaces = this->GetNumFaces();
-  const Index numEdges = this->GetNumEdges();
-  this->EdgeFaceOffsets.assign(static_cast<size_t>(numEdges) + 1, 0);
-  for (Index e : this->FaceEdges)
-  {
-    ++this->EdgeFaceOffsets[e + 1];
-  }
-  CountsToOffsets(this->EdgeFaceOffsets);
-  this->EdgeFaces.resize(this->FaceEdges.size());
-  IndexArray fill(this->EdgeFaceOffsets.begin(), this->EdgeFaceOffsets.end() - 1);
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
-    {
-      this->EdgeFaces[fill[this->FaceEdges[h]]++] = f;
-    }
-  }
-}
-
-void MeshTopology::BuildVertexRelations()
-{
-  const size_t numVertexSlots = static_cast<size_t>(this->NumVertices) + 1;
-  this->VertexFaceOffsets.assign(numVertexSlots, 0);
-  for (Index v : this->FaceVertices)
-  {
-    ++this->VertexFaceOffsets[v + 1];
-  }
-  CountsToOffsets(this->VertexFaceOffsets);
   this->VertexFaces.resize(this->FaceVertices.size());
   this->VertexFaceCorners.resize(this->FaceVertices.size());
-  {
-    IndexArray fill(this->VertexFaceOffsets.begin(), this->VertexFaceOffsets.end() - 1);
-    const Index numFaces = this->GetNumFaces();
-    for (Index f = 0; f < numFaces; ++f)
+  auto corners = [this](Index begin, Index end, const auto& visit) {
+    for (Index f = begin; f < end; ++f)
     {
       for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
       {
-        const Index slot = fill[this->FaceVertices[h]]++;
-        this->VertexFaces[slot] = f;
-        this->VertexFaceCorners[slot] = h - this->FaceOffsets[f];
+        visit(this->FaceVertices[h], std::make_pair(f, h - this->FaceOffsets[f]));
       }
     }
-  }
+  };
+  auto place = [this](Index slot, const std::pair<Index, Index>& corner) {
+    this->VertexFaces[slot] = corner.first;
+    this->VertexFaceCorners[slot] = corner.second;
+  };
+  FileByKey(this->NumVertices, this->GetNumFaces(), corners, place, this->VertexFaceOffsets, parallelFor);
+}
 
-  this->VertexEdgeOffsets.assign(numVertexSlots, 0);
-  for (Index v : this->EdgeVertices)
+// The half-edges of one vertex pair are filed under the pair's lower vertex and each
+// vertex's file is sorted by upper vertex and half-edge: linear in the mesh size for bounded valence, and O(k log k) for a vertex of
+// valence k, so even a 100k-valent hub stays fast.
+MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(const ParallelFor& parallelFor) const
+{
+  const size_t numHalfEdges = this->FaceVertices.size();
+  // Each half-edge as one key, (upper vertex, h, whether it starts at the lower vertex):
+  // sorting compares the keys themselves, and a pair's half-edges come out in order.
+  auto halfEdges = [this](Index begin, Index end, const auto& visit) {
+    for (Index f = begin; f < end; ++f)
+    {
+      const Index first = this->FaceOffsets[f], last = this->FaceOffsets[f + 1];
+      for (Index h = first; h < last; ++h)
+      {
+        const Index a = this->FaceVertices[h], b = this->FaceVertices[h + 1 < last ? h + 1 : first];
+        visit(std::min(a, b),
+          (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::max(a, b))) << 32) |
+            (static_cast<std::uint64_t>(h) << 1) | (a < b ? 1u : 0u));
+      }
+    }
+  };
+  LevelArray<std::uint64_t> files(numHalfEdges);
+  IndexArray fileOffsets;
+  FileByKey(this->NumVertices, this->GetNumFaces(), halfEdges, [&files](Index slot, std::uint64_t key) { files[slot] = key; }, fileOffsets,
+    parallelFor);
+
+  HalfEdgePairing pairing(numHalfEdges);
+  parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v)
+    {
+      std::uint64_t* first = files.data() + fileOffsets[v];
+      std::uint64_t* last = files.data() + fileOffsets[v + 1];
+      SortShortList(first, last);
+      for (std::uint64_t* run = first; run != last;)
+      {
+        std::uint64_t* runEnd = run + 1;
+        while (runEnd != last && (*runEnd >> 32) == (*run >> 32))
+        {
+          ++runEnd;
+        }
+        const Index representative = static_cast<Index>((*run & 0xffffffffu) >> 1);
+        Index forward = 0;
+        for (std::uint64_t* it = run; it != runEnd; ++it)
+        {
+          const Index h = static_cast<Index>((*it & 0xffffffffu) >> 1);
+          pairing[h].Representative = representative;
+          pairing[h].Rank = static_cast<Index>(it - run);
+          forward += (*it & 1u) == (*run & 1u);
+        }
+        pairing[representative].GroupSize = static_cast<Index>(runEnd - run);
+        pairing[representative].Forward = forward;
+        run = runEnd;
+      }
+    }
+  });
+  return pairing;
+}
+
+// Edges are numbered in the order their first half-edges come walking the faces: a count
+// per face, a prefix sum, then each face numbers its own. The edge's tags come from its
+// pairing: one face is a boundary; more than two, or two running it the same way, are
+// non-manifold.
+void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const ParallelFor& parallelFor)
+{
+  const Index numFaces = this->GetNumFaces();
+  IndexArray firstEdge(static_cast<size_t>(numFaces) + 1);
+  firstEdge[0] = 0;
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
+    {
+      Index count = 0;
+      for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
+      {
+        count += pairing[h].Representative == h;
+      }
+      firstEdge[f + 1] = count;
+    }
+  });
+  CountsToOffsets(firstEdge);
+  const Index numEdges = firstEdge[numFaces];
+  this->FaceEdges.resize(this->FaceVertices.size());
+  this->EdgeVertices.resize(2 * static_cast<size_t>(numEdges));
+  this->EdgeFaceOffsets.resize(static_cast<size_t>(numEdges) + 1);
+  this->EdgeFaceOffsets[0] = 0;
+  this->EdgeTags.resize(static_cast<size_t>(numEdges));
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
+    {
+      Index e = firstEdge[f];
+      const Index first = this->FaceOffsets[f], last = this->FaceOffsets[f + 1];
+      for (Index h = first; h < last; ++h)
+      {
+        if (pairing[h].Representative != h)
+        {
+          continue;
+        }
+        const Index faces = pairing[h].GroupSize;
+        this->FaceEdges[h] = e;
+        this->EdgeVertices[2 * static_cast<size_t>(e)] = this->FaceVertices[h];
+        this->EdgeVertices[2 * static_cast<size_t>(e) + 1] = this->FaceVertices[h + 1 < last ? h + 1 : first];
+        this->EdgeFaceOffsets[e + 1] = faces;
+        EdgeTag& tag = this->EdgeTags[e];
+        tag.Boundary = faces == 1;
+        tag.NonManifold = faces > 2 || (faces == 2 && pairing[h].Forward != 1);
+        ++e;
+      }
+    }
+  });
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    for (Index h = this->FaceOffsets[begin]; h < this->FaceOffsets[end]; ++h)
+    {
+      this->FaceEdges[h] = this->FaceEdges[pairing[h].Representative];
+    }
+  });
+  this->NumNonManifoldEdges = 0;
+  this->NumBoundaryEdges = 0;
+  for (const EdgeTag& tag : this->EdgeTags)
   {
-    ++this->VertexEdgeOffsets[v + 1];
-  }
-  CountsToOffsets(this->VertexEdgeOffsets);
-  this->VertexEdges.resize(this->EdgeVertices.size());
-  IndexArray fill(this->VertexEdgeOffsets.begin(), this->VertexEdgeOffsets.end() - 1);
-  const Index numEdges = this->GetNumEdges();
-  for (Index e = 0; e < numEdges; ++e)
-  {
-    this->VertexEdges[fill[this->EdgeVertices[2 * e]]++] = e;
-    this->VertexEdges[fill[this->EdgeVertices[2 * e + 1]]++] = e;
-  }
-  this->MaxValence = 0;
-  for (Index v = 0; v < this->NumVertices; ++v)
-  {
-    this->MaxValence = std::max(this->MaxValence, this->GetVertexEdges(v).size());
+    this->NumNonManifoldEdges += tag.NonManifold;
+    this->NumBoundaryEdges += tag.Boundary;
   }
 }
 
-void MeshTopology::TagEdges()
+// An edge's faces in increasing order: its half-edges' ranks in their pairing.
+void MeshTopology::BuildEdgeFaces(const HalfEdgePairing& pairing, const ParallelFor& parallelFor)
 {
-  const Index numEdges = this->GetNumEdges();
-  // How many incident faces run along the edge in its stored direction: a consistently
-  // oriented manifold edge with two faces has exactly one.
-  std::vector<std::uint8_t> forwardCount(static_cast<size_t>(numEdges), 0);
-  const Index numFaces = this->GetNumFaces();
-  for (Index f = 0; f < numFaces; ++f)
-  {
-    for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
+  CountsToOffsets(this->EdgeFaceOffsets);
+  this->EdgeFaces.resize(this->FaceEdges.size());
+  parallelFor(0, this->GetNumFaces(), [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
     {
-      const Index e = this->FaceEdges[h];
-      if (this->FaceVertices[h] == this->EdgeVertices[2 * e] && forwardCount[e] < 255)
+      for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
       {
-        ++forwardCount[e];
+        this->EdgeFaces[this->EdgeFaceOffsets[this->FaceEdges[h]] + pairing[h].Rank] = f;
       }
     }
-  }
-  this->EdgeTags.assign(static_cast<size_t>(numEdges), EdgeTag{ 0, 0 });
-  this->NumNonManifoldEdges = 0;
-  this->NumBoundaryEdges = 0;
-  for (Index e = 0; e < numEdges; ++e)
+  });
+}
+
+// A vertex's edges in increasing order: each edge filed at both its ends.
+void MeshTopology::BuildVertexEdges(const ParallelFor& parallelFor)
+{
+  const Index numEdges = this->GetNumEdges();
+  this->VertexEdges.resize(this->EdgeVertices.size());
+  auto edgeEnds = [this](Index begin, Index end, const auto& visit) {
+    for (Index e = begin; e < end; ++e)
+    {
+      visit(this->EdgeVertices[2 * static_cast<size_t>(e)], e);
+      visit(this->EdgeVertices[2 * static_cast<size_t>(e) + 1], e);
+    }
+  };
+  FileByKey(this->NumVertices, numEdges, edgeEnds, [this](Index slot, Index e) { this->VertexEdges[slot] = e; },
+    this->VertexEdgeOffsets, parallelFor);
+  this->MaxValence = 0;
+  for (Index v = 0; v < this->NumVertices; ++v)
   {
-    const Index faces = this->GetEdgeFaces(e).size();
-    EdgeTag& tag = this->EdgeTags[e];
-    tag.Boundary = faces == 1;
-    tag.NonManifold = faces > 2 || (faces == 2 && forwardCount[e] != 1);
-    this->NumNonManifoldEdges += tag.NonManifold;
-    this->NumBoundaryEdges += tag.Boundary;
+    this->MaxValence = std::max(this->MaxValence, this->VertexEdgeOffsets[v + 1] - this->VertexEdgeOffsets[v]);
   }
 }
 

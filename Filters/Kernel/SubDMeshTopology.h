@@ -42,7 +42,7 @@ public:
   /// Builds the topology. Preconditions (checked by the caller, see MeshValidation): every
   /// face has >= 3 corners, no face repeats a vertex, all indices are in [0, numVertices).
   /// `faceOffsets` has numFaces+1 entries, the last one equal to the size of `faceVertices`.
-  /// `parallelFor` runs the passes that are independent per vertex.
+  /// `parallelFor` runs every pass on threads; the topology does not depend on their number.
   static MeshTopology Build(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
     const ParallelFor& parallelFor = SerialFor);
   /// The same from std::vector (copied: for base meshes, which are small).
@@ -142,10 +142,19 @@ private:
   {
     return IndexSpan{ data.data() + offsets[i], offsets[i + 1] - offsets[i] };
   }
-  void BuildEdges();
-  void BuildEdgeFaces();
-  void BuildVertexRelations();
-  void TagEdges();
+  /// Build's pairing of half-edges into edges, each half-edge h with the first half-edge of
+  /// its vertex pair (lowest index) and its rank among them; the group's size and how many
+  /// run the way its first does are at the first.
+  struct HalfEdgePair
+  {
+    Index Representative, Rank, GroupSize, Forward;
+  };
+  using HalfEdgePairing = LevelArray<HalfEdgePair>; // one per half-edge: its writes share a line
+  void BuildVertexFaces(const ParallelFor& parallelFor);
+  HalfEdgePairing PairHalfEdges(const ParallelFor& parallelFor) const;
+  void NumberEdges(const HalfEdgePairing& pairing, const ParallelFor& parallelFor);
+  void BuildEdgeFaces(const HalfEdgePairing& pairing, const ParallelFor& parallelFor);
+  void BuildVertexEdges(const ParallelFor& parallelFor);
   void TagVertices(const ParallelFor& parallelFor);
   Index CountFans(Index v, std::vector<Index>& scratch) const;
 

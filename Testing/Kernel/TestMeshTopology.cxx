@@ -255,11 +255,23 @@ TEST(MeshTopology, Sqrt3ChildEqualsSearchedTopology)
   EXPECT_GT(closedForms, 10);
 }
 
-// The general builder's per-vertex passes give the same tags on threads.
+// The general builder runs every pass on threads (atomic counts, lists sorted after): it
+// gives the serial topology, also around a hub whose lists take the sorts for long ones.
 TEST(MeshTopology, BuildOnThreadsEqualsSerialBuild)
 {
   int i = 0;
-  for (const subdtest::TestMesh& mesh : TagFixtures())
+  std::vector<subdtest::TestMesh> meshes = TagFixtures();
+  subdtest::TestMesh hub;
+  const Index n = 200;
+  hub.Points.assign(3 * (n + 1), 0.0);
+  hub.Offsets = { 0 };
+  for (Index k = 0; k < n; ++k)
+  {
+    hub.Vertices.insert(hub.Vertices.end(), { 0, 1 + k, 1 + (k + 1) % n });
+    hub.Offsets.push_back(static_cast<Index>(hub.Vertices.size()));
+  }
+  meshes.push_back(hub);
+  for (const subdtest::TestMesh& mesh : meshes)
   {
     const MeshTopology serial = Build(mesh);
     ExpectSameTopology(MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices, subdtest::ThreeThreadFor), serial,
