@@ -42,7 +42,9 @@ void FileByKey(Index numKeys, Index numItems, const Items& items, const Place& p
   const ParallelFor& parallelFor)
 {
   constexpr Index blocks = 4;
-  auto blockBegin = [numItems](Index b) { return static_cast<Index>(static_cast<std::int64_t>(numItems) * b / blocks); };
+  auto blockBegin = [numItems](Index b) {
+    return static_cast<Index>(static_cast<std::int64_t>(numItems) * b / blocks);
+  };
   std::vector<IndexArray> cursors(blocks);
   ForEachBlock(blocks, parallelFor, [&](Index b) {
     IndexArray& counts = cursors[b];
@@ -137,7 +139,7 @@ MeshTopology MeshTopology::Build(
   return topology;
 }
 
-// Every pass below runs per face, per vertex or per key range and writes only its own
+// Every pass below runs per face, per vertex or per block of items and writes only its own
 // entries, so the topology is the same for any number of threads.
 void MeshTopology::BuildVertexFaces(const ParallelFor& parallelFor)
 {
@@ -160,8 +162,8 @@ void MeshTopology::BuildVertexFaces(const ParallelFor& parallelFor)
 }
 
 // The half-edges of one vertex pair are filed under the pair's lower vertex and each
-// vertex's file is sorted by upper vertex and half-edge: linear in the mesh size for bounded valence, and O(k log k) for a vertex of
-// valence k, so even a 100k-valent hub stays fast.
+// vertex's file is sorted by upper vertex and half-edge: linear in the mesh size for bounded
+// valence, and O(k log k) for a vertex of valence k, so even a 100k-valent hub stays fast.
 MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(const ParallelFor& parallelFor) const
 {
   const size_t numHalfEdges = this->FaceVertices.size();
@@ -182,8 +184,8 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(const ParallelFor& par
   };
   LevelArray<std::uint64_t> files(numHalfEdges);
   IndexArray fileOffsets;
-  FileByKey(this->NumVertices, this->GetNumFaces(), halfEdges, [&files](Index slot, std::uint64_t key) { files[slot] = key; }, fileOffsets,
-    parallelFor);
+  auto place = [&files](Index slot, std::uint64_t key) { files[slot] = key; };
+  FileByKey(this->NumVertices, this->GetNumFaces(), halfEdges, place, fileOffsets, parallelFor);
 
   HalfEdgePairing pairing(numHalfEdges);
   parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
@@ -270,7 +272,11 @@ void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const ParallelFor
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     for (Index h = this->FaceOffsets[begin]; h < this->FaceOffsets[end]; ++h)
     {
-      this->FaceEdges[h] = this->FaceEdges[pairing[h].Representative];
+      const Index representative = pairing[h].Representative;
+      if (representative != h) // a representative's entry is read by other threads: not rewritten
+      {
+        this->FaceEdges[h] = this->FaceEdges[representative];
+      }
     }
   });
   this->NumNonManifoldEdges = 0;

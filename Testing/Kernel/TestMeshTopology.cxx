@@ -255,8 +255,8 @@ TEST(MeshTopology, Sqrt3ChildEqualsSearchedTopology)
   EXPECT_GT(closedForms, 10);
 }
 
-// The general builder runs every pass on threads (atomic counts, lists sorted after): it
-// gives the serial topology, also around a hub whose lists take the sorts for long ones.
+// The general builder runs every pass on threads (counting sorts by item blocks, half-edges
+// paired per vertex): it gives the serial topology, also around a hub whose lists are long.
 TEST(MeshTopology, BuildOnThreadsEqualsSerialBuild)
 {
   int i = 0;
