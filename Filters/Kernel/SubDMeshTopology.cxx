@@ -220,9 +220,9 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(const ParallelFor& par
 }
 
 // Edges are numbered in the order their first half-edges come walking the faces: a count
-// per face, a prefix sum, then each face numbers its own. The edge's tags come from its
-// pairing: one face is a boundary; more than two, or two running it the same way, are
-// non-manifold.
+// per face, a prefix sum, then each face numbers its own. Each edge's face offsets and tags
+// come from its pairing: one face is a boundary; more than two, or two running it the same
+// way, are non-manifold.
 void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const ParallelFor& parallelFor)
 {
   const Index numFaces = this->GetNumFaces();
@@ -279,6 +279,7 @@ void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const ParallelFor
       }
     }
   });
+  CountsToOffsets(this->EdgeFaceOffsets);
   this->NumNonManifoldEdges = 0;
   this->NumBoundaryEdges = 0;
   for (const EdgeTag& tag : this->EdgeTags)
@@ -291,7 +292,6 @@ void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const ParallelFor
 // An edge's faces in increasing order: its half-edges' ranks in their pairing.
 void MeshTopology::BuildEdgeFaces(const HalfEdgePairing& pairing, const ParallelFor& parallelFor)
 {
-  CountsToOffsets(this->EdgeFaceOffsets);
   this->EdgeFaces.resize(this->FaceEdges.size());
   parallelFor(0, this->GetNumFaces(), [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
