@@ -539,7 +539,7 @@ int vtkSubDSurfaceFilter::Execute(
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy, refineProgress,
           sharpFeatures || this->ProjectToLimit || limitGeometry ? subd::ChildTopology::Full
                                                                  : subd::ChildTopology::FacesOnly,
-          subd::LevelRows::Written))
+          this->LowMemory ? subd::LevelRows::WrittenFromGrandparent : subd::LevelRows::Written))
     {
       return aborted();
     }
@@ -942,5 +942,6 @@ void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CornerSharpnessArrayName: " << name(this->CornerSharpnessArrayName) << "\n";
   os << indent << "HoleArrayName: " << name(this->HoleArrayName) << "\n";
   os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
+  os << indent << "LowMemory: " << (this->LowMemory ? "On" : "Off") << "\n";
   os << indent << "NumberOfStencilBuilds: " << this->NumberOfStencilBuilds << "\n";
 }

@@ -46,6 +46,18 @@ public:
   Index WriteRow(Index row, Index* sources, double* weights) const;
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+  /// True for the rows ApplySmoothRow evaluates: face points, smooth edges (two faces, not
+  /// sharp), vertices with a closed fan and nothing sharp at or around them.
+  bool IsSmoothRow(Index row) const
+  {
+    if (row < this->Number.NumFaces)
+    {
+      return true;
+    }
+    const Index firstVertexPoint = this->Number.VertexPoint(0);
+    return row < firstVertexPoint ? IsSmoothEdge(this->Parent, row - this->Number.NumFaces)
+                                  : this->SmoothVertex[row - firstVertexPoint] != 0;
+  }
 
 private:
   Index WriteEdgeRow(Index e, Index* sources, double* weights) const;
@@ -65,6 +77,10 @@ template <typename T>
 bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
 {
   const MeshTopology& topo = this->Topology;
+  if (!this->IsSmoothRow(row))
+  {
+    return false;
+  }
   PointSum point;
   if (row < this->Number.NumFaces)
   {
@@ -81,10 +97,6 @@ bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T*
   if (row < firstVertexPoint)
   {
     const Index e = row - this->Number.NumFaces;
-    if (!IsSmoothEdge(this->Parent, e))
-    {
-      return false;
-    }
     const IndexSpan ef = topo.GetEdgeFaces(e);
     const Index* ev = topo.GetEdgeVertices(e);
     point.Add(0.25, parents + 3 * static_cast<size_t>(ev[0]));
@@ -95,10 +107,6 @@ bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T*
     return true;
   }
   const Index v = row - firstVertexPoint;
-  if (!this->SmoothVertex[v])
-  {
-    return false;
-  }
   const IndexSpan edges = topo.GetVertexEdges(v);
   const IndexSpan faces = topo.GetVertexFaces(v);
   const double n = faces.size();

@@ -438,20 +438,11 @@ Index MeshTopology::GetTriangleOppositeVertex(Index f, Index e) const
   return this->GetTriangleThirdVertex(f, ev[0], ev[1]);
 }
 
-Index MeshTopology::GetEdgePosition(Index f, Index e) const
+Index MeshTopology::GetEdgePositionInLargeFace(Index f, Index e) const
 {
+  // The edge starts or ends at the corner of its first vertex, found through that vertex's
+  // faces.
   const IndexSpan fe = this->GetFaceEdges(f);
-  if (fe.size() <= 16)
-  {
-    Index i = 0;
-    while (fe[i] != e)
-    {
-      ++i;
-    }
-    return i;
-  }
-  // A large polygon (a scan would make its edges quadratic): the edge starts or ends at the
-  // corner of its first vertex, found through that vertex's faces.
   const Index i = this->FindCorner(this->GetEdgeVertices(e)[0], f);
   return fe[i] == e ? i : (i == 0 ? fe.size() - 1 : i - 1);
 }

@@ -129,7 +129,20 @@ public:
 
   /// The position of edge e among face f's edges (e must be one of them). Edge i of a face
   /// joins its corners i and i + 1, so f runs e from GetFaceVertices(f)[i].
-  Index GetEdgePosition(Index f, Index e) const;
+  Index GetEdgePosition(Index f, Index e) const
+  {
+    const IndexSpan fe = this->GetFaceEdges(f);
+    if (fe.size() > 16)
+    {
+      return this->GetEdgePositionInLargeFace(f, e);
+    }
+    Index i = 0;
+    while (fe[i] != e)
+    {
+      ++i;
+    }
+    return i;
+  }
 
 private:
   // Splits that know their child's relations write them directly (SubDPrimalChildTopology,
@@ -138,6 +151,8 @@ private:
   friend class DualChildTopology;
   friend class Sqrt3ChildTopology;
 
+  // GetEdgePosition for faces of more than 16 sides (a scan would make them quadratic).
+  Index GetEdgePositionInLargeFace(Index f, Index e) const;
   static IndexSpan Span(const IndexArray& data, const IndexArray& offsets, Index i)
   {
     return IndexSpan{ data.data() + offsets[i], offsets[i + 1] - offsets[i] };

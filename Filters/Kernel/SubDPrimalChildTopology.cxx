@@ -1,158 +1,12 @@
 #include "SubDPrimalChildTopology.h"
 #include "SubDLevel.h"
+#include "SubDPrimalSplitShape.h"
 
 #include <algorithm>
 #include <numeric>
 
 namespace subd
 {
-namespace
-{
-// Walking the faces in order, an edge is first met in the first of its faces (they are
-// listed in increasing order).
-bool IsFirstFace(const MeshTopology& topo, Index e, Index f)
-{
-  return topo.GetEdgeFaces(e)[0] == f;
-}
-
-// How the quad split's children sit in the parent (SubDQuadSplit.h). Child edge keys: the
-// halves of parent edge e are HalfEdgeKey, the edge from the edge point of corner h's
-// leaving edge to the face point is 2E + h.
-struct QuadSplitShape
-{
-  const MeshTopology& Parent;
-  Index NumEdges = Parent.GetNumEdges();
-
-  static constexpr Index ChildFaceSize = 4;
-  static constexpr Index EdgePointFacesPerFace = 2; // children of a face its edge point is in
-  static constexpr Index EdgePointEdgesPerFace = 1; // edges inside a face at its edge point
-  Index GetNumFacePoints() const { return this->Parent.GetNumFaces(); }
-  Index GetNumInteriorEdges() const { return this->Parent.GetNumFaceCorners(); }
-  // The child of face f holding the point of f's corner c.
-  Index CornerChild(Index f, Index c) const { return this->Parent.GetFaceOffset(f) + c; }
-
-  // Every corner of f's children in order, with the key of the edge leaving it and whether
-  // the walk over the child faces meets that edge here first.
-  template <typename Visit>
-  void VisitCorners(Index f, Visit&& visit) const
-  {
-    const IndexSpan fv = this->Parent.GetFaceVertices(f), fe = this->Parent.GetFaceEdges(f);
-    const Index n = fv.size(), first = this->Parent.GetFaceOffset(f), inside = 2 * this->NumEdges;
-    for (Index j = 0; j < n; ++j)
-    {
-      const Index h = first + j, previous = j == 0 ? n - 1 : j - 1;
-      visit(4 * h, HalfEdgeKey(this->Parent, fe[j], fv[j]), IsFirstFace(this->Parent, fe[j], f));
-      visit(4 * h + 1, inside + h, j != n - 1);
-      visit(4 * h + 2, inside + first + previous, j == 0);
-      visit(4 * h + 3, HalfEdgeKey(this->Parent, fe[previous], fv[j]), IsFirstFace(this->Parent, fe[previous], f));
-    }
-  }
-  // The edges inside f, each with its two faces in increasing order.
-  template <typename Visit>
-  void VisitInteriorEdges(Index f, Visit&& visit) const
-  {
-    const Index first = this->Parent.GetFaceOffset(f), n = this->Parent.GetFaceSize(f);
-    for (Index h = first; h < first + n; ++h)
-    {
-      const bool last = h + 1 == first + n;
-      visit(2 * this->NumEdges + h, last ? first : h, last ? h : h + 1);
-    }
-  }
-  // The children of face g at the edge point of its edge i, in increasing order, and the
-  // edge point's corner in each: corner 1 in the child of corner i, 3 in the next one.
-  void WriteEdgePointFaces(Index g, Index i, Index* faces, Index* corners) const
-  {
-    const Index first = this->Parent.GetFaceOffset(g);
-    const bool wraps = i + 1 == this->Parent.GetFaceSize(g);
-    const Index leaving = first + i, entering = wraps ? first : leaving + 1;
-    faces[0] = wraps ? entering : leaving;
-    faces[1] = wraps ? leaving : entering;
-    corners[0] = wraps ? 3 : 1;
-    corners[1] = wraps ? 1 : 3;
-  }
-  void WriteEdgePointEdges(Index g, Index i, const Index* edgeOfKey, Index* edges) const
-  {
-    edges[0] = edgeOfKey[2 * this->NumEdges + this->Parent.GetFaceOffset(g) + i];
-  }
-  Index GetFacePointSize(Index f) const { return this->Parent.GetFaceSize(f); }
-  // The face point of f: corner 2 of each child of f, at the end of every edge inside f.
-  void WriteFacePoint(Index f, const Index* edgeOfKey, Index* faces, Index* corners, Index* edges) const
-  {
-    const Index first = this->Parent.GetFaceOffset(f), n = this->Parent.GetFaceSize(f);
-    for (Index j = 0; j < n; ++j)
-    {
-      faces[j] = first + j;
-      corners[j] = 2;
-      edges[j] = edgeOfKey[2 * this->NumEdges + first + j];
-    }
-    std::sort(edges, edges + n);
-  }
-};
-
-// How the triangle split's children sit in the parent (SubDTriangleSplit.h). Child edge
-// keys: halves as above, the edge inside triangle f opposite its child corner j 2E + 3f + j.
-struct TriangleSplitShape
-{
-  const MeshTopology& Parent;
-  Index NumEdges = Parent.GetNumEdges();
-
-  static constexpr Index ChildFaceSize = 3;
-  static constexpr Index EdgePointFacesPerFace = 3;
-  static constexpr Index EdgePointEdgesPerFace = 2;
-  Index GetNumFacePoints() const { return 0; }
-  Index GetNumInteriorEdges() const { return 3 * this->Parent.GetNumFaces(); }
-  Index CornerChild(Index f, Index c) const { return 4 * f + c; }
-
-  template <typename Visit>
-  void VisitCorners(Index f, Visit&& visit) const
-  {
-    const IndexSpan fv = this->Parent.GetFaceVertices(f), fe = this->Parent.GetFaceEdges(f);
-    const Index inside = 2 * this->NumEdges + 3 * f;
-    Index corner = 12 * f;
-    for (Index j = 0; j < 3; ++j, corner += 3)
-    {
-      const Index previous = j == 0 ? 2 : j - 1;
-      visit(corner, HalfEdgeKey(this->Parent, fe[j], fv[j]), IsFirstFace(this->Parent, fe[j], f));
-      visit(corner + 1, inside + j, true);
-      visit(corner + 2, HalfEdgeKey(this->Parent, fe[previous], fv[j]), IsFirstFace(this->Parent, fe[previous], f));
-    }
-    // The middle triangle: edge point of edge j to that of edge j + 1 is opposite corner j + 1.
-    visit(corner, inside + 1, false);
-    visit(corner + 1, inside + 2, false);
-    visit(corner + 2, inside, false);
-  }
-  template <typename Visit>
-  void VisitInteriorEdges(Index f, Visit&& visit) const
-  {
-    for (Index j = 0; j < 3; ++j)
-    {
-      visit(2 * this->NumEdges + 3 * f + j, 4 * f + j, 4 * f + 3);
-    }
-  }
-  // The edge point of edge i of g: corner 1 of child i, corner 2 of child i + 1, corner i
-  // of the middle triangle.
-  void WriteEdgePointFaces(Index g, Index i, Index* faces, Index* corners) const
-  {
-    const Index next = i == 2 ? 0 : i + 1;
-    const bool wraps = next < i;
-    faces[0] = 4 * g + (wraps ? next : i);
-    faces[1] = 4 * g + (wraps ? i : next);
-    corners[0] = wraps ? 2 : 1;
-    corners[1] = wraps ? 1 : 2;
-    faces[2] = 4 * g + 3;
-    corners[2] = i;
-  }
-  void WriteEdgePointEdges(Index g, Index i, const Index* edgeOfKey, Index* edges) const
-  {
-    const Index inside = 2 * this->NumEdges + 3 * g;
-    edges[0] = edgeOfKey[inside + i];
-    edges[1] = edgeOfKey[inside + (i == 2 ? 0 : i + 1)];
-  }
-  Index GetFacePointSize(Index) const { return 0; }
-  void WriteFacePoint(Index, const Index*, Index*, Index*, Index*) const {}
-};
-}
-
 // Has MeshTopology's arrays to itself (a friend): writes each one from the parent's.
 struct PrimalChildAssembly
 {
@@ -183,18 +37,11 @@ MeshTopology PrimalChildAssembly::Assemble(
     });
   };
 
-  // Edges: each parent face numbers the edges first met among its children from the sum of
-  // the counts of the faces before it.
-  IndexArray firstEdgeOfFace(static_cast<size_t>(numFaces) + 1);
-  firstEdgeOfFace[0] = 0;
-  forEachFace([&](Index f) {
-    Index count = 0;
-    shape.VisitCorners(f, [&count](Index, Index, bool isNew) { count += isNew; });
-    firstEdgeOfFace[f + 1] = count;
-  });
-  std::partial_sum(firstEdgeOfFace.begin(), firstEdgeOfFace.end(), firstEdgeOfFace.begin());
-
-  IndexArray edgeOfKey(static_cast<size_t>(numChildEdges));
+  // Edges: numbered by first meeting (NumberChildEdges); each new one takes its ends from
+  // the child face that meets it first.
+  const ChildEdgeNumbering numbering = NumberChildEdges(shape, parallelFor);
+  const IndexArray& firstEdgeOfFace = numbering.FirstEdgeOfFace;
+  const IndexArray& edgeOfKey = numbering.EdgeOfKey;
   child.EdgeVertices.resize(2 * static_cast<size_t>(numChildEdges));
   child.EdgeTags.resize(static_cast<size_t>(numChildEdges));
   child.EdgeFaceOffsets.resize(static_cast<size_t>(numChildEdges) + 1); // counts of every edge below
@@ -208,7 +55,6 @@ MeshTopology PrimalChildAssembly::Assemble(
         return;
       }
       const Index edge = next++;
-      edgeOfKey[key] = edge;
       const Index following = corner % size == size - 1 ? corner - (size - 1) : corner + 1;
       child.EdgeVertices[2 * static_cast<size_t>(edge)] = child.FaceVertices[corner];
       child.EdgeVertices[2 * static_cast<size_t>(edge) + 1] = child.FaceVertices[following];

@@ -18,18 +18,13 @@ Level SplitQuads(const Level& parent, ChildTopology depth, const ParallelFor& pa
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {
-      const IndexSpan fv = topo.GetFaceVertices(f);
-      const IndexSpan fe = topo.GetFaceEdges(f);
-      const Index n = fv.size();
+      const Index n = topo.GetFaceSize(f);
       const Index firstCorner = topo.GetFaceOffset(f);
       Index* out = childVertices.data() + 4 * static_cast<size_t>(firstCorner);
       for (Index j = 0; j < n; ++j, out += 4)
       {
         childOffsets[firstCorner + j] = 4 * (firstCorner + j);
-        out[0] = number.VertexPoint(fv[j]);
-        out[1] = number.EdgePoint(fe[j]);
-        out[2] = number.FacePoint(f);
-        out[3] = number.EdgePoint(fe[j == 0 ? n - 1 : j - 1]);
+        GetQuadSplitChild(topo, number, f, j, out);
       }
     }
   });

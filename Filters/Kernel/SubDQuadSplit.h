@@ -29,6 +29,17 @@ struct QuadSplitNumbering
   Index EdgePoint(Index e) const { return NumFaces + e; }
   Index VertexPoint(Index v) const { return NumFaces + NumEdges + v; }
 };
+
+/// The corners of the child of face f at its corner j (see above), in `number`'s points.
+inline void GetQuadSplitChild(const MeshTopology& topo, const QuadSplitNumbering& number, Index f, Index j, Index* out)
+{
+  const IndexSpan fv = topo.GetFaceVertices(f);
+  const IndexSpan fe = topo.GetFaceEdges(f);
+  out[0] = number.VertexPoint(fv[j]);
+  out[1] = number.EdgePoint(fe[j]);
+  out[2] = number.FacePoint(f);
+  out[3] = number.EdgePoint(fe[j == 0 ? fv.size() - 1 : j - 1]);
+}
 }
 
 #endif

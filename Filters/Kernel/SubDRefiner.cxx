@@ -9,12 +9,26 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   out.Stencils.clear();
   out.Stencils.reserve(static_cast<size_t>(levels > 0 ? levels : 0));
   Level current = std::move(base);
+  std::shared_ptr<const Level> grandparent; // current's parent, kept by the rows written from it
   for (int l = 0; l < levels; ++l)
   {
     const bool last = l + 1 == levels;
     const ChildTopology depth = last ? finest : ChildTopology::Full;
+    bool refined = false;
+    if (levelRows == LevelRows::WrittenFromGrandparent && last && depth == ChildTopology::FacesOnly && grandparent)
+    {
+      // The largest topology of all, the finest level's parent, need not outlive this step.
+      StencilTable rows;
+      Level child;
+      refined = scheme.RefineFromGrandparent(grandparent, current, rows, child);
+      if (refined)
+      {
+        out.Stencils.push_back(std::move(rows));
+        current = std::move(child);
+      }
+    }
     std::shared_ptr<const RowSource> writtenRows;
-    if (levelRows == LevelRows::Written)
+    if (levelRows != LevelRows::Stored && !refined)
     {
       auto parent = std::make_shared<Level>(std::move(current));
       writtenRows = scheme.MakeRowSource(parent);
@@ -22,13 +36,15 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
       {
         out.Stencils.push_back(StencilTable::FromSource(writtenRows));
         current = scheme.Split(*parent, depth);
+        grandparent = parent;
       }
       else
       {
         current = std::move(*parent); // the scheme stores its rows: refined below
+        grandparent = nullptr;
       }
     }
-    if (!writtenRows)
+    if (!writtenRows && !refined)
     {
       LevelRefinement refinement = scheme.RefineLevel(current, depth);
       out.Stencils.push_back(std::move(refinement.Stencils));

@@ -60,6 +60,12 @@ enum class LevelRows
            ///< (Scheme::MakeRowSource): a fraction of the memory and time of storing them,
            ///< and applied in parallel where building a table is serial. Each level's
            ///< topology is then kept (a third of the finest parent's, summed over levels).
+  WrittenFromGrandparent, ///< as Written, but the finest level's rows (and faces) are written
+                          ///< from its grandparent where the scheme can
+                          ///< (Scheme::RefineFromGrandparent), so the largest topology of all,
+                          ///< the finest level's parent's, is not kept: about a third less
+                          ///< peak memory, for slower evaluations (each row works out its
+                          ///< neighbourhood).
 };
 
 /// Refines `base` `levels` times. The finest level has faces only unless `finest` asks

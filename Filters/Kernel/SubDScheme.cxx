@@ -1,5 +1,6 @@
 #include "SubDScheme.h"
 #include "SubDLimitRules.h"
+#include "SubDCatmullClarkGrandchildRows.h"
 #include "SubDCatmullClarkRules.h"
 #include "SubDButterflyRules.h"
 #include "SubDDooSabinRules.h"
@@ -29,6 +30,16 @@ StencilTable CatmullClarkScheme::BuildStencils(const Level& parent) const
 std::shared_ptr<const RowSource> CatmullClarkScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
 {
   return std::make_shared<WrittenRows<CatmullClarkRowWriter>>(std::move(parent), this->GetParallelFor());
+}
+
+bool CatmullClarkScheme::RefineFromGrandparent(
+  std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const
+{
+  auto grandchildRows = std::make_shared<CatmullClarkGrandchildRows>(grandparent, parent, this->GetParallelFor());
+  parent = Level(); // the rows and the faces below come from the grandparent
+  child = SplitQuadsTwice(*grandparent, grandchildRows->GetParentEdgeNumbering(), this->GetParallelFor());
+  rows = StencilTable::FromSource(std::move(grandchildRows));
+  return true;
 }
 
 MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const

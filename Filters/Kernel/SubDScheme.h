@@ -52,6 +52,16 @@ public:
     (void)parent;
     return nullptr;
   }
+  /// For the last of several levels whose rows are written as applied (LevelRows::Written):
+  /// `parent`'s child (faces only) and its rows, written from `grandparent`, whose child
+  /// `parent` is (full topology), so that `parent`'s topology need not be kept: it is
+  /// released here. Returns false, changing nothing, for schemes that cannot (the default).
+  virtual bool RefineFromGrandparent(
+    std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const
+  {
+    (void)grandparent, (void)parent, (void)rows, (void)child;
+    return false;
+  }
   /// The counts of the next level of a mesh with the given counts (for size guards).
   virtual MeshCounts PredictChildCounts(const MeshCounts& parent) const = 0;
   /// False for schemes whose points only interpolate within a face (linear, bilinear): the
@@ -104,6 +114,9 @@ public:
   const char* GetName() const override { return "catmull-clark"; }
   StencilTable BuildStencils(const Level& parent) const override;
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
+  /// SubDCatmullClarkGrandchildRows.h.
+  bool RefineFromGrandparent(
+    std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const override;
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 

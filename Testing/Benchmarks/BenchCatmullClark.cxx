@@ -3,7 +3,8 @@
 // i.e. topology and interpolation) measured in the same run. Each measurement runs in a
 // forked child so its peak RSS is its own. Prints seconds, output faces per second, peak
 // RSS, the ratio OpenSubdiv time / SubD time, and for the filter the peak RSS over the
-// output's bytes and the time over the bandwidth bound (writing the output once). The last
+// output's bytes and the time over the bandwidth bound (writing the output once), also with
+// the filter's LowMemory option (the finest level's parent topology not kept). The last
 // row of a level re-applies the cached stencils after the points moved (the explorer's and
 // an animation's case), in output points per second.
 //
@@ -61,12 +62,13 @@ Work RunKernel(const Mesh& mesh, int level)
   return { seconds, double(h.Finest.Topology.GetNumFaces()) };
 }
 
-Work RunFilter(const Mesh& mesh, int level, int threads)
+Work RunFilter(const Mesh& mesh, int level, int threads, bool lowMemory = false)
 {
   vtkSMPTools::Initialize(threads);
   vtkNew<vtkSubDCatmullClarkFilter> filter;
   filter->SetInputData(mesh.PolyData);
   filter->SetNumberOfSubdivisions(level);
+  filter->SetLowMemory(lowMemory);
   const Clock::time_point start = Clock::now();
   filter->Update();
   const double seconds = subdbench::SecondsSince(start);
@@ -120,6 +122,7 @@ int main(int argc, char* argv[])
     const Result kernel = Measure([&] { return RunKernel(mesh, level); }, repeats);
     const Result filter1 = Measure([&] { return RunFilter(mesh, level, 1); }, repeats);
     const Result filter2 = Measure([&] { return RunFilter(mesh, level, 2); }, repeats);
+    const Result lean = Measure([&] { return RunFilter(mesh, level, 2, true); }, repeats);
     const Result reapply = Measure([&] { return RunReapply(mesh, level, 2); }, repeats);
     auto row = [&](const char* name, const Result& r) {
       std::printf("%-5d %-28s %10.4f %12.3g %10.1f %9.2f", level, name, r.Seconds, r.Faces / r.Seconds, r.PeakMiB,
@@ -135,9 +138,10 @@ int main(int argc, char* argv[])
     row("SubD kernel (1 thread)", kernel);
     row("SubD filter (1 thread)", filter1);
     row("SubD filter (2 threads)", filter2);
+    row("SubD LowMemory (2 threads)", lean);
     std::printf("%-5d %-28s %10.4f %12.3g points/s (re-applied stencils, points moved)\n", level,
       "SubD re-apply (2 threads)", reapply.Seconds, reapply.Faces / reapply.Seconds);
-    if (kernel.Faces != osd.Faces || filter2.Faces != osd.Faces)
+    if (kernel.Faces != osd.Faces || filter2.Faces != osd.Faces || lean.Faces != osd.Faces)
     {
       std::fprintf(stderr, "bench: face counts differ (%g, %g, %g)\n", osd.Faces, kernel.Faces, filter2.Faces);
       return 1;

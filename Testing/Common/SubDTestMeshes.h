@@ -68,6 +68,21 @@ inline subd::Level BaseLevel(const TestMesh& mesh, subd::BoundaryRule rule = sub
   return subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, rule);
 }
 
+/// Tags with every kind of sharp feature: every fifth edge semi-sharp (1.6, decaying to
+/// smooth within two levels), every seventh of the others infinitely sharp, vertex 0
+/// semi-sharp (2.3), under `method`.
+inline subd::BaseTags MixedSharpnessTags(const subd::MeshTopology& topology, subd::CreaseMethod method)
+{
+  subd::BaseTags tags;
+  tags.Creasing = method;
+  tags.EdgeSharpness.resize(static_cast<size_t>(topology.GetNumEdges()));
+  for (size_t e = 0; e < tags.EdgeSharpness.size(); ++e)
+    tags.EdgeSharpness[e] = e % 5 == 0 ? 1.6f : (e % 7 == 0 ? subd::SharpnessInfinite : 0.0f);
+  tags.VertexSharpness.assign(static_cast<size_t>(topology.GetNumVertices()), 0.0f);
+  tags.VertexSharpness[0] = 2.3f;
+  return tags;
+}
+
 /// The rows of `table` applied to xyz points (one level down, or limit/tangent rows).
 inline std::vector<double> ApplyToPoints(const subd::StencilTable& table, const std::vector<double>& points)
 {

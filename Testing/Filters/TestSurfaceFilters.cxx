@@ -641,3 +641,62 @@ TYPED_TEST(AnySurfaceFilter, PrintSelfNamesOptions)
   EXPECT_NE(os.str().find("BoundaryRule: None"), std::string::npos);
   EXPECT_NE(os.str().find("NumberOfSubdivisions: 1"), std::string::npos);
 }
+
+// LowMemory (the finest level written from the level two above, the one between not kept)
+// gives the default output bit for bit: points, point data, faces, parent cell ids, on an
+// open mesh with n-gons, and again when only the input points move (re-applied stencils).
+TEST(CatmullClarkFilter, LowMemoryGivesTheSameOutput)
+{
+  vtkSmartPointer<vtkPolyData> input = subdtest::ToPolyData(subdtest::House(true).Jitter(0.1));
+  vtkNew<vtkDoubleArray> temperature;
+  temperature->SetName("Temperature");
+  temperature->SetNumberOfComponents(2);
+  temperature->SetNumberOfTuples(input->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+    temperature->SetTuple2(i, std::sin(1.3 * i), std::cos(0.4 * i));
+  input->GetPointData()->AddArray(temperature);
+  for (int levels = 1; levels <= 3; ++levels)
+  {
+    vtkNew<vtkSubDCatmullClarkFilter> fast, lean;
+    for (vtkSubDCatmullClarkFilter* filter : { fast.Get(), lean.Get() })
+    {
+      filter->SetInputData(input);
+      filter->SetNumberOfSubdivisions(levels);
+      filter->GenerateParentCellIdsOn();
+    }
+    lean->LowMemoryOn();
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      if (pass == 1)
+      {
+        for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+        {
+          double p[3];
+          input->GetPoint(i, p);
+          input->GetPoints()->SetPoint(i, p[0] * 1.1, p[1] - 0.2 * p[2], p[2]);
+        }
+        input->GetPoints()->Modified();
+      }
+      fast->Update();
+      lean->Update();
+      vtkPolyData* a = fast->GetOutput();
+      vtkPolyData* b = lean->GetOutput();
+      const std::string what = "levels " + std::to_string(levels) + " pass " + std::to_string(pass);
+      ASSERT_GT(a->GetNumberOfPolys(), 0) << what;
+      EXPECT_EQ(subdtest::Coordinates(a), subdtest::Coordinates(b)) << what;
+      EXPECT_EQ(subdtest::Faces(a), subdtest::Faces(b)) << what;
+      auto values = [](vtkDataSetAttributes* data, const char* name) {
+        vtkDataArray* array = data->GetArray(name);
+        std::vector<double> out;
+        for (vtkIdType i = 0; array && i < array->GetNumberOfValues(); ++i)
+          out.push_back(array->GetVariantValue(i).ToDouble());
+        return out;
+      };
+      EXPECT_EQ(values(a->GetPointData(), "Temperature"), values(b->GetPointData(), "Temperature")) << what;
+      EXPECT_FALSE(values(a->GetPointData(), "Temperature").empty()) << what;
+      EXPECT_EQ(values(a->GetCellData(), "ParentCellId"), values(b->GetCellData(), "ParentCellId")) << what;
+      EXPECT_FALSE(values(a->GetCellData(), "ParentCellId").empty()) << what;
+    }
+    EXPECT_EQ(lean->GetNumberOfStencilBuilds(), 1) << levels;
+  }
+}

@@ -524,9 +524,10 @@ TEST(Level, SmoothClosedVerticesAgreeWithThePerVertexTest)
   EXPECT_LT(smooth, tested);
 }
 
-// Every level's rows written as they are applied (LevelRows::Written, what the filters use)
-// give bit for bit the points the stored table gives, with semi-sharp and sharp creases
-// and corners under both crease methods, for 3 double and 5 float components.
+// Every level's rows written as they are applied (LevelRows::Written, what the filters use,
+// and WrittenFromGrandparent, what they use with LowMemory) give bit for bit the points,
+// faces, holes and origins the stored table gives, with semi-sharp and sharp creases and
+// corners under both crease methods, for 3 double and 5 float components.
 TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
 {
   const auto scheme = GetParam().Make();
@@ -536,32 +537,32 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
     for (const subdtest::TestMesh& mesh : Fixtures())
     {
       const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
-      subd::BaseTags tags;
-      tags.Creasing = method;
-      tags.EdgeSharpness.resize(static_cast<size_t>(topology.GetNumEdges()));
-      for (size_t e = 0; e < tags.EdgeSharpness.size(); ++e)
-        tags.EdgeSharpness[e] = e % 5 == 0 ? 1.6f : (e % 7 == 0 ? subd::SharpnessInfinite : 0.0f);
-      tags.VertexSharpness.assign(static_cast<size_t>(topology.GetNumVertices()), 0.0f);
-      tags.VertexSharpness[0] = 2.3f;
+      const subd::BaseTags tags = subdtest::MixedSharpnessTags(topology, method);
       std::vector<float> values(static_cast<size_t>(mesh.NumVertices()) * 5);
       for (size_t i = 0; i < values.size(); ++i)
         values[i] = static_cast<float>(std::sin(0.7 * i));
       for (int levels = 1; levels <= 3; ++levels)
       {
-        subd::Hierarchy stored, written;
+        subd::Hierarchy stored;
         subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, stored);
-        subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, written, nullptr,
-          subd::ChildTopology::FacesOnly, subd::LevelRows::Written);
-        const bool writes = scheme->MakeRowSource(std::make_shared<subd::Level>()) != nullptr;
-        for (const subd::StencilTable& table : written.Stencils)
-          EXPECT_EQ(table.IsStored(), !writes);
-        ASSERT_EQ(written.GetNumFinestPoints(), stored.GetNumFinestPoints());
-        ASSERT_EQ(written.Finest.Topology.GetFaceVertexArray(), stored.Finest.Topology.GetFaceVertexArray());
-        EXPECT_EQ(Evaluate(written, mesh.Points), Evaluate(stored, mesh.Points)) << mesh.Name << " L" << levels;
-        std::vector<float> a(static_cast<size_t>(stored.GetNumFinestPoints()) * 5), b(a.size());
-        stored.Evaluate(values.data(), 5, a.data());
-        written.Evaluate(values.data(), 5, b.data());
-        EXPECT_EQ(a, b) << mesh.Name << " L" << levels;
+        for (subd::LevelRows rows : { subd::LevelRows::Written, subd::LevelRows::WrittenFromGrandparent })
+        {
+          subd::Hierarchy written;
+          subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, written, nullptr,
+            subd::ChildTopology::FacesOnly, rows);
+          const bool writes = scheme->MakeRowSource(std::make_shared<subd::Level>()) != nullptr;
+          for (const subd::StencilTable& table : written.Stencils)
+            EXPECT_EQ(table.IsStored(), !writes);
+          ASSERT_EQ(written.GetNumFinestPoints(), stored.GetNumFinestPoints());
+          ASSERT_EQ(written.Finest.Topology.GetFaceVertexArray(), stored.Finest.Topology.GetFaceVertexArray());
+          EXPECT_EQ(Evaluate(written, mesh.Points), Evaluate(stored, mesh.Points)) << mesh.Name << " L" << levels;
+          std::vector<float> a(static_cast<size_t>(stored.GetNumFinestPoints()) * 5), b(a.size());
+          stored.Evaluate(values.data(), 5, a.data());
+          written.Evaluate(values.data(), 5, b.data());
+          EXPECT_EQ(a, b) << mesh.Name << " L" << levels;
+          EXPECT_EQ(written.Finest.FaceOrigin, stored.Finest.FaceOrigin) << mesh.Name << " L" << levels;
+          EXPECT_EQ(written.Finest.FaceIsHole, stored.Finest.FaceIsHole) << mesh.Name << " L" << levels;
+        }
       }
     }
   }
