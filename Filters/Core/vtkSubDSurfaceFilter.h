@@ -248,7 +248,7 @@ public:
 
   ///@{
   /**
-   * Trade speed for memory (default off). On, the schemes that can (Catmull-Clark) write the
+   * Trade speed for memory (default off). On, the schemes that can (Catmull-Clark, Loop) write the
    * finest level from the level two above, so that the topology of the level just above,
    * the largest of the refinement, is never kept: about a third less peak memory when no
    * sharp features, limit positions or limit geometry ask for the finest level's topology,

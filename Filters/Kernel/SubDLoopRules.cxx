@@ -28,10 +28,14 @@ LoopRowWriter::LoopRowWriter(const Level& parent, const ParallelFor& parallelFor
   , MaxRowSize(std::max<Index>(4, 1 + parent.Topology.GetMaxValence()))
   , SmoothVertex(FindSmoothClosedVertices(parent, parallelFor))
 {
-  this->Betas.resize(64);
+}
+
+LoopBetas::LoopBetas()
+  : Table(64)
+{
   for (Index n = 1; n < 64; ++n)
   {
-    this->Betas[n] = n == 6 ? 0.0625 : LoopBeta(n);
+    this->Table[n] = n == 6 ? 0.0625 : LoopBeta(n);
   }
 }
 

@@ -24,10 +24,24 @@
 #include "SubDStencilTable.h"
 #include "SubDTriangleSplit.h"
 
+#include <vector>
+
 namespace subd
 {
 /// Loop's weight per neighbour of a smooth vertex of valence n.
 SUBDKERNEL_EXPORT double LoopBeta(Index n);
+
+/// LoopBeta as the rows use it: 1/16 exactly for the regular valence 6, the small valences'
+/// values computed once.
+class SUBDKERNEL_EXPORT LoopBetas
+{
+public:
+  LoopBetas();
+  double operator()(Index n) const { return n < static_cast<Index>(this->Table.size()) ? this->Table[n] : LoopBeta(n); }
+
+private:
+  std::vector<double> Table;
+};
 
 /// Requires every face of `parent` to be a triangle.
 SUBDKERNEL_EXPORT StencilTable BuildLoopStencils(const Level& parent);
@@ -46,18 +60,21 @@ public:
   Index WriteRow(Index row, Index* sources, double* weights) const;
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+  /// True for the rows ApplySmoothRow evaluates: smooth edges (two faces, not sharp),
+  /// vertices with a closed fan and nothing sharp at or around them.
+  bool IsSmoothRow(Index row) const
+  {
+    const Index firstVertexPoint = this->Number.VertexPoint(0);
+    return row < firstVertexPoint ? IsSmoothEdge(this->Parent, row) : this->SmoothVertex[row - firstVertexPoint] != 0;
+  }
 
 private:
-  double Beta(Index n) const
-  {
-    return n < static_cast<Index>(this->Betas.size()) ? this->Betas[n] : LoopBeta(n);
-  }
 
   const Level& Parent;
   const MeshTopology& Topology;
   TriangleSplitNumbering Number;
   Index MaxRowSize;
-  std::vector<double> Betas; // Beta(n) for small valences (6: 1/16 exactly)
+  LoopBetas Beta;
   std::vector<std::uint8_t> SmoothVertex; // FindSmoothClosedVertices
 };
 
@@ -67,16 +84,16 @@ private:
 template <typename T>
 bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
 {
+  if (!this->IsSmoothRow(row))
+  {
+    return false;
+  }
   const MeshTopology& topo = this->Topology;
   PointSum point;
   const Index firstVertexPoint = this->Number.VertexPoint(0);
   if (row < firstVertexPoint)
   {
     const Index e = row;
-    if (!IsSmoothEdge(this->Parent, e))
-    {
-      return false;
-    }
     const IndexSpan ef = topo.GetEdgeFaces(e);
     const Index* ev = topo.GetEdgeVertices(e);
     point.Add(0.375, parents + 3 * static_cast<size_t>(ev[0]));
@@ -87,10 +104,6 @@ bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T* childre
     return true;
   }
   const Index v = row - firstVertexPoint;
-  if (!this->SmoothVertex[v])
-  {
-    return false;
-  }
   const IndexSpan edges = topo.GetVertexEdges(v);
   const Index n = edges.size();
   const double beta = this->Beta(n);

@@ -1,4 +1,5 @@
 #include "SubDMeshTopology.h"
+#include "SubDShortLists.h"
 
 #include <algorithm>
 #include <numeric>
@@ -68,29 +69,6 @@ void FileByKey(Index numKeys, Index numItems, const Items& items, const Place& p
     IndexArray& cursor = cursors[b];
     items(blockBegin(b), blockBegin(b + 1), [&](Index key, const auto& payload) { place(cursor[key]++, payload); });
   });
-}
-
-// Sorts the few values of a typical vertex's list by insertion (std::sort's set-up costs
-// more than the sort itself there), a longer list with std::sort.
-template <typename T>
-void SortShortList(T* first, T* last)
-{
-  constexpr std::ptrdiff_t shortList = 32;
-  if (last - first > shortList)
-  {
-    std::sort(first, last);
-    return;
-  }
-  for (T* i = first + (first != last); i < last; ++i)
-  {
-    const T value = *i;
-    T* j = i;
-    for (; j > first && *(j - 1) > value; --j)
-    {
-      *j = *(j - 1);
-    }
-    *j = value;
-  }
 }
 }
 

@@ -149,61 +149,13 @@ MeshTopology PrimalChildAssembly::Assemble(
   child.VertexFaces.resize(child.FaceVertices.size());
   child.VertexFaceCorners.resize(child.FaceVertices.size());
   child.VertexEdges.resize(child.EdgeVertices.size());
-  auto facesOf = [&child](Index v) { return child.VertexFaces.data() + child.VertexFaceOffsets[v]; };
-  auto cornersOf = [&child](Index v) { return child.VertexFaceCorners.data() + child.VertexFaceOffsets[v]; };
-  auto edgesOf = [&child](Index v) { return child.VertexEdges.data() + child.VertexEdgeOffsets[v]; };
-
-  parallelFor(0, firstEdgePoint, [&](Index begin, Index end) {
-    for (Index f = begin; f < end; ++f)
+  parallelFor(0, numChildVertices, [&](Index begin, Index end) {
+    for (Index point = begin; point < end; ++point)
     {
-      shape.WriteFacePoint(f, edgeOfKey.data(), facesOf(f), cornersOf(f), edgesOf(f));
-    }
-  });
-  // The children of the faces of an edge come in the faces' (increasing) order, so the
-  // edge point's faces are sorted face by face; its few edges are sorted at the end.
-  parallelFor(0, numEdges, [&](Index begin, Index end) {
-    for (Index e = begin; e < end; ++e)
-    {
-      const Index point = firstEdgePoint + e;
-      Index* faces = facesOf(point);
-      Index* corners = cornersOf(point);
-      Index* edges = edgesOf(point);
-      edges[0] = edgeOfKey[2 * e];
-      edges[1] = edgeOfKey[2 * e + 1];
-      const IndexSpan parentFaces = parent.GetEdgeFaces(e);
-      for (Index k = 0; k < parentFaces.size(); ++k)
-      {
-        const Index g = parentFaces[k];
-        const Index i = parent.GetEdgePosition(g, e);
-        shape.WriteEdgePointFaces(
-          g, i, faces + Shape::EdgePointFacesPerFace * k, corners + Shape::EdgePointFacesPerFace * k);
-        shape.WriteEdgePointEdges(g, i, edgeOfKey.data(), edges + 2 + Shape::EdgePointEdgesPerFace * k);
-      }
-      std::sort(edges, edges + 2 + Shape::EdgePointEdgesPerFace * parentFaces.size());
-    }
-  });
-  // A vertex point sits at corner 0 of the child at its vertex's corner in each face, and
-  // ends the halves of its vertex's edges.
-  parallelFor(0, numVertices, [&](Index begin, Index end) {
-    for (Index v = begin; v < end; ++v)
-    {
-      const Index point = firstVertexPoint + v;
-      const IndexSpan parentFaces = parent.GetVertexFaces(v);
-      const IndexSpan parentCorners = parent.GetVertexFaceCorners(v);
-      Index* faces = facesOf(point);
-      Index* corners = cornersOf(point);
-      for (Index k = 0; k < parentFaces.size(); ++k)
-      {
-        faces[k] = shape.CornerChild(parentFaces[k], parentCorners[k]);
-        corners[k] = 0;
-      }
-      const IndexSpan parentEdges = parent.GetVertexEdges(v);
-      Index* edges = edgesOf(point);
-      for (Index k = 0; k < parentEdges.size(); ++k)
-      {
-        edges[k] = edgeOfKey[HalfEdgeKey(parent, parentEdges[k], v)];
-      }
-      std::sort(edges, edges + parentEdges.size());
+      Index numFaces, numEdges;
+      WriteChildPointRelations(shape, edgeOfKey.data(), point, child.VertexFaces.data() + child.VertexFaceOffsets[point],
+        child.VertexFaceCorners.data() + child.VertexFaceOffsets[point],
+        child.VertexEdges.data() + child.VertexEdgeOffsets[point], numFaces, numEdges);
     }
   });
 

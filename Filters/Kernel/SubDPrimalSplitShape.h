@@ -8,13 +8,16 @@
 // parent edge e is first met in the first face of e, an edge inside a face in that face.
 // Counting each parent face's new edges and summing the counts gives every parent face the
 // first number of its edges (NumberChildEdges). Shared by the child topology
-// (SubDPrimalChildTopology.h) and by the rows written two levels down (SubDCatmullClarkGrandchildRows.h).
+// (SubDPrimalChildTopology.h) and by the rows written two levels down (SubDGrandchildRows.h).
 #ifndef SubDPrimalSplitShape_h
 #define SubDPrimalSplitShape_h
 
 #include "SubDLevel.h"
 #include "SubDMeshTopology.h"
 #include "SubDParallel.h"
+#include "SubDQuadSplit.h"
+#include "SubDShortLists.h"
+#include "SubDTriangleSplit.h"
 
 #include <algorithm>
 #include <numeric>
@@ -80,11 +83,27 @@ struct QuadSplitShape
   void VisitInteriorEdges(Index f, Visit&& visit) const
   {
     const Index first = this->Parent.GetFaceOffset(f), n = this->Parent.GetFaceSize(f);
-    for (Index h = first; h < first + n; ++h)
+    for (Index key = 2 * this->NumEdges + first; key < 2 * this->NumEdges + first + n; ++key)
     {
-      const bool last = h + 1 == first + n;
-      visit(2 * this->NumEdges + h, last ? first : h, last ? h : h + 1);
+      Index faces[2];
+      this->GetInteriorEdgeFaces(f, key, faces);
+      visit(key, faces[0], faces[1]);
     }
+  }
+  // The two faces, in increasing order, of the edge inside f with key `key`: the children
+  // at the corners its edge point lies between.
+  void GetInteriorEdgeFaces(Index f, Index key, Index* faces) const
+  {
+    const Index first = this->Parent.GetFaceOffset(f), h = key - 2 * this->NumEdges;
+    const bool last = h + 1 == first + this->Parent.GetFaceSize(f);
+    faces[0] = last ? first : h;
+    faces[1] = last ? h : h + 1;
+  }
+  Index GetNumChildren(Index f) const { return this->Parent.GetFaceSize(f); }
+  // The corners of f's child j, in the split's child points.
+  void GetChildCorners(Index f, Index j, Index* corners) const
+  {
+    GetQuadSplitChild(this->Parent, QuadSplitNumbering{ this->Parent.GetNumFaces(), this->NumEdges }, f, j, corners);
   }
   // The children of face g at the edge point of its edge i, in increasing order, and the
   // edge point's corner in each: corner 1 in the child of corner i, 3 in the next one.
@@ -134,28 +153,59 @@ struct TriangleSplitShape
   template <typename Visit>
   void VisitCorners(Index f, Visit&& visit) const
   {
-    const IndexSpan fv = this->Parent.GetFaceVertices(f), fe = this->Parent.GetFaceEdges(f);
-    const Index inside = 2 * this->NumEdges + 3 * f;
-    Index corner = 12 * f;
-    for (Index j = 0; j < 3; ++j, corner += 3)
+    const IndexSpan fe = this->Parent.GetFaceEdges(f);
+    for (Index j = 0; j < 4; ++j)
     {
-      const Index previous = j == 0 ? 2 : j - 1;
-      visit(corner, HalfEdgeKey(this->Parent, fe[j], fv[j]), IsFirstFace(this->Parent, fe[j], f));
-      visit(corner + 1, inside + j, true);
-      visit(corner + 2, HalfEdgeKey(this->Parent, fe[previous], fv[j]), IsFirstFace(this->Parent, fe[previous], f));
+      Index keys[3];
+      this->GetChildEdgeKeys(f, j, keys);
+      const Index corner = 12 * f + 3 * j;
+      const bool middle = j == 3;
+      visit(corner, keys[0], !middle && IsFirstFace(this->Parent, fe[j], f));
+      visit(corner + 1, keys[1], !middle);
+      visit(corner + 2, keys[2], !middle && IsFirstFace(this->Parent, fe[j == 0 ? 2 : j - 1], f));
     }
-    // The middle triangle: edge point of edge j to that of edge j + 1 is opposite corner j + 1.
-    visit(corner, inside + 1, false);
-    visit(corner + 1, inside + 2, false);
-    visit(corner + 2, inside, false);
+  }
+  // The keys of the edges leaving the corners of f's child j: for a corner child, the half of
+  // edge j at v_j, the edge inside f opposite the child's corner, the half of edge j - 1 at
+  // v_j; for the middle triangle (j = 3), from the edge point of edge j to that of edge j + 1
+  // is the edge opposite corner j + 1.
+  void GetChildEdgeKeys(Index f, Index j, Index* keys) const
+  {
+    const Index inside = 2 * this->NumEdges + 3 * f;
+    if (j == 3)
+    {
+      keys[0] = inside + 1;
+      keys[1] = inside + 2;
+      keys[2] = inside;
+      return;
+    }
+    const IndexSpan fv = this->Parent.GetFaceVertices(f), fe = this->Parent.GetFaceEdges(f);
+    keys[0] = HalfEdgeKey(this->Parent, fe[j], fv[j]);
+    keys[1] = inside + j;
+    keys[2] = HalfEdgeKey(this->Parent, fe[j == 0 ? 2 : j - 1], fv[j]);
   }
   template <typename Visit>
   void VisitInteriorEdges(Index f, Visit&& visit) const
   {
-    for (Index j = 0; j < 3; ++j)
+    for (Index key = 2 * this->NumEdges + 3 * f; key < 2 * this->NumEdges + 3 * f + 3; ++key)
     {
-      visit(2 * this->NumEdges + 3 * f + j, 4 * f + j, 4 * f + 3);
+      Index faces[2];
+      this->GetInteriorEdgeFaces(f, key, faces);
+      visit(key, faces[0], faces[1]);
     }
+  }
+  // The edge inside f opposite the corner of its child j lies between that child and the
+  // middle triangle.
+  void GetInteriorEdgeFaces(Index f, Index key, Index* faces) const
+  {
+    faces[0] = 4 * f + (key - 2 * this->NumEdges - 3 * f);
+    faces[1] = 4 * f + 3;
+  }
+  Index GetNumChildren(Index) const { return 4; }
+  // The corners of f's child j, in the split's child points.
+  void GetChildCorners(Index f, Index j, Index* corners) const
+  {
+    GetTriangleSplitChild(this->Parent, TriangleSplitNumbering{ this->NumEdges }, f, j, corners);
   }
   // The edge point of edge i of g: corner 1 of child i, corner 2 of child i + 1, corner i
   // of the middle triangle.
@@ -179,6 +229,61 @@ struct TriangleSplitShape
   Index GetFacePointSize(Index) const { return 0; }
   void WriteFacePoint(Index, const Index*, Index*, Index*, Index*) const {}
 };
+
+/// The faces around child point `point` in increasing order, with the point's corner in each,
+/// and its edges, sorted: the lists MeshTopology::Build gives. Writes their sizes.
+template <typename Shape>
+void WriteChildPointRelations(const Shape& shape, const Index* edgeOfKey, Index point, Index* faces,
+  Index* corners, Index* edges, Index& numFaces, Index& numEdges)
+{
+  const MeshTopology& parent = shape.Parent;
+  const Index firstEdgePoint = shape.GetNumFacePoints();
+  const Index firstVertexPoint = firstEdgePoint + shape.NumEdges;
+  if (point < firstEdgePoint)
+  {
+    shape.WriteFacePoint(point, edgeOfKey, faces, corners, edges);
+    numFaces = numEdges = shape.GetFacePointSize(point);
+    return;
+  }
+  if (point < firstVertexPoint)
+  {
+    // The children of the faces of an edge come in the faces' (increasing) order, so the
+    // edge point's faces are sorted face by face; its few edges are sorted at the end.
+    const Index e = point - firstEdgePoint;
+    edges[0] = edgeOfKey[2 * e];
+    edges[1] = edgeOfKey[2 * e + 1];
+    const IndexSpan parentFaces = parent.GetEdgeFaces(e);
+    for (Index k = 0; k < parentFaces.size(); ++k)
+    {
+      const Index g = parentFaces[k];
+      const Index i = parent.GetEdgePosition(g, e);
+      shape.WriteEdgePointFaces(g, i, faces + Shape::EdgePointFacesPerFace * k, corners + Shape::EdgePointFacesPerFace * k);
+      shape.WriteEdgePointEdges(g, i, edgeOfKey, edges + 2 + Shape::EdgePointEdgesPerFace * k);
+    }
+    numFaces = Shape::EdgePointFacesPerFace * parentFaces.size();
+    numEdges = 2 + Shape::EdgePointEdgesPerFace * parentFaces.size();
+    SortShortList(edges, edges + numEdges);
+    return;
+  }
+  // A vertex point sits at corner 0 of the child at its vertex's corner in each face, and
+  // ends the halves of its vertex's edges.
+  const Index v = point - firstVertexPoint;
+  const IndexSpan parentFaces = parent.GetVertexFaces(v);
+  const IndexSpan parentCorners = parent.GetVertexFaceCorners(v);
+  for (Index k = 0; k < parentFaces.size(); ++k)
+  {
+    faces[k] = shape.CornerChild(parentFaces[k], parentCorners[k]);
+    corners[k] = 0;
+  }
+  const IndexSpan parentEdges = parent.GetVertexEdges(v);
+  for (Index k = 0; k < parentEdges.size(); ++k)
+  {
+    edges[k] = edgeOfKey[HalfEdgeKey(parent, parentEdges[k], v)];
+  }
+  numFaces = parentFaces.size();
+  numEdges = parentEdges.size();
+  SortShortList(edges, edges + numEdges);
+}
 
 /// The child edges' numbers: FirstEdgeOfFace[f] is the first number of the edges first met
 /// among face f's children (F + 1 entries, the last the number of child edges), EdgeOfKey

@@ -1,6 +1,6 @@
 #include "SubDScheme.h"
 #include "SubDLimitRules.h"
-#include "SubDCatmullClarkGrandchildRows.h"
+#include "SubDGrandchildRows.h"
 #include "SubDCatmullClarkRules.h"
 #include "SubDButterflyRules.h"
 #include "SubDDooSabinRules.h"
@@ -32,14 +32,31 @@ std::shared_ptr<const RowSource> CatmullClarkScheme::MakeRowSource(std::shared_p
   return std::make_shared<WrittenRows<CatmullClarkRowWriter>>(std::move(parent), this->GetParallelFor());
 }
 
+namespace
+{
+// Scheme::RefineFromGrandparent for the schemes with GrandchildRows.
+bool RefineFromGrandparentWith(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent, Level& parent,
+  StencilTable& rows, Level& child, const ParallelFor& parallelFor)
+{
+  auto grandchildRows = std::make_shared<GrandchildRows>(scheme, grandparent, parent, parallelFor);
+  parent = Level(); // the rows and the faces below come from the grandparent
+  child = SplitTwice(scheme, *grandparent, grandchildRows->GetParentEdgeNumbering(), parallelFor);
+  rows = StencilTable::FromSource(std::move(grandchildRows));
+  return true;
+}
+}
+
 bool CatmullClarkScheme::RefineFromGrandparent(
   std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const
 {
-  auto grandchildRows = std::make_shared<CatmullClarkGrandchildRows>(grandparent, parent, this->GetParallelFor());
-  parent = Level(); // the rows and the faces below come from the grandparent
-  child = SplitQuadsTwice(*grandparent, grandchildRows->GetParentEdgeNumbering(), this->GetParallelFor());
-  rows = StencilTable::FromSource(std::move(grandchildRows));
-  return true;
+  return RefineFromGrandparentWith(
+    GrandchildScheme::CatmullClark, std::move(grandparent), parent, rows, child, this->GetParallelFor());
+}
+
+bool LoopScheme::RefineFromGrandparent(
+  std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const
+{
+  return RefineFromGrandparentWith(GrandchildScheme::Loop, std::move(grandparent), parent, rows, child, this->GetParallelFor());
 }
 
 MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const

@@ -114,7 +114,7 @@ public:
   const char* GetName() const override { return "catmull-clark"; }
   StencilTable BuildStencils(const Level& parent) const override;
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
-  /// SubDCatmullClarkGrandchildRows.h.
+  /// SubDGrandchildRows.h.
   bool RefineFromGrandparent(
     std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const override;
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
@@ -139,6 +139,9 @@ public:
   const char* GetName() const override { return "loop"; }
   StencilTable BuildStencils(const Level& parent) const override;
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
+  /// SubDGrandchildRows.h.
+  bool RefineFromGrandparent(
+    std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const override;
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 

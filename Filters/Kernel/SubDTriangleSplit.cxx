@@ -15,18 +15,11 @@ Level SplitTriangles(const Level& parent, ChildTopology depth, const ParallelFor
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {
-      const IndexSpan fv = topo.GetFaceVertices(f);
-      const IndexSpan fe = topo.GetFaceEdges(f);
       Index* out = childVertices.data() + 12 * static_cast<size_t>(f);
-      for (Index j = 0; j < 3; ++j, out += 3)
+      for (Index j = 0; j < 4; ++j, out += 3)
       {
-        out[0] = number.VertexPoint(fv[j]);
-        out[1] = number.EdgePoint(fe[j]);
-        out[2] = number.EdgePoint(fe[j == 0 ? 2 : j - 1]);
+        GetTriangleSplitChild(topo, number, f, j, out);
       }
-      out[0] = number.EdgePoint(fe[0]);
-      out[1] = number.EdgePoint(fe[1]);
-      out[2] = number.EdgePoint(fe[2]);
       for (Index c = 4 * f; c < 4 * f + 4; ++c)
       {
         childOffsets[c] = 3 * c;

@@ -27,6 +27,25 @@ struct TriangleSplitNumbering
   Index EdgePoint(Index e) const { return e; }
   Index VertexPoint(Index v) const { return NumEdges + v; }
 };
+
+/// The corners of the child j (0, 1, 2: at corner j; 3: the middle) of triangle f (see
+/// above), in `number`'s points.
+inline void GetTriangleSplitChild(
+  const MeshTopology& topo, const TriangleSplitNumbering& number, Index f, Index j, Index* out)
+{
+  const IndexSpan fv = topo.GetFaceVertices(f);
+  const IndexSpan fe = topo.GetFaceEdges(f);
+  if (j == 3)
+  {
+    out[0] = number.EdgePoint(fe[0]);
+    out[1] = number.EdgePoint(fe[1]);
+    out[2] = number.EdgePoint(fe[2]);
+    return;
+  }
+  out[0] = number.VertexPoint(fv[j]);
+  out[1] = number.EdgePoint(fe[j]);
+  out[2] = number.EdgePoint(fe[j == 0 ? 2 : j - 1]);
+}
 }
 
 #endif

@@ -644,10 +644,14 @@ TYPED_TEST(AnySurfaceFilter, PrintSelfNamesOptions)
 
 // LowMemory (the finest level written from the level two above, the one between not kept)
 // gives the default output bit for bit: points, point data, faces, parent cell ids, on an
-// open mesh with n-gons, and again when only the input points move (re-applied stencils).
-TEST(CatmullClarkFilter, LowMemoryGivesTheSameOutput)
+// open mesh (with n-gons for Catmull-Clark), and again when only the input points move
+// (re-applied stencils).
+namespace
 {
-  vtkSmartPointer<vtkPolyData> input = subdtest::ToPolyData(subdtest::House(true).Jitter(0.1));
+template <typename Filter>
+void ExpectLowMemoryGivesTheSameOutput(const subdtest::TestMesh& mesh)
+{
+  vtkSmartPointer<vtkPolyData> input = subdtest::ToPolyData(mesh);
   vtkNew<vtkDoubleArray> temperature;
   temperature->SetName("Temperature");
   temperature->SetNumberOfComponents(2);
@@ -657,8 +661,8 @@ TEST(CatmullClarkFilter, LowMemoryGivesTheSameOutput)
   input->GetPointData()->AddArray(temperature);
   for (int levels = 1; levels <= 3; ++levels)
   {
-    vtkNew<vtkSubDCatmullClarkFilter> fast, lean;
-    for (vtkSubDCatmullClarkFilter* filter : { fast.Get(), lean.Get() })
+    vtkNew<Filter> fast, lean;
+    for (Filter* filter : { fast.Get(), lean.Get() })
     {
       filter->SetInputData(input);
       filter->SetNumberOfSubdivisions(levels);
@@ -699,4 +703,15 @@ TEST(CatmullClarkFilter, LowMemoryGivesTheSameOutput)
     }
     EXPECT_EQ(lean->GetNumberOfStencilBuilds(), 1) << levels;
   }
+}
+}
+
+TEST(CatmullClarkFilter, LowMemoryGivesTheSameOutput)
+{
+  ExpectLowMemoryGivesTheSameOutput<vtkSubDCatmullClarkFilter>(subdtest::House(true).Jitter(0.1));
+}
+
+TEST(LoopFilter, LowMemoryGivesTheSameOutput)
+{
+  ExpectLowMemoryGivesTheSameOutput<vtkSubDLoopFilter>(subdtest::House(true).Jitter(0.1).Triangulated());
 }

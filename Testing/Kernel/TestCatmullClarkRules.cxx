@@ -2,20 +2,14 @@
 // rules as published (Catmull & Clark 1978: v' = (Q + 2R + (n-3)S)/n with Q the average of
 // the new face points, R the average of the edge midpoints, S the old point), computed here
 // independently from positions rather than from the stencil code.
-#include "SubDCatmullClarkGrandchildRows.h"
-#include "SubDCatmullClarkRules.h"
 #include "SubDQuadSplit.h"
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
 #include "SubDTestMeshes.h"
-#include "SubDTestParallel.h"
 
 #include <gtest/gtest.h>
 
 #include <array>
-#include <cmath>
-#include <memory>
-#include <string>
 
 using subd::Index;
 
@@ -208,74 +202,4 @@ TEST(CatmullClarkRules, BoundaryRuleNoneMakesBoundaryFacesHoles)
   for (std::uint8_t h : base.FaceIsHole)
     holes += h;
   EXPECT_EQ(holes, 12); // the ring of faces touching the boundary; the inner 2x2 remain
-}
-
-// The finest level's rows written from its grandparent (the level between is not kept) are
-// the rows the level between writes, entry for entry and bit for bit, in the same blocks;
-// applied in small chunks on threads they give the stored table's values; and the faces two
-// quad splits down equal those of splitting twice. Over meshes with n-gons, boundaries,
-// non-manifold edges and pinched fans, semi-sharp and sharp creases, a sharp vertex, holes,
-// under both crease methods, from the base level and from one level down.
-TEST(CatmullClarkRules, GrandchildRowsEqualTheParentsRows)
-{
-  subd::CatmullClarkScheme scheme;
-  Index storedRows = 0, writtenRows = 0;
-  for (subd::CreaseMethod method : { subd::CreaseMethod::Uniform, subd::CreaseMethod::Chaikin })
-  {
-    for (subd::BoundaryRule rule : { subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::None })
-    {
-      for (const subdtest::TestMesh& mesh : subdtest::StandardMeshes())
-      {
-        const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
-        const subd::BaseTags tags = subdtest::MixedSharpnessTags(topology, method);
-        auto grandparent = std::make_shared<subd::Level>(subd::MakeBaseLevel(topology, tags, rule));
-        for (int depth = 0; depth < 2; ++depth)
-        {
-          const std::string what = mesh.Name + " depth " + std::to_string(depth);
-          const subd::Level parent = subd::SplitQuads(*grandparent, subd::ChildTopology::Full);
-          const subd::CatmullClarkGrandchildRows rows(grandparent, parent, subdtest::ThreeThreadFor);
-          const subd::StencilTable expected = subd::BuildCatmullClarkStencils(parent);
-          const subd::StencilTable written = rows.ToStencilTable();
-          ASSERT_EQ(written.GetNumRows(), expected.GetNumRows()) << what;
-          ASSERT_EQ(written.GetNumBlocks(), expected.GetNumBlocks()) << what;
-          for (Index b = 0; b < expected.GetNumBlocks(); ++b)
-            EXPECT_EQ(written.GetBlockEnd(b), expected.GetBlockEnd(b)) << what;
-          for (Index row = 0; row < expected.GetNumRows(); ++row)
-          {
-            const subd::IndexSpan a = written.GetSources(row), b = expected.GetSources(row);
-            ASSERT_EQ(std::vector<Index>(a.begin(), a.end()), std::vector<Index>(b.begin(), b.end())) << what << " row " << row;
-            for (Index k = 0; k < a.size(); ++k)
-              ASSERT_EQ(written.GetWeights(row)[k], expected.GetWeights(row)[k]) << what << " row " << row;
-          }
-          storedRows += rows.GetNumStoredRows();
-          writtenRows += rows.GetNumRows() - rows.GetNumStoredRows();
-
-          std::vector<float> parents(static_cast<size_t>(rows.GetNumParents()) * 5);
-          for (size_t i = 0; i < parents.size(); ++i)
-            parents[i] = static_cast<float>(std::cos(0.3 * i));
-          std::vector<float> fromTable(static_cast<size_t>(rows.GetNumRows()) * 5), chunked(fromTable.size());
-          expected.Apply(parents.data(), fromTable.data(), 5);
-          const std::vector<Index> ends = rows.GetBlockEnds();
-          for (size_t b = 0; b < ends.size(); ++b)
-            subdtest::ThreeThreadFor(b == 0 ? 0 : ends[b - 1], ends[b], [&](Index begin, Index end) {
-              rows.ApplyRows(parents.data(), chunked.data(), 5, begin, end);
-            });
-          EXPECT_EQ(chunked, fromTable) << what;
-
-          const subd::Level twice = subd::SplitQuadsTwice(*grandparent, rows.GetParentEdgeNumbering(), subdtest::ThreeThreadFor);
-          const subd::Level stepwise = subd::SplitQuads(parent, subd::ChildTopology::FacesOnly);
-          EXPECT_EQ(twice.Topology.GetNumVertices(), stepwise.Topology.GetNumVertices()) << what;
-          EXPECT_EQ(twice.Topology.GetFaceOffsetArray(), stepwise.Topology.GetFaceOffsetArray()) << what;
-          EXPECT_EQ(twice.Topology.GetFaceVertexArray(), stepwise.Topology.GetFaceVertexArray()) << what;
-          EXPECT_EQ(twice.FaceIsHole, stepwise.FaceIsHole) << what;
-          EXPECT_EQ(twice.FaceOrigin, stepwise.FaceOrigin) << what;
-          EXPECT_EQ(twice.Depth, stepwise.Depth) << what;
-          grandparent = std::make_shared<subd::Level>(parent);
-        }
-      }
-    }
-  }
-  // Both kinds of rows were compared: written from the grandparent, and stored.
-  EXPECT_GT(storedRows, 0);
-  EXPECT_GT(writtenRows, 10 * storedRows);
 }

@@ -1,0 +1,411 @@
+#include "SubDGrandchildRows.h"
+#include "SubDCatmullClarkRules.h"
+#include "SubDLoopRules.h"
+
+#include <algorithm>
+
+namespace subd
+{
+namespace
+{
+// What the smooth rows of both schemes read of the parent C, written from the grandparent P:
+// a C edge's ends and faces, a C point's edges and faces (SubDPrimalSplitShape.h).
+template <typename SplitShape>
+struct ParentFromGrandparent
+{
+  using Shape = SplitShape;
+  const MeshTopology& Topology; // P's
+  const ChildEdgeNumbering& ParentEdges;
+  Index NumParents; // C's points
+  Shape Split{ Topology };
+
+  // The C edge first met at `corner` of P's face f's children, with key `key`: its ends in
+  // the order C lists them (from that corner to the next), and its two faces in increasing
+  // order. Only for edges with two faces.
+  void GetEdge(Index f, Index corner, Index key, Index* ends, Index* faces) const
+  {
+    const MeshTopology& topo = this->Topology;
+    const Index size = Shape::ChildFaceSize;
+    const Index child = corner / size, slot = corner % size;
+    Index corners[4];
+    this->Split.GetChildCorners(f, child - this->Split.CornerChild(f, 0), corners);
+    ends[0] = corners[slot];
+    ends[1] = corners[slot + 1 == size ? 0 : slot + 1];
+    if (key >= 2 * this->Split.NumEdges)
+    {
+      this->Split.GetInteriorEdgeFaces(f, key, faces);
+      return;
+    }
+    // A half of e: in each face of e, the child at the half's vertex. The first face is f
+    // (where the half is first met), whose child holds it.
+    const Index e = key / 2;
+    const Index v = topo.GetEdgeVertices(e)[key % 2];
+    const Index g = topo.GetEdgeFaces(e)[1];
+    const Index i = topo.GetEdgePosition(g, e);
+    faces[0] = child;
+    faces[1] = this->Split.CornerChild(g, topo.GetFaceVertices(g)[i] == v ? i : (i + 1 == topo.GetFaceSize(g) ? 0 : i + 1));
+  }
+
+  // C's point p: its faces and edges as C lists them; `scratch` holds three lists.
+  void GetPoint(Index p, Index* scratch, Index listSize, Index*& faces, Index& numFaces, Index*& edges, Index& numEdges) const
+  {
+    faces = scratch;
+    edges = scratch + 2 * listSize;
+    WriteChildPointRelations(this->Split, this->ParentEdges.EdgeOfKey.data(), p, faces, scratch + listSize, edges, numFaces, numEdges);
+  }
+};
+
+// Catmull-Clark's smooth rows (CatmullClarkRowWriter's, in its order and weights).
+struct CatmullClarkSmoothRows : ParentFromGrandparent<QuadSplitShape>
+{
+  static constexpr bool HasFaceRows = true;
+  Index NumChildFaces = Topology.GetNumFaceCorners(); // the finest face points come first
+
+  Index WriteFaceRow(Index f, Index j, Index* sources, double* weights) const
+  {
+    this->Split.GetChildCorners(f, j, sources);
+    std::fill(weights, weights + 4, 1.0 / 4);
+    return 4;
+  }
+  Index WriteEdgeRow(Index f, Index corner, Index key, Index* sources, double* weights) const
+  {
+    Index* faces = sources + 2;
+    this->GetEdge(f, corner, key, sources, faces);
+    faces[0] += this->NumParents;
+    faces[1] += this->NumParents;
+    std::fill(weights, weights + 4, 0.25);
+    return 4;
+  }
+  Index WriteVertexRow(Index p, Index* sources, double* weights, Index* scratch, Index listSize) const
+  {
+    Index *faces, *edges, numFaces, numEdges;
+    this->GetPoint(p, scratch, listSize, faces, numFaces, edges, numEdges);
+    const double n = numFaces;
+    sources[0] = p;
+    weights[0] = (n - 3.0) / n;
+    for (Index i = 0; i < numEdges; ++i)
+    {
+      sources[1 + i] = this->NumParents + this->NumChildFaces + edges[i];
+      weights[1 + i] = 4.0 / (n * n);
+    }
+    for (Index i = 0; i < numFaces; ++i)
+    {
+      sources[1 + numEdges + i] = this->NumParents + faces[i];
+      weights[1 + numEdges + i] = -1.0 / (n * n);
+    }
+    return 1 + numEdges + numFaces;
+  }
+};
+
+// Loop's smooth rows (LoopRowWriter's, in its order and weights).
+struct LoopSmoothRows : ParentFromGrandparent<TriangleSplitShape>
+{
+  static constexpr bool HasFaceRows = false;
+  LoopBetas Beta;
+
+  Index WriteFaceRow(Index, Index, Index*, double*) const { return 0; }
+  Index WriteEdgeRow(Index f, Index corner, Index key, Index* sources, double* weights) const
+  {
+    Index faces[2];
+    this->GetEdge(f, corner, key, sources, faces);
+    for (int k = 0; k < 2; ++k)
+    {
+      // The corner of the C triangle across from the edge.
+      Index corners[3];
+      this->Split.GetChildCorners(faces[k] / 4, faces[k] % 4, corners);
+      const Index* far = std::find_if(corners, corners + 3, [&](Index c) { return c != sources[0] && c != sources[1]; });
+      sources[2 + k] = *far;
+    }
+    weights[0] = weights[1] = 0.375;
+    weights[2] = weights[3] = 0.125;
+    return 4;
+  }
+  Index WriteVertexRow(Index p, Index* sources, double* weights, Index* scratch, Index listSize) const
+  {
+    Index *faces, *edges, numFaces, numEdges;
+    this->GetPoint(p, scratch, listSize, faces, numFaces, edges, numEdges);
+    const Index n = numEdges;
+    const double beta = this->Beta(n);
+    sources[0] = p;
+    weights[0] = 1.0 - 1.6 * n * beta;
+    for (Index i = 0; i < n; ++i)
+    {
+      sources[1 + i] = this->NumParents + edges[i];
+      weights[1 + i] = 1.6 * beta;
+    }
+    return 1 + n;
+  }
+};
+
+// The rows `writer` (over the parent C) has no smooth form for, from row `first` on.
+template <typename Writer>
+void StoreRowsWithoutSmoothForm(const Writer& writer, Index first, std::vector<Index>& rows, StencilTable& table)
+{
+  for (Index row = first; row < writer.GetNumRows(); ++row)
+  {
+    if (!writer.IsSmoothRow(row))
+    {
+      rows.push_back(row);
+    }
+  }
+  table = StencilTable(writer.GetNumParents());
+  std::vector<Index> sources(static_cast<size_t>(writer.GetMaxRowSize()));
+  std::vector<double> weights(sources.size());
+  for (Index row : rows)
+  {
+    const Index size = writer.WriteRow(row, sources.data(), weights.data());
+    table.AppendRow(sources.data(), weights.data(), size);
+  }
+}
+}
+
+GrandchildRows::GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent,
+  const Level& parent, const ParallelFor& parallelFor)
+  : Scheme(scheme)
+  , Grandparent(std::move(grandparent))
+{
+  const MeshTopology& topo = this->Grandparent->Topology;
+  const bool quads = scheme == GrandchildScheme::CatmullClark;
+  this->ParentEdges = quads ? NumberChildEdges(QuadSplitShape{ topo }, parallelFor)
+                            : NumberChildEdges(TriangleSplitShape{ topo }, parallelFor);
+  this->NumFaceRows = quads ? parent.Topology.GetNumFaces() : 0;
+  this->NumParents = parent.Topology.GetNumVertices();
+  this->NumRows = this->NumFaceRows + parent.Topology.GetNumEdges() + this->NumParents;
+  // The rows without a smooth form (creases, boundaries, corners, non-manifold points), from
+  // the parent's own writer, in row order.
+  if (quads)
+  {
+    const CatmullClarkRowWriter writer(parent, parallelFor);
+    this->MaxRowSize = writer.GetMaxRowSize();
+    StoreRowsWithoutSmoothForm(writer, this->NumFaceRows, this->StoredRows, this->StoredTable);
+  }
+  else
+  {
+    const LoopRowWriter writer(parent, parallelFor);
+    this->MaxRowSize = writer.GetMaxRowSize();
+    StoreRowsWithoutSmoothForm(writer, 0, this->StoredRows, this->StoredTable);
+  }
+}
+
+std::vector<Index> GrandchildRows::GetBlockEnds() const
+{
+  const Index vertexRows = this->NumFaceRows + this->ParentEdges.FirstEdgeOfFace.back();
+  if (this->NumFaceRows > 0)
+  {
+    return { this->NumFaceRows, vertexRows, this->NumRows };
+  }
+  return { vertexRows, this->NumRows };
+}
+
+// Calls emit(row, sources, weights, size) for rows [begin, end) in increasing order: a stored
+// row as stored, any other written from the grandparent into `buffers` (sources, then room
+// for a point's lists) and `weights`.
+template <typename Emit>
+void GrandchildRows::WriteRows(Index begin, Index end, Index* buffers, double* weights, Emit&& emit) const
+{
+  if (this->Scheme == GrandchildScheme::CatmullClark)
+  {
+    this->WriteRowsWith<CatmullClarkSmoothRows>(begin, end, buffers, weights, emit);
+  }
+  else
+  {
+    this->WriteRowsWith<LoopSmoothRows>(begin, end, buffers, weights, emit);
+  }
+}
+
+template <typename Rules, typename Emit>
+void GrandchildRows::WriteRowsWith(Index begin, Index end, Index* buffers, double* weights, Emit&& emit) const
+{
+  const MeshTopology& topo = this->Grandparent->Topology;
+  const Rules rules{ { topo, this->ParentEdges, this->NumParents } };
+  Index* sources = buffers;
+  Index* scratch = buffers + this->MaxRowSize;
+  size_t stored = static_cast<size_t>(
+    std::lower_bound(this->StoredRows.begin(), this->StoredRows.end(), begin) - this->StoredRows.begin());
+  auto put = [&](Index row, auto&& write) {
+    if (stored < this->StoredRows.size() && this->StoredRows[stored] == row)
+    {
+      const IndexSpan rowSources = this->StoredTable.GetSources(static_cast<Index>(stored));
+      emit(row, rowSources.begin(), this->StoredTable.GetWeights(static_cast<Index>(stored)), rowSources.size());
+      ++stored;
+      return;
+    }
+    emit(row, sources, weights, write());
+  };
+
+  // Face points (Catmull-Clark): C's faces, the children of P's faces corner by corner.
+  if constexpr (Rules::HasFaceRows)
+  {
+    const IndexArray& faceOffsets = topo.GetFaceOffsetArray();
+    const Index facesEnd = std::min(end, this->NumFaceRows);
+    if (begin < facesEnd)
+    {
+      Index f =
+        static_cast<Index>(std::upper_bound(faceOffsets.begin(), faceOffsets.end(), begin) - faceOffsets.begin()) - 1;
+      for (Index c = begin; c < facesEnd; ++c)
+      {
+        while (faceOffsets[f + 1] <= c)
+        {
+          ++f;
+        }
+        put(c, [&] { return rules.WriteFaceRow(f, c - faceOffsets[f], sources, weights); });
+      }
+    }
+  }
+
+  // Edge points: C's edges, numbered as the walk over P's faces' children first meets them.
+  const Index firstEdgeRow = this->NumFaceRows;
+  const Index numChildEdges = this->ParentEdges.FirstEdgeOfFace.back();
+  const Index edgesBegin = std::max(begin, firstEdgeRow) - firstEdgeRow;
+  const Index edgesEnd = std::min(end, firstEdgeRow + numChildEdges) - firstEdgeRow;
+  if (edgesBegin < edgesEnd)
+  {
+    const IndexArray& firstEdge = this->ParentEdges.FirstEdgeOfFace;
+    Index f = static_cast<Index>(std::upper_bound(firstEdge.begin(), firstEdge.end(), edgesBegin) - firstEdge.begin()) - 1;
+    for (; f < topo.GetNumFaces() && firstEdge[f] < edgesEnd; ++f)
+    {
+      Index next = firstEdge[f];
+      rules.Split.VisitCorners(f, [&](Index corner, Index key, bool isNew) {
+        if (!isNew)
+        {
+          return;
+        }
+        const Index k = next++;
+        if (k >= edgesBegin && k < edgesEnd)
+        {
+          put(firstEdgeRow + k, [&] { return rules.WriteEdgeRow(f, corner, key, sources, weights); });
+        }
+      });
+    }
+  }
+
+  // Vertex points: C's points.
+  const Index firstVertexRow = firstEdgeRow + numChildEdges;
+  for (Index row = std::max(begin, firstVertexRow); row < end; ++row)
+  {
+    put(row, [&] { return rules.WriteVertexRow(row - firstVertexRow, sources, weights, scratch, this->MaxRowSize); });
+  }
+}
+
+template <typename T>
+void GrandchildRows::Apply(const T* parents, T* children, int components, Index begin, Index end) const
+{
+  std::vector<Index> buffers(4 * static_cast<size_t>(this->MaxRowSize)); // sources, a point's lists
+  std::vector<double> weights(static_cast<size_t>(this->MaxRowSize));
+  std::vector<double> sum(static_cast<size_t>(components));
+  this->WriteRows(begin, end, buffers.data(), weights.data(),
+    [&](Index row, const Index* rowSources, const double* rowWeights, Index size) {
+      ApplyRow(rowSources, rowWeights, size, this->NumParents, parents, children, components, sum.data(),
+        children + static_cast<size_t>(row) * components);
+    });
+}
+
+void GrandchildRows::ApplyRows(const double* parents, double* children, int components, Index begin, Index end) const
+{
+  this->Apply(parents, children, components, begin, end);
+}
+
+void GrandchildRows::ApplyRows(const float* parents, float* children, int components, Index begin, Index end) const
+{
+  this->Apply(parents, children, components, begin, end);
+}
+
+StencilTable GrandchildRows::ToStencilTable() const
+{
+  StencilTable table(this->NumParents);
+  std::vector<Index> buffers(4 * static_cast<size_t>(this->MaxRowSize));
+  std::vector<double> weights(static_cast<size_t>(this->MaxRowSize));
+  this->WriteRows(0, this->NumRows, buffers.data(), weights.data(),
+    [&](Index, const Index* rowSources, const double* rowWeights, Index size) {
+      table.AppendRow(rowSources, rowWeights, size);
+    });
+  for (Index end : this->GetBlockEnds())
+  {
+    table.EndBlock(end);
+  }
+  return table;
+}
+
+namespace
+{
+// The faces of the split of every C face, from the C face's corners and edges (as
+// SplitQuads and SplitTriangles make them from C's topology).
+template <typename Shape>
+Level SplitTwiceWith(const Shape& shape, const Level& grandparent, const ChildEdgeNumbering& parentEdges,
+  const ParallelFor& parallelFor)
+{
+  constexpr bool quads = Shape::ChildFaceSize == 4;
+  constexpr Index size = Shape::ChildFaceSize;
+  const MeshTopology& topo = grandparent.Topology;
+  const Index numChildFaces = shape.CornerChild(topo.GetNumFaces(), 0);
+  const Index numChildEdges = parentEdges.FirstEdgeOfFace.back();
+  const Index numChildPoints = shape.GetNumFacePoints() + topo.GetNumEdges() + topo.GetNumVertices();
+  const QuadSplitNumbering quadPoint{ numChildFaces, numChildEdges };
+  const TriangleSplitNumbering trianglePoint{ numChildEdges };
+  const Index numFineFaces = 4 * numChildFaces;
+  IndexArray offsets(static_cast<size_t>(numFineFaces) + 1);
+  IndexArray vertices(size * static_cast<size_t>(numFineFaces));
+  parallelFor(0, topo.GetNumFaces(), [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
+    {
+      for (Index j = 0; j < shape.GetNumChildren(f); ++j)
+      {
+        const Index c = shape.CornerChild(f, j);
+        Index corners[4], keys[4], edges[4];
+        shape.GetChildCorners(f, j, corners);
+        shape.GetChildEdgeKeys(f, j, keys);
+        for (Index s = 0; s < size; ++s)
+        {
+          edges[s] = parentEdges.EdgeOfKey[keys[s]];
+        }
+        for (Index s = 0; s < 4; ++s)
+        {
+          const Index fine = 4 * c + s;
+          offsets[fine] = size * fine;
+          Index* out = vertices.data() + size * static_cast<size_t>(fine);
+          const Index previous = s == 0 ? size - 1 : s - 1;
+          if (quads)
+          {
+            out[0] = quadPoint.VertexPoint(corners[s]);
+            out[1] = quadPoint.EdgePoint(edges[s]);
+            out[2] = quadPoint.FacePoint(c);
+            out[3] = quadPoint.EdgePoint(edges[previous]);
+          }
+          else if (s < 3)
+          {
+            out[0] = trianglePoint.VertexPoint(corners[s]);
+            out[1] = trianglePoint.EdgePoint(edges[s]);
+            out[2] = trianglePoint.EdgePoint(edges[previous]);
+          }
+          else
+          {
+            out[0] = trianglePoint.EdgePoint(edges[0]);
+            out[1] = trianglePoint.EdgePoint(edges[1]);
+            out[2] = trianglePoint.EdgePoint(edges[2]);
+          }
+        }
+      }
+    }
+  });
+  offsets[numFineFaces] = size * numFineFaces;
+
+  Level fine;
+  InheritFaceTags(grandparent, fine, [&shape](Index f) { return 4 * shape.CornerChild(f, 0); }, parallelFor);
+  fine.Depth = grandparent.Depth + 2;
+  fine.Creasing = grandparent.Creasing;
+  const Index numFinePoints = quads ? quadPoint.VertexPoint(numChildPoints) : trianglePoint.VertexPoint(numChildPoints);
+  fine.Topology = MeshTopology::BuildFacesOnly(numFinePoints, std::move(offsets), std::move(vertices));
+  return fine;
+}
+}
+
+Level SplitTwice(GrandchildScheme scheme, const Level& grandparent, const ChildEdgeNumbering& parentEdges,
+  const ParallelFor& parallelFor)
+{
+  if (scheme == GrandchildScheme::CatmullClark)
+  {
+    return SplitTwiceWith(QuadSplitShape{ grandparent.Topology }, grandparent, parentEdges, parallelFor);
+  }
+  return SplitTwiceWith(TriangleSplitShape{ grandparent.Topology }, grandparent, parentEdges, parallelFor);
+}
+}

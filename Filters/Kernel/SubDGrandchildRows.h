@@ -1,0 +1,85 @@
+// SubD kernel: the Catmull-Clark and Loop rows of the finest level written from its
+// grandparent's topology, so that its parent's topology need not be kept.
+//
+// Rows written as they are applied (SubDRowWriting.h) keep the level they are written from.
+// For the finest level that is the largest topology of a refinement (about 170 bytes per
+// face): most of the peak memory. But the finest level's parent C is a primal split of its
+// own parent P (the quad split, SubDQuadSplit.h, for Catmull-Clark; the triangle split,
+// SubDTriangleSplit.h, for Loop), and a primal split's topology is known in closed form from
+// its parent's (SubDPrimalSplitShape.h): the corners of every child face, the two faces of a
+// half of P's edge (the children of the edge's faces at its vertex), the faces and edges
+// around a point of C (those around the face, edge or vertex of P it stands for). So the
+// rows of the smooth points (face points everywhere, edge and vertex points away from
+// creases and boundaries: nearly all of them) are written from P here, with C's numbering
+// and in the order C's own row writer (CatmullClarkRowWriter, LoopRowWriter) writes them,
+// which gives the same bits. The other rows are written once from C when the source is
+// made, and stored; then C can go.
+//
+// The price: every evaluation works out each point's neighbourhood again, from arrays read
+// out of order, which makes re-applying the rows about 1.5x to 2x slower than from C's
+// lists. The faces of the finest level follow from P the same way (SplitTwice).
+#ifndef SubDGrandchildRows_h
+#define SubDGrandchildRows_h
+
+#include "SubDLevel.h"
+#include "SubDPrimalSplitShape.h"
+#include "SubDStencilTable.h"
+
+#include <memory>
+#include <vector>
+
+namespace subd
+{
+enum class GrandchildScheme
+{
+  CatmullClark, ///< on the quad split
+  Loop          ///< on the triangle split
+};
+
+class SUBDKERNEL_EXPORT GrandchildRows final : public RowSource
+{
+public:
+  /// `parent` must be the scheme's split of *grandparent (SplitQuads or SplitTriangles) with
+  /// its full topology; it is read here and not kept.
+  GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent, const Level& parent,
+    const ParallelFor& parallelFor = SerialFor);
+
+  Index GetNumParents() const override { return this->NumParents; }
+  Index GetNumRows() const override { return this->NumRows; }
+  std::vector<Index> GetBlockEnds() const override;
+  void ApplyRows(const double* parents, double* children, int components, Index begin, Index end) const override;
+  void ApplyRows(const float* parents, float* children, int components, Index begin, Index end) const override;
+
+  /// Every row in a stored table (to inspect them).
+  StencilTable ToStencilTable() const;
+  /// How the parent's edges are numbered (for SplitTwice).
+  const ChildEdgeNumbering& GetParentEdgeNumbering() const { return this->ParentEdges; }
+  /// The rows stored because they are not smooth.
+  Index GetNumStoredRows() const { return static_cast<Index>(this->StoredRows.size()); }
+
+private:
+  template <typename Emit>
+  void WriteRows(Index begin, Index end, Index* buffers, double* weights, Emit&& emit) const;
+  template <typename Rules, typename Emit>
+  void WriteRowsWith(Index begin, Index end, Index* buffers, double* weights, Emit&& emit) const;
+  template <typename T>
+  void Apply(const T* parents, T* children, int components, Index begin, Index end) const;
+
+  GrandchildScheme Scheme;
+  std::shared_ptr<const Level> Grandparent;
+  ChildEdgeNumbering ParentEdges;
+  Index NumParents = 0, NumRows = 0, NumFaceRows = 0;
+  Index MaxRowSize = 4;
+  std::vector<Index> StoredRows; // sorted; row StoredRows[i] is StoredTable's row i
+  StencilTable StoredTable;
+};
+
+/// The finest level (faces only) of two splits of `grandparent` by `scheme`'s split, without
+/// the level between: the same faces, holes and origins as splitting twice (the first with
+/// the full topology, the second faces only). `parentEdges` numbers the edges of the level
+/// between (GrandchildRows::GetParentEdgeNumbering).
+SUBDKERNEL_EXPORT Level SplitTwice(GrandchildScheme scheme, const Level& grandparent,
+  const ChildEdgeNumbering& parentEdges, const ParallelFor& parallelFor = SerialFor);
+}
+
+#endif
