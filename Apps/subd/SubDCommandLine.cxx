@@ -94,7 +94,8 @@ std::string UsageText()
   std::ostringstream out;
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
          "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--normals]\n"
-         "            [--curvature] [--tangents] [--closed] [--interpolate] [--output FILE]\n"
+         "            [--curvature] [--tangents] [--closed] [--interpolate] [--low-memory]\n"
+         "            [--output FILE]\n"
          "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
          "\n"
          "Subdivides the polygon mesh INPUT (" << SupportedExtensions() << ") and writes the\n"
@@ -137,6 +138,10 @@ std::string UsageText()
          "                     through the input's points - all, or those whose point data\n"
          "                     \"Interpolate\" is non-zero - then subdivide that cage (catmull-clark,\n"
          "                     loop, doo-sabin, chaikin, bspline; --levels 0 writes the cage itself)\n"
+         "  --low-memory       catmull-clark and loop: write the finest level from the level two\n"
+         "                     above, keeping no topology of the level between: about a third\n"
+         "                     less peak memory for the same output, slower (no effect with\n"
+         "                     creases, --limit, --normals or --curvature)\n"
          "\n"
          "Creases come with the input: in .vtp/.vtk as line cells with the cell array\n"
          "\"Sharpness\" (0 smooth .. 10 infinitely sharp), \"CornerSharpness\" point data and\n"
@@ -372,6 +377,11 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     else if (arg == "--interpolate")
     {
       cmd.Interpolate = true;
+    }
+    else if (arg == "--low-memory")
+    {
+      cmd.Options.LowMemory = true;
+      cmd.SurfaceOptions.push_back(arg);
     }
     else if (arg == "--no-cage")
     {

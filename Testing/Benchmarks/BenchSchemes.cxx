@@ -5,7 +5,8 @@
 // Each timing starts from the mesh as flat arrays and includes building the implementation's
 // own mesh structure, refinement and point computation (what a user waits for); each runs in
 // a forked child (own peak RSS), best of `repeats`. Prints seconds, output faces per second,
-// peak RSS and, per scheme, the ratio fastest peer time / SubD time (2 threads).
+// peak RSS and, per scheme, the ratio fastest peer time / SubD time (2 threads); for Loop
+// from level 2 on, also with the filter's LowMemory option.
 //
 //   usage: BenchSchemes mesh.off [maxLevel=3] [repeats=3] [scheme,scheme,...]
 #include "SubDBenchOpenSubdiv.h"
@@ -53,16 +54,23 @@ using subdbench::Work;
 
 using Mesh = subdbench::BenchMesh;
 
-template <typename Filter>
-Work RunFilter(const Mesh& mesh, int level)
+template <typename Filter, typename Configure>
+Work RunConfiguredFilter(const Mesh& mesh, int level, Configure&& configure)
 {
   const Clock::time_point start = Clock::now();
   vtkNew<Filter> filter;
   filter->SetInputData(mesh.PolyData);
   filter->SetNumberOfSubdivisions(level);
+  configure(filter.Get());
   filter->Update();
   return { SecondsSince(start), double(filter->GetOutput()->GetNumberOfPolys()),
     subdbench::OutputBytes(filter->GetOutput()) };
+}
+
+template <typename Filter>
+Work RunFilter(const Mesh& mesh, int level)
+{
+  return RunConfiguredFilter<Filter>(mesh, level, [](Filter*) {});
 }
 
 template <typename Filter>
@@ -70,6 +78,14 @@ Work RunSubD(const Mesh& mesh, int level, int threads)
 {
   vtkSMPTools::Initialize(threads);
   return RunFilter<Filter>(mesh, level);
+}
+
+// With LowMemory (the finest level written from the level two above).
+template <typename Filter>
+Work RunSubDLowMemory(const Mesh& mesh, int level, int threads)
+{
+  vtkSMPTools::Initialize(threads);
+  return RunConfiguredFilter<Filter>(mesh, level, [](Filter* filter) { filter->LowMemoryOn(); });
 }
 
 using CgalMesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
@@ -138,6 +154,7 @@ struct SchemeBench
   std::string Name;
   std::function<Work(const Mesh&, int, int)> SubD;
   std::vector<Peer> Peers;
+  std::function<Work(const Mesh&, int, int)> SubDLowMemory; // where LowMemory applies
 };
 }
 
@@ -158,7 +175,8 @@ int main(int argc, char* argv[])
       { { "OpenSubdiv Far", RunOpenSubdivLoop },
         { "CGAL", [](const Mesh& m, int l) { return RunCgal(m, l, [](CgalMesh& x, auto p) { CGAL::Subdivision_method_3::Loop_subdivision(x, p); }); } },
         { "OpenMesh", RunOpenMesh<OMTri, OpenMesh::Subdivider::Uniform::LoopT<OMTri>> },
-        { "VTK", RunFilter<vtkLoopSubdivisionFilter> } } },
+        { "VTK", RunFilter<vtkLoopSubdivisionFilter> } },
+      RunSubDLowMemory<vtkSubDLoopFilter> },
     { "butterfly", RunSubD<vtkSubDButterflyFilter>,
       { { "OpenMesh", RunOpenMesh<OMTri, OpenMesh::Subdivider::Uniform::ModifiedButterflyT<OMTri>> },
         { "VTK", RunFilter<vtkButterflySubdivisionFilter> } } },
@@ -213,6 +231,13 @@ int main(int argc, char* argv[])
       }
       std::printf("%-10s %-5d ratio fastest peer (%s) / SubD 2 threads: %.2f, / SubD 1 thread: %.2f\n",
         scheme.Name.c_str(), level, fastestName.c_str(), fastestPeer / two.Seconds, fastestPeer / one.Seconds);
+      if (scheme.SubDLowMemory && level >= 2)
+      {
+        const Result lean = Measure([&] { return scheme.SubDLowMemory(mesh, level, 2); }, repeats);
+        row("SubD LowMemory (2 thr.)", lean);
+        std::printf("%-10s %-5d ratio fastest peer (%s) / SubD LowMemory 2 threads: %.2f\n", scheme.Name.c_str(),
+          level, fastestName.c_str(), fastestPeer / lean.Seconds);
+      }
     }
   }
   return 0;
