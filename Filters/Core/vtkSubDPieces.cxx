@@ -247,7 +247,7 @@ std::vector<std::uint8_t> vtkSubDSeamLineCopies(
     subd::Index firstRank = std::numeric_limits<subd::Index>::max();
     for (subd::Index f : topology.GetEdgeFaces(e))
     {
-      const subd::Index base = finest.FaceOrigin[f];
+      const subd::Index base = finest.GetFaceOrigin(f);
       if (baseFaceRank[base] < firstRank)
       {
         firstRank = baseFaceRank[base];

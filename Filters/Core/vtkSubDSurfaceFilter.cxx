@@ -184,7 +184,7 @@ void vtkSubDSurfaceFilter::vtkInternals::AddGhostArrays(
   std::fill_n(cellGhosts->GetPointer(0), numLines, vtkDataSetAttributes::DUPLICATECELL);
   for (vtkIdType c = 0; c < numOut; ++c)
   {
-    const bool ghost = this->FaceGhostLayer[finest.FaceOrigin[this->FinestFace(c)]] > 0;
+    const bool ghost = this->FaceGhostLayer[finest.GetFaceOrigin(this->FinestFace(c))] > 0;
     cellGhosts->SetValue(numLines + c, ghost ? vtkDataSetAttributes::DUPLICATECELL : 0);
   }
   output->GetCellData()->AddArray(cellGhosts);
@@ -226,8 +226,8 @@ void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
   const subd::Index numFinestFaces = finest.Topology.GetNumFaces();
   for (subd::Index f = 0; f < numFinestFaces; ++f)
   {
-    if (!finest.FaceIsHole[f] &&
-      (this->FaceGhostLayer.empty() || this->FaceGhostLayer[finest.FaceOrigin[f]] <= this->OutputGhostLevels))
+    if (!finest.IsFaceHole(f) &&
+      (this->FaceGhostLayer.empty() || this->FaceGhostLayer[finest.GetFaceOrigin(f)] <= this->OutputGhostLevels))
     {
       this->EmittedFaces.push_back(f);
     }
@@ -720,7 +720,7 @@ int vtkSubDSurfaceFilter::Execute(
   targetCells->SetNumberOfIds(numOut);
   for (vtkIdType c = 0; c < numOut; ++c)
   {
-    const subd::Index baseFace = finest.FaceOrigin[cache.FinestFace(c)];
+    const subd::Index baseFace = finest.GetFaceOrigin(cache.FinestFace(c));
     sourceCells->SetId(c, faces.CellIdOf(cache.KeptFaces[baseFace], numPolys));
     targetCells->SetId(c, numLines + c);
   }
@@ -814,7 +814,7 @@ bool vtkSubDSurfaceFilter::AddLimitGeometry(const double* basePoints, vtkPointDa
       for (subd::Index i = 0; i < faces.size(); ++i)
       {
         const subd::Index f = faces[i];
-        if (finest.FaceIsHole[f] || std::find(seen.begin(), seen.end(), f) != seen.end())
+        if (finest.IsFaceHole(f) || std::find(seen.begin(), seen.end(), f) != seen.end())
         {
           continue;
         }

@@ -248,13 +248,14 @@ public:
 
   ///@{
   /**
-   * Trade speed for memory (default off). On, the schemes that can (Catmull-Clark, Loop) write the
-   * finest level from the level two above, so that the topology of the level just above,
-   * the largest of the refinement, is never kept: about a third less peak memory when no
-   * sharp features, limit positions or limit geometry ask for the finest level's topology,
-   * the same points and faces bit for bit, but each evaluation (including re-evaluations
-   * when only the input points move) works out every point's neighbourhood again and is
-   * slower (1.3x to 1.8x).
+   * Trade speed for memory (default off). On, the schemes that can (Catmull-Clark, Loop) write
+   * the finest level, and every other level above it, from the level two above, so that the
+   * topologies of the levels between (the largest of all is the finest level's parent's) are
+   * never kept: about a third less peak memory, the same points and faces bit for bit, but
+   * each evaluation (including re-evaluations when only the input points move) works out
+   * every point's neighbourhood again and is slower (1.3x to 1.8x). With sharp features,
+   * limit positions or limit geometry the finest level keeps its own topology, and the
+   * saving is smaller.
    */
   vtkSetMacro(LowMemory, bool);
   vtkGetMacro(LowMemory, bool);

@@ -389,8 +389,10 @@ Level SplitTwiceWith(const Shape& shape, const Level& grandparent, const ChildEd
   });
   offsets[numFineFaces] = size * numFineFaces;
 
+  // The tags stay with the faces of the level between (four finest faces each).
   Level fine;
-  InheritFaceTags(grandparent, fine, [&shape](Index f) { return 4 * shape.CornerChild(f, 0); }, parallelFor);
+  InheritFaceTags(grandparent, fine, [&shape](Index f) { return shape.CornerChild(f, 0); }, parallelFor);
+  fine.FaceTagShift = 2;
   fine.Depth = grandparent.Depth + 2;
   fine.Creasing = grandparent.Creasing;
   const Index numFinePoints = quads ? quadPoint.VertexPoint(numChildPoints) : trianglePoint.VertexPoint(numChildPoints);

@@ -76,7 +76,8 @@ private:
 
 /// The finest level (faces only) of two splits of `grandparent` by `scheme`'s split, without
 /// the level between: the same faces, holes and origins as splitting twice (the first with
-/// the full topology, the second faces only). `parentEdges` numbers the edges of the level
+/// the full topology, the second faces only), the tags kept per face of the level between
+/// (Level::FaceTagShift 2). `parentEdges` numbers the edges of the level
 /// between (GrandchildRows::GetParentEdgeNumbering).
 SUBDKERNEL_EXPORT Level SplitTwice(GrandchildScheme scheme, const Level& grandparent,
   const ChildEdgeNumbering& parentEdges, const ParallelFor& parallelFor = SerialFor);

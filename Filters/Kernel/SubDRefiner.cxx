@@ -15,16 +15,20 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
     const bool last = l + 1 == levels;
     const ChildTopology depth = last ? finest : ChildTopology::Full;
     bool refined = false;
-    if (levelRows == LevelRows::WrittenFromGrandparent && last && depth == ChildTopology::FacesOnly && grandparent)
+    // Every other level, ending with the finest, from its grandparent: the largest topology of
+    // all, the finest level's parent, need not outlive its step, nor do the ones two, four...
+    // levels above it. (The level after one written from its grandparent has no grandparent
+    // kept to be written from.)
+    if (levelRows == LevelRows::WrittenFromGrandparent && (levels - 1 - l) % 2 == 0 && grandparent)
     {
-      // The largest topology of all, the finest level's parent, need not outlive this step.
       StencilTable rows;
       Level child;
-      refined = scheme.RefineFromGrandparent(grandparent, current, rows, child);
+      refined = scheme.RefineFromGrandparent(grandparent, current, depth, rows, child);
       if (refined)
       {
         out.Stencils.push_back(std::move(rows));
         current = std::move(child);
+        grandparent = nullptr;
       }
     }
     std::shared_ptr<const RowSource> writtenRows;

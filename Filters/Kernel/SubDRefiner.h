@@ -62,10 +62,11 @@ enum class LevelRows
            ///< topology is then kept (a third of the finest parent's, summed over levels).
   WrittenFromGrandparent, ///< as Written, but the finest level's rows (and faces) are written
                           ///< from its grandparent where the scheme can
-                          ///< (Scheme::RefineFromGrandparent), so the largest topology of all,
-                          ///< the finest level's parent's, is not kept: about a third less
-                          ///< peak memory, for slower evaluations (each row works out its
-                          ///< neighbourhood).
+                          ///< (Scheme::RefineFromGrandparent), and so are every other level's
+                          ///< above it, so the largest topology of all, the finest level's
+                          ///< parent's, is not kept, nor the ones two, four... levels above
+                          ///< it: about a third less peak memory, for slower evaluations
+                          ///< (each row works out its neighbourhood).
 };
 
 /// Refines `base` `levels` times. The finest level has faces only unless `finest` asks

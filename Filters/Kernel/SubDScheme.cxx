@@ -35,28 +35,36 @@ std::shared_ptr<const RowSource> CatmullClarkScheme::MakeRowSource(std::shared_p
 namespace
 {
 // Scheme::RefineFromGrandparent for the schemes with GrandchildRows.
-bool RefineFromGrandparentWith(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent, Level& parent,
-  StencilTable& rows, Level& child, const ParallelFor& parallelFor)
+bool RefineFromGrandparentWith(const Scheme& scheme, GrandchildScheme which, std::shared_ptr<const Level> grandparent,
+  Level& parent, ChildTopology depth, StencilTable& rows, Level& child)
 {
-  auto grandchildRows = std::make_shared<GrandchildRows>(scheme, grandparent, parent, parallelFor);
-  parent = Level(); // the rows and the faces below come from the grandparent
-  child = SplitTwice(scheme, *grandparent, grandchildRows->GetParentEdgeNumbering(), parallelFor);
+  auto grandchildRows = std::make_shared<GrandchildRows>(which, grandparent, parent, scheme.GetParallelFor());
+  if (depth == ChildTopology::FacesOnly)
+  {
+    parent = Level(); // the rows and the faces below come from the grandparent
+    child = SplitTwice(which, *grandparent, grandchildRows->GetParentEdgeNumbering(), scheme.GetParallelFor());
+  }
+  else
+  {
+    child = scheme.Split(parent, depth); // the child's full topology is the parent's split
+    parent = Level();
+  }
   rows = StencilTable::FromSource(std::move(grandchildRows));
   return true;
 }
 }
 
-bool CatmullClarkScheme::RefineFromGrandparent(
-  std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const
+bool CatmullClarkScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
+  ChildTopology depth, StencilTable& rows, Level& child) const
 {
   return RefineFromGrandparentWith(
-    GrandchildScheme::CatmullClark, std::move(grandparent), parent, rows, child, this->GetParallelFor());
+    *this, GrandchildScheme::CatmullClark, std::move(grandparent), parent, depth, rows, child);
 }
 
-bool LoopScheme::RefineFromGrandparent(
-  std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const
+bool LoopScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
+  ChildTopology depth, StencilTable& rows, Level& child) const
 {
-  return RefineFromGrandparentWith(GrandchildScheme::Loop, std::move(grandparent), parent, rows, child, this->GetParallelFor());
+  return RefineFromGrandparentWith(*this, GrandchildScheme::Loop, std::move(grandparent), parent, depth, rows, child);
 }
 
 MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const

@@ -52,14 +52,14 @@ public:
     (void)parent;
     return nullptr;
   }
-  /// For the last of several levels whose rows are written as applied (LevelRows::Written):
-  /// `parent`'s child (faces only) and its rows, written from `grandparent`, whose child
+  /// For levels whose rows are written as applied (LevelRows::WrittenFromGrandparent):
+  /// `parent`'s child (with `depth`) and its rows, written from `grandparent`, whose child
   /// `parent` is (full topology), so that `parent`'s topology need not be kept: it is
   /// released here. Returns false, changing nothing, for schemes that cannot (the default).
-  virtual bool RefineFromGrandparent(
-    std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const
+  virtual bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
+    StencilTable& rows, Level& child) const
   {
-    (void)grandparent, (void)parent, (void)rows, (void)child;
+    (void)grandparent, (void)parent, (void)depth, (void)rows, (void)child;
     return false;
   }
   /// The counts of the next level of a mesh with the given counts (for size guards).
@@ -115,8 +115,8 @@ public:
   StencilTable BuildStencils(const Level& parent) const override;
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   /// SubDGrandchildRows.h.
-  bool RefineFromGrandparent(
-    std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const override;
+  bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
+    StencilTable& rows, Level& child) const override;
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 
@@ -140,8 +140,8 @@ public:
   StencilTable BuildStencils(const Level& parent) const override;
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   /// SubDGrandchildRows.h.
-  bool RefineFromGrandparent(
-    std::shared_ptr<const Level> grandparent, Level& parent, StencilTable& rows, Level& child) const override;
+  bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
+    StencilTable& rows, Level& child) const override;
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 

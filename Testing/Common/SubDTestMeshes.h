@@ -10,6 +10,7 @@
 #include <cmath>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace subdtest
@@ -80,6 +81,15 @@ inline subd::BaseTags MixedSharpnessTags(const subd::MeshTopology& topology, sub
     tags.EdgeSharpness[e] = e % 5 == 0 ? 1.6f : (e % 7 == 0 ? subd::SharpnessInfinite : 0.0f);
   tags.VertexSharpness.assign(static_cast<size_t>(topology.GetNumVertices()), 0.0f);
   tags.VertexSharpness[0] = 2.3f;
+  return tags;
+}
+
+/// Every face's origin and hole flag (read through Level's accessors, whatever the level keeps).
+inline std::vector<std::pair<subd::Index, bool>> FaceTags(const subd::Level& level)
+{
+  std::vector<std::pair<subd::Index, bool>> tags;
+  for (subd::Index f = 0; f < level.Topology.GetNumFaces(); ++f)
+    tags.emplace_back(level.GetFaceOrigin(f), level.IsFaceHole(f));
   return tags;
 }
 

@@ -528,9 +528,10 @@ TEST(Level, SmoothClosedVerticesAgreeWithThePerVertexTest)
 }
 
 // Every level's rows written as they are applied (LevelRows::Written, what the filters use,
-// and WrittenFromGrandparent, what they use with LowMemory) give bit for bit the points,
-// faces, holes and origins the stored table gives, with semi-sharp and sharp creases and
-// corners under both crease methods, for 3 double and 5 float components.
+// and WrittenFromGrandparent, what they use with LowMemory, at levels 2 and 4 from their
+// grandparents) give bit for bit the points, faces, holes and origins the stored table
+// gives, with semi-sharp and sharp creases and corners under both crease methods, for 3
+// double and 5 float components.
 TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
 {
   const auto scheme = GetParam().Make();
@@ -544,15 +545,18 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
       std::vector<float> values(static_cast<size_t>(mesh.NumVertices()) * 5);
       for (size_t i = 0; i < values.size(); ++i)
         values[i] = static_cast<float>(std::sin(0.7 * i));
-      for (int levels = 1; levels <= 3; ++levels)
+      for (int levels = 1; levels <= 4; ++levels)
       {
         subd::Hierarchy stored;
         subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, stored);
-        for (subd::LevelRows rows : { subd::LevelRows::Written, subd::LevelRows::WrittenFromGrandparent })
+        for (int variant = 0; variant < 3; ++variant)
         {
+          // Written rows; written from the grandparent every other level (with the finest
+          // level faces only, and with its full topology).
+          const subd::LevelRows rows = variant == 0 ? subd::LevelRows::Written : subd::LevelRows::WrittenFromGrandparent;
+          const subd::ChildTopology finest = variant == 2 ? subd::ChildTopology::Full : subd::ChildTopology::FacesOnly;
           subd::Hierarchy written;
-          subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, written, nullptr,
-            subd::ChildTopology::FacesOnly, rows);
+          subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, written, nullptr, finest, rows);
           const bool writes = scheme->MakeRowSource(std::make_shared<subd::Level>()) != nullptr;
           for (const subd::StencilTable& table : written.Stencils)
             EXPECT_EQ(table.IsStored(), !writes);
@@ -563,8 +567,15 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
           stored.Evaluate(values.data(), 5, a.data());
           written.Evaluate(values.data(), 5, b.data());
           EXPECT_EQ(a, b) << mesh.Name << " L" << levels;
-          EXPECT_EQ(written.Finest.FaceOrigin, stored.Finest.FaceOrigin) << mesh.Name << " L" << levels;
-          EXPECT_EQ(written.Finest.FaceIsHole, stored.Finest.FaceIsHole) << mesh.Name << " L" << levels;
+          EXPECT_EQ(subdtest::FaceTags(written.Finest), subdtest::FaceTags(stored.Finest)) << mesh.Name << " L" << levels;
+          if (finest == subd::ChildTopology::Full)
+          {
+            subd::Hierarchy storedFull;
+            subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, storedFull, nullptr, finest);
+            EXPECT_EQ(written.Finest.Topology.GetNumEdges(), storedFull.Finest.Topology.GetNumEdges()) << mesh.Name;
+            EXPECT_EQ(written.Finest.EdgeSharpness, storedFull.Finest.EdgeSharpness) << mesh.Name << " L" << levels;
+            EXPECT_EQ(written.Finest.VertexSharpness, storedFull.Finest.VertexSharpness) << mesh.Name << " L" << levels;
+          }
         }
       }
     }
@@ -633,8 +644,8 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
           EXPECT_EQ(twice.Topology.GetNumVertices(), stepwise.Topology.GetNumVertices()) << what;
           EXPECT_EQ(twice.Topology.GetFaceOffsetArray(), stepwise.Topology.GetFaceOffsetArray()) << what;
           EXPECT_EQ(twice.Topology.GetFaceVertexArray(), stepwise.Topology.GetFaceVertexArray()) << what;
-          EXPECT_EQ(twice.FaceIsHole, stepwise.FaceIsHole) << what;
-          EXPECT_EQ(twice.FaceOrigin, stepwise.FaceOrigin) << what;
+          EXPECT_EQ(subdtest::FaceTags(twice), subdtest::FaceTags(stepwise)) << what;
+          EXPECT_EQ(twice.FaceOrigin.size() * 4, stepwise.FaceOrigin.size()) << what; // kept per parent face
           EXPECT_EQ(twice.Depth, stepwise.Depth) << what;
           grandparent = std::make_shared<subd::Level>(parent);
         }
