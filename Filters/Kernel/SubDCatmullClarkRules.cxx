@@ -77,20 +77,9 @@ Index CatmullClarkRowWriter::WriteVertexRow(Index v, Index* sources, double* wei
   if (this->SmoothVertex[v])
   {
     // Every edge point around v follows the smooth rule: the form that reads them.
-    const double n = faces.size();
-    sources[0] = v;
-    weights[0] = (n - 3.0) / n;
-    for (Index i = 0; i < edges.size(); ++i)
-    {
-      sources[1 + i] = numParents + this->Number.EdgePoint(edges[i]);
-      weights[1 + i] = 4.0 / (n * n);
-    }
-    for (Index i = 0; i < faces.size(); ++i)
-    {
-      sources[1 + edges.size() + i] = numParents + this->Number.FacePoint(faces[i]);
-      weights[1 + edges.size() + i] = -1.0 / (n * n);
-    }
-    return smoothSize;
+    return WriteCatmullClarkSmoothVertexRow(
+      v, edges.size(), faces.size(), [&](Index i) { return numParents + this->Number.EdgePoint(edges[i]); },
+      [&](Index i) { return numParents + this->Number.FacePoint(faces[i]); }, sources, weights);
   }
   const VertexRulePlan plan = PlanVertexRule(this->Parent, v);
   WritePrimalVertexRow(topo, plan, v, smoothSize, sources, weights, [&](Index* src, double* wts) {

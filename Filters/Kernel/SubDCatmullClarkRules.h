@@ -29,6 +29,29 @@ namespace subd
 {
 SUBDKERNEL_EXPORT StencilTable BuildCatmullClarkStencils(const Level& parent);
 
+/// The smooth vertex row of point v from the new edge and face points (the form that reads
+/// them): (n-3)/n v + 4/n^2 sum(E_i) - 1/n^2 sum(F_i), n faces; edgeSource(i) and
+/// faceSource(i) name the i-th edge and face point as sources. Returns the row's size.
+template <typename EdgeSource, typename FaceSource>
+Index WriteCatmullClarkSmoothVertexRow(Index v, Index numEdges, Index numFaces, EdgeSource&& edgeSource,
+  FaceSource&& faceSource, Index* sources, double* weights)
+{
+  const double n = numFaces;
+  sources[0] = v;
+  weights[0] = (n - 3.0) / n;
+  for (Index i = 0; i < numEdges; ++i)
+  {
+    sources[1 + i] = edgeSource(i);
+    weights[1 + i] = 4.0 / (n * n);
+  }
+  for (Index i = 0; i < numFaces; ++i)
+  {
+    sources[1 + numEdges + i] = faceSource(i);
+    weights[1 + numEdges + i] = -1.0 / (n * n);
+  }
+  return 1 + numEdges + numFaces;
+}
+
 /// The same rows written one at a time (SubDRowWriting.h), each vertex's rule planned as its
 /// row is written: what BuildCatmullClarkStencils stores, and what the finest level applies
 /// without storing.

@@ -69,31 +69,21 @@ struct CatmullClarkSmoothRows : ParentFromGrandparent<QuadSplitShape>
   }
   Index WriteEdgeRow(Index f, Index corner, Index key, Index* sources, double* weights) const
   {
-    Index* faces = sources + 2;
-    this->GetEdge(f, corner, key, sources, faces);
-    faces[0] += this->NumParents;
-    faces[1] += this->NumParents;
-    std::fill(weights, weights + 4, 0.25);
+    Index ends[2], faces[2];
+    this->GetEdge(f, corner, key, ends, faces);
+    WritePrimalEdgeRow(ends, 0.0f, 0.25, 0.25, sources, weights, [&](Index* sides) {
+      sides[0] = this->NumParents + faces[0];
+      sides[1] = this->NumParents + faces[1];
+    });
     return 4;
   }
   Index WriteVertexRow(Index p, Index* sources, double* weights, Index* scratch, Index listSize) const
   {
     Index *faces, *edges, numFaces, numEdges;
     this->GetPoint(p, scratch, listSize, faces, numFaces, edges, numEdges);
-    const double n = numFaces;
-    sources[0] = p;
-    weights[0] = (n - 3.0) / n;
-    for (Index i = 0; i < numEdges; ++i)
-    {
-      sources[1 + i] = this->NumParents + this->NumChildFaces + edges[i];
-      weights[1 + i] = 4.0 / (n * n);
-    }
-    for (Index i = 0; i < numFaces; ++i)
-    {
-      sources[1 + numEdges + i] = this->NumParents + faces[i];
-      weights[1 + numEdges + i] = -1.0 / (n * n);
-    }
-    return 1 + numEdges + numFaces;
+    return WriteCatmullClarkSmoothVertexRow(
+      p, numEdges, numFaces, [&](Index i) { return this->NumParents + this->NumChildFaces + edges[i]; },
+      [&](Index i) { return this->NumParents + faces[i]; }, sources, weights);
   }
 };
 
@@ -106,34 +96,25 @@ struct LoopSmoothRows : ParentFromGrandparent<TriangleSplitShape>
   Index WriteFaceRow(Index, Index, Index*, double*) const { return 0; }
   Index WriteEdgeRow(Index f, Index corner, Index key, Index* sources, double* weights) const
   {
-    Index faces[2];
-    this->GetEdge(f, corner, key, sources, faces);
-    for (int k = 0; k < 2; ++k)
-    {
-      // The corner of the C triangle across from the edge.
-      Index corners[3];
-      this->Split.GetChildCorners(faces[k] / 4, faces[k] % 4, corners);
-      const Index* far = std::find_if(corners, corners + 3, [&](Index c) { return c != sources[0] && c != sources[1]; });
-      sources[2 + k] = *far;
-    }
-    weights[0] = weights[1] = 0.375;
-    weights[2] = weights[3] = 0.125;
+    Index ends[2], faces[2];
+    this->GetEdge(f, corner, key, ends, faces);
+    WritePrimalEdgeRow(ends, 0.0f, 0.375, 0.125, sources, weights, [&](Index* sides) {
+      for (int k = 0; k < 2; ++k)
+      {
+        // The corner of the C triangle across from the edge.
+        Index corners[3];
+        this->Split.GetChildCorners(faces[k] / 4, faces[k] % 4, corners);
+        sides[k] = *std::find_if(corners, corners + 3, [&](Index c) { return c != ends[0] && c != ends[1]; });
+      }
+    });
     return 4;
   }
   Index WriteVertexRow(Index p, Index* sources, double* weights, Index* scratch, Index listSize) const
   {
     Index *faces, *edges, numFaces, numEdges;
     this->GetPoint(p, scratch, listSize, faces, numFaces, edges, numEdges);
-    const Index n = numEdges;
-    const double beta = this->Beta(n);
-    sources[0] = p;
-    weights[0] = 1.0 - 1.6 * n * beta;
-    for (Index i = 0; i < n; ++i)
-    {
-      sources[1 + i] = this->NumParents + edges[i];
-      weights[1 + i] = 1.6 * beta;
-    }
-    return 1 + n;
+    return WriteLoopSmoothVertexRow(
+      p, numEdges, this->Beta(numEdges), [&](Index i) { return this->NumParents + edges[i]; }, sources, weights);
   }
 };
 

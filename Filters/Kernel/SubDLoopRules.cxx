@@ -31,12 +31,18 @@ LoopRowWriter::LoopRowWriter(const Level& parent, const ParallelFor& parallelFor
 }
 
 LoopBetas::LoopBetas()
-  : Table(64)
+  : Table([]() -> const std::vector<double>& {
+    static const std::vector<double> table = [] {
+      std::vector<double> values(64);
+      for (Index n = 1; n < 64; ++n)
+      {
+        values[n] = n == 6 ? 0.0625 : LoopBeta(n);
+      }
+      return values;
+    }();
+    return table;
+  }())
 {
-  for (Index n = 1; n < 64; ++n)
-  {
-    this->Table[n] = n == 6 ? 0.0625 : LoopBeta(n);
-  }
 }
 
 Index LoopRowWriter::WriteRow(Index row, Index* sources, double* weights) const
@@ -58,16 +64,8 @@ Index LoopRowWriter::WriteRow(Index row, Index* sources, double* weights) const
   if (this->SmoothVertex[v])
   {
     // Every edge point around v follows the smooth rule: the form that reads them.
-    const Index n = edges.size();
-    const double beta = this->Beta(n);
-    sources[0] = v;
-    weights[0] = 1.0 - 1.6 * n * beta;
-    for (Index i = 0; i < n; ++i)
-    {
-      sources[1 + i] = this->GetNumParents() + this->Number.EdgePoint(edges[i]);
-      weights[1 + i] = 1.6 * beta;
-    }
-    return 1 + n;
+    return WriteLoopSmoothVertexRow(v, edges.size(), this->Beta(edges.size()),
+      [&](Index i) { return this->GetNumParents() + this->Number.EdgePoint(edges[i]); }, sources, weights);
   }
   const VertexRulePlan plan = PlanVertexRule(this->Parent, v);
   WritePrimalVertexRow(topo, plan, v, 1 + edges.size(), sources, weights, [&](Index* src, double* wts) {

@@ -32,7 +32,7 @@ namespace subd
 SUBDKERNEL_EXPORT double LoopBeta(Index n);
 
 /// LoopBeta as the rows use it: 1/16 exactly for the regular valence 6, the small valences'
-/// values computed once.
+/// values computed once per process.
 class SUBDKERNEL_EXPORT LoopBetas
 {
 public:
@@ -40,8 +40,24 @@ public:
   double operator()(Index n) const { return n < static_cast<Index>(this->Table.size()) ? this->Table[n] : LoopBeta(n); }
 
 private:
-  std::vector<double> Table;
+  const std::vector<double>& Table;
 };
+
+/// The smooth vertex row of point v from the new edge points (the form that reads them):
+/// (1 - 8/5 n beta) v + 8/5 beta sum(E_i), n edges; edgeSource(i) names the i-th edge
+/// point as a source. Returns the row's size.
+template <typename EdgeSource>
+Index WriteLoopSmoothVertexRow(Index v, Index n, double beta, EdgeSource&& edgeSource, Index* sources, double* weights)
+{
+  sources[0] = v;
+  weights[0] = 1.0 - 1.6 * n * beta;
+  for (Index i = 0; i < n; ++i)
+  {
+    sources[1 + i] = edgeSource(i);
+    weights[1 + i] = 1.6 * beta;
+  }
+  return 1 + n;
+}
 
 /// Requires every face of `parent` to be a triangle.
 SUBDKERNEL_EXPORT StencilTable BuildLoopStencils(const Level& parent);
