@@ -217,12 +217,13 @@ void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
   this->EmittedFaces.clear();
   this->OutputPointOfFinest.clear();
   this->FinestPointOfOutput.clear();
-  this->NumFinestFaces = finest.Topology.GetNumFaces();
+  this->NumFinestFaces = this->Hierarchy.GetNumFinestFaces();
   this->CompactPoints = someBaseVertexUnused || finest.HasHoles() || !this->FaceGhostLayer.empty();
   if (!this->CompactPoints)
   {
-    return;
+    return; // the faces, if left to be made later, are made only for the output
   }
+  this->Hierarchy.MakeFinestFaces();
   const subd::Index numFinestFaces = finest.Topology.GetNumFaces();
   for (subd::Index f = 0; f < numFinestFaces; ++f)
   {
@@ -576,6 +577,10 @@ int vtkSubDSurfaceFilter::Execute(
     }
     ++this->NumberOfStencilBuilds;
 
+    if (!faceRank.empty())
+    {
+      cache.Hierarchy.MakeFinestFaces();
+    }
     cache.SeamLineCopies = faceRank.empty()
       ? std::vector<std::uint8_t>()
       : vtkSubDSeamLineCopies(cache.Hierarchy.Finest, cache.FaceGhostLayer, faceRank);
@@ -598,8 +603,10 @@ int vtkSubDSurfaceFilter::Execute(
 
   const subd::Hierarchy& hierarchy = cache.Hierarchy;
   const subd::Level& finest = hierarchy.Finest;
+  // LowMemory keeps no scratch levels between updates: they are freed before the faces (made
+  // last, below) take their memory.
   vtkSubDPointDataInterpolation interpolation(hierarchy, vtkSubDPointDataInterpolation::SMPFor,
-    cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr, &cache.Scratch);
+    cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr, this->LowMemory ? nullptr : &cache.Scratch);
 
   // Points.
   vtkNew<vtkDoubleArray> basePoints;
@@ -891,6 +898,7 @@ vtkSmartPointer<vtkCellArray> vtkSubDSurfaceFilter::MakeOutputFaces()
 {
   vtkInternals& cache = *this->Internals;
   vtkNew<vtkCellArray> polys;
+  cache.Hierarchy.MakeFinestFaces();
   subd::IndexArray kernelOffsets, kernelVertices;
   if (!cache.CompactPoints && cache.Hierarchy.Finest.Topology.ReleaseFaces(kernelOffsets, kernelVertices))
   {

@@ -312,12 +312,11 @@ namespace
 // The faces of the split of every C face, from the C face's corners and edges (as
 // SplitQuads and SplitTriangles make them from C's topology).
 template <typename Shape>
-Level SplitTwiceWith(const Shape& shape, const Level& grandparent, const ChildEdgeNumbering& parentEdges,
+MeshTopology SplitTwiceFacesWith(const Shape& shape, const MeshTopology& topo, const ChildEdgeNumbering& parentEdges,
   const ParallelFor& parallelFor)
 {
   constexpr bool quads = Shape::ChildFaceSize == 4;
   constexpr Index size = Shape::ChildFaceSize;
-  const MeshTopology& topo = grandparent.Topology;
   const Index numChildFaces = shape.CornerChild(topo.GetNumFaces(), 0);
   const Index numChildEdges = parentEdges.FirstEdgeOfFace.back();
   const Index numChildPoints = shape.GetNumFacePoints() + topo.GetNumEdges() + topo.GetNumVertices();
@@ -369,26 +368,55 @@ Level SplitTwiceWith(const Shape& shape, const Level& grandparent, const ChildEd
     }
   });
   offsets[numFineFaces] = size * numFineFaces;
+  const Index numFinePoints = quads ? quadPoint.VertexPoint(numChildPoints) : trianglePoint.VertexPoint(numChildPoints);
+  return MeshTopology::BuildFacesOnly(numFinePoints, std::move(offsets), std::move(vertices));
+}
 
+template <typename Shape>
+Level SplitTwiceTagsWith(const Shape& shape, const Level& grandparent, const ParallelFor& parallelFor)
+{
   // The tags stay with the faces of the level between (four finest faces each).
   Level fine;
   InheritFaceTags(grandparent, fine, [&shape](Index f) { return shape.CornerChild(f, 0); }, parallelFor);
   fine.FaceTagShift = 2;
   fine.Depth = grandparent.Depth + 2;
   fine.Creasing = grandparent.Creasing;
-  const Index numFinePoints = quads ? quadPoint.VertexPoint(numChildPoints) : trianglePoint.VertexPoint(numChildPoints);
-  fine.Topology = MeshTopology::BuildFacesOnly(numFinePoints, std::move(offsets), std::move(vertices));
   return fine;
 }
+}
+
+Level SplitTwiceTags(GrandchildScheme scheme, const Level& grandparent, const ParallelFor& parallelFor)
+{
+  if (scheme == GrandchildScheme::CatmullClark)
+  {
+    return SplitTwiceTagsWith(QuadSplitShape{ grandparent.Topology }, grandparent, parallelFor);
+  }
+  return SplitTwiceTagsWith(TriangleSplitShape{ grandparent.Topology }, grandparent, parallelFor);
+}
+
+MeshTopology SplitTwiceFaces(GrandchildScheme scheme, const MeshTopology& grandparent,
+  const ChildEdgeNumbering& parentEdges, const ParallelFor& parallelFor)
+{
+  if (scheme == GrandchildScheme::CatmullClark)
+  {
+    return SplitTwiceFacesWith(QuadSplitShape{ grandparent }, grandparent, parentEdges, parallelFor);
+  }
+  return SplitTwiceFacesWith(TriangleSplitShape{ grandparent }, grandparent, parentEdges, parallelFor);
+}
+
+Index CountSplitTwiceFaces(GrandchildScheme scheme, const MeshTopology& grandparent)
+{
+  const Index numChildFaces = scheme == GrandchildScheme::CatmullClark
+    ? QuadSplitShape{ grandparent }.CornerChild(grandparent.GetNumFaces(), 0)
+    : TriangleSplitShape{ grandparent }.CornerChild(grandparent.GetNumFaces(), 0);
+  return 4 * numChildFaces;
 }
 
 Level SplitTwice(GrandchildScheme scheme, const Level& grandparent, const ChildEdgeNumbering& parentEdges,
   const ParallelFor& parallelFor)
 {
-  if (scheme == GrandchildScheme::CatmullClark)
-  {
-    return SplitTwiceWith(QuadSplitShape{ grandparent.Topology }, grandparent, parentEdges, parallelFor);
-  }
-  return SplitTwiceWith(TriangleSplitShape{ grandparent.Topology }, grandparent, parentEdges, parallelFor);
+  Level fine = SplitTwiceTags(scheme, grandparent, parallelFor);
+  fine.Topology = SplitTwiceFaces(scheme, grandparent.Topology, parentEdges, parallelFor);
+  return fine;
 }
 }

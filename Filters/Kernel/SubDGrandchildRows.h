@@ -52,6 +52,7 @@ public:
 
   /// Every row in a stored table (to inspect them).
   StencilTable ToStencilTable() const;
+  const Level& GetGrandparent() const { return *this->Grandparent; }
   /// How the parent's edges are numbered (for SplitTwice).
   const ChildEdgeNumbering& GetParentEdgeNumbering() const { return this->ParentEdges; }
   /// The rows stored because they are not smooth.
@@ -78,9 +79,18 @@ private:
 /// the level between: the same faces, holes and origins as splitting twice (the first with
 /// the full topology, the second faces only), the tags kept per face of the level between
 /// (Level::FaceTagShift 2). `parentEdges` numbers the edges of the level
-/// between (GrandchildRows::GetParentEdgeNumbering).
+/// between (GrandchildRows::GetParentEdgeNumbering). SplitTwiceTags and SplitTwiceFaces
+/// make its two parts, for a caller that makes the faces later (Hierarchy::MakeFinestFaces).
 SUBDKERNEL_EXPORT Level SplitTwice(GrandchildScheme scheme, const Level& grandparent,
   const ChildEdgeNumbering& parentEdges, const ParallelFor& parallelFor = SerialFor);
+/// SplitTwice's level without faces: its tags, depth and crease method.
+SUBDKERNEL_EXPORT Level SplitTwiceTags(
+  GrandchildScheme scheme, const Level& grandparent, const ParallelFor& parallelFor = SerialFor);
+/// SplitTwice's faces.
+SUBDKERNEL_EXPORT MeshTopology SplitTwiceFaces(GrandchildScheme scheme, const MeshTopology& grandparent,
+  const ChildEdgeNumbering& parentEdges, const ParallelFor& parallelFor = SerialFor);
+/// The number of SplitTwice's faces.
+SUBDKERNEL_EXPORT Index CountSplitTwiceFaces(GrandchildScheme scheme, const MeshTopology& grandparent);
 }
 
 #endif

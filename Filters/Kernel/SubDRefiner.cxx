@@ -8,6 +8,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   out.NumBasePoints = base.Topology.GetNumVertices();
   out.Stencils.clear();
   out.Stencils.reserve(static_cast<size_t>(levels > 0 ? levels : 0));
+  out.FinestFaces = LaterFaces();
   Level current = std::move(base);
   std::shared_ptr<const Level> grandparent; // current's parent, kept by the rows written from it
   for (int l = 0; l < levels; ++l)
@@ -23,7 +24,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
     {
       StencilTable rows;
       Level child;
-      refined = scheme.RefineFromGrandparent(grandparent, current, depth, rows, child);
+      refined = scheme.RefineFromGrandparent(grandparent, current, depth, rows, child, out.FinestFaces);
       if (refined)
       {
         out.Stencils.push_back(std::move(rows));
@@ -61,6 +62,10 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
     }
   }
   out.Finest = std::move(current);
+  if (levelRows == LevelRows::WrittenFromGrandparent)
+  {
+    ReleaseFreeMemory(); // the topologies of the levels between
+  }
   return true;
 }
 }

@@ -34,12 +34,35 @@ struct SUBDKERNEL_EXPORT Hierarchy
   /// points to as many points (the limit projection), which Evaluate then applies too.
   std::vector<StencilTable> Stencils;
   Level Finest; ///< the last level: its faces, holes and origins (edges: see Refine)
+  /// Finest's faces when Refine left them to be made later (LevelRows::WrittenFromGrandparent
+  /// with a faces-only finest level): Finest has its tags, and MakeFinestFaces its faces.
+  LaterFaces FinestFaces;
 
   int GetNumStencilTables() const { return static_cast<int>(Stencils.size()); }
   /// The points the tables make (curve hierarchies have tables but no Finest level).
   Index GetNumFinestPoints() const
   {
     return Stencils.empty() ? Finest.Topology.GetNumVertices() : Stencils.back().GetNumRows();
+  }
+
+  /// Whether Finest has its faces (see FinestFaces).
+  bool HasFinestFaces() const { return !this->FinestFaces.Make; }
+  Index GetNumFinestFaces() const
+  {
+    return this->HasFinestFaces() ? this->Finest.Topology.GetNumFaces() : this->FinestFaces.NumFaces;
+  }
+  /// Makes Finest's faces if they are still to be made. A caller that evaluates the points
+  /// first, and frees its scratch levels, never holds those and the faces at once: with a
+  /// faces-only finest level written from its grandparent, the peak memory is then the
+  /// output plus the grandparent's topology.
+  void MakeFinestFaces()
+  {
+    if (!this->HasFinestFaces())
+    {
+      ReleaseFreeMemory(); // what the caller freed (its scratch) makes room for the faces
+      this->Finest.Topology = this->FinestFaces.Make();
+      this->FinestFaces = LaterFaces();
+    }
   }
 
   /// Applies every level's stencils to `components` values per base point; `finest` receives
@@ -66,7 +89,8 @@ enum class LevelRows
                           ///< above it, so the largest topology of all, the finest level's
                           ///< parent's, is not kept, nor the ones two, four... levels above
                           ///< it: about a third less peak memory, for slower evaluations
-                          ///< (each row works out its neighbourhood).
+                          ///< (each row works out its neighbourhood). A faces-only finest
+                          ///< level then gets its faces from Hierarchy::MakeFinestFaces.
 };
 
 /// Refines `base` `levels` times. The finest level has faces only unless `finest` asks

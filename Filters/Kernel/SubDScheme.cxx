@@ -36,13 +36,18 @@ namespace
 {
 // Scheme::RefineFromGrandparent for the schemes with GrandchildRows.
 bool RefineFromGrandparentWith(const Scheme& scheme, GrandchildScheme which, std::shared_ptr<const Level> grandparent,
-  Level& parent, ChildTopology depth, StencilTable& rows, Level& child)
+  Level& parent, ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces)
 {
   auto grandchildRows = std::make_shared<GrandchildRows>(which, grandparent, parent, scheme.GetParallelFor());
   if (depth == ChildTopology::FacesOnly)
   {
     parent = Level(); // the rows and the faces below come from the grandparent
-    child = SplitTwice(which, *grandparent, grandchildRows->GetParentEdgeNumbering(), scheme.GetParallelFor());
+    child = SplitTwiceTags(which, *grandparent, scheme.GetParallelFor());
+    childFaces.NumFaces = CountSplitTwiceFaces(which, grandparent->Topology);
+    childFaces.Make = [which, grandchildRows, parallelFor = scheme.GetParallelFor()] {
+      return SplitTwiceFaces(
+        which, grandchildRows->GetGrandparent().Topology, grandchildRows->GetParentEdgeNumbering(), parallelFor);
+    };
   }
   else
   {
@@ -55,16 +60,17 @@ bool RefineFromGrandparentWith(const Scheme& scheme, GrandchildScheme which, std
 }
 
 bool CatmullClarkScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
-  ChildTopology depth, StencilTable& rows, Level& child) const
+  ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces) const
 {
   return RefineFromGrandparentWith(
-    *this, GrandchildScheme::CatmullClark, std::move(grandparent), parent, depth, rows, child);
+    *this, GrandchildScheme::CatmullClark, std::move(grandparent), parent, depth, rows, child, childFaces);
 }
 
 bool LoopScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
-  ChildTopology depth, StencilTable& rows, Level& child) const
+  ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces) const
 {
-  return RefineFromGrandparentWith(*this, GrandchildScheme::Loop, std::move(grandparent), parent, depth, rows, child);
+  return RefineFromGrandparentWith(
+    *this, GrandchildScheme::Loop, std::move(grandparent), parent, depth, rows, child, childFaces);
 }
 
 MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const

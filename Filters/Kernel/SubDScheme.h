@@ -10,11 +10,19 @@
 #include "SubDParallel.h"
 #include "SubDStencilTable.h"
 
+#include <functional>
 #include <memory>
 #include <string>
 
 namespace subd
 {
+/// A level's faces made when asked rather than with the level (Hierarchy::MakeFinestFaces).
+struct LaterFaces
+{
+  Index NumFaces = 0;
+  std::function<MeshTopology()> Make; ///< empty when nothing is left to make
+};
+
 /// Element counts of a level, in double so that predictions for deep levels cannot overflow.
 struct MeshCounts
 {
@@ -55,11 +63,14 @@ public:
   /// For levels whose rows are written as applied (LevelRows::WrittenFromGrandparent):
   /// `parent`'s child (with `depth`) and its rows, written from `grandparent`, whose child
   /// `parent` is (full topology), so that `parent`'s topology need not be kept: it is
-  /// released here. Returns false, changing nothing, for schemes that cannot (the default).
+  /// released here. A faces-only child gets its tags but not its faces: `childFaces` makes
+  /// them (from the grandparent, which the rows keep), so that a caller can first evaluate
+  /// the points and free its scratch. Returns false, changing nothing, for schemes that
+  /// cannot (the default).
   virtual bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
-    StencilTable& rows, Level& child) const
+    StencilTable& rows, Level& child, LaterFaces& childFaces) const
   {
-    (void)grandparent, (void)parent, (void)depth, (void)rows, (void)child;
+    (void)grandparent, (void)parent, (void)depth, (void)rows, (void)child, (void)childFaces;
     return false;
   }
   /// The counts of the next level of a mesh with the given counts (for size guards).
@@ -116,7 +127,7 @@ public:
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   /// SubDGrandchildRows.h.
   bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
-    StencilTable& rows, Level& child) const override;
+    StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 
@@ -141,7 +152,7 @@ public:
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   /// SubDGrandchildRows.h.
   bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
-    StencilTable& rows, Level& child) const override;
+    StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 

@@ -4,6 +4,9 @@
 #ifdef __linux__
 #include <sys/mman.h>
 #endif
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
 
 namespace subd
 {
@@ -50,6 +53,13 @@ void* AllocateLargeBlock(std::size_t bytes)
 void FreeLargeBlock(void* block) noexcept
 {
   std::free(block);
+}
+
+void ReleaseFreeMemory() noexcept
+{
+#ifdef __GLIBC__
+  malloc_trim(0);
+#endif
 }
 
 const char* ToString(BoundaryRule rule)

@@ -30,6 +30,11 @@ constexpr std::size_t LargeBlockBytes = std::size_t(4) << 20;
 /// pages gave steady times. Throws std::bad_alloc when out of memory.
 SUBDKERNEL_EXPORT void* AllocateLargeBlock(std::size_t bytes);
 SUBDKERNEL_EXPORT void FreeLargeBlock(void* block) noexcept;
+/// Hands the memory the process has freed back to the system where the C library keeps it
+/// (glibc keeps freed blocks below its moving mmap threshold, up to 32 MiB each, for reuse):
+/// called between the phases of a low-memory refinement, so that freed topology does not
+/// count twice in the peak. Does nothing elsewhere.
+SUBDKERNEL_EXPORT void ReleaseFreeMemory() noexcept;
 
 /// std::allocator, except that elements added without a value (resize, the size
 /// constructor) are default-initialised: left as they are for int, float and plain structs.

@@ -529,8 +529,8 @@ TEST(Level, SmoothClosedVerticesAgreeWithThePerVertexTest)
 
 // Every level's rows written as they are applied (LevelRows::Written, what the filters use,
 // and WrittenFromGrandparent, what they use with LowMemory, at levels 2 and 4 from their
-// grandparents) give bit for bit the points, faces, holes and origins the stored table
-// gives, with semi-sharp and sharp creases and corners under both crease methods, for 3
+// grandparents, the finest faces then made after the points) give bit for bit the points,
+// faces, holes and origins the stored table gives, with semi-sharp and sharp creases and corners under both crease methods, for 3
 // double and 5 float components.
 TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
 {
@@ -561,12 +561,21 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
           for (const subd::StencilTable& table : written.Stencils)
             EXPECT_EQ(table.IsStored(), !writes);
           ASSERT_EQ(written.GetNumFinestPoints(), stored.GetNumFinestPoints());
-          ASSERT_EQ(written.Finest.Topology.GetFaceVertexArray(), stored.Finest.Topology.GetFaceVertexArray());
+          // A faces-only finest level written from its grandparent gets its faces when
+          // asked, after the points (which need none of them).
+          const std::string name = scheme->GetName();
+          const bool fromGrandparent = variant == 1 && levels >= 2 && (name == "catmull-clark" || name == "loop");
+          EXPECT_EQ(written.HasFinestFaces(), !fromGrandparent) << mesh.Name << " L" << levels;
+          EXPECT_EQ(written.GetNumFinestFaces(), stored.GetNumFinestFaces()) << mesh.Name << " L" << levels;
           EXPECT_EQ(Evaluate(written, mesh.Points), Evaluate(stored, mesh.Points)) << mesh.Name << " L" << levels;
           std::vector<float> a(static_cast<size_t>(stored.GetNumFinestPoints()) * 5), b(a.size());
           stored.Evaluate(values.data(), 5, a.data());
           written.Evaluate(values.data(), 5, b.data());
           EXPECT_EQ(a, b) << mesh.Name << " L" << levels;
+          written.MakeFinestFaces();
+          EXPECT_TRUE(written.HasFinestFaces());
+          ASSERT_EQ(written.Finest.Topology.GetFaceVertexArray(), stored.Finest.Topology.GetFaceVertexArray());
+          EXPECT_EQ(written.Finest.Topology.GetNumVertices(), stored.Finest.Topology.GetNumVertices());
           EXPECT_EQ(subdtest::FaceTags(written.Finest), subdtest::FaceTags(stored.Finest)) << mesh.Name << " L" << levels;
           if (finest == subd::ChildTopology::Full)
           {
