@@ -26,11 +26,8 @@ struct ParentFromGrandparent
   {
     const MeshTopology& topo = this->Topology;
     const Index size = Shape::ChildFaceSize;
-    const Index child = corner / size, slot = corner % size;
-    Index corners[4];
-    this->Split.GetChildCorners(f, child - this->Split.CornerChild(f, 0), corners);
-    ends[0] = corners[slot];
-    ends[1] = corners[slot + 1 == size ? 0 : slot + 1];
+    const Index child = corner / size;
+    this->GetEdgeEnds(f, corner, ends);
     if (key >= 2 * this->Split.NumEdges)
     {
       this->Split.GetInteriorEdgeFaces(f, key, faces);
@@ -44,6 +41,26 @@ struct ParentFromGrandparent
     const Index i = topo.GetEdgePosition(g, e);
     faces[0] = child;
     faces[1] = this->Split.CornerChild(g, topo.GetFaceVertices(g)[i] == v ? i : (i + 1 == topo.GetFaceSize(g) ? 0 : i + 1));
+  }
+
+  // The ends of the C edge first met at `corner` of P's face f's children, in the order C
+  // lists them (from that corner to the next).
+  void GetEdgeEnds(Index f, Index corner, Index* ends) const
+  {
+    const Index size = Shape::ChildFaceSize;
+    const Index child = corner / size, slot = corner % size;
+    Index corners[4];
+    this->Split.GetChildCorners(f, child - this->Split.CornerChild(f, 0), corners);
+    ends[0] = corners[slot];
+    ends[1] = corners[slot + 1 == size ? 0 : slot + 1];
+  }
+
+  // The face point of C's face j of P's face f (quad split): the centroid of its corners.
+  Index WriteCentroidRow(Index f, Index j, Index* sources, double* weights) const
+  {
+    this->Split.GetChildCorners(f, j, sources);
+    std::fill(weights, weights + 4, 1.0 / 4);
+    return 4;
   }
 
   // C's point p: its faces and edges as C lists them; `scratch` holds three lists.
@@ -63,9 +80,7 @@ struct CatmullClarkSmoothRows : ParentFromGrandparent<QuadSplitShape>
 
   Index WriteFaceRow(Index f, Index j, Index* sources, double* weights) const
   {
-    this->Split.GetChildCorners(f, j, sources);
-    std::fill(weights, weights + 4, 1.0 / 4);
-    return 4;
+    return this->WriteCentroidRow(f, j, sources, weights);
   }
   Index WriteEdgeRow(Index f, Index corner, Index key, Index* sources, double* weights) const
   {
@@ -118,6 +133,31 @@ struct LoopSmoothRows : ParentFromGrandparent<TriangleSplitShape>
   }
 };
 
+// The linear rules (LinearRowWriter's, in its order and weights): centroids (bilinear),
+// midpoints and copies, each row from the grandparent alone.
+template <typename SplitShape>
+struct LinearRows : ParentFromGrandparent<SplitShape>
+{
+  static constexpr bool HasFaceRows = SplitShape::ChildFaceSize == 4;
+
+  Index WriteFaceRow(Index f, Index j, Index* sources, double* weights) const
+  {
+    return this->WriteCentroidRow(f, j, sources, weights);
+  }
+  Index WriteEdgeRow(Index f, Index corner, Index, Index* sources, double* weights) const
+  {
+    this->GetEdgeEnds(f, corner, sources);
+    weights[0] = weights[1] = 0.5;
+    return 2;
+  }
+  Index WriteVertexRow(Index p, Index* sources, double* weights, Index*, Index) const
+  {
+    sources[0] = p;
+    weights[0] = 1.0;
+    return 1;
+  }
+};
+
 // The rows `writer` (over the parent C) has no smooth form for, from row `first` on.
 template <typename Writer>
 void StoreRowsWithoutSmoothForm(const Writer& writer, Index first, std::vector<Index>& rows, StencilTable& table)
@@ -140,27 +180,35 @@ void StoreRowsWithoutSmoothForm(const Writer& writer, Index first, std::vector<I
 }
 }
 
-GrandchildRows::GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent,
-  const Level& parent, const ParallelFor& parallelFor)
+GrandchildRows::GrandchildRows(
+  GrandchildScheme scheme, std::shared_ptr<const Level> grandparent, const ParallelFor& parallelFor)
   : Scheme(scheme)
   , Grandparent(std::move(grandparent))
 {
+  // C's counts, from P: C's faces are the children of P's corners (quads) or four per
+  // triangle; its points stand for P's faces (quads), edges and vertices.
   const MeshTopology& topo = this->Grandparent->Topology;
-  const bool quads = scheme == GrandchildScheme::CatmullClark;
+  const bool quads = IsQuadSplit(scheme);
   this->ParentEdges = quads ? NumberChildEdges(QuadSplitShape{ topo }, parallelFor)
                             : NumberChildEdges(TriangleSplitShape{ topo }, parallelFor);
-  this->NumFaceRows = quads ? parent.Topology.GetNumFaces() : 0;
-  this->NumParents = parent.Topology.GetNumVertices();
-  this->NumRows = this->NumFaceRows + parent.Topology.GetNumEdges() + this->NumParents;
+  this->NumFaceRows = quads ? topo.GetNumFaceCorners() : 0;
+  this->NumParents = (quads ? topo.GetNumFaces() : 0) + topo.GetNumEdges() + topo.GetNumVertices();
+  this->NumRows = this->NumFaceRows + this->ParentEdges.FirstEdgeOfFace.back() + this->NumParents;
+}
+
+GrandchildRows::GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent,
+  const Level& parent, const ParallelFor& parallelFor)
+  : GrandchildRows(scheme, std::move(grandparent), parallelFor)
+{
   // The rows without a smooth form (creases, boundaries, corners, non-manifold points), from
   // the parent's own writer, in row order.
-  if (quads)
+  if (scheme == GrandchildScheme::CatmullClark)
   {
     const CatmullClarkRowWriter writer(parent, parallelFor);
     this->MaxRowSize = writer.GetMaxRowSize();
     StoreRowsWithoutSmoothForm(writer, this->NumFaceRows, this->StoredRows, this->StoredTable);
   }
-  else
+  else if (scheme == GrandchildScheme::Loop)
   {
     const LoopRowWriter writer(parent, parallelFor);
     this->MaxRowSize = writer.GetMaxRowSize();
@@ -170,6 +218,10 @@ GrandchildRows::GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Le
 
 std::vector<Index> GrandchildRows::GetBlockEnds() const
 {
+  if (WritesEveryRowFromGrandparent(this->Scheme))
+  {
+    return { this->NumRows }; // no row reads another
+  }
   const Index vertexRows = this->NumFaceRows + this->ParentEdges.FirstEdgeOfFace.back();
   if (this->NumFaceRows > 0)
   {
@@ -184,13 +236,20 @@ std::vector<Index> GrandchildRows::GetBlockEnds() const
 template <typename Emit>
 void GrandchildRows::WriteRows(Index begin, Index end, Index* buffers, double* weights, Emit&& emit) const
 {
-  if (this->Scheme == GrandchildScheme::CatmullClark)
+  switch (this->Scheme)
   {
-    this->WriteRowsWith<CatmullClarkSmoothRows>(begin, end, buffers, weights, emit);
-  }
-  else
-  {
-    this->WriteRowsWith<LoopSmoothRows>(begin, end, buffers, weights, emit);
+    case GrandchildScheme::CatmullClark:
+      this->WriteRowsWith<CatmullClarkSmoothRows>(begin, end, buffers, weights, emit);
+      break;
+    case GrandchildScheme::Loop:
+      this->WriteRowsWith<LoopSmoothRows>(begin, end, buffers, weights, emit);
+      break;
+    case GrandchildScheme::Bilinear:
+      this->WriteRowsWith<LinearRows<QuadSplitShape>>(begin, end, buffers, weights, emit);
+      break;
+    case GrandchildScheme::LinearTriangles:
+      this->WriteRowsWith<LinearRows<TriangleSplitShape>>(begin, end, buffers, weights, emit);
+      break;
   }
 }
 
@@ -387,7 +446,7 @@ Level SplitTwiceTagsWith(const Shape& shape, const Level& grandparent, const Par
 
 Level SplitTwiceTags(GrandchildScheme scheme, const Level& grandparent, const ParallelFor& parallelFor)
 {
-  if (scheme == GrandchildScheme::CatmullClark)
+  if (IsQuadSplit(scheme))
   {
     return SplitTwiceTagsWith(QuadSplitShape{ grandparent.Topology }, grandparent, parallelFor);
   }
@@ -397,7 +456,7 @@ Level SplitTwiceTags(GrandchildScheme scheme, const Level& grandparent, const Pa
 MeshTopology SplitTwiceFaces(GrandchildScheme scheme, const MeshTopology& grandparent,
   const ChildEdgeNumbering& parentEdges, const ParallelFor& parallelFor)
 {
-  if (scheme == GrandchildScheme::CatmullClark)
+  if (IsQuadSplit(scheme))
   {
     return SplitTwiceFacesWith(QuadSplitShape{ grandparent }, grandparent, parentEdges, parallelFor);
   }
@@ -406,7 +465,7 @@ MeshTopology SplitTwiceFaces(GrandchildScheme scheme, const MeshTopology& grandp
 
 Index CountSplitTwiceFaces(GrandchildScheme scheme, const MeshTopology& grandparent)
 {
-  const Index numChildFaces = scheme == GrandchildScheme::CatmullClark
+  const Index numChildFaces = IsQuadSplit(scheme)
     ? QuadSplitShape{ grandparent }.CornerChild(grandparent.GetNumFaces(), 0)
     : TriangleSplitShape{ grandparent }.CornerChild(grandparent.GetNumFaces(), 0);
   return 4 * numChildFaces;

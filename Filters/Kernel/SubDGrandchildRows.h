@@ -18,6 +18,10 @@
 // The price: every evaluation works out each point's neighbourhood again, from arrays read
 // out of order, which makes re-applying the rows about 1.5x to 2x slower than from C's
 // lists. The faces of the finest level follow from P the same way (SplitTwice).
+//
+// The linear rules (bilinear on the quad split, linear triangles on the triangle split) have
+// no row that needs C: every row is a centroid, a midpoint or a copy. For them C need not be
+// built at all, which makes the finest level both leaner and faster to refine.
 #ifndef SubDGrandchildRows_h
 #define SubDGrandchildRows_h
 
@@ -32,9 +36,24 @@ namespace subd
 {
 enum class GrandchildScheme
 {
-  CatmullClark, ///< on the quad split
-  Loop          ///< on the triangle split
+  CatmullClark,   ///< on the quad split
+  Loop,           ///< on the triangle split
+  Bilinear,       ///< on the quad split; every row in closed form
+  LinearTriangles ///< on the triangle split; every row in closed form
 };
+
+/// Whether the scheme's split is the quad split (else the triangle split).
+inline bool IsQuadSplit(GrandchildScheme scheme)
+{
+  return scheme == GrandchildScheme::CatmullClark || scheme == GrandchildScheme::Bilinear;
+}
+
+/// Whether every row of the scheme is written from the grandparent alone (linear rules: no
+/// crease or boundary rule), so that the level between need not be built at all.
+inline bool WritesEveryRowFromGrandparent(GrandchildScheme scheme)
+{
+  return scheme == GrandchildScheme::Bilinear || scheme == GrandchildScheme::LinearTriangles;
+}
 
 class SUBDKERNEL_EXPORT GrandchildRows final : public RowSource
 {
@@ -42,6 +61,9 @@ public:
   /// `parent` must be the scheme's split of *grandparent (SplitQuads or SplitTriangles) with
   /// its full topology; it is read here and not kept.
   GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent, const Level& parent,
+    const ParallelFor& parallelFor = SerialFor);
+  /// For the schemes that WritesEveryRowFromGrandparent: no parent needed.
+  GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent,
     const ParallelFor& parallelFor = SerialFor);
 
   Index GetNumParents() const override { return this->NumParents; }

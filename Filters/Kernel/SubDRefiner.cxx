@@ -11,6 +11,11 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   out.FinestFaces = LaterFaces();
   Level current = std::move(base);
   std::shared_ptr<const Level> grandparent; // current's parent, kept by the rows written from it
+  // A faces-only finest level of a scheme that writes it from its grandparent alone (linear
+  // rules) comes from its grandparent whenever rows are written, and its parent, the largest
+  // level with a topology, is never built.
+  const bool finestFromGrandparentAlone =
+    levelRows != LevelRows::Stored && finest == ChildTopology::FacesOnly && scheme.RefinesFromGrandparentAlone();
   for (int l = 0; l < levels; ++l)
   {
     const bool last = l + 1 == levels;
@@ -20,7 +25,8 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
     // all, the finest level's parent, need not outlive its step, nor do the ones two, four...
     // levels above it. (The level after one written from its grandparent has no grandparent
     // kept to be written from.)
-    if (levelRows == LevelRows::WrittenFromGrandparent && (levels - 1 - l) % 2 == 0 && grandparent)
+    const bool everyOther = levelRows == LevelRows::WrittenFromGrandparent && (levels - 1 - l) % 2 == 0;
+    if ((everyOther || (last && finestFromGrandparentAlone)) && grandparent)
     {
       StencilTable rows;
       Level child;
@@ -40,7 +46,9 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
       if (writtenRows)
       {
         out.Stencils.push_back(StencilTable::FromSource(writtenRows));
-        current = scheme.Split(*parent, depth);
+        // The finest level's parent is not built when the finest comes from its grandparent
+        // alone (RefineFromGrandparent reads nothing of it).
+        current = finestFromGrandparentAlone && l + 2 == levels ? Level() : scheme.Split(*parent, depth);
         grandparent = parent;
       }
       else

@@ -38,7 +38,9 @@ namespace
 bool RefineFromGrandparentWith(const Scheme& scheme, GrandchildScheme which, std::shared_ptr<const Level> grandparent,
   Level& parent, ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces)
 {
-  auto grandchildRows = std::make_shared<GrandchildRows>(which, grandparent, parent, scheme.GetParallelFor());
+  auto grandchildRows = WritesEveryRowFromGrandparent(which)
+    ? std::make_shared<GrandchildRows>(which, grandparent, scheme.GetParallelFor())
+    : std::make_shared<GrandchildRows>(which, grandparent, parent, scheme.GetParallelFor());
   if (depth == ChildTopology::FacesOnly)
   {
     parent = Level(); // the rows and the faces below come from the grandparent
@@ -71,6 +73,20 @@ bool LoopScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent,
 {
   return RefineFromGrandparentWith(
     *this, GrandchildScheme::Loop, std::move(grandparent), parent, depth, rows, child, childFaces);
+}
+
+bool BilinearScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
+  ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces) const
+{
+  return RefineFromGrandparentWith(
+    *this, GrandchildScheme::Bilinear, std::move(grandparent), parent, depth, rows, child, childFaces);
+}
+
+bool LinearTriangleScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
+  ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces) const
+{
+  return RefineFromGrandparentWith(
+    *this, GrandchildScheme::LinearTriangles, std::move(grandparent), parent, depth, rows, child, childFaces);
 }
 
 MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const

@@ -73,6 +73,10 @@ public:
     (void)grandparent, (void)parent, (void)depth, (void)rows, (void)child, (void)childFaces;
     return false;
   }
+  /// True when RefineFromGrandparent reads nothing of `parent` for a faces-only child (every
+  /// row in closed form): Refine then never builds the level above a faces-only finest level,
+  /// whatever the LevelRows (except Stored), which is faster and leaner.
+  virtual bool RefinesFromGrandparentAlone() const { return false; }
   /// The counts of the next level of a mesh with the given counts (for size guards).
   virtual MeshCounts PredictChildCounts(const MeshCounts& parent) const = 0;
   /// False for schemes whose points only interpolate within a face (linear, bilinear): the
@@ -140,6 +144,10 @@ public:
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   /// Interpolating: the identity (SubDLimitRules.h).
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
+  /// SubDGrandchildRows.h: every row from the grandparent alone.
+  bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
+    StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
+  bool RefinesFromGrandparentAlone() const override { return true; }
   bool UsesBoundaryRule() const override { return false; }
 };
 
@@ -165,6 +173,10 @@ public:
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   /// Interpolating: the identity (SubDLimitRules.h).
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
+  /// SubDGrandchildRows.h: every row from the grandparent alone.
+  bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
+    StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
+  bool RefinesFromGrandparentAlone() const override { return true; }
   bool UsesBoundaryRule() const override { return false; }
 };
 

@@ -562,9 +562,12 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
             EXPECT_EQ(table.IsStored(), !writes);
           ASSERT_EQ(written.GetNumFinestPoints(), stored.GetNumFinestPoints());
           // A faces-only finest level written from its grandparent gets its faces when
-          // asked, after the points (which need none of them).
+          // asked, after the points (which need none of them). The linear schemes write it
+          // so with any written rows, without building its parent.
           const std::string name = scheme->GetName();
-          const bool fromGrandparent = variant == 1 && levels >= 2 && (name == "catmull-clark" || name == "loop");
+          const bool linear = name == "linear-triangles" || name == "bilinear";
+          const bool fromGrandparent = levels >= 2 && variant != 2 &&
+            (linear || (variant == 1 && (name == "catmull-clark" || name == "loop")));
           EXPECT_EQ(written.HasFinestFaces(), !fromGrandparent) << mesh.Name << " L" << levels;
           EXPECT_EQ(written.GetNumFinestFaces(), stored.GetNumFinestFaces()) << mesh.Name << " L" << levels;
           EXPECT_EQ(Evaluate(written, mesh.Points), Evaluate(stored, mesh.Points)) << mesh.Name << " L" << levels;
@@ -618,6 +621,7 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
           const std::string what = mesh.Name + " depth " + std::to_string(depth);
           const subd::Level parent = scheme.Split(*grandparent, subd::ChildTopology::Full);
           const subd::GrandchildRows rows(which, grandparent, parent, subdtest::ThreeThreadFor);
+          EXPECT_EQ(rows.GetNumParents(), parent.Topology.GetNumVertices()) << what; // counted from the grandparent
           const subd::StencilTable expected = scheme.BuildStencils(parent);
           const subd::StencilTable written = rows.ToStencilTable();
           ASSERT_EQ(written.GetNumRows(), expected.GetNumRows()) << what;
@@ -661,6 +665,12 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
       }
     }
   }
+  if (subd::WritesEveryRowFromGrandparent(which))
+  {
+    EXPECT_EQ(storedRows, 0); // the linear rules need no parent
+    EXPECT_GT(writtenRows, 0);
+    return;
+  }
   // Both kinds of rows were compared: written from the grandparent, and stored.
   EXPECT_GT(storedRows, 0);
   EXPECT_GT(writtenRows, 2 * storedRows);
@@ -676,4 +686,17 @@ TEST(GrandchildRows, CatmullClarkEqualsTheParentsRows)
 TEST(GrandchildRows, LoopEqualsTheParentsRows)
 {
   ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme::Loop, subd::LoopScheme(), subdtest::TriangleMeshes());
+}
+
+// The linear rules (centroids, midpoints, copies), written from the grandparent alone.
+TEST(GrandchildRows, BilinearEqualsTheParentsRows)
+{
+  ExpectGrandchildRowsEqualTheParentsRows(
+    subd::GrandchildScheme::Bilinear, subd::BilinearScheme(), subdtest::StandardMeshes());
+}
+
+TEST(GrandchildRows, LinearTrianglesEqualsTheParentsRows)
+{
+  ExpectGrandchildRowsEqualTheParentsRows(
+    subd::GrandchildScheme::LinearTriangles, subd::LinearTriangleScheme(), subdtest::TriangleMeshes());
 }
