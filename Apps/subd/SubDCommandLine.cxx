@@ -140,7 +140,7 @@ std::string UsageText()
          "                     loop, doo-sabin, chaikin, bspline; --levels 0 writes the cage itself)\n"
          "  --low-memory       catmull-clark and loop: write the finest level (and every other\n"
          "                     level above it) from the level two above, keeping no topology of\n"
-         "                     the level between: about a third less peak memory for the same\n"
+         "                     the level between: about half the peak memory for the same\n"
          "                     output, slower (less saved with creases, --limit, --normals or\n"
          "                     --curvature, which keep the finest level's topology)\n"
          "\n"

@@ -5,6 +5,7 @@
 #include "SubDLimitEvaluator.h"
 #include "SubDMeshValidation.h"
 #include "SubDPolygonTriangulation.h"
+#include "SubDMemoryEstimate.h"
 #include "SubDRefiner.h"
 #include "SubDRegularPatch.h"
 #include "SubDScheme.h"
@@ -142,6 +143,7 @@ public:
   // them instead of faulting in a new array.
   vtkSmartPointer<vtkDataArray> LastCoords;
   subd::EvaluationScratch<double> Scratch; // the intermediate levels' values, reused likewise
+  bool LowMemory = false; // refined with LevelRows::WrittenFromGrandparent (asked, or to fit MaximumMemory)
   vtkDataArray* TakeRecyclableCoords()
   {
     vtkDataArray* last = this->LastCoords;
@@ -469,28 +471,35 @@ int vtkSubDSurfaceFilter::Execute(
       vtkWarningMacro(<< nonManifold << ".");
     }
 
-    // Size guard: predict the finest level before allocating it.
-    subd::MeshCounts counts{ static_cast<double>(topology.GetNumFaces()),
+    // Size guard: predict the finest level and the peak memory before allocating anything.
+    const subd::MeshCounts baseCounts{ static_cast<double>(topology.GetNumFaces()),
       static_cast<double>(topology.GetNumEdges()), static_cast<double>(numPoints),
       static_cast<double>(topology.GetNumFaceCorners()),
       static_cast<double>(topology.GetNumBoundaryEdges() + topology.GetNumNonManifoldEdges()) };
+    subd::MeshCounts counts = baseCounts;
     for (int l = 0; l < this->NumberOfSubdivisions; ++l)
     {
       counts = scheme->PredictChildCounts(counts);
     }
-    double pointDataBytes = 0.0;
+    const bool sharpFeatures = features.Any() || this->AutomaticCreases;
+    const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
+    subd::RefinementRequest request;
+    request.Base = baseCounts;
+    request.Levels = this->NumberOfSubdivisions;
+    request.Finest = sharpFeatures || this->ProjectToLimit || limitGeometry ? subd::ChildTopology::Full
+                                                                           : subd::ChildTopology::FacesOnly;
+    request.Rows = this->LowMemory ? subd::LevelRows::WrittenFromGrandparent : subd::LevelRows::Written;
+    int maxComponents = 3;
     vtkPointData* inPD = input->GetPointData();
     for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
     {
       if (vtkDataArray* array = inPD->GetArray(a))
       {
-        pointDataBytes += array->GetNumberOfComponents() * (8.0 + array->GetDataTypeSize());
+        request.OutputBytesPerPoint += array->GetNumberOfComponents() * array->GetDataTypeSize();
+        maxComponents = std::max(maxComponents, array->GetNumberOfComponents());
       }
     }
-    // points (double, plus a scratch level), point data, connectivity + offsets, the finest
-    // topology's relations and the last stencil table.
-    const double bytes = counts.Vertices * (24.0 * 3 + pointDataBytes + 40.0) +
-      counts.Corners * (8.0 + 20.0 + 12.0) + counts.Faces * 24.0 + counts.Edges * 24.0;
+    request.ScratchBytesPerPoint = 8.0 * maxComponents; // one array at a time, in double
     const double indexLimit = 2147483647.0; // the kernel's and the output's 32-bit indices
     if (std::max({ counts.Corners, counts.Vertices, counts.Edges }) > indexLimit)
     {
@@ -500,13 +509,33 @@ int vtkSubDSurfaceFilter::Execute(
       return fail();
     }
 
-    const double limit = this->MaximumMemory * 1024.0 * 1024.0;
-    if (bytes > limit)
+    const double MiB = 1024.0 * 1024.0;
+    const double limit = this->MaximumMemory * MiB;
+    const double bytes = subd::EstimatePeakBytes(*scheme, request);
+    bool fits = bytes <= limit;
+    cache.LowMemory = this->LowMemory;
+    if (!fits && !this->LowMemory && scheme->RefinesFromGrandparent())
+    {
+      // What does not fit by default may fit with LowMemory: refine so, and say why.
+      subd::RefinementRequest lean = request;
+      lean.Rows = subd::LevelRows::WrittenFromGrandparent;
+      const double leanBytes = subd::EstimatePeakBytes(*scheme, lean);
+      fits = cache.LowMemory = leanBytes <= limit;
+      if (fits)
+      {
+        vtkWarningMacro("The output would have about " << counts.Faces << " faces and " << counts.Vertices
+                                                       << " points and need about " << bytes / MiB
+                                                       << " MiB, more than MaximumMemory (" << this->MaximumMemory
+                                                       << " MiB): refined as with LowMemory, which needs about "
+                                                       << leanBytes / MiB << " MiB and is slower.");
+      }
+    }
+    if (!fits)
     {
       vtkErrorMacro("Refusing " << this->NumberOfSubdivisions << " subdivision level(s): the output "
-                                << "would have about " << counts.Faces << " faces and "
-                                << counts.Vertices << " points and need about "
-                                << bytes / (1024.0 * 1024.0) << " MiB, more than MaximumMemory ("
+                                << "would have about " << counts.Faces << " faces and " << counts.Vertices
+                                << " points and need about " << bytes / MiB << " MiB"
+                                << (this->LowMemory ? " even with LowMemory" : "") << ", more than MaximumMemory ("
                                 << this->MaximumMemory << " MiB).");
       return fail();
     }
@@ -531,16 +560,12 @@ int vtkSubDSurfaceFilter::Execute(
                       << features.SegmentPoints[2 * first] << ", " << features.SegmentPoints[2 * first + 1]
                       << ") in line cell " << features.SegmentCell[first] << ".");
     }
-    const bool sharpFeatures = features.Any() || this->AutomaticCreases;
     subd::Level base = subd::MakeBaseLevel(std::move(topology), tags,
       scheme->EffectiveBoundaryRule(static_cast<subd::BoundaryRule>(this->BoundaryRule)));
     cache.WritesDepth = scheme->DependsOnDepth();
     base.Depth = cache.WritesDepth ? inputDepth : 0;
-    const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy, refineProgress,
-          sharpFeatures || this->ProjectToLimit || limitGeometry ? subd::ChildTopology::Full
-                                                                 : subd::ChildTopology::FacesOnly,
-          this->LowMemory ? subd::LevelRows::WrittenFromGrandparent : subd::LevelRows::Written))
+          request.Finest, cache.LowMemory ? subd::LevelRows::WrittenFromGrandparent : subd::LevelRows::Written))
     {
       return aborted();
     }
@@ -606,7 +631,7 @@ int vtkSubDSurfaceFilter::Execute(
   // LowMemory keeps no scratch levels between updates: they are freed before the faces (made
   // last, below) take their memory.
   vtkSubDPointDataInterpolation interpolation(hierarchy, vtkSubDPointDataInterpolation::SMPFor,
-    cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr, this->LowMemory ? nullptr : &cache.Scratch);
+    cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr, cache.LowMemory ? nullptr : &cache.Scratch);
 
   // Points.
   vtkNew<vtkDoubleArray> basePoints;

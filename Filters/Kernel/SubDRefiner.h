@@ -88,7 +88,7 @@ enum class LevelRows
                           ///< (Scheme::RefineFromGrandparent), and so are every other level's
                           ///< above it, so the largest topology of all, the finest level's
                           ///< parent's, is not kept, nor the ones two, four... levels above
-                          ///< it: about a third less peak memory, for slower evaluations
+                          ///< it: less peak memory, for slower evaluations
                           ///< (each row works out its neighbourhood). A faces-only finest
                           ///< level then gets its faces from Hierarchy::MakeFinestFaces.
 };

@@ -77,6 +77,8 @@ public:
   /// row in closed form): Refine then never builds the level above a faces-only finest level,
   /// whatever the LevelRows (except Stored), which is faster and leaner.
   virtual bool RefinesFromGrandparentAlone() const { return false; }
+  /// True for the schemes whose RefineFromGrandparent can return true.
+  virtual bool RefinesFromGrandparent() const { return false; }
   /// The counts of the next level of a mesh with the given counts (for size guards).
   virtual MeshCounts PredictChildCounts(const MeshCounts& parent) const = 0;
   /// False for schemes whose points only interpolate within a face (linear, bilinear): the
@@ -132,6 +134,7 @@ public:
   /// SubDGrandchildRows.h.
   bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
     StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
+  bool RefinesFromGrandparent() const override { return true; }
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 
@@ -147,6 +150,7 @@ public:
   /// SubDGrandchildRows.h: every row from the grandparent alone.
   bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
     StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
+  bool RefinesFromGrandparent() const override { return true; }
   bool RefinesFromGrandparentAlone() const override { return true; }
   bool UsesBoundaryRule() const override { return false; }
 };
@@ -161,6 +165,7 @@ public:
   /// SubDGrandchildRows.h.
   bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
     StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
+  bool RefinesFromGrandparent() const override { return true; }
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
 };
 
@@ -176,6 +181,7 @@ public:
   /// SubDGrandchildRows.h: every row from the grandparent alone.
   bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
     StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
+  bool RefinesFromGrandparent() const override { return true; }
   bool RefinesFromGrandparentAlone() const override { return true; }
   bool UsesBoundaryRule() const override { return false; }
 };

@@ -554,6 +554,62 @@ TEST(CatmullClarkFilter, ErrorOutputAboveMemoryBudgetRefused)
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPolys(), 6 * 4096);
 }
 
+// A refinement that needs more than MaximumMemory by default but fits with LowMemory is made
+// with LowMemory (Catmull-Clark and Loop can), with a warning, and gives the same output; one
+// that does not fit even so is refused. The two predictions are read from the refusals.
+namespace
+{
+double PredictedMiB(const std::string& error)
+{
+  const size_t at = error.find("need about ");
+  return at == std::string::npos ? 0.0 : std::stod(error.substr(at + 11));
+}
+
+template <typename Filter>
+void ExpectLowMemoryWhenOnlyItFits(vtkPolyData* input)
+{
+  const int levels = 7;
+  auto run = [&](double budget, bool lowMemory, subdtest::Messages& messages) {
+    vtkNew<Filter> filter;
+    messages.Watch(filter);
+    filter->SetInputData(input);
+    filter->SetNumberOfSubdivisions(levels);
+    filter->SetMaximumMemory(budget);
+    filter->SetLowMemory(lowMemory);
+    filter->Update();
+    return vtkSmartPointer<vtkPolyData>(filter->GetOutput());
+  };
+  subdtest::Messages byDefault, lean;
+  run(1.0, false, byDefault);
+  run(1.0, true, lean);
+  const double defaultMiB = PredictedMiB(byDefault.Errors), leanMiB = PredictedMiB(lean.Errors);
+  EXPECT_NE(lean.Errors.find("even with LowMemory"), std::string::npos) << lean.Errors;
+  ASSERT_GT(leanMiB, 1.0) << lean.Errors;
+  ASSERT_GT(defaultMiB, leanMiB + 1.0) << byDefault.Errors;
+
+  subdtest::Messages between, ample;
+  vtkSmartPointer<vtkPolyData> fitted = run(0.5 * (defaultMiB + leanMiB), false, between);
+  vtkSmartPointer<vtkPolyData> expected = run(1.0e6, false, ample);
+  EXPECT_EQ(between.NumErrors, 0) << between.Errors;
+  EXPECT_NE(between.Warnings.find("refined as with LowMemory"), std::string::npos) << between.Warnings;
+  EXPECT_EQ(ample.NumWarnings, 0) << ample.Warnings;
+  ASSERT_GT(expected->GetNumberOfPolys(), 0);
+  EXPECT_EQ(subdtest::Coordinates(fitted), subdtest::Coordinates(expected));
+  EXPECT_EQ(subdtest::Faces(fitted), subdtest::Faces(expected));
+}
+}
+
+TEST(CatmullClarkFilter, LowMemoryWhenOnlyItFitsMaximumMemory)
+{
+  ExpectLowMemoryWhenOnlyItFits<vtkSubDCatmullClarkFilter>(subdtest::ToPolyData(subdtest::House(true).Jitter(0.1)));
+}
+
+TEST(LoopFilter, LowMemoryWhenOnlyItFitsMaximumMemory)
+{
+  ExpectLowMemoryWhenOnlyItFits<vtkSubDLoopFilter>(
+    subdtest::ToPolyData(subdtest::House(true).Jitter(0.1).Triangulated()));
+}
+
 // When memory runs out all the same (the budget allows the output, the process cannot hold it),
 // the filter reports it and leaves an empty output instead of ending the application. Run in
 // a child process whose address space is capped 1 GiB above what it already maps; the

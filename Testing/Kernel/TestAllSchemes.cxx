@@ -3,6 +3,7 @@
 // closed manifold is a closed manifold with the same Euler characteristic.
 #include "SubDButterflyRules.h"
 #include "SubDGrandchildRows.h"
+#include "SubDMemoryEstimate.h"
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
 #include "SubDOracleSupport.h"
@@ -12,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <malloc.h>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -593,6 +595,58 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
     }
   }
 }
+
+// The size guard's prediction (SubDMemoryEstimate.h) covers what a refinement holds once its
+// points are evaluated (every level it keeps, the finest faces, the points and the scratch
+// levels: the default path's peak), measured as the heap in use, and is not far above it for
+// the schemes that write their rows; LowMemory's is lower from level 2 on, where it applies.
+// (Not in the AddressSanitizer build, whose allocator mallinfo2 does not see.)
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SUBD_HEAP_NOT_MEASURABLE
+#endif
+#endif
+#if defined(__GLIBC__) && !defined(SUBD_HEAP_NOT_MEASURABLE) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 33)
+TEST_P(AllSchemes, PeakMemoryEstimateCoversTheHeldMemory)
+{
+  const auto scheme = GetParam().Make();
+  const subdtest::TestMesh mesh = GetParam().TrianglesOnly ? subdtest::Grid(40, 40, true, false).Triangulated()
+                                                       : subdtest::Grid(40, 40, true, false);
+  const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+  subd::RefinementRequest request;
+  request.Base = { double(topology.GetNumFaces()), double(topology.GetNumEdges()), double(topology.GetNumVertices()),
+    double(topology.GetNumFaceCorners()), double(topology.GetNumBoundaryEdges()) };
+  request.Levels = 3;
+  const double predicted = (subd::EstimatePeakBytes(*scheme, request) - subd::EstimateLibraryBytes);
+  const size_t before = mallinfo2().uordblks + mallinfo2().hblkhd;
+  double held = 0.0;
+  {
+    subd::Hierarchy hierarchy;
+    subd::Refine(*scheme, subd::MakeBaseLevel(topology, {}, scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly)),
+      request.Levels, hierarchy, nullptr, request.Finest, request.Rows);
+    hierarchy.MakeFinestFaces();
+    std::vector<double> finest(static_cast<size_t>(hierarchy.GetNumFinestPoints()) * 3);
+    subd::EvaluationScratch<double> scratch;
+    hierarchy.Evaluate(mesh.Points.data(), 3, finest.data(), subd::SerialFor, nullptr, -1, &scratch);
+    held = static_cast<double>(mallinfo2().uordblks + mallinfo2().hblkhd - before);
+  }
+  EXPECT_GT(held, 1.0e6); // a measurement, not noise
+  EXPECT_LE(held, predicted) << GetParam().Name;
+  const bool writesRows = scheme->MakeRowSource(std::make_shared<subd::Level>()) != nullptr;
+  if (writesRows)
+  {
+    EXPECT_GE(held, 0.5 * predicted) << GetParam().Name; // not a bound far above
+  }
+  subd::RefinementRequest lean = request;
+  lean.Rows = subd::LevelRows::WrittenFromGrandparent;
+  if (scheme->RefinesFromGrandparent() && !scheme->RefinesFromGrandparentAlone())
+  {
+    EXPECT_LT(subd::EstimatePeakBytes(*scheme, lean) - subd::EstimateLibraryBytes, 0.8 * predicted);
+  }
+  lean.Levels = request.Levels = 1; // no grandparent: the same path
+  EXPECT_EQ(subd::EstimatePeakBytes(*scheme, lean), subd::EstimatePeakBytes(*scheme, request));
+}
+#endif
 
 // The finest level's rows written from its grandparent (the level between is not kept) are
 // the rows the level between writes, entry for entry and bit for bit, in the same blocks;

@@ -1,0 +1,89 @@
+#include "SubDMemoryEstimate.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace subd
+{
+namespace
+{
+double TopologyBytes(const MeshCounts& c)
+{
+  return 9.0 * c.Faces + 16.0 * c.Corners + 33.0 * c.Edges + 13.0 * c.Vertices;
+}
+
+double FacesBytes(const MeshCounts& c)
+{
+  return 4.0 * c.Corners + 4.0 * c.Faces;
+}
+
+// The model's bytes at the peak, without margin.
+double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
+{
+  const int levels = std::max(request.Levels, 0);
+  std::vector<MeshCounts> counts{ request.Base };
+  for (int l = 0; l < levels; ++l)
+  {
+    counts.push_back(scheme.PredictChildCounts(counts.back()));
+  }
+  const MeshCounts& finest = counts.back();
+  const double output = finest.Vertices * request.OutputBytesPerPoint +
+    (request.Finest == ChildTopology::Full ? TopologyBytes(finest) : FacesBytes(finest));
+  if (levels == 0)
+  {
+    return output;
+  }
+  double scratch = 0.0;
+  for (int l = std::max(levels - 2, 1); l < levels; ++l)
+  {
+    scratch += counts[l].Vertices * request.ScratchBytesPerPoint;
+  }
+
+  // Stored tables: each level's topology lives only while the next one is refined.
+  const bool writesRows = request.Rows != LevelRows::Stored && scheme.MakeRowSource(std::make_shared<Level>());
+  if (!writesRows)
+  {
+    double tables = 0.0, refinePeak = 0.0;
+    for (int l = 0; l < levels; ++l)
+    {
+      refinePeak = std::max(refinePeak, tables + TopologyBytes(counts[l]) + TopologyBytes(counts[l + 1]));
+      tables += counts[l + 1].Vertices * (8 * 12.0 + 8.0);
+    }
+    return std::max(refinePeak, tables + output + scratch);
+  }
+
+  // Written rows keep the levels they are written from; with WrittenFromGrandparent (or the
+  // linear schemes' finest level) the levels between are built one at a time, or not at all.
+  const bool everyOther = request.Rows == LevelRows::WrittenFromGrandparent && scheme.RefinesFromGrandparent();
+  const bool finestAlone = request.Finest == ChildTopology::FacesOnly && scheme.RefinesFromGrandparentAlone();
+  double kept = 0.0, transient = 0.0;
+  for (int l = 0; l < levels; ++l)
+  {
+    const bool between = l >= 1 && (everyOther ? (levels - l) % 2 == 1 : (finestAlone && l == levels - 1));
+    if (!between)
+    {
+      // With the writers' own per-level arrays (the butterfly's rings, smooth-vertex flags).
+      kept += TopologyBytes(counts[l]) + 4.0 * counts[l].Corners + 9.0 * counts[l].Vertices;
+      continue;
+    }
+    kept += 4.0 * counts[l].Edges; // the numbering of its edges, kept by the rows
+    transient = std::max(transient, finestAlone && l == levels - 1 ? 0.0 : TopologyBytes(counts[l]));
+  }
+  if (everyOther && request.Finest == ChildTopology::Full)
+  {
+    // A full finest level is split from its parent, which is released only then.
+    transient = std::max(transient, TopologyBytes(counts[levels - 1]) + TopologyBytes(finest));
+  }
+  // LowMemory makes the faces after the points and keeps no scratch: they never meet.
+  const double evaluation = everyOther && request.Finest == ChildTopology::FacesOnly
+    ? finest.Vertices * request.OutputBytesPerPoint + std::max(scratch, FacesBytes(finest))
+    : output + scratch;
+  return kept + std::max(transient, evaluation);
+}
+}
+
+double EstimatePeakBytes(const Scheme& scheme, const RefinementRequest& request)
+{
+  return EstimateMargin * ModelBytes(scheme, request) + EstimateLibraryBytes;
+}
+}
