@@ -32,61 +32,35 @@ std::shared_ptr<const RowSource> CatmullClarkScheme::MakeRowSource(std::shared_p
   return std::make_shared<WrittenRows<CatmullClarkRowWriter>>(std::move(parent), this->GetParallelFor());
 }
 
-namespace
+bool Scheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
+  StencilTable& rows, Level& child, LaterFaces& childFaces) const
 {
-// Scheme::RefineFromGrandparent for the schemes with GrandchildRows.
-bool RefineFromGrandparentWith(const Scheme& scheme, GrandchildScheme which, std::shared_ptr<const Level> grandparent,
-  Level& parent, ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces)
-{
+  GrandchildScheme which;
+  if (!this->GetGrandchildScheme(which))
+  {
+    return false;
+  }
+  const ParallelFor& parallelFor = this->GetParallelFor();
   auto grandchildRows = WritesEveryRowFromGrandparent(which)
-    ? std::make_shared<GrandchildRows>(which, grandparent, scheme.GetParallelFor())
-    : std::make_shared<GrandchildRows>(which, grandparent, parent, scheme.GetParallelFor());
+    ? std::make_shared<GrandchildRows>(which, grandparent, parallelFor)
+    : std::make_shared<GrandchildRows>(which, grandparent, parent, parallelFor);
   if (depth == ChildTopology::FacesOnly)
   {
     parent = Level(); // the rows and the faces below come from the grandparent
-    child = SplitTwiceTags(which, *grandparent, scheme.GetParallelFor());
+    child = SplitTwiceTags(which, *grandparent, parallelFor);
     childFaces.NumFaces = CountSplitTwiceFaces(which, grandparent->Topology);
-    childFaces.Make = [which, grandchildRows, parallelFor = scheme.GetParallelFor()] {
+    childFaces.Make = [which, grandchildRows, parallelFor] {
       return SplitTwiceFaces(
         which, grandchildRows->GetGrandparent().Topology, grandchildRows->GetParentEdgeNumbering(), parallelFor);
     };
   }
   else
   {
-    child = scheme.Split(parent, depth); // the child's full topology is the parent's split
+    child = this->Split(parent, depth); // the child's full topology is the parent's split
     parent = Level();
   }
   rows = StencilTable::FromSource(std::move(grandchildRows));
   return true;
-}
-}
-
-bool CatmullClarkScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
-  ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces) const
-{
-  return RefineFromGrandparentWith(
-    *this, GrandchildScheme::CatmullClark, std::move(grandparent), parent, depth, rows, child, childFaces);
-}
-
-bool LoopScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
-  ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces) const
-{
-  return RefineFromGrandparentWith(
-    *this, GrandchildScheme::Loop, std::move(grandparent), parent, depth, rows, child, childFaces);
-}
-
-bool BilinearScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
-  ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces) const
-{
-  return RefineFromGrandparentWith(
-    *this, GrandchildScheme::Bilinear, std::move(grandparent), parent, depth, rows, child, childFaces);
-}
-
-bool LinearTriangleScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
-  ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces) const
-{
-  return RefineFromGrandparentWith(
-    *this, GrandchildScheme::LinearTriangles, std::move(grandparent), parent, depth, rows, child, childFaces);
 }
 
 MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const

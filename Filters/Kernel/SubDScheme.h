@@ -6,6 +6,7 @@
 #ifndef SubDScheme_h
 #define SubDScheme_h
 
+#include "SubDGrandchildRows.h"
 #include "SubDLevel.h"
 #include "SubDParallel.h"
 #include "SubDStencilTable.h"
@@ -66,19 +67,23 @@ public:
   /// released here. A faces-only child gets its tags but not its faces: `childFaces` makes
   /// them (from the grandparent, which the rows keep), so that a caller can first evaluate
   /// the points and free its scratch. Returns false, changing nothing, for schemes that
-  /// cannot (the default).
-  virtual bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
-    StencilTable& rows, Level& child, LaterFaces& childFaces) const
+  /// cannot (those without GetGrandchildScheme).
+  bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
+    StencilTable& rows, Level& child, LaterFaces& childFaces) const;
+  /// True for the schemes whose RefineFromGrandparent can return true.
+  bool RefinesFromGrandparent() const
   {
-    (void)grandparent, (void)parent, (void)depth, (void)rows, (void)child, (void)childFaces;
-    return false;
+    GrandchildScheme which;
+    return this->GetGrandchildScheme(which);
   }
   /// True when RefineFromGrandparent reads nothing of `parent` for a faces-only child (every
   /// row in closed form): Refine then never builds the level above a faces-only finest level,
   /// whatever the LevelRows (except Stored), which is faster and leaner.
-  virtual bool RefinesFromGrandparentAlone() const { return false; }
-  /// True for the schemes whose RefineFromGrandparent can return true.
-  virtual bool RefinesFromGrandparent() const { return false; }
+  bool RefinesFromGrandparentAlone() const
+  {
+    GrandchildScheme which;
+    return this->GetGrandchildScheme(which) && WritesEveryRowFromGrandparent(which);
+  }
   /// The counts of the next level of a mesh with the given counts (for size guards).
   virtual MeshCounts PredictChildCounts(const MeshCounts& parent) const = 0;
   /// False for schemes whose points only interpolate within a face (linear, bilinear): the
@@ -102,6 +107,14 @@ public:
   BoundaryRule EffectiveBoundaryRule(BoundaryRule requested) const
   {
     return this->UsesBoundaryRule() ? requested : BoundaryRule::EdgeOnly;
+  }
+
+protected:
+  /// The scheme's rows written from the grandparent (SubDGrandchildRows.h), if it has them.
+  virtual bool GetGrandchildScheme(GrandchildScheme& which) const
+  {
+    (void)which;
+    return false;
   }
 
 private:
@@ -131,11 +144,14 @@ public:
   const char* GetName() const override { return "catmull-clark"; }
   StencilTable BuildStencils(const Level& parent) const override;
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
-  /// SubDGrandchildRows.h.
-  bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
-    StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
-  bool RefinesFromGrandparent() const override { return true; }
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
+
+protected:
+  bool GetGrandchildScheme(GrandchildScheme& which) const override
+  {
+    which = GrandchildScheme::CatmullClark; // SubDGrandchildRows.h
+    return true;
+  }
 };
 
 /// Bilinear: centroids, midpoints and fixed vertices (SubDLinearRules.h).
@@ -147,12 +163,14 @@ public:
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   /// Interpolating: the identity (SubDLimitRules.h).
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
-  /// SubDGrandchildRows.h: every row from the grandparent alone.
-  bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
-    StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
-  bool RefinesFromGrandparent() const override { return true; }
-  bool RefinesFromGrandparentAlone() const override { return true; }
   bool UsesBoundaryRule() const override { return false; }
+
+protected:
+  bool GetGrandchildScheme(GrandchildScheme& which) const override
+  {
+    which = GrandchildScheme::Bilinear; // SubDGrandchildRows.h
+    return true;
+  }
 };
 
 /// Loop (SubDLoopRules.h).
@@ -162,11 +180,14 @@ public:
   const char* GetName() const override { return "loop"; }
   StencilTable BuildStencils(const Level& parent) const override;
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
-  /// SubDGrandchildRows.h.
-  bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
-    StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
-  bool RefinesFromGrandparent() const override { return true; }
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
+
+protected:
+  bool GetGrandchildScheme(GrandchildScheme& which) const override
+  {
+    which = GrandchildScheme::Loop; // SubDGrandchildRows.h
+    return true;
+  }
 };
 
 /// Linear triangles: midpoints and fixed vertices (SubDLinearRules.h).
@@ -178,12 +199,14 @@ public:
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   /// Interpolating: the identity (SubDLimitRules.h).
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
-  /// SubDGrandchildRows.h: every row from the grandparent alone.
-  bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
-    StencilTable& rows, Level& child, LaterFaces& childFaces) const override;
-  bool RefinesFromGrandparent() const override { return true; }
-  bool RefinesFromGrandparentAlone() const override { return true; }
   bool UsesBoundaryRule() const override { return false; }
+
+protected:
+  bool GetGrandchildScheme(GrandchildScheme& which) const override
+  {
+    which = GrandchildScheme::LinearTriangles; // SubDGrandchildRows.h
+    return true;
+  }
 };
 
 /// Doo-Sabin: the dual split with the masks of SubDDooSabinRules.h. Any polygons.
