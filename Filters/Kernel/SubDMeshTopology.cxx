@@ -332,9 +332,9 @@ void MeshTopology::TagVertices(const ParallelFor& parallelFor)
   }
 }
 
-// Union-find over v's faces, joined across v's edges with two faces. It reads only v's own
-// lists and its edges' faces: cheaper than walking from face to face, which reads each
-// neighbour face's corners and edges.
+// The fans of v's faces, joined across v's edges with two faces: chains of followers for up
+// to 32 faces, a union-find beyond. Both read only v's own lists and its faces' edges:
+// cheaper than walking from face to face, which reads each neighbour face's corners.
 Index MeshTopology::CountFans(Index v, std::vector<Index>& parent) const
 {
   const IndexSpan faces = this->GetVertexFaces(v);
@@ -345,40 +345,57 @@ Index MeshTopology::CountFans(Index v, std::vector<Index>& parent) const
   constexpr Index smallValence = 32;
   if (faces.size() <= smallValence)
   {
-    // Faces j and k share an edge at v when one leaves v along the edge the other enters
-    // by (called for vertices whose edges are manifold and consistently oriented): a
-    // union-find over at most 32 local slots, the edges read from the faces' own lists.
+    // Face j follows face k around v when j leaves v along the edge k enters it by (called
+    // for vertices whose edges are manifold and consistently oriented, so that each face has
+    // at most one follower and one predecessor): the fans are the chains of followers, open
+    // (starting at a face without predecessor) or closed. The followers are matched without
+    // branches, the edges read from the faces' own lists, and each chain walked once.
     const IndexSpan corners = this->GetVertexFaceCorners(v);
     const Index n = faces.size();
-    Index leaving[smallValence], entering[smallValence], group[smallValence];
+    Index leaving[smallValence], entering[smallValence], next[smallValence];
     for (Index k = 0; k < n; ++k)
     {
       const IndexSpan fe = this->GetFaceEdges(faces[k]);
       leaving[k] = fe[corners[k]];
       entering[k] = fe[corners[k] == 0 ? fe.size() - 1 : corners[k] - 1];
-      group[k] = k;
     }
-    auto root = [&group](Index i) {
-      while (group[i] != i)
-      {
-        i = group[i] = group[group[i]];
-      }
-      return i;
-    };
-    Index groups = n;
-    for (Index j = 0; j < n; ++j)
+    std::uint32_t hasPredecessor = 0;
+    for (Index k = 0; k < n; ++k)
     {
-      for (Index k = 0; k < n; ++k)
+      Index follower = InvalidIndex;
+      for (Index j = 0; j < n; ++j)
       {
-        if (j != k && leaving[j] == entering[k])
-        {
-          const Index rj = root(j), rk = root(k);
-          groups -= rj != rk;
-          group[rj] = rk;
-        }
+        follower = j != k && leaving[j] == entering[k] ? j : follower;
+      }
+      next[k] = follower;
+      hasPredecessor |= follower == InvalidIndex ? 0u : 1u << follower;
+    }
+    std::uint32_t visited = 0;
+    auto walk = [&](Index face) {
+      while (face != InvalidIndex && !(visited >> face & 1u))
+      {
+        visited |= 1u << face;
+        face = next[face];
+      }
+    };
+    Index fans = 0;
+    for (Index k = 0; k < n; ++k)
+    {
+      if (!(hasPredecessor >> k & 1u))
+      {
+        ++fans; // an open fan starts here
+        walk(k);
       }
     }
-    return groups;
+    for (Index k = 0; k < n; ++k)
+    {
+      if (!(visited >> k & 1u))
+      {
+        ++fans; // a closed fan
+        walk(k);
+      }
+    }
+    return fans;
   }
   parent.resize(faces.size());
   std::iota(parent.begin(), parent.end(), 0);

@@ -96,6 +96,20 @@ TEST(MeshTopology, PinchedClosedFansAreNonManifold)
   EXPECT_TRUE(t.GetVertexTag(6).NonManifold);
 }
 
+// A closed fan (a tetrahedron's corner) and an open one (a triangle touching it there).
+TEST(MeshTopology, ClosedAndOpenFanAtOneVertexAreNonManifold)
+{
+  subdtest::TestMesh mesh;
+  mesh.Points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, -1, 0, -1, -0.5, -1 };
+  mesh.Offsets = { 0, 3, 6, 9, 12, 15 };
+  mesh.Vertices = { 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 0, 4, 5 };
+  const MeshTopology t = Build(mesh);
+  EXPECT_EQ(t.GetNumNonManifoldEdges(), 0);
+  EXPECT_TRUE(t.GetVertexTag(0).NonManifold);
+  EXPECT_EQ(t.GetNumNonManifoldVertices(), 1);
+  EXPECT_TRUE(t.GetVertexTag(4).Boundary);
+}
+
 TEST(MeshTopology, InconsistentOrientationIsNonManifold)
 {
   // Both triangles run along edge 0->1 in the same direction.
