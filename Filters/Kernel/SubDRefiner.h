@@ -34,8 +34,9 @@ struct SUBDKERNEL_EXPORT Hierarchy
   /// points to as many points (the limit projection), which Evaluate then applies too.
   std::vector<StencilTable> Stencils;
   Level Finest; ///< the last level: its faces, holes and origins (edges: see Refine)
-  /// Finest's faces when Refine left them to be made later (LevelRows::WrittenFromGrandparent
-  /// with a faces-only finest level): Finest has its tags, and MakeFinestFaces its faces.
+  /// Finest's faces when Refine left them to be made later (a faces-only finest level written
+  /// from its grandparent: LevelRows::WrittenFromGrandparent, or the linear schemes with any
+  /// written rows): Finest has its tags, and MakeFinestFaces its faces.
   LaterFaces FinestFaces;
 
   int GetNumStencilTables() const { return static_cast<int>(Stencils.size()); }
