@@ -55,33 +55,71 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
   const Index numVertices = topo.GetNumVertices();
   // Vertices that take the interior rules: manifold, not on the boundary, not isolated, on
   // no crease (a dart, one sharp edge, keeps its ring); their faces form one closed fan.
-  this->RingOffsets.assign(static_cast<size_t>(numVertices) + 1, 0);
-  this->SmoothRing.resize(static_cast<size_t>(numVertices));
+  // Only the rings that RingFrom walks are stored: the extraordinary ones, and all of them
+  // when the tips (tension) read the regular rings too.
+  this->RingValences.resize(static_cast<size_t>(numVertices));
+  this->RingKinds.resize(static_cast<size_t>(numVertices));
+  this->RingOffsets.resize(static_cast<size_t>(numVertices) + 1);
+  this->RingOffsets[0] = 0;
+  const bool hasSharpEdges = std::any_of(
+    this->Parent.EdgeSharpness.begin(), this->Parent.EdgeSharpness.end(), [](float s) { return IsSharp(s); });
   parallelFor(0, numVertices, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v)
     {
       const VertexTag tag = topo.GetVertexTag(v);
-      const Index sharpEdges = this->Parent.GetNumSharpEdges(v);
-      const bool ring = !tag.Boundary && !tag.NonManifold && sharpEdges < 2;
-      this->RingOffsets[v + 1] = ring ? topo.GetVertexFaces(v).size() : 0;
-      this->SmoothRing[v] = ring && sharpEdges == 0 && this->RingOffsets[v + 1] > 0;
+      const Index sharpEdges = hasSharpEdges ? this->Parent.GetNumSharpEdges(v) : 0;
+      const Index valence =
+        !tag.Boundary && !tag.NonManifold && sharpEdges < 2 ? topo.GetVertexFaces(v).size() : 0;
+      this->RingValences[v] = valence;
+      this->RingKinds[v] = valence == 0 || sharpEdges > 0 ? NoSmoothRing
+                                                          : (valence == 6 ? SmoothRegularRing : SmoothRing);
+      this->RingOffsets[v + 1] = valence != 6 || this->Tension != 0.0 ? valence : 0;
     }
   });
   std::partial_sum(this->RingOffsets.begin(), this->RingOffsets.end(), this->RingOffsets.begin());
-  // Each ring counter-clockwise: the vertex after v in each face of its ordered fan.
+  // Each stored ring counter-clockwise: the vertex after v in each face of its ordered fan.
   this->RingNeighbours.resize(static_cast<size_t>(this->RingOffsets.back()));
   parallelFor(0, numVertices, [&](Index begin, Index end) {
     std::vector<Index> faces, corners;
     for (Index v = begin; v < end; ++v)
     {
-      if (this->HasRing(v) && topo.GetOrderedVertexFaces(v, faces, corners))
+      Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
+      if (this->RingOffsets[v + 1] == this->RingOffsets[v])
       {
-        Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
-        for (size_t k = 0; k < faces.size(); ++k)
-        {
-          ring[k] = topo.GetFaceVertices(faces[k])[corners[k] == 2 ? 0 : corners[k] + 1];
-        }
+        continue;
       }
+      if (!topo.GetOrderedVertexFaces(v, faces, corners)) // not expected of a closed manifold fan
+      {
+        std::fill(ring, this->RingNeighbours.data() + this->RingOffsets[v + 1], 0);
+        continue;
+      }
+      for (size_t k = 0; k < faces.size(); ++k)
+      {
+        ring[k] = topo.GetFaceVertices(faces[k])[corners[k] == 2 ? 0 : corners[k] + 1];
+      }
+    }
+  });
+  // The vertex across each triangle edge, filled edge by edge: an edge's first face is
+  // mostly the face that numbered it, so only the second face is a scattered read.
+  this->Across.assign(topo.GetFaceVertexArray().size(), InvalidIndex);
+  parallelFor(0, topo.GetNumEdges(), [&](Index begin, Index end) {
+    const IndexArray& faceVertices = topo.GetFaceVertexArray();
+    for (Index e = begin; e < end; ++e)
+    {
+      const IndexSpan ef = topo.GetEdgeFaces(e);
+      if (ef.size() != 2 || topo.GetEdgeTag(e).NonManifold)
+      {
+        continue;
+      }
+      Index third[2], corner[2];
+      for (int side = 0; side < 2; ++side)
+      {
+        const Index first = topo.GetFaceOffset(ef[side]), position = topo.GetEdgePosition(ef[side], e);
+        corner[side] = first + position;
+        third[side] = faceVertices[first + (position == 0 ? 2 : position - 1)];
+      }
+      this->Across[corner[0]] = third[1];
+      this->Across[corner[1]] = third[0];
     }
   });
   // A row holds at most the crease rule's 4 sources and the smooth rule's: 10 for the
@@ -105,21 +143,19 @@ double ButterflyRowWriter::ExtraordinaryWeight(Index K, Index j) const
                                                                             : ButterflyExtraordinaryWeight(K, j);
 }
 
-// Neighbour of v next to b on the side away from y, where y and b are consecutive in v's
-// ring: the vertex across edge (v, b) from the triangle (v, y, b).
-Index ButterflyRowWriter::RingBeyond(Index v, Index y, Index b) const
+// The vertex across edge (x, b) of triangle `face`, from the other triangle on that edge
+// (InvalidIndex when the edge does not have two faces).
+Index ButterflyRowWriter::AcrossEdge(Index face, Index x, Index b) const
 {
-  const Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
-  const Index K = this->RingValence(v);
-  Index i = 0;
-  while (ring[i] != y)
-  {
-    ++i;
-  }
-  return ring[(i + 1) % K] == b ? ring[(i + 2) % K] : ring[(i + K - 2) % K];
+  // Corner j's edge joins corners j and j + 1.
+  const IndexSpan fv = this->Topology.GetFaceVertices(face);
+  const Index ix = fv[0] == x ? 0 : (fv[1] == x ? 1 : 2);
+  const Index corner = fv[(ix + 1) % 3] == b ? ix : (ix + 2) % 3;
+  return this->Across[this->Topology.GetFaceOffset(face) + corner];
 }
 
-Index ButterflyRowWriter::RingFrom(Index v, Index first, Index j) const
+// Where `first` is in v's ring (K, the valence, when it is not there).
+Index ButterflyRowWriter::RingStart(Index v, Index first) const
 {
   const Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
   const Index K = this->RingValence(v);
@@ -128,7 +164,12 @@ Index ButterflyRowWriter::RingFrom(Index v, Index first, Index j) const
   {
     ++start;
   }
-  return ring[(start + j) % K];
+  return start;
+}
+
+Index ButterflyRowWriter::RingFrom(Index v, Index first, Index j) const
+{
+  return this->RingNeighbours[this->RingOffsets[v] + (this->RingStart(v, first) + j) % this->RingValence(v)];
 }
 
 // The neighbour of v along its crease other than `other`, when v has exactly two sharp
@@ -157,10 +198,11 @@ Index ButterflyRowWriter::OtherCreaseNeighbour(Index v, Index other) const
 // a crease is as good as missing).
 void ButterflyRowWriter::AddWing(Index x, Index b, Index y, Index face, double weight, Row& row) const
 {
-  if (this->SmoothRing[x])
+  if (this->RingKinds[x] != NoSmoothRing)
   {
-    // All of x's edges are smooth, manifold and have two faces: its ring has the wing.
-    row.Add(this->RingBeyond(x, y, b), weight);
+    // All of x's edges are smooth, manifold and have two faces: the wing is there, even
+    // when it is y itself (a tiny closed mesh).
+    row.Add(this->AcrossEdge(face, x, b), weight);
     return;
   }
   const MeshTopology& topo = this->Topology;
@@ -253,11 +295,12 @@ void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
       continue;
     }
     const Index K = this->RingValence(v);
+    const Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
     double sum = 0.0;
-    for (Index j = 0; j < K; ++j)
+    for (Index j = 0, k = this->RingStart(v, end.second) % K; j < K; ++j, k = k + 1 == K ? 0 : k + 1)
     {
       const double s = this->ExtraordinaryWeight(K, j);
-      smooth.Add(this->RingFrom(v, end.second, j), s);
+      smooth.Add(ring[k], s); // RingFrom(v, end.second, j)
       sum += s;
     }
     smooth.Add(v, 1.0 - sum);
@@ -279,14 +322,26 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
     return 0;
   }
   const Index a0 = topo.GetEdgeVertices(e)[0], a1 = topo.GetEdgeVertices(e)[1];
-  if (!this->SmoothRing[a0] || !this->SmoothRing[a1] || this->RingValence(a0) != 6 || this->RingValence(a1) != 6)
+  if (!this->IsSmoothRegular(a0) || !this->IsSmoothRegular(a1))
   {
     return 0;
   }
-  // AddSmoothRule's butterfly, entry by entry: with nothing sharp, every wing is in its
-  // end's ring and every tip too.
+  // AddSmoothRule's butterfly, entry by entry: with nothing sharp, every wing is across an
+  // edge of one of the two triangles (Across) and every tip in its end's ring.
   const double w = this->Tension;
-  const Index b0 = topo.GetTriangleThirdVertex(ef[0], a0, a1), b1 = topo.GetTriangleThirdVertex(ef[1], a0, a1);
+  Index b[2], wings[2][2];
+  for (int side = 0; side < 2; ++side)
+  {
+    const Index f = ef[side];
+    const Index corner = topo.GetEdgePosition(f, e), first = topo.GetFaceOffset(f);
+    const Index next = corner == 2 ? 0 : corner + 1, previous = corner == 0 ? 2 : corner - 1;
+    // Corner `corner` starts e; the triangle's other edges start at `next` (from the end of
+    // e) and `previous` (to its start).
+    const bool startsAtA0 = topo.GetFaceVertexArray()[first + corner] == a0;
+    b[side] = topo.GetFaceVertexArray()[first + previous];
+    wings[side][0] = this->Across[first + (startsAtA0 ? previous : next)]; // across (a0, b)
+    wings[side][1] = this->Across[first + (startsAtA0 ? next : previous)]; // across (a1, b)
+  }
   Index size = 0;
   auto add = [&](Index source, double weight) {
     sources[size] = source;
@@ -294,12 +349,12 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
   };
   add(a0, 0.5 - w);
   add(a1, 0.5 - w);
-  add(b0, 0.125 + 2.0 * w);
-  add(b1, 0.125 + 2.0 * w);
-  for (Index b : { b0, b1 })
+  add(b[0], 0.125 + 2.0 * w);
+  add(b[1], 0.125 + 2.0 * w);
+  for (int side = 0; side < 2; ++side)
   {
-    add(this->RingBeyond(a0, a1, b), -0.0625 - w);
-    add(this->RingBeyond(a1, a0, b), -0.0625 - w);
+    add(wings[side][0], -0.0625 - w);
+    add(wings[side][1], -0.0625 - w);
   }
   if (w != 0.0)
   {
@@ -307,17 +362,15 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
     add(this->RingFrom(a1, a0, 3), w);
   }
   // WriteRow merges repeated points (tiny closed meshes): leave those rows to it.
+  bool repeated = false;
   for (Index i = 1; i < size; ++i)
   {
     for (Index j = 0; j < i; ++j)
     {
-      if (sources[i] == sources[j])
-      {
-        return 0;
-      }
+      repeated |= sources[i] == sources[j];
     }
   }
-  return size;
+  return repeated ? 0 : size;
 }
 
 Index ButterflyRowWriter::WriteRow(Index row, Index* sources, double* weights) const

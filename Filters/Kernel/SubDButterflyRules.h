@@ -81,10 +81,12 @@ public:
   };
 
 private:
-  bool HasRing(Index v) const { return this->RingOffsets[v + 1] > this->RingOffsets[v]; }
-  Index RingValence(Index v) const { return this->RingOffsets[v + 1] - this->RingOffsets[v]; }
+  bool HasRing(Index v) const { return this->RingValences[v] > 0; }
+  Index RingValence(Index v) const { return this->RingValences[v]; }
+  bool IsSmoothRegular(Index v) const { return this->RingKinds[v] == SmoothRegularRing; }
+  Index RingStart(Index v, Index first) const;
   Index RingFrom(Index v, Index first, Index j) const;
-  Index RingBeyond(Index v, Index y, Index b) const;
+  Index AcrossEdge(Index face, Index x, Index b) const;
   Index OtherCreaseNeighbour(Index v, Index other) const;
   void AddCreaseRule(Index e, double scale, Row& row) const;
   void AddSmoothRule(Index e, Row& row) const;
@@ -96,11 +98,24 @@ private:
   const MeshTopology& Topology;
   double Tension;
   Index RowBound = 16;
-  // Counter-clockwise neighbours of the vertices that take the interior rules (see the
-  // constructor); none for the others.
-  std::vector<Index> RingOffsets;
-  std::vector<Index> RingNeighbours;
-  std::vector<std::uint8_t> SmoothRing; // has a ring and no sharp edge
+  // Per vertex: the number of faces of its closed fan when it takes the interior rules (see
+  // the constructor), 0 otherwise; and what kind of ring that is.
+  enum : std::uint8_t
+  {
+    NoSmoothRing = 0,     // no ring, or a dart's
+    SmoothRing = 1,       // a ring without sharp edges
+    SmoothRegularRing = 2 // the same, of valence 6
+  };
+  IndexArray RingValences;
+  LevelArray<std::uint8_t> RingKinds;
+  // The counter-clockwise neighbours of the vertices whose rules walk their ring (RingFrom:
+  // the extraordinary vertices, and every vertex with a ring when the tips have weight);
+  // the butterfly's wings come from Across instead, so regular vertices store none.
+  IndexArray RingOffsets;
+  IndexArray RingNeighbours;
+  // Per corner of each triangle: the third vertex of the other triangle on the edge that
+  // starts at the corner, when that edge is manifold with two faces; else InvalidIndex.
+  IndexArray Across;
   std::vector<std::vector<double>> ExtraordinaryWeights; // [K][j] for small K
 };
 
