@@ -31,6 +31,13 @@ StencilTable BuildButterflyStencils(const Level& parent, double tension, const P
   return WriteStencilTable(ButterflyRowWriter(parent, tension, parallelFor), expected);
 }
 
+void ButterflyRowWriter::Row::Append(Index source, double weight)
+{
+  this->Sources[this->Size] = source;
+  this->Weights[this->Size] = weight;
+  ++this->Size;
+}
+
 void ButterflyRowWriter::Row::Add(Index source, double weight)
 {
   for (Index k = 0; k < this->Size; ++k)
@@ -300,10 +307,25 @@ void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
     for (Index j = 0, k = this->RingStart(v, end.second) % K; j < K; ++j, k = k + 1 == K ? 0 : k + 1)
     {
       const double s = this->ExtraordinaryWeight(K, j);
-      smooth.Add(ring[k], s); // RingFrom(v, end.second, j)
+      // RingFrom(v, end.second, j); the first end's ring and v are distinct points.
+      if (ends == 0)
+      {
+        smooth.Append(ring[k], s);
+      }
+      else
+      {
+        smooth.Add(ring[k], s);
+      }
       sum += s;
     }
-    smooth.Add(v, 1.0 - sum);
+    if (ends == 0)
+    {
+      smooth.Append(v, 1.0 - sum);
+    }
+    else
+    {
+      smooth.Add(v, 1.0 - sum);
+    }
     ++ends;
   }
   const double scale = 1.0 / ends;
@@ -393,7 +415,11 @@ Index ButterflyRowWriter::WriteRow(Index row, Index* sources, double* weights) c
   {
     this->AddCreaseRule(e, crease, out);
   }
-  if (crease < 1.0)
+  if (crease == 0.0)
+  {
+    this->AddSmoothRule(e, out); // the blend below would copy it unchanged
+  }
+  else if (crease < 1.0)
   {
     Row smooth{ sources + this->RowBound, weights + this->RowBound };
     this->AddSmoothRule(e, smooth);

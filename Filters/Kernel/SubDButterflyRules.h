@@ -78,6 +78,8 @@ public:
     double* Weights;
     Index Size = 0;
     void Add(Index source, double weight);
+    /// For a source known not to be in the row yet.
+    void Append(Index source, double weight);
   };
 
 private:

@@ -69,6 +69,9 @@ public:
   Index WriteRow(Index row, Index* sources, double* weights) const;
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+  /// Asks for the points ApplySmoothRow reads for `row` (SubDRowWriting.h).
+  template <typename T>
+  void PrefetchRow(Index row, const T* parents, const T* children) const;
   /// True for the rows ApplySmoothRow evaluates: face points, smooth edges (two faces, not
   /// sharp), vertices with a closed fan and nothing sharp at or around them.
   bool IsSmoothRow(Index row) const
@@ -92,6 +95,43 @@ private:
   Index MaxRowSize = 4;
   std::vector<std::uint8_t> SmoothVertex; // FindSmoothClosedVertices
 };
+
+template <typename T>
+void CatmullClarkRowWriter::PrefetchRow(Index row, const T* parents, const T* children) const
+{
+  const MeshTopology& topo = this->Topology;
+  auto ask = [](const T* point) { PrefetchPoint(point); };
+  if (row < this->Number.NumFaces)
+  {
+    for (Index v : topo.GetFaceVertices(row))
+    {
+      ask(parents + 3 * static_cast<size_t>(v));
+    }
+    return;
+  }
+  const Index firstVertexPoint = this->Number.VertexPoint(0);
+  if (row < firstVertexPoint)
+  {
+    const Index e = row - this->Number.NumFaces;
+    const Index* ev = topo.GetEdgeVertices(e);
+    ask(parents + 3 * static_cast<size_t>(ev[0]));
+    ask(parents + 3 * static_cast<size_t>(ev[1]));
+    for (Index f : topo.GetEdgeFaces(e))
+    {
+      ask(children + 3 * static_cast<size_t>(this->Number.FacePoint(f)));
+    }
+    return;
+  }
+  const Index v = row - firstVertexPoint;
+  for (Index e : topo.GetVertexEdges(v))
+  {
+    ask(children + 3 * static_cast<size_t>(this->Number.EdgePoint(e)));
+  }
+  for (Index f : topo.GetVertexFaces(v))
+  {
+    ask(children + 3 * static_cast<size_t>(this->Number.FacePoint(f)));
+  }
+}
 
 // Face points always; edge points of smooth edges; vertex points of vertices with nothing
 // sharp at or around them and a closed fan (PlanVertexRule's smooth case), from the edge

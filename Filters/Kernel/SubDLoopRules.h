@@ -76,6 +76,10 @@ public:
   Index WriteRow(Index row, Index* sources, double* weights) const;
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+  /// Asks for what ApplySmoothRow reads for `row` (SubDRowWriting.h): an edge's end points
+  /// and its faces' corners (the third vertices are found there), a vertex's edge points.
+  template <typename T>
+  void PrefetchRow(Index row, const T* parents, const T* children) const;
   /// True for the rows ApplySmoothRow evaluates: smooth edges (two faces, not sharp),
   /// vertices with a closed fan and nothing sharp at or around them.
   bool IsSmoothRow(Index row) const
@@ -97,6 +101,28 @@ private:
 // Edge points of smooth edges; vertex points of vertices with nothing sharp at or around
 // them and a closed fan (PlanVertexRule's smooth case), from the edge points. Sources and
 // weights in WriteRow's order.
+template <typename T>
+void LoopRowWriter::PrefetchRow(Index row, const T* parents, const T* children) const
+{
+  const MeshTopology& topo = this->Topology;
+  const Index firstVertexPoint = this->Number.VertexPoint(0);
+  if (row < firstVertexPoint)
+  {
+    const Index* ev = topo.GetEdgeVertices(row);
+    PrefetchPoint(parents + 3 * static_cast<size_t>(ev[0]));
+    PrefetchPoint(parents + 3 * static_cast<size_t>(ev[1]));
+    for (Index f : topo.GetEdgeFaces(row))
+    {
+      PrefetchForRead(topo.GetFaceVertices(f).begin());
+    }
+    return;
+  }
+  for (Index e : topo.GetVertexEdges(row - firstVertexPoint))
+  {
+    PrefetchPoint(children + 3 * static_cast<size_t>(this->Number.EdgePoint(e)));
+  }
+}
+
 template <typename T>
 bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
 {

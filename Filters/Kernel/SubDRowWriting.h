@@ -9,6 +9,9 @@
 //   Index WriteRow(Index row, Index* sources, double* weights) const; // returns the size
 //   template <typename T>                   // evaluates a point's row if it is smooth
 //   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+// and optionally
+//   template <typename T>                   // asks for the points that row will read
+//   void PrefetchRow(Index row, const T* parents, const T* children) const;
 // ApplySmoothRow evaluates the rows the writer knows in closed form (most of a mesh: away
 // from creases and boundaries) without writing them, summing the same weighted points in
 // the same order as the written row, so that both give the same bits; it returns false for
@@ -24,6 +27,7 @@
 #include "SubDStencilTable.h"
 
 #include <memory>
+#include <type_traits>
 #include <vector>
 
 namespace subd
@@ -48,6 +52,24 @@ StencilTable WriteStencilTable(const Writer& writer, size_t expectedEntries)
   }
   return table;
 }
+
+/// Whether a row writer has PrefetchRow(row, parents, children): a hint that asks for the
+/// points row `row` reads, so that they arrive while the rows before it are evaluated.
+template <typename Writer, typename T, typename = void>
+struct HasPrefetchRow : std::false_type
+{
+};
+template <typename Writer, typename T>
+struct HasPrefetchRow<Writer, T,
+  std::void_t<decltype(std::declval<const Writer&>().PrefetchRow(Index(), static_cast<const T*>(nullptr),
+    static_cast<const T*>(nullptr)))>> : std::true_type
+{
+};
+
+/// How many rows ahead PrefetchRow asks: enough rows to cover a memory access's latency
+/// (Catmull-Clark re-applied at level 4, one thread: 16 and 32 alike, 1.25x faster than
+/// without; 8 less).
+constexpr Index PrefetchDistance = 32;
 
 /// The rows of a Writer over `parent`, applied as they are written. Keeps the parent level
 /// alive: it is what the rows are written from.
@@ -84,6 +106,13 @@ private:
     const Index numParents = this->RowWriter.GetNumParents();
     for (Index row = begin; row < end; ++row)
     {
+      if constexpr (HasPrefetchRow<Writer, T>::value)
+      {
+        if (components == 3 && row + PrefetchDistance < end)
+        {
+          this->RowWriter.PrefetchRow(row + PrefetchDistance, parents, children);
+        }
+      }
       T* dst = children + static_cast<size_t>(row) * components;
       if (components == 3 && this->RowWriter.ApplySmoothRow(row, parents, children, dst))
       {

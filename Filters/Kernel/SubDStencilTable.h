@@ -165,6 +165,15 @@ struct PointSum
   }
 };
 
+/// Asks for the three components at `point` ahead of reading them: both ends, since a point
+/// of three doubles straddles two cache lines one time in three.
+template <typename T>
+inline void PrefetchPoint(const T* point) noexcept
+{
+  PrefetchForRead(point);
+  PrefetchForRead(point + 2);
+}
+
 /// Evaluates one row: dst = sum_k weights[k] * (value of sources[k]), a source below
 /// numParents naming a parent, one above a child (see StencilTable). `sum` is scratch for
 /// `components` doubles. Three components (points) take an unrolled path.
