@@ -110,7 +110,6 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
   // mostly the face that numbered it, so only the second face is a scattered read.
   this->Across.assign(topo.GetFaceVertexArray().size(), InvalidIndex);
   parallelFor(0, topo.GetNumEdges(), [&](Index begin, Index end) {
-    const IndexArray& faceVertices = topo.GetFaceVertexArray();
     for (Index e = begin; e < end; ++e)
     {
       const IndexSpan ef = topo.GetEdgeFaces(e);
@@ -121,9 +120,9 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
       Index third[2], corner[2];
       for (int side = 0; side < 2; ++side)
       {
-        const Index first = topo.GetFaceOffset(ef[side]), position = topo.GetEdgePosition(ef[side], e);
-        corner[side] = first + position;
-        third[side] = faceVertices[first + (position == 0 ? 2 : position - 1)];
+        const Index position = this->TriangleCornerOfEdge(ef[side], e);
+        corner[side] = static_cast<Index>(FirstCorner(ef[side])) + position;
+        third[side] = this->TriangleVertices(ef[side])[position == 0 ? 2 : position - 1];
       }
       this->Across[corner[0]] = third[1];
       this->Across[corner[1]] = third[0];
@@ -155,10 +154,10 @@ double ButterflyRowWriter::ExtraordinaryWeight(Index K, Index j) const
 Index ButterflyRowWriter::AcrossEdge(Index face, Index x, Index b) const
 {
   // Corner j's edge joins corners j and j + 1.
-  const IndexSpan fv = this->Topology.GetFaceVertices(face);
+  const Index* fv = this->TriangleVertices(face);
   const Index ix = fv[0] == x ? 0 : (fv[1] == x ? 1 : 2);
   const Index corner = fv[(ix + 1) % 3] == b ? ix : (ix + 2) % 3;
-  return this->Across[this->Topology.GetFaceOffset(face) + corner];
+  return this->Across[FirstCorner(face) + corner];
 }
 
 // Where `first` is in v's ring (K, the valence, when it is not there).
@@ -355,14 +354,16 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
   for (int side = 0; side < 2; ++side)
   {
     const Index f = ef[side];
-    const Index corner = topo.GetEdgePosition(f, e), first = topo.GetFaceOffset(f);
+    const Index corner = this->TriangleCornerOfEdge(f, e);
     const Index next = corner == 2 ? 0 : corner + 1, previous = corner == 0 ? 2 : corner - 1;
     // Corner `corner` starts e; the triangle's other edges start at `next` (from the end of
     // e) and `previous` (to its start).
-    const bool startsAtA0 = topo.GetFaceVertexArray()[first + corner] == a0;
-    b[side] = topo.GetFaceVertexArray()[first + previous];
-    wings[side][0] = this->Across[first + (startsAtA0 ? previous : next)]; // across (a0, b)
-    wings[side][1] = this->Across[first + (startsAtA0 ? next : previous)]; // across (a1, b)
+    const Index* fv = this->TriangleVertices(f);
+    const Index* across = this->Across.data() + FirstCorner(f);
+    const bool startsAtA0 = fv[corner] == a0;
+    b[side] = fv[previous];
+    wings[side][0] = across[startsAtA0 ? previous : next]; // across (a0, b)
+    wings[side][1] = across[startsAtA0 ? next : previous]; // across (a1, b)
   }
   Index size = 0;
   auto add = [&](Index source, double weight) {

@@ -65,6 +65,10 @@ public:
   /// butterfly (RegularButterflyRow); the other edge points are written.
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+  /// Asks for the topology RegularButterflyRow reads for `row` (SubDRowWriting.h): its ends'
+  /// ring kinds and its two triangles' corners, edges and Across entries.
+  template <typename T>
+  void PrefetchRow(Index row, const T* parents, const T* children) const;
   /// The row of edge e when it is the regular butterfly, as WriteRow writes it (same sources,
   /// weights and order): e smooth between two triangles, both ends of valence 6 with nothing
   /// sharp at them, and its 10 points (8 without tension) distinct. Returns the row's size,
@@ -86,6 +90,15 @@ private:
   bool HasRing(Index v) const { return this->RingValences[v] > 0; }
   Index RingValence(Index v) const { return this->RingValences[v]; }
   bool IsSmoothRegular(Index v) const { return this->RingKinds[v] == SmoothRegularRing; }
+  // Every face is a triangle (the triangle split's precondition): face f's corners are 3f,
+  // 3f + 1 and 3f + 2, found without reading the face offsets (a scattered read).
+  static size_t FirstCorner(Index f) { return 3 * static_cast<size_t>(f); }
+  const Index* TriangleVertices(Index f) const { return this->Topology.GetFaceVertexArray().data() + FirstCorner(f); }
+  Index TriangleCornerOfEdge(Index f, Index e) const
+  {
+    const Index* fe = this->Topology.GetFaceEdgeArray().data() + FirstCorner(f);
+    return fe[0] == e ? 0 : (fe[1] == e ? 1 : 2);
+  }
   Index RingStart(Index v, Index first) const;
   Index RingFrom(Index v, Index first, Index j) const;
   Index AcrossEdge(Index face, Index x, Index b) const;
@@ -120,6 +133,25 @@ private:
   IndexArray Across;
   std::vector<std::vector<double>> ExtraordinaryWeights; // [K][j] for small K
 };
+
+template <typename T>
+void ButterflyRowWriter::PrefetchRow(Index row, const T*, const T*) const
+{
+  const MeshTopology& topo = this->Topology;
+  if (row >= topo.GetNumEdges())
+  {
+    return; // a copy: read in order
+  }
+  const Index* ev = topo.GetEdgeVertices(row);
+  PrefetchForRead(&this->RingKinds[ev[0]]);
+  PrefetchForRead(&this->RingKinds[ev[1]]);
+  for (Index f : topo.GetEdgeFaces(row))
+  {
+    PrefetchForRead(this->TriangleVertices(f));
+    PrefetchForRead(topo.GetFaceEdgeArray().data() + FirstCorner(f));
+    PrefetchForRead(this->Across.data() + FirstCorner(f));
+  }
+}
 
 template <typename T>
 bool ButterflyRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
