@@ -122,7 +122,7 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
       {
         const Index position = this->TriangleCornerOfEdge(ef[side], e);
         corner[side] = static_cast<Index>(FirstCorner(ef[side])) + position;
-        third[side] = this->TriangleVertices(ef[side])[position == 0 ? 2 : position - 1];
+        third[side] = this->Topology.GetTriangleVertices(ef[side])[position == 0 ? 2 : position - 1];
       }
       this->Across[corner[0]] = third[1];
       this->Across[corner[1]] = third[0];
@@ -154,7 +154,7 @@ double ButterflyRowWriter::ExtraordinaryWeight(Index K, Index j) const
 Index ButterflyRowWriter::AcrossEdge(Index face, Index x, Index b) const
 {
   // Corner j's edge joins corners j and j + 1.
-  const Index* fv = this->TriangleVertices(face);
+  const Index* fv = this->Topology.GetTriangleVertices(face);
   const Index ix = fv[0] == x ? 0 : (fv[1] == x ? 1 : 2);
   const Index corner = fv[(ix + 1) % 3] == b ? ix : (ix + 2) % 3;
   return this->Across[FirstCorner(face) + corner];
@@ -358,7 +358,7 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
     const Index next = corner == 2 ? 0 : corner + 1, previous = corner == 0 ? 2 : corner - 1;
     // Corner `corner` starts e; the triangle's other edges start at `next` (from the end of
     // e) and `previous` (to its start).
-    const Index* fv = this->TriangleVertices(f);
+    const Index* fv = this->Topology.GetTriangleVertices(f);
     const Index* across = this->Across.data() + FirstCorner(f);
     const bool startsAtA0 = fv[corner] == a0;
     b[side] = fv[previous];

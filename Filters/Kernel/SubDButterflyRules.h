@@ -91,12 +91,11 @@ private:
   Index RingValence(Index v) const { return this->RingValences[v]; }
   bool IsSmoothRegular(Index v) const { return this->RingKinds[v] == SmoothRegularRing; }
   // Every face is a triangle (the triangle split's precondition): face f's corners are 3f,
-  // 3f + 1 and 3f + 2, found without reading the face offsets (a scattered read).
+  // 3f + 1 and 3f + 2 (MeshTopology::GetTriangleVertices).
   static size_t FirstCorner(Index f) { return 3 * static_cast<size_t>(f); }
-  const Index* TriangleVertices(Index f) const { return this->Topology.GetFaceVertexArray().data() + FirstCorner(f); }
   Index TriangleCornerOfEdge(Index f, Index e) const
   {
-    const Index* fe = this->Topology.GetFaceEdgeArray().data() + FirstCorner(f);
+    const Index* fe = this->Topology.GetTriangleEdges(f);
     return fe[0] == e ? 0 : (fe[1] == e ? 1 : 2);
   }
   Index RingStart(Index v, Index first) const;
@@ -147,8 +146,8 @@ void ButterflyRowWriter::PrefetchRow(Index row, const T*, const T*) const
   PrefetchForRead(&this->RingKinds[ev[1]]);
   for (Index f : topo.GetEdgeFaces(row))
   {
-    PrefetchForRead(this->TriangleVertices(f));
-    PrefetchForRead(topo.GetFaceEdgeArray().data() + FirstCorner(f));
+    PrefetchForRead(topo.GetTriangleVertices(f));
+    PrefetchForRead(topo.GetTriangleEdges(f));
     PrefetchForRead(this->Across.data() + FirstCorner(f));
   }
 }

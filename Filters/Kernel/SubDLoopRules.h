@@ -113,7 +113,7 @@ void LoopRowWriter::PrefetchRow(Index row, const T* parents, const T* children) 
     PrefetchPoint(parents + 3 * static_cast<size_t>(ev[1]));
     for (Index f : topo.GetEdgeFaces(row))
     {
-      PrefetchForRead(topo.GetFaceVertices(f).begin());
+      PrefetchForRead(topo.GetTriangleVertices(f));
     }
     return;
   }
@@ -140,8 +140,11 @@ bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T* childre
     const Index* ev = topo.GetEdgeVertices(e);
     point.Add(0.375, parents + 3 * static_cast<size_t>(ev[0]));
     point.Add(0.375, parents + 3 * static_cast<size_t>(ev[1]));
-    point.Add(0.125, parents + 3 * static_cast<size_t>(topo.GetTriangleThirdVertex(ef[0], ev[0], ev[1])));
-    point.Add(0.125, parents + 3 * static_cast<size_t>(topo.GetTriangleThirdVertex(ef[1], ev[0], ev[1])));
+    // Every face is a triangle: their corners without reading the face offsets.
+    const Index b0 = MeshTopology::ThirdVertex(topo.GetTriangleVertices(ef[0]), ev[0], ev[1]);
+    const Index b1 = MeshTopology::ThirdVertex(topo.GetTriangleVertices(ef[1]), ev[0], ev[1]);
+    point.Add(0.125, parents + 3 * static_cast<size_t>(b0));
+    point.Add(0.125, parents + 3 * static_cast<size_t>(b1));
     point.Store(dst);
     return true;
   }
