@@ -134,7 +134,7 @@ private:
 };
 
 template <typename T>
-void ButterflyRowWriter::PrefetchRow(Index row, const T*, const T*) const
+inline void ButterflyRowWriter::PrefetchRow(Index row, const T*, const T*) const
 {
   const MeshTopology& topo = this->Topology;
   if (row >= topo.GetNumEdges())
@@ -153,7 +153,7 @@ void ButterflyRowWriter::PrefetchRow(Index row, const T*, const T*) const
 }
 
 template <typename T>
-bool ButterflyRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
+inline bool ButterflyRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
 {
   const Index numEdges = this->Topology.GetNumEdges();
   PointSum point;

@@ -97,7 +97,7 @@ private:
 };
 
 template <typename T>
-void CatmullClarkRowWriter::PrefetchRow(Index row, const T* parents, const T* children) const
+inline void CatmullClarkRowWriter::PrefetchRow(Index row, const T* parents, const T* children) const
 {
   const MeshTopology& topo = this->Topology;
   auto ask = [](const T* point) { PrefetchPoint(point); };
@@ -137,7 +137,7 @@ void CatmullClarkRowWriter::PrefetchRow(Index row, const T* parents, const T* ch
 // sharp at or around them and a closed fan (PlanVertexRule's smooth case), from the edge
 // points. Sources and weights in WriteRow's order.
 template <typename T>
-bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
+inline bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
 {
   const MeshTopology& topo = this->Topology;
   if (!this->IsSmoothRow(row))

@@ -42,7 +42,7 @@ private:
 };
 
 template <typename T>
-bool LinearRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
+inline bool LinearRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
 {
   PointSum point;
   if (row < this->FirstEdgeRow)

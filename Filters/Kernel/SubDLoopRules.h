@@ -102,7 +102,7 @@ private:
 // them and a closed fan (PlanVertexRule's smooth case), from the edge points. Sources and
 // weights in WriteRow's order.
 template <typename T>
-void LoopRowWriter::PrefetchRow(Index row, const T* parents, const T* children) const
+inline void LoopRowWriter::PrefetchRow(Index row, const T* parents, const T* children) const
 {
   const MeshTopology& topo = this->Topology;
   const Index firstVertexPoint = this->Number.VertexPoint(0);
@@ -124,7 +124,7 @@ void LoopRowWriter::PrefetchRow(Index row, const T* parents, const T* children) 
 }
 
 template <typename T>
-bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
+inline bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
 {
   if (!this->IsSmoothRow(row))
   {
