@@ -48,8 +48,10 @@ SUBDKERNEL_EXPORT StencilTable BuildButterflyStencils(
   const Level& parent, double tension, const ParallelFor& parallelFor = SerialFor);
 
 /// The same rows written one at a time (SubDRowWriting.h), rows numbered like the triangle
-/// split's child points: edge points, then the vertex points (copies). The rings of the
-/// vertices that have one are ordered once, in parallel, when the writer is made.
+/// split's child points: edge points, then the vertex points (copies). Made once, in
+/// parallel, with the writer: the vertex across each triangle edge (the butterfly's wings),
+/// and the ordered rings of the vertices whose rules walk them (the extraordinary ones; all
+/// with tension, for the tips). Requires every face of `parent` to be a triangle.
 class SUBDKERNEL_EXPORT ButterflyRowWriter
 {
 public:

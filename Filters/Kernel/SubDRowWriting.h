@@ -108,7 +108,7 @@ private:
     {
       if constexpr (HasPrefetchRow<Writer, T>::value)
       {
-        if (components == 3 && row + PrefetchDistance < end)
+        if (components == 3 && end - row > PrefetchDistance) // no overflow near 2^31 rows
         {
           this->RowWriter.PrefetchRow(row + PrefetchDistance, parents, children);
         }

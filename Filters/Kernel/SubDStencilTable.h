@@ -166,7 +166,7 @@ struct PointSum
 };
 
 /// Asks for the three components at `point` ahead of reading them: both ends, since a point
-/// of three doubles straddles two cache lines one time in three.
+/// of three doubles straddles two 64-byte cache lines one time in four.
 template <typename T>
 inline void PrefetchPoint(const T* point) noexcept
 {
