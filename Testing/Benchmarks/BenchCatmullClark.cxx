@@ -114,8 +114,8 @@ int main(int argc, char* argv[])
   const Mesh& mesh = args.Mesh;
   std::printf("Catmull-Clark on %s: %d points, %zu faces; best of %d runs each\n", argv[1],
     mesh.NumVertices(), mesh.Sizes.size(), repeats);
-  std::printf("%-5s %-28s %10s %12s %10s %9s %9s %9s\n", "level", "implementation", "seconds", "faces/s",
-    "peak MiB", "OSD/this", "peak/out", "x bound");
+  std::printf("%-5s %-28s %10s %12s %9s%s\n", "level", "implementation", "seconds", "faces/s", "OSD/this",
+    subdbench::MemoryHeader);
   for (int level = 1; level <= maxLevel; ++level)
   {
     const Result osd = Measure([&] { return subdbench::RunOpenSubdiv(mesh, level, Sdc::SCHEME_CATMARK); }, repeats);
@@ -125,13 +125,8 @@ int main(int argc, char* argv[])
     const Result lean = Measure([&] { return RunFilter(mesh, level, 2, true); }, repeats);
     const Result reapply = Measure([&] { return RunReapply(mesh, level, 2); }, repeats);
     auto row = [&](const char* name, const Result& r) {
-      std::printf("%-5d %-28s %10.4f %12.3g %10.1f %9.2f", level, name, r.Seconds, r.Faces / r.Seconds, r.PeakMiB,
-        osd.Seconds / r.Seconds);
-      if (r.OutputBytes > 0)
-      {
-        std::printf(" %9.2f %9.1f", r.PeakMiB * 1048576.0 / r.OutputBytes,
-          r.Seconds / (r.OutputBytes / subdbench::WriteBandwidth));
-      }
+      std::printf("%-5d %-28s %10.4f %12.3g %9.2f", level, name, r.Seconds, r.Faces / r.Seconds, osd.Seconds / r.Seconds);
+      subdbench::PrintMemory(r);
       std::printf("\n");
     };
     row("OpenSubdiv Far (1 thread)", osd);

@@ -193,8 +193,8 @@ int main(int argc, char* argv[])
   std::printf("Surface schemes on %s: %d points, %zu faces; best of %d runs each\n", argv[1], mesh.NumVertices(),
     mesh.Sizes.size(), repeats);
   const std::string only = argc > 4 ? "," + std::string(argv[4]) + "," : "";
-  std::printf("%-10s %-5s %-22s %10s %12s %10s %9s %9s\n", "scheme", "level", "implementation", "seconds", "faces/s",
-    "peak MiB", "peak/out", "x bound");
+  std::printf("%-10s %-5s %-22s %10s %12s%s\n", "scheme", "level", "implementation", "seconds", "faces/s",
+    subdbench::MemoryHeader);
   for (const SchemeBench& scheme : schemes)
   {
     if (!only.empty() && only.find("," + scheme.Name + ",") == std::string::npos)
@@ -204,13 +204,9 @@ int main(int argc, char* argv[])
     for (int level = 1; level <= maxLevel; ++level)
     {
       auto row = [&](const std::string& name, const Result& r) {
-        std::printf("%-10s %-5d %-22s %10.4f %12.3g %10.1f", scheme.Name.c_str(), level, name.c_str(), r.Seconds,
-          r.Faces / r.Seconds, r.PeakMiB);
-        if (r.OutputBytes > 0)
-        {
-          std::printf(" %9.2f %9.1f", r.PeakMiB * 1048576.0 / r.OutputBytes,
-            r.Seconds / (r.OutputBytes / subdbench::WriteBandwidth));
-        }
+        std::printf("%-10s %-5d %-22s %10.4f %12.3g", scheme.Name.c_str(), level, name.c_str(), r.Seconds,
+          r.Faces / r.Seconds);
+        subdbench::PrintMemory(r);
         std::printf("\n");
       };
       const Result one = Measure([&] { return scheme.SubD(mesh, level, 1); }, repeats);

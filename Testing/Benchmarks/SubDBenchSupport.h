@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -44,8 +45,30 @@ struct Result
   double Faces = 0;
   double OutputBytes = 0;
   double Extra[2] = { 0, 0 };
-  double PeakMiB = 0;
+  double PeakMiB = 0;   ///< the child's peak RSS (VmHWM): the forked process, libraries and input included
+  double GrowthMiB = 0; ///< that peak less the child's RSS when its work began: what the run itself added
 };
+
+/// A line of /proc/self/status ("VmRSS", "VmHWM") in MiB; 0 where it cannot be read.
+inline double StatusMiB(const char* field)
+{
+  std::FILE* status = std::fopen("/proc/self/status", "r");
+  if (!status)
+    return 0;
+  char line[256];
+  double kiB = 0;
+  const size_t length = std::strlen(field);
+  while (std::fgets(line, sizeof(line), status))
+  {
+    if (std::strncmp(line, field, length) == 0 && line[length] == ':')
+    {
+      kiB = std::atof(line + length + 1);
+      break;
+    }
+  }
+  std::fclose(status);
+  return kiB / 1024.0;
+}
 
 /// The bytes of a filter's output, as VTK counts them.
 inline double OutputBytes(vtkPolyData* output)
@@ -54,7 +77,9 @@ inline double OutputBytes(vtkPolyData* output)
 }
 
 // Runs `work` in a child process `repeats` times and keeps the fastest; the peak RSS is
-// the child's own.
+// the child's own. The growth subtracts the RSS the child starts with (the parent's pages it
+// shares: libraries, the mesh read): the memory the measured work needs. Library pages the
+// child touches again after the fork count as growth, so it errs high, never low.
 inline Result Measure(const std::function<Work()>& work, int repeats)
 {
   Result best;
@@ -68,14 +93,17 @@ inline Result Measure(const std::function<Work()>& work, int repeats)
     if (pid == 0)
     {
       close(pipeFd[0]);
+      const double startMiB = StatusMiB("VmRSS");
       const Work w = work();
-      const double message[5] = { w.Seconds, w.Faces, w.OutputBytes, w.Extra[0], w.Extra[1] };
+      const double peakMiB = StatusMiB("VmHWM");
+      const double message[7] = { w.Seconds, w.Faces, w.OutputBytes, w.Extra[0], w.Extra[1], peakMiB,
+        peakMiB - startMiB };
       if (write(pipeFd[1], message, sizeof(message)) != sizeof(message))
         _exit(1);
       _exit(0);
     }
     close(pipeFd[1]);
-    double message[5] = { 0, 0, 0, 0, 0 };
+    double message[7] = { 0, 0, 0, 0, 0, 0, 0 };
     const bool ok = read(pipeFd[0], message, sizeof(message)) == sizeof(message);
     close(pipeFd[0]);
     int status = 0;
@@ -93,7 +121,8 @@ inline Result Measure(const std::function<Work()>& work, int repeats)
       best.OutputBytes = message[2];
       best.Extra[0] = message[3];
       best.Extra[1] = message[4];
-      best.PeakMiB = usage.ru_maxrss / 1024.0;
+      best.PeakMiB = message[5] > 0 ? message[5] : usage.ru_maxrss / 1024.0;
+      best.GrowthMiB = message[6];
     }
   }
   return best;
@@ -102,6 +131,21 @@ inline Result Measure(const std::function<Work()>& work, int repeats)
 /// This machine's measured write bandwidth (the figure, bytes/s): writing the output
 /// once at this rate is the bound no implementation can beat.
 constexpr double WriteBandwidth = 23.0e9;
+
+/// The memory and bound columns every bench row ends with (MemoryHeader names them): peak and
+/// growth in MiB and, for SubD's filters (whose output bytes are known), both over the output's
+/// bytes and the time over the bandwidth bound.
+constexpr const char* MemoryHeader = "  peak MiB  grown MiB  peak/out grown/out   x bound";
+
+inline void PrintMemory(const Result& r)
+{
+  std::printf(" %9.1f %10.1f", r.PeakMiB, r.GrowthMiB);
+  if (r.OutputBytes > 0)
+  {
+    const double outMiB = r.OutputBytes / 1048576.0;
+    std::printf(" %9.2f %9.2f %9.1f", r.PeakMiB / outMiB, r.GrowthMiB / outMiB, r.Seconds / (r.OutputBytes / WriteBandwidth));
+  }
+}
 
 /// A benchmark mesh as flat arrays (for the peers) and as vtkPolyData (for the filters).
 struct BenchMesh
