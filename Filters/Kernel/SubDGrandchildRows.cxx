@@ -327,17 +327,121 @@ void GrandchildRows::WriteRowsWith(Index begin, Index end, Index* buffers, doubl
   }
 }
 
+namespace
+{
+// Points' rows applied a few rows after they are written, each row's points asked for
+// (PrefetchPoint) when it is written: the rows written meanwhile, whose neighbourhoods are
+// worked out from the grandparent, hide the time those points take to arrive (Catmull-Clark
+// armadillo L3 re-applied with LowMemory, one thread: 0.25 s against 0.32 s; Loop bunny L3,
+// two threads: 0.17 against 0.19 s). A row is
+// copied in (a few entries, in L1). Rows of one block never read each other's points, so
+// the delay is safe within a block; Drain applies what is left at a block's end.
+template <typename T>
+class DelayedPointRows
+{
+public:
+  /// How many rows a row waits: as PrefetchDistance for rows written from the parent.
+  static constexpr Index Depth = 16;
+
+  DelayedPointRows(Index maxRowSize, Index numParents, const T* parents, T* children)
+    : MaxRowSize(maxRowSize)
+    , NumParents(numParents)
+    , Parents(parents)
+    , Children(children)
+    , Sources(static_cast<size_t>(Depth * maxRowSize))
+    , Weights(Sources.size())
+  {
+  }
+
+  void Add(Index row, const Index* sources, const double* weights, Index size)
+  {
+    for (Index k = 0; k < size; ++k)
+    {
+      PrefetchPoint(this->ValuesOf(sources[k]));
+    }
+    if (this->Count == Depth)
+    {
+      this->ApplyOldest();
+    }
+    const Index slot = (this->First + this->Count) % Depth;
+    Index* rowSources = this->Sources.data() + slot * this->MaxRowSize;
+    double* rowWeights = this->Weights.data() + slot * this->MaxRowSize;
+    for (Index k = 0; k < size; ++k) // a few entries: a loop, not a call to memmove
+    {
+      rowSources[k] = sources[k];
+      rowWeights[k] = weights[k];
+    }
+    this->Rows[slot] = row;
+    this->Sizes[slot] = size;
+    ++this->Count;
+  }
+
+  void Drain()
+  {
+    while (this->Count > 0)
+    {
+      this->ApplyOldest();
+    }
+  }
+
+private:
+  const T* ValuesOf(Index source) const
+  {
+    return source < this->NumParents ? this->Parents + 3 * static_cast<size_t>(source)
+                                     : this->Children + 3 * static_cast<size_t>(source - this->NumParents);
+  }
+  void ApplyOldest()
+  {
+    const Index slot = this->First;
+    ApplyRow(this->Sources.data() + slot * this->MaxRowSize, this->Weights.data() + slot * this->MaxRowSize,
+      this->Sizes[slot], this->NumParents, this->Parents, this->Children, 3, nullptr,
+      this->Children + 3 * static_cast<size_t>(this->Rows[slot]));
+    this->First = (this->First + 1) % Depth;
+    --this->Count;
+  }
+
+  const Index MaxRowSize, NumParents;
+  const T* Parents;
+  T* Children;
+  std::vector<Index> Sources;
+  std::vector<double> Weights;
+  Index Rows[Depth], Sizes[Depth];
+  Index First = 0, Count = 0;
+};
+}
+
 template <typename T>
 void GrandchildRows::Apply(const T* parents, T* children, int components, Index begin, Index end) const
 {
   std::vector<Index> buffers(4 * static_cast<size_t>(this->MaxRowSize)); // sources, a point's lists
   std::vector<double> weights(static_cast<size_t>(this->MaxRowSize));
-  std::vector<double> sum(static_cast<size_t>(components));
-  this->WriteRows(begin, end, buffers.data(), weights.data(),
-    [&](Index row, const Index* rowSources, const double* rowWeights, Index size) {
-      ApplyRow(rowSources, rowWeights, size, this->NumParents, parents, children, components, sum.data(),
-        children + static_cast<size_t>(row) * components);
-    });
+  // The linear rules' rows cost next to nothing to write, so there is nothing to hide the
+  // fetches behind (measured: no gain); they and other values than points are applied as
+  // written.
+  if (components != 3 || WritesEveryRowFromGrandparent(this->Scheme))
+  {
+    std::vector<double> sum(static_cast<size_t>(components));
+    this->WriteRows(begin, end, buffers.data(), weights.data(),
+      [&](Index row, const Index* rowSources, const double* rowWeights, Index size) {
+        ApplyRow(rowSources, rowWeights, size, this->NumParents, parents, children, components, sum.data(),
+          children + static_cast<size_t>(row) * components);
+      });
+    return;
+  }
+  DelayedPointRows<T> delayed(this->MaxRowSize, this->NumParents, parents, children);
+  for (Index blockEnd : this->GetBlockEnds())
+  {
+    const Index last = std::min(end, blockEnd);
+    if (begin < last)
+    {
+      this->WriteRows(begin, last, buffers.data(), weights.data(),
+        [&](Index row, const Index* rowSources, const double* rowWeights, Index size) {
+          delayed.Add(row, rowSources, rowWeights, size);
+        });
+      delayed.Drain();
+      begin = last;
+    }
+  }
 }
 
 void GrandchildRows::ApplyRows(const double* parents, double* children, int components, Index begin, Index end) const
