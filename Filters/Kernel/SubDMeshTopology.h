@@ -182,7 +182,7 @@ private:
   void BuildEdgeFaces(const HalfEdgePairing& pairing, const ParallelFor& parallelFor);
   void BuildVertexEdges(const ParallelFor& parallelFor);
   void TagVertices(const ParallelFor& parallelFor);
-  Index CountFans(Index v, std::vector<Index>& scratch) const;
+  Index CountFans(Index v, bool allTriangles, std::vector<Index>& scratch) const;
 
   Index NumVertices = 0;
   IndexArray FaceOffsets{ 0 };
