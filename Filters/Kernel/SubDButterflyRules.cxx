@@ -121,7 +121,7 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
       for (int side = 0; side < 2; ++side)
       {
         const Index position = this->TriangleCornerOfEdge(ef[side], e);
-        corner[side] = static_cast<Index>(FirstCorner(ef[side])) + position;
+        corner[side] = static_cast<Index>(MeshTopology::GetFirstTriangleCorner(ef[side])) + position;
         third[side] = this->Topology.GetTriangleVertices(ef[side])[position == 0 ? 2 : position - 1];
       }
       this->Across[corner[0]] = third[1];
@@ -157,7 +157,7 @@ Index ButterflyRowWriter::AcrossEdge(Index face, Index x, Index b) const
   const Index* fv = this->Topology.GetTriangleVertices(face);
   const Index ix = fv[0] == x ? 0 : (fv[1] == x ? 1 : 2);
   const Index corner = fv[(ix + 1) % 3] == b ? ix : (ix + 2) % 3;
-  return this->Across[FirstCorner(face) + corner];
+  return this->Across[MeshTopology::GetFirstTriangleCorner(face) + corner];
 }
 
 // Where `first` is in v's ring (K, the valence, when it is not there).
@@ -303,28 +303,15 @@ void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
     const Index K = this->RingValence(v);
     const Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
     double sum = 0.0;
+    // The first end's ring and v are distinct points: appended without a search.
+    void (Row::*put)(Index, double) = ends == 0 ? &Row::Append : &Row::Add;
     for (Index j = 0, k = this->RingStart(v, end.second) % K; j < K; ++j, k = k + 1 == K ? 0 : k + 1)
     {
       const double s = this->ExtraordinaryWeight(K, j);
-      // RingFrom(v, end.second, j); the first end's ring and v are distinct points.
-      if (ends == 0)
-      {
-        smooth.Append(ring[k], s);
-      }
-      else
-      {
-        smooth.Add(ring[k], s);
-      }
+      (smooth.*put)(ring[k], s); // RingFrom(v, end.second, j)
       sum += s;
     }
-    if (ends == 0)
-    {
-      smooth.Append(v, 1.0 - sum);
-    }
-    else
-    {
-      smooth.Add(v, 1.0 - sum);
-    }
+    (smooth.*put)(v, 1.0 - sum);
     ++ends;
   }
   const double scale = 1.0 / ends;
@@ -359,7 +346,7 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
     // Corner `corner` starts e; the triangle's other edges start at `next` (from the end of
     // e) and `previous` (to its start).
     const Index* fv = this->Topology.GetTriangleVertices(f);
-    const Index* across = this->Across.data() + FirstCorner(f);
+    const Index* across = this->Across.data() + MeshTopology::GetFirstTriangleCorner(f);
     const bool startsAtA0 = fv[corner] == a0;
     b[side] = fv[previous];
     wings[side][0] = across[startsAtA0 ? previous : next]; // across (a0, b)

@@ -92,9 +92,6 @@ private:
   bool HasRing(Index v) const { return this->RingValences[v] > 0; }
   Index RingValence(Index v) const { return this->RingValences[v]; }
   bool IsSmoothRegular(Index v) const { return this->RingKinds[v] == SmoothRegularRing; }
-  // Every face is a triangle (the triangle split's precondition): face f's corners are 3f,
-  // 3f + 1 and 3f + 2 (MeshTopology::GetTriangleVertices).
-  static size_t FirstCorner(Index f) { return 3 * static_cast<size_t>(f); }
   Index TriangleCornerOfEdge(Index f, Index e) const
   {
     const Index* fe = this->Topology.GetTriangleEdges(f);
@@ -150,7 +147,7 @@ inline void ButterflyRowWriter::PrefetchRow(Index row, const T*, const T*) const
   {
     PrefetchForRead(topo.GetTriangleVertices(f));
     PrefetchForRead(topo.GetTriangleEdges(f));
-    PrefetchForRead(this->Across.data() + FirstCorner(f));
+    PrefetchForRead(this->Across.data() + MeshTopology::GetFirstTriangleCorner(f));
   }
 }
 

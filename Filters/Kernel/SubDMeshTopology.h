@@ -132,8 +132,10 @@ public:
   /// For a mesh whose faces are all triangles (the triangle split's schemes): face f's
   /// vertices and edges, at corners 3f, 3f + 1 and 3f + 2, found without reading the face
   /// offsets (one scattered read fewer where f is far from the faces read before).
-  const Index* GetTriangleVertices(Index f) const { return this->FaceVertices.data() + 3 * static_cast<size_t>(f); }
-  const Index* GetTriangleEdges(Index f) const { return this->FaceEdges.data() + 3 * static_cast<size_t>(f); }
+  /// (Arrays kept per triangle corner index them the same way, from GetFirstTriangleCorner.)
+  static size_t GetFirstTriangleCorner(Index f) { return 3 * static_cast<size_t>(f); }
+  const Index* GetTriangleVertices(Index f) const { return this->FaceVertices.data() + GetFirstTriangleCorner(f); }
+  const Index* GetTriangleEdges(Index f) const { return this->FaceEdges.data() + GetFirstTriangleCorner(f); }
 
   /// Returns the edge joining a and b, or InvalidIndex.
   Index FindEdge(Index a, Index b) const;
