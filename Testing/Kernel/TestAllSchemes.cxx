@@ -533,7 +533,7 @@ TEST(Level, SmoothClosedVerticesAgreeWithThePerVertexTest)
 // and WrittenFromGrandparent, what they use with LowMemory, at levels 2 and 4 from their
 // grandparents, the finest faces then made after the points) give bit for bit the points,
 // faces, holes and origins the stored table gives, with semi-sharp and sharp creases and corners under both crease methods, for 3
-// double and 5 float components.
+// double, 3 float and 5 float components.
 TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
 {
   const auto scheme = GetParam().Make();
@@ -577,6 +577,11 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
           stored.Evaluate(values.data(), 5, a.data());
           written.Evaluate(values.data(), 5, b.data());
           EXPECT_EQ(a, b) << mesh.Name << " L" << levels;
+          // Three float components: points in single precision (the rows' prefetching path).
+          std::vector<float> c(static_cast<size_t>(stored.GetNumFinestPoints()) * 3), d(c.size());
+          stored.Evaluate(values.data(), 3, c.data());
+          written.Evaluate(values.data(), 3, d.data());
+          EXPECT_EQ(c, d) << mesh.Name << " L" << levels;
           written.MakeFinestFaces();
           EXPECT_TRUE(written.HasFinestFaces());
           ASSERT_EQ(written.Finest.Topology.GetFaceVertexArray(), stored.Finest.Topology.GetFaceVertexArray());
