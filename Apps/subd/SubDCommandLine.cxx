@@ -95,7 +95,7 @@ std::string UsageText()
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
          "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--normals]\n"
          "            [--curvature] [--tangents] [--closed] [--interpolate] [--low-memory]\n"
-         "            [--output FILE]\n"
+         "            [--output FILE] [--compress]\n"
          "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
          "\n"
          "Subdivides the polygon mesh INPUT (" << SupportedExtensions() << ") and writes the\n"
@@ -163,6 +163,8 @@ std::string UsageText()
   out << " (default " << BuiltinCurveNames().front() << ")\n"
          "  -o, --output FILE  output file (default <input>-<scheme>-L<levels>.vtp; with --image,\n"
          "                     no mesh is written unless --output is given)\n"
+         "  --compress         .vtp: compress the arrays (zlib): about a third smaller, written\n"
+         "                     ~30x slower; without it they are raw binary, written at disk speed\n"
          "\n"
          "Pictures (rendered offscreen: no display server needed):\n"
          "  --image FILE.png   render the result: curvature colours, control cage, creases\n"
@@ -379,6 +381,10 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     {
       cmd.Interpolate = true;
     }
+    else if (arg == "--compress")
+    {
+      cmd.Compress = true;
+    }
     else if (arg == "--low-memory")
     {
       cmd.Options.LowMemory = true;
@@ -438,6 +444,11 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
   {
     error = "--interpolate honours the input's creases but not --feature-angle (the solve would not know "
             "the creases it adds)";
+    return false;
+  }
+  if (cmd.Compress && !cmd.Output.empty() && LowerExtension(cmd.Output) != ".vtp")
+  {
+    error = "--compress applies to .vtp output, not to '" + cmd.Output + "'";
     return false;
   }
   if (cmd.Interpolate && !cmd.Compare.empty())

@@ -23,6 +23,7 @@ struct CommandLine
   int ViewSize[2] = { 500, 500 };   ///< pixels per view
   bool Cage = true;                 ///< overlay the control cage
   bool Interpolate = false;         ///< solve for the cage whose limit passes through the input
+  bool Compress = false;            ///< .vtp: zlib-compressed arrays (smaller, slower to write)
   bool Quiet = false;
   bool Help = false;
   bool Version = false;

@@ -159,7 +159,7 @@ int main(int argc, char* argv[])
     PrintMessages(messages.Errors.empty() ? "subdivision produced no output\n" : messages.Errors, "error");
     return 1;
   }
-  if (subdapp::WritesMesh(cmd) && !subdapp::WriteMesh(result, output, error))
+  if (subdapp::WritesMesh(cmd) && !subdapp::WriteMesh(result, output, error, cmd.Compress))
   {
     std::cerr << "subd: " << error << "\n";
     return 1;

@@ -7,21 +7,22 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSubDStripTriangles.h"
+#include "vtkSubDTextOutput.h"
 
-#include <iomanip>
 #include <vector>
 
 vtkStandardNewMacro(vtkSubDOBJWriter);
 
 void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
 {
-  file << "# written by SubD (sharp features as OpenSubdiv tags, 0-based)\n" << std::setprecision(17);
+  vtkSubDTextOutput out(file); // numbers in their shortest exact form
+  out << "# written by SubD (sharp features as OpenSubdiv tags, 0-based)\n";
   const vtkIdType numPoints = input->GetNumberOfPoints();
   double p[3];
   for (vtkIdType i = 0; i < numPoints; ++i)
   {
     input->GetPoint(i, p);
-    file << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
   }
 
   // Faces: polygons then strip triangles; holes are numbered among them.
@@ -34,19 +35,19 @@ void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
   vtkCellArray* polys = input->GetPolys();
   for (polys->InitTraversal(); polys->GetNextCell(n, pts); ++face)
   {
-    file << 'f';
+    out << 'f';
     for (vtkIdType k = 0; k < n; ++k)
     {
-      file << ' ' << pts[k] + 1;
+      out << ' ' << pts[k] + 1;
     }
-    file << '\n';
+    out << '\n';
     if (holes && holes->GetComponent(firstPolyCell + face, 0) != 0.0)
     {
       holeFaces.push_back(face);
     }
   }
-  vtkSubDForEachStripTriangle(input->GetStrips(), [&file](vtkIdType a, vtkIdType b, vtkIdType c) {
-    file << "f " << a + 1 << ' ' << b + 1 << ' ' << c + 1 << '\n';
+  vtkSubDForEachStripTriangle(input->GetStrips(), [&out](vtkIdType a, vtkIdType b, vtkIdType c) {
+    out << "f " << a + 1 << ' ' << b + 1 << ' ' << c + 1 << '\n';
   });
 
   // Sharp features.
@@ -59,12 +60,12 @@ void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
     {
       continue;
     }
-    file << "t crease " << n << "/1/0";
+    out << "t crease " << n << "/1/0";
     for (vtkIdType k = 0; k < n; ++k)
     {
-      file << ' ' << pts[k];
+      out << ' ' << pts[k];
     }
-    file << ' ' << (sharpness ? sharpness->GetComponent(cell, 0) : 10.0) << '\n';
+    out << ' ' << (sharpness ? sharpness->GetComponent(cell, 0) : 10.0) << '\n';
   }
   if (vtkDataArray* corners = input->GetPointData()->GetArray("CornerSharpness"))
   {
@@ -78,26 +79,26 @@ void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
     }
     if (!ids.empty())
     {
-      file << "t corner " << ids.size() << '/' << ids.size() << "/0";
+      out << "t corner " << ids.size() << '/' << ids.size() << "/0";
       for (vtkIdType i : ids)
       {
-        file << ' ' << i;
+        out << ' ' << i;
       }
       for (vtkIdType i : ids)
       {
-        file << ' ' << corners->GetComponent(i, 0);
+        out << ' ' << corners->GetComponent(i, 0);
       }
-      file << '\n';
+      out << '\n';
     }
   }
   if (!holeFaces.empty())
   {
-    file << "t hole " << holeFaces.size() << "/0/0";
+    out << "t hole " << holeFaces.size() << "/0/0";
     for (vtkIdType f : holeFaces)
     {
-      file << ' ' << f;
+      out << ' ' << f;
     }
-    file << '\n';
+    out << '\n';
   }
 }
 

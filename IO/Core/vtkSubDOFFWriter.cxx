@@ -4,8 +4,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkSubDStripTriangles.h"
-
-#include <iomanip>
+#include "vtkSubDTextOutput.h"
 
 vtkStandardNewMacro(vtkSubDOFFWriter);
 
@@ -21,26 +20,26 @@ void vtkSubDOFFWriter::WriteFile(vtkPolyData* input, std::ostream& file)
   vtkIdType n;
   const vtkIdType* pts;
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  file << "OFF\n" << numPoints << ' ' << input->GetNumberOfPolys() + numTriangles << " 0\n";
-  file << std::setprecision(17);
+  vtkSubDTextOutput out(file); // numbers in their shortest exact form
+  out << "OFF\n" << numPoints << ' ' << input->GetNumberOfPolys() + numTriangles << " 0\n";
   double p[3];
   for (vtkIdType i = 0; i < numPoints; ++i)
   {
     input->GetPoint(i, p);
-    file << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
   }
   vtkCellArray* polys = input->GetPolys();
   for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
   {
-    file << n;
+    out << n;
     for (vtkIdType k = 0; k < n; ++k)
     {
-      file << ' ' << pts[k];
+      out << ' ' << pts[k];
     }
-    file << '\n';
+    out << '\n';
   }
-  vtkSubDForEachStripTriangle(strips, [&file](vtkIdType a, vtkIdType b, vtkIdType c) {
-    file << "3 " << a << ' ' << b << ' ' << c << '\n';
+  vtkSubDForEachStripTriangle(strips, [&out](vtkIdType a, vtkIdType b, vtkIdType c) {
+    out << "3 " << a << ' ' << b << ' ' << c << '\n';
   });
 }
 
