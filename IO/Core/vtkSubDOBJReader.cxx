@@ -5,15 +5,18 @@
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
 #include "vtkFloatArray.h"
+#include "vtkIdTypeArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <map>
 #include <set>
 #include <sstream>
@@ -29,7 +32,8 @@ namespace
 struct OBJContents
 {
   std::vector<double> Points;
-  std::vector<std::vector<long>> Faces;         // 0-based
+  std::vector<vtkIdType> FaceOffsets{ 0 };      // face f's corners: [FaceOffsets[f], FaceOffsets[f + 1])
+  std::vector<vtkIdType> FaceCorners;           // 0-based
   std::vector<std::vector<long>> Polylines;     // `l` elements, 0-based
   std::vector<std::vector<long>> CreaseChains;  // from tags, 0-based
   std::vector<float> ChainSharpness;
@@ -47,9 +51,9 @@ bool ParseLong(const std::string& token, long& value)
 }
 
 // Real numbers are parsed whatever the C locale (a Qt application sets the user's).
-bool ParseDouble(const std::string& token, double& value)
+bool ParseFiniteDouble(const char* first, const char* last, double& value)
 {
-  return subdio::FileScanner::ParseWord(token.data(), token.data() + token.size(), value) && std::isfinite(value);
+  return subdio::FileScanner::ParseWord(first, last, value) && std::isfinite(value);
 }
 
 bool ParseFloat(const std::string& token, float& value)
@@ -57,16 +61,56 @@ bool ParseFloat(const std::string& token, float& value)
   return subdio::FileScanner::ParseWord(token.data(), token.data() + token.size(), value);
 }
 
-// An OBJ index (1-based, or negative: relative to the vertices read so far) to 0-based.
-bool ObjIndex(const std::string& token, long numPoints, long& index)
+// An OBJ index (the word [first, last): 1-based, or negative: relative to the vertices read
+// so far) to 0-based.
+bool ObjIndex(const char* first, const char* last, long numPoints, long& index)
 {
   long i;
-  if (!ParseLong(token, i) || i == 0)
+  if (!subdio::FileScanner::ParseWord(first, last, i) || i == 0)
   {
     return false;
   }
   index = i > 0 ? i - 1 : numPoints + i;
   return true;
+}
+
+// The words of a line, split at white space without copying them: a file of millions of
+// vertices and faces is read at the speed of std::from_chars, not of a string stream per line.
+class LineWords
+{
+public:
+  explicit LineWords(const std::string& line)
+    : Position(line.data())
+    , End(line.data() + line.size())
+  {
+  }
+  /// The next word as [first, last); false after the last.
+  bool Next(const char*& first, const char*& last)
+  {
+    while (this->Position != this->End && subdio::FileScanner::IsSpace(*this->Position))
+    {
+      ++this->Position;
+    }
+    first = this->Position;
+    while (this->Position != this->End && !subdio::FileScanner::IsSpace(*this->Position))
+    {
+      ++this->Position;
+    }
+    last = this->Position;
+    return first != last;
+  }
+  /// What follows the words read so far.
+  std::string Rest() const { return std::string(this->Position, this->End); }
+
+private:
+  const char* Position;
+  const char* End;
+};
+
+bool IsWord(const char* first, const char* last, const char* word)
+{
+  const size_t length = std::strlen(word);
+  return static_cast<size_t>(last - first) == length && std::equal(first, last, word);
 }
 
 // Parses `t name nInts/nFloats/nStrings ints floats strings` into `contents`.
@@ -148,7 +192,8 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
   auto fail = [&](const std::string& what) { return this->Fail(lineNumber, what); };
 
   OBJContents contents;
-  std::string line, keyword, token;
+  std::string line;
+  std::vector<long> element;
   while (std::getline(file, line))
   {
     ++lineNumber;
@@ -157,44 +202,55 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
     {
       line.erase(hash);
     }
-    std::istringstream in(line);
-    if (!(in >> keyword))
+    LineWords words(line);
+    const char *keyword, *keywordEnd, *first, *last;
+    if (!words.Next(keyword, keywordEnd))
     {
       continue;
     }
-    if (keyword == "v")
+    if (IsWord(keyword, keywordEnd, "v"))
     {
       double xyz[3];
       for (double& c : xyz)
       {
-        if (!(in >> token) || !ParseDouble(token, c))
+        if (!words.Next(first, last) || !ParseFiniteDouble(first, last, c))
         {
           return fail("a vertex needs 3 finite coordinates");
         }
       }
       contents.Points.insert(contents.Points.end(), xyz, xyz + 3);
     }
-    else if (keyword == "f" || keyword == "l")
+    else if (IsWord(keyword, keywordEnd, "f") || IsWord(keyword, keywordEnd, "l"))
     {
-      std::vector<long> element;
+      const bool face = *keyword == 'f';
+      element.clear();
       const long numPoints = static_cast<long>(contents.Points.size() / 3);
-      while (in >> token)
+      while (words.Next(first, last))
       {
         long index;
-        if (!ObjIndex(token.substr(0, token.find('/')), numPoints, index))
+        if (!ObjIndex(first, std::find(first, last, '/'), numPoints, index))
         {
-          return fail("'" + token + "' is not a vertex index");
+          return fail("'" + std::string(first, last) + "' is not a vertex index");
         }
         element.push_back(index);
       }
-      if (element.size() < (keyword == "f" ? 3u : 2u))
+      if (element.size() < (face ? 3u : 2u))
       {
-        return fail(keyword == "f" ? "a face needs at least 3 vertices" : "a line needs at least 2 vertices");
+        return fail(face ? "a face needs at least 3 vertices" : "a line needs at least 2 vertices");
       }
-      (keyword == "f" ? contents.Faces : contents.Polylines).push_back(element);
+      if (face)
+      {
+        contents.FaceCorners.insert(contents.FaceCorners.end(), element.begin(), element.end());
+        contents.FaceOffsets.push_back(static_cast<vtkIdType>(contents.FaceCorners.size()));
+      }
+      else
+      {
+        contents.Polylines.push_back(element);
+      }
     }
-    else if (keyword == "t")
+    else if (IsWord(keyword, keywordEnd, "t"))
     {
+      std::istringstream in(words.Rest()); // tags are few: parsed as a stream
       const std::string problem = ParseTag(in, contents);
       if (!problem.empty())
       {
@@ -228,7 +284,21 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
   };
   std::string error;
   lineNumber = 0;
-  if (!checkAll(contents.Faces, "face", error) || !checkAll(contents.Polylines, "line", error) ||
+  const vtkIdType numFaces = static_cast<vtkIdType>(contents.FaceOffsets.size()) - 1;
+  for (vtkIdType f = 0; f < numFaces && error.empty(); ++f)
+  {
+    for (vtkIdType k = contents.FaceOffsets[f]; k < contents.FaceOffsets[f + 1]; ++k)
+    {
+      const vtkIdType v = contents.FaceCorners[k];
+      if (v < 0 || v >= numPoints)
+      {
+        error = "face " + std::to_string(f) + " uses vertex " + std::to_string(v) + " but the file has " +
+          std::to_string(numPoints) + " vertices";
+        break;
+      }
+    }
+  }
+  if (!error.empty() || !checkAll(contents.Polylines, "line", error) ||
     !checkAll(contents.CreaseChains, "crease tag", error))
   {
     return fail(error);
@@ -242,9 +312,9 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
   }
   for (long f : contents.Holes)
   {
-    if (f < 0 || f >= static_cast<long>(contents.Faces.size()))
+    if (f < 0 || f >= numFaces)
     {
-      return fail("hole tag names face " + std::to_string(f) + " of " + std::to_string(contents.Faces.size()));
+      return fail("hole tag names face " + std::to_string(f) + " of " + std::to_string(numFaces));
     }
   }
 
@@ -266,7 +336,14 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
     }
   };
   vtkNew<vtkCellArray> polys, lines;
-  toCells(contents.Faces, polys);
+  {
+    vtkNew<vtkIdTypeArray> offsets, connectivity; // the flat lists as they are
+    offsets->SetNumberOfValues(numFaces + 1);
+    std::copy(contents.FaceOffsets.begin(), contents.FaceOffsets.end(), offsets->GetPointer(0));
+    connectivity->SetNumberOfValues(static_cast<vtkIdType>(contents.FaceCorners.size()));
+    std::copy(contents.FaceCorners.begin(), contents.FaceCorners.end(), connectivity->GetPointer(0));
+    polys->SetData(offsets, connectivity);
+  }
   toCells(contents.Polylines, lines);
   toCells(contents.CreaseChains, lines);
   output->SetPoints(points);
