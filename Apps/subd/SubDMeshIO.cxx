@@ -5,7 +5,6 @@
 #include "vtkAlgorithm.h"
 #include "vtkObjectFactory.h"
 #include "vtkOutputWindow.h"
-#include "vtkPLYWriter.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataWriter.h"
 #include "vtkSTLReader.h"
@@ -16,6 +15,7 @@
 #include "vtkSubDOFFReader.h"
 #include "vtkSubDOFFWriter.h"
 #include "vtkSubDPLYReader.h"
+#include "vtkSubDPLYWriter.h"
 #include "vtkTriangleFilter.h"
 #include "vtkXMLPolyDataReader.h"
 #include "vtkXMLPolyDataWriter.h"
@@ -210,9 +210,7 @@ vtkSmartPointer<vtkAlgorithm> MakeWriter(const std::string& ext, const std::stri
   }
   if (ext == ".ply")
   {
-    auto writer = NewWriter<vtkPLYWriter>(fileName);
-    vtkPLYWriter::SafeDownCast(writer)->SetFileTypeToBinary();
-    return writer;
+    return NewWriter<vtkSubDPLYWriter>(fileName); // double points stay double
   }
   if (ext == ".stl")
   {

@@ -2,9 +2,10 @@
  * @class   vtkSubDOBJWriter
  * @brief   writes polygon meshes as Wavefront OBJ with OpenSubdiv's sharp-feature tags
  *
- * Writes the points (`v`, full double precision) and polygons (`f`; triangle strips as
- * triangles), and the sharp features SubD's filters use as the tags vtkSubDOBJReader
- * reads (OpenSubdiv's convention, 0-based indices): each line cell as
+ * Writes the points (`v`, each coordinate in the shortest form that reads back to the same
+ * double) and polygons (`f`; triangle strips as triangles), and the sharp features SubD's
+ * filters use as the tags vtkSubDOBJReader reads (OpenSubdiv's convention, 0-based
+ * indices): each line cell as
  * `t crease N/1/0 v0 ... vN-1 s` with its "Sharpness" (10, infinitely sharp, when the
  * array is absent), non-zero "CornerSharpness" as one `t corner N/N/0` tag, and faces with a
  * non-zero "Hole" as `t hole N/0/0`. Other attributes are not written (OBJ has no place

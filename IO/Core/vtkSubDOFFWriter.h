@@ -2,8 +2,8 @@
  * @class   vtkSubDOFFWriter
  * @brief   writes the polygons of a vtkPolyData in the Object File Format (.off)
  *
- * Writes the header `OFF`, the counts, the points with full double precision (17
- * significant digits, so a write/read round trip is exact) and every polygon (triangle
+ * Writes the header `OFF`, the counts, the points in the shortest decimal form that reads
+ * back to the same double (so a write/read round trip is exact) and every polygon (triangle
  * strips are written as their triangles). Lines and vertices have no place in OFF and are
  * skipped with a warning.
  */

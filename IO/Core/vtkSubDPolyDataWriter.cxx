@@ -30,7 +30,7 @@ void vtkSubDPolyDataWriter::WriteData()
     this->SetErrorCode(vtkErrorCode::NoFileNameError);
     return;
   }
-  vtksys::ofstream file(this->FileName);
+  vtksys::ofstream file(this->FileName, std::ios::out | std::ios::binary); // bytes as written (PLY)
   if (!file)
   {
     vtkErrorMacro("Cannot open '" << this->FileName << "' for writing.");

@@ -1,0 +1,300 @@
+#include "vtkSubDPLYWriter.h"
+
+#include "vtkCellArray.h"
+#include "vtkCellData.h"
+#include "vtkDataArray.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkSubDFileScanner.h" // MachineIsBigEndian
+#include "vtkSubDStripTriangles.h"
+
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkSubDPLYWriter);
+
+namespace
+{
+// One property of the vertex element: a component of a point array, written as `Type`.
+struct Column
+{
+  vtkDataArray* Array;
+  int Component;
+  int Type; // a VTK type PLY has (VTK_CHAR ... VTK_DOUBLE)
+  std::string Name;
+
+  // The array's memory when it is laid out as one block of tuples (nearly always): values
+  // are then read from it directly, not through the array's virtual GetComponent.
+  const void* Values = Array->HasStandardMemoryLayout() ? Array->GetVoidPointer(0) : nullptr;
+  int SourceType = Array->GetDataType();
+  int Components = Array->GetNumberOfComponents();
+
+  double Value(vtkIdType i) const
+  {
+    const vtkIdType at = i * this->Components + this->Component;
+    switch (this->Values ? this->SourceType : VTK_VOID)
+    {
+      vtkTemplateMacro(return static_cast<double>(static_cast<const VTK_TT*>(this->Values)[at]));
+    }
+    return this->Array->GetComponent(i, this->Component);
+  }
+};
+
+// The PLY type for a VTK type, and the VTK type values are written as: PLY has 8-, 16- and
+// 32-bit integers, float and double; the rest are written as double.
+int WrittenType(int vtkType)
+{
+  switch (vtkType)
+  {
+    case VTK_CHAR:
+    case VTK_SIGNED_CHAR:
+      return VTK_SIGNED_CHAR;
+    case VTK_UNSIGNED_CHAR:
+    case VTK_SHORT:
+    case VTK_UNSIGNED_SHORT:
+    case VTK_INT:
+    case VTK_UNSIGNED_INT:
+    case VTK_FLOAT:
+      return vtkType;
+    default:
+      return VTK_DOUBLE;
+  }
+}
+
+const char* PLYTypeName(int writtenType)
+{
+  switch (writtenType)
+  {
+    case VTK_SIGNED_CHAR:
+      return "char";
+    case VTK_UNSIGNED_CHAR:
+      return "uchar";
+    case VTK_SHORT:
+      return "short";
+    case VTK_UNSIGNED_SHORT:
+      return "ushort";
+    case VTK_INT:
+      return "int";
+    case VTK_UNSIGNED_INT:
+      return "uint";
+    case VTK_FLOAT:
+      return "float";
+    default:
+      return "double";
+  }
+}
+
+// Bytes gathered in a buffer and handed to the stream in large pieces.
+class BinaryOutput
+{
+public:
+  explicit BinaryOutput(std::ostream& stream)
+    : Stream(stream)
+    , Bytes(Capacity)
+  {
+  }
+  ~BinaryOutput() { this->Flush(); }
+  template <typename T>
+  void Put(T value)
+  {
+    if (this->Used + sizeof(T) > Capacity)
+    {
+      this->Flush();
+    }
+    std::memcpy(this->Bytes.data() + this->Used, &value, sizeof(T));
+    this->Used += sizeof(T);
+  }
+  // `value` (read as a double: exact for every type written) stored as `writtenType`.
+  void PutAs(int writtenType, double value)
+  {
+    switch (writtenType)
+    {
+      case VTK_SIGNED_CHAR:
+        this->Put(static_cast<std::int8_t>(value));
+        break;
+      case VTK_UNSIGNED_CHAR:
+        this->Put(static_cast<std::uint8_t>(value));
+        break;
+      case VTK_SHORT:
+        this->Put(static_cast<std::int16_t>(value));
+        break;
+      case VTK_UNSIGNED_SHORT:
+        this->Put(static_cast<std::uint16_t>(value));
+        break;
+      case VTK_INT:
+        this->Put(static_cast<std::int32_t>(value));
+        break;
+      case VTK_UNSIGNED_INT:
+        this->Put(static_cast<std::uint32_t>(value));
+        break;
+      case VTK_FLOAT:
+        this->Put(static_cast<float>(value));
+        break;
+      default:
+        this->Put(value);
+    }
+  }
+  void Flush()
+  {
+    this->Stream.write(this->Bytes.data(), static_cast<std::streamsize>(this->Used));
+    this->Used = 0;
+  }
+
+private:
+  static constexpr size_t Capacity = size_t(1) << 20;
+  std::ostream& Stream;
+  std::vector<char> Bytes;
+  size_t Used = 0;
+};
+
+// A PLY property name: one word.
+std::string PropertyName(const char* arrayName, int index)
+{
+  std::string name = arrayName && *arrayName ? arrayName : "array" + std::to_string(index);
+  for (char& c : name)
+  {
+    c = subdio::FileScanner::IsSpace(c) ? '_' : c;
+  }
+  return name;
+}
+}
+
+void vtkSubDPLYWriter::WriteFile(vtkPolyData* input, std::ostream& file)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  if (numPoints > std::numeric_limits<std::int32_t>::max())
+  {
+    vtkErrorMacro(<< numPoints << " points: more than PLY's int vertex indices can name.");
+    return;
+  }
+  if (input->GetNumberOfLines() + input->GetNumberOfVerts() > 0)
+  {
+    vtkWarningMacro("PLY holds only polygons here: " << input->GetNumberOfLines() << " lines and "
+                                                    << input->GetNumberOfVerts() << " verts are not written.");
+  }
+  if (input->GetCellData()->GetNumberOfArrays() > 0)
+  {
+    vtkWarningMacro("Cell data is not written to PLY (" << input->GetCellData()->GetNumberOfArrays()
+                                                        << " array(s)).");
+  }
+
+  // The vertex element's properties: the points, then the point data as the reader names it.
+  std::vector<Column> columns;
+  vtkDataArray* coordinates = numPoints > 0 ? input->GetPoints()->GetData() : nullptr;
+  const int pointType = coordinates && coordinates->GetDataType() == VTK_FLOAT ? VTK_FLOAT : VTK_DOUBLE;
+  for (int c = 0; c < 3 && coordinates; ++c)
+  {
+    columns.push_back({ coordinates, c, pointType, std::string(1, "xyz"[c]) });
+  }
+  vtkPointData* pd = input->GetPointData();
+  std::vector<std::string> skipped;
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    if (!array)
+    {
+      skipped.push_back(pd->GetAbstractArray(a)->GetName() ? pd->GetAbstractArray(a)->GetName() : "");
+      continue;
+    }
+    const int components = array->GetNumberOfComponents();
+    const int type = WrittenType(array->GetDataType());
+    const char* name = array->GetName() ? array->GetName() : "";
+    if (array == pd->GetNormals() && components == 3)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        columns.push_back({ array, c, type, std::string("n") + "xyz"[c] });
+      }
+    }
+    else if (array->GetDataType() == VTK_UNSIGNED_CHAR && (components == 3 || components == 4) &&
+      (array == pd->GetScalars() || std::strcmp(name, "RGB") == 0 || std::strcmp(name, "RGBA") == 0))
+    {
+      const char* channels[] = { "red", "green", "blue", "alpha" };
+      for (int c = 0; c < components; ++c)
+      {
+        columns.push_back({ array, c, type, channels[c] });
+      }
+    }
+    else if (array == pd->GetTCoords() && components == 2)
+    {
+      columns.push_back({ array, 0, type, "u" });
+      columns.push_back({ array, 1, type, "v" });
+    }
+    else if (components == 1)
+    {
+      columns.push_back({ array, 0, type, PropertyName(name, a) });
+    }
+    else
+    {
+      skipped.push_back(name);
+    }
+  }
+  if (!skipped.empty())
+  {
+    std::string names;
+    for (const std::string& name : skipped)
+    {
+      names += (names.empty() ? "'" : ", '") + name + "'";
+    }
+    vtkWarningMacro("Point-data array(s) " << names << " have no PLY property form and are not written.");
+  }
+
+  vtkCellArray* polys = input->GetPolys();
+  vtkCellArray* strips = input->GetStrips();
+  const vtkIdType numFaces = polys->GetNumberOfCells() + vtkSubDCountStripTriangles(strips);
+  const bool wideCounts = polys->GetMaxCellSize() > 255;
+
+  file << "ply\nformat " << (subdio::FileScanner::MachineIsBigEndian() ? "binary_big_endian" : "binary_little_endian")
+       << " 1.0\ncomment written by SubD\nelement vertex " << numPoints << "\n";
+  for (const Column& column : columns)
+  {
+    file << "property " << PLYTypeName(column.Type) << ' ' << column.Name << "\n";
+  }
+  file << "element face " << numFaces << "\nproperty list " << (wideCounts ? "int" : "uchar")
+       << " int vertex_indices\nend_header\n";
+
+  BinaryOutput out(file);
+  for (vtkIdType i = 0; i < numPoints; ++i)
+  {
+    for (const Column& column : columns)
+    {
+      out.PutAs(column.Type, column.Value(i));
+    }
+  }
+  auto putCount = [&out, wideCounts](vtkIdType n) {
+    if (wideCounts)
+    {
+      out.Put(static_cast<std::int32_t>(n));
+    }
+    else
+    {
+      out.Put(static_cast<std::uint8_t>(n));
+    }
+  };
+  vtkIdType n;
+  const vtkIdType* pts;
+  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
+  {
+    putCount(n);
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      out.Put(static_cast<std::int32_t>(pts[k]));
+    }
+  }
+  vtkSubDForEachStripTriangle(strips, [&](vtkIdType a, vtkIdType b, vtkIdType c) {
+    putCount(3);
+    out.Put(static_cast<std::int32_t>(a));
+    out.Put(static_cast<std::int32_t>(b));
+    out.Put(static_cast<std::int32_t>(c));
+  });
+}
+
+void vtkSubDPLYWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+}
