@@ -164,7 +164,7 @@ std::string UsageText()
          "  -o, --output FILE  output file (default <input>-<scheme>-L<levels>.vtp; with --image,\n"
          "                     no mesh is written unless --output is given)\n"
          "  --compress         .vtp: compress the arrays (zlib): about a third smaller, written\n"
-         "                     ~30x slower; without it they are raw binary, written at disk speed\n"
+         "                     ~15x slower; without it they are raw binary, written at disk speed\n"
          "\n"
          "Pictures (rendered offscreen: no display server needed):\n"
          "  --image FILE.png   render the result: curvature colours, control cage, creases\n"

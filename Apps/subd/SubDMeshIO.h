@@ -16,8 +16,8 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& erro
 
 /// Writes by extension, atomically: into a temporary file beside `path`, renamed over it only
 /// when complete. Returns false and sets `error` on failure (nothing is left behind). A .vtp
-/// holds its arrays as raw binary, appended (zlib-compressed with `compress`: 30 to 100 times
-/// slower to write a large mesh, for files about a third smaller).
+/// holds its arrays as raw binary, appended (zlib-compressed with `compress`: about 15 times
+/// slower to write, for files about a third smaller).
 bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error, bool compress = false);
 
 std::string LowerExtension(const std::string& path);

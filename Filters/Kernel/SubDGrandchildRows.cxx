@@ -334,9 +334,9 @@ namespace
 // (PrefetchPoint) when it is written: the rows written meanwhile, whose neighbourhoods are
 // worked out from the grandparent, hide the time those points take to arrive (Catmull-Clark
 // armadillo L3 re-applied with LowMemory, one thread: 0.25 s against 0.32 s; Loop bunny L3,
-// two threads: 0.17 against 0.19 s). A row is
-// copied in (a few entries, in L1). Rows of one block never read each other's points, so
-// the delay is safe within a block; Drain applies what is left at a block's end.
+// two threads: 0.17 against 0.19 s). A waiting row is a copy (a few entries, in L1). Rows
+// of one block never read each other's points, so the delay is safe within a block; Drain
+// applies what is left at a block's end.
 template <typename T>
 class DelayedPointRows
 {

@@ -342,7 +342,7 @@ void MeshTopology::TagVertices(const ParallelFor& parallelFor)
 // to 32 faces, a union-find beyond. Both read only v's own lists and its faces' edges:
 // cheaper than walking from face to face, which reads each neighbour face's corners. In an
 // all-triangle mesh a face's edges are found at 3f without reading the face offsets (one
-// scattered read per face fewer: this is most of the cost of tagging the vertices).
+// scattered read per face fewer).
 Index MeshTopology::CountFans(Index v, bool allTriangles, std::vector<Index>& parent) const
 {
   const IndexSpan faces = this->GetVertexFaces(v);

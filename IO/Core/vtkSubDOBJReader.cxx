@@ -267,17 +267,25 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
     lineNumber = 0;
     return fail("no vertices");
   }
-  auto checkAll = [numPoints](const std::vector<std::vector<long>>& cells, const char* what, std::string& error) {
+  // Cell c of `what`, the vertices [first, last): false (with `error`) if one does not exist.
+  auto checkCell = [numPoints](size_t c, const auto* first, const auto* last, const char* what, std::string& error) {
+    for (; first != last; ++first)
+    {
+      if (*first < 0 || *first >= numPoints)
+      {
+        error = std::string(what) + " " + std::to_string(c) + " uses vertex " + std::to_string(*first) +
+          " but the file has " + std::to_string(numPoints) + " vertices";
+        return false;
+      }
+    }
+    return true;
+  };
+  auto checkAll = [&checkCell](const std::vector<std::vector<long>>& cells, const char* what, std::string& error) {
     for (size_t c = 0; c < cells.size(); ++c)
     {
-      for (long v : cells[c])
+      if (!checkCell(c, cells[c].data(), cells[c].data() + cells[c].size(), what, error))
       {
-        if (v < 0 || v >= numPoints)
-        {
-          error = std::string(what) + " " + std::to_string(c) + " uses vertex " + std::to_string(v) +
-            " but the file has " + std::to_string(numPoints) + " vertices";
-          return false;
-        }
+        return false;
       }
     }
     return true;
@@ -285,18 +293,11 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
   std::string error;
   lineNumber = 0;
   const vtkIdType numFaces = static_cast<vtkIdType>(contents.FaceOffsets.size()) - 1;
+  const vtkIdType* corners = contents.FaceCorners.data();
   for (vtkIdType f = 0; f < numFaces && error.empty(); ++f)
   {
-    for (vtkIdType k = contents.FaceOffsets[f]; k < contents.FaceOffsets[f + 1]; ++k)
-    {
-      const vtkIdType v = contents.FaceCorners[k];
-      if (v < 0 || v >= numPoints)
-      {
-        error = "face " + std::to_string(f) + " uses vertex " + std::to_string(v) + " but the file has " +
-          std::to_string(numPoints) + " vertices";
-        break;
-      }
-    }
+    checkCell(static_cast<size_t>(f), corners + contents.FaceOffsets[f], corners + contents.FaceOffsets[f + 1], "face",
+      error);
   }
   if (!error.empty() || !checkAll(contents.Polylines, "line", error) ||
     !checkAll(contents.CreaseChains, "crease tag", error))
