@@ -109,34 +109,13 @@ public:
     std::memcpy(this->Bytes.data() + this->Used, &value, sizeof(T));
     this->Used += sizeof(T);
   }
-  // `value` (read as a double: exact for every type written) stored as `writtenType`.
+  // `value` (read as a double: exact for every type written) stored as `writtenType`, one of
+  // WrittenType's (VTK's C types for them have PLY's sizes).
   void PutAs(int writtenType, double value)
   {
     switch (writtenType)
     {
-      case VTK_SIGNED_CHAR:
-        this->Put(static_cast<std::int8_t>(value));
-        break;
-      case VTK_UNSIGNED_CHAR:
-        this->Put(static_cast<std::uint8_t>(value));
-        break;
-      case VTK_SHORT:
-        this->Put(static_cast<std::int16_t>(value));
-        break;
-      case VTK_UNSIGNED_SHORT:
-        this->Put(static_cast<std::uint16_t>(value));
-        break;
-      case VTK_INT:
-        this->Put(static_cast<std::int32_t>(value));
-        break;
-      case VTK_UNSIGNED_INT:
-        this->Put(static_cast<std::uint32_t>(value));
-        break;
-      case VTK_FLOAT:
-        this->Put(static_cast<float>(value));
-        break;
-      default:
-        this->Put(value);
+      vtkTemplateMacro(this->Put(static_cast<VTK_TT>(value)));
     }
   }
   void Flush()
