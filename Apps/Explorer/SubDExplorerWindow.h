@@ -64,6 +64,9 @@ public:
   void SetCageOpacity(double opacity); ///< in [0, 1]
   void SetShowWireframe(bool show);
   void SetLimit(bool limit); ///< every view's Limit box
+  /// Catmull-Clark and Loop views refined with vtkSubDSurfaceFilter::LowMemory (about half
+  /// the peak memory for the same surface, slower).
+  void SetLowMemory(bool lowMemory);
 
   /// Reads the layout (views, schemes and their options, level, colouring, overlays, window
   /// geometry) and recent files from `settings`, and writes them there from now on; with
@@ -172,6 +175,7 @@ private:
   QCheckBox* ShowCage = nullptr;
   QSlider* CageOpacity = nullptr;
   QCheckBox* ShowWireframe = nullptr;
+  QCheckBox* LowMemory = nullptr;
   QLabel* CageLabel = nullptr;
   QLabel* SelectionLabel = nullptr;
   QDoubleSpinBox* Sharpness = nullptr;
