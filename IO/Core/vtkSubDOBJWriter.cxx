@@ -7,7 +7,7 @@
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSubDStripTriangles.h"
-#include "vtkSubDTextOutput.h"
+#include "vtkSubDBufferedOutput.h"
 
 #include <vector>
 
@@ -15,7 +15,7 @@ vtkStandardNewMacro(vtkSubDOBJWriter);
 
 void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
 {
-  vtkSubDTextOutput out(file); // numbers in their shortest exact form
+  vtkSubDBufferedOutput out(file); // numbers in their shortest exact form
   out << "# written by SubD (sharp features as OpenSubdiv tags, 0-based)\n";
   const vtkIdType numPoints = input->GetNumberOfPoints();
   double p[3];

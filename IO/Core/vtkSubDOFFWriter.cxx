@@ -4,7 +4,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPolyData.h"
 #include "vtkSubDStripTriangles.h"
-#include "vtkSubDTextOutput.h"
+#include "vtkSubDBufferedOutput.h"
 
 vtkStandardNewMacro(vtkSubDOFFWriter);
 
@@ -20,7 +20,7 @@ void vtkSubDOFFWriter::WriteFile(vtkPolyData* input, std::ostream& file)
   vtkIdType n;
   const vtkIdType* pts;
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  vtkSubDTextOutput out(file); // numbers in their shortest exact form
+  vtkSubDBufferedOutput out(file); // numbers in their shortest exact form
   out << "OFF\n" << numPoints << ' ' << input->GetNumberOfPolys() + numTriangles << " 0\n";
   double p[3];
   for (vtkIdType i = 0; i < numPoints; ++i)

@@ -7,6 +7,7 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSubDBufferedOutput.h"
 #include "vtkSubDFileScanner.h" // MachineIsBigEndian
 #include "vtkSubDStripTriangles.h"
 
@@ -89,47 +90,15 @@ const char* PLYTypeName(int writtenType)
   }
 }
 
-// Bytes gathered in a buffer and handed to the stream in large pieces.
-class BinaryOutput
+// `value` (read as a double: exact for every type written) stored as `writtenType`, one of
+// WrittenType's (VTK's C types for them have PLY's sizes).
+void PutAs(vtkSubDBufferedOutput& out, int writtenType, double value)
 {
-public:
-  explicit BinaryOutput(std::ostream& stream)
-    : Stream(stream)
-    , Bytes(Capacity)
+  switch (writtenType)
   {
+    vtkTemplateMacro(out.Put(static_cast<VTK_TT>(value)));
   }
-  ~BinaryOutput() { this->Flush(); }
-  template <typename T>
-  void Put(T value)
-  {
-    if (this->Used + sizeof(T) > Capacity)
-    {
-      this->Flush();
-    }
-    std::memcpy(this->Bytes.data() + this->Used, &value, sizeof(T));
-    this->Used += sizeof(T);
-  }
-  // `value` (read as a double: exact for every type written) stored as `writtenType`, one of
-  // WrittenType's (VTK's C types for them have PLY's sizes).
-  void PutAs(int writtenType, double value)
-  {
-    switch (writtenType)
-    {
-      vtkTemplateMacro(this->Put(static_cast<VTK_TT>(value)));
-    }
-  }
-  void Flush()
-  {
-    this->Stream.write(this->Bytes.data(), static_cast<std::streamsize>(this->Used));
-    this->Used = 0;
-  }
-
-private:
-  static constexpr size_t Capacity = size_t(1) << 20;
-  std::ostream& Stream;
-  std::vector<char> Bytes;
-  size_t Used = 0;
-};
+}
 
 // A PLY property name: one word.
 std::string PropertyName(const char* arrayName, int index)
@@ -228,21 +197,21 @@ void vtkSubDPLYWriter::WriteFile(vtkPolyData* input, std::ostream& file)
   const vtkIdType numFaces = polys->GetNumberOfCells() + vtkSubDCountStripTriangles(strips);
   const bool wideCounts = polys->GetMaxCellSize() > 255;
 
-  file << "ply\nformat " << (subdio::FileScanner::MachineIsBigEndian() ? "binary_big_endian" : "binary_little_endian")
-       << " 1.0\ncomment written by SubD\nelement vertex " << numPoints << "\n";
+  vtkSubDBufferedOutput out(file);
+  out << "ply\nformat " << (subdio::FileScanner::MachineIsBigEndian() ? "binary_big_endian" : "binary_little_endian")
+      << " 1.0\ncomment written by SubD\nelement vertex " << numPoints << "\n";
   for (const Column& column : columns)
   {
-    file << "property " << PLYTypeName(column.Type) << ' ' << column.Name << "\n";
+    out << "property " << PLYTypeName(column.Type) << ' ' << column.Name << "\n";
   }
-  file << "element face " << numFaces << "\nproperty list " << (wideCounts ? "int" : "uchar")
-       << " int vertex_indices\nend_header\n";
+  out << "element face " << numFaces << "\nproperty list " << (wideCounts ? "int" : "uchar")
+      << " int vertex_indices\nend_header\n";
 
-  BinaryOutput out(file);
   for (vtkIdType i = 0; i < numPoints; ++i)
   {
     for (const Column& column : columns)
     {
-      out.PutAs(column.Type, column.Value(i));
+      PutAs(out, column.Type, column.Value(i));
     }
   }
   auto putCount = [&out, wideCounts](vtkIdType n) {
