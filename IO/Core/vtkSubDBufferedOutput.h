@@ -1,6 +1,7 @@
 // Private helper of SubD's writers (OBJ, OFF, PLY): bytes gathered in a buffer that goes to
 // the stream in large pieces, numbers written as text (operator<<, std::to_chars) or as raw
-// binary values (Put).
+// binary values (Put). Without a stream the buffer is a piece of text in memory, which is how
+// vtkSubDFormatInParallel formats a file's lines on several threads.
 //
 // A stream's operator<< formats each number through the locale and a few virtual calls:
 // writing a refined mesh of ten million quads that way took 51 s (armadillo, Catmull-Clark
@@ -10,6 +11,10 @@
 #ifndef vtkSubDBufferedOutput_h
 #define vtkSubDBufferedOutput_h
 
+#include "vtkCellArray.h"
+#include "vtkSMPTools.h"
+
+#include <algorithm>
 #include <charconv>
 #include <cstring>
 #include <ostream>
@@ -21,10 +26,12 @@ class vtkSubDBufferedOutput
 {
 public:
   explicit vtkSubDBufferedOutput(std::ostream& stream)
-    : Stream(stream)
+    : Stream(&stream)
     , Buffer(std::size_t(1) << 20)
   {
   }
+  /// Text kept in memory (Data, Size), growing as needed, until Clear.
+  vtkSubDBufferedOutput() = default;
   ~vtkSubDBufferedOutput() { this->Flush(); }
   vtkSubDBufferedOutput(const vtkSubDBufferedOutput&) = delete;
   vtkSubDBufferedOutput& operator=(const vtkSubDBufferedOutput&) = delete;
@@ -56,32 +63,45 @@ public:
     this->Used += sizeof(T);
   }
 
-  /// Hands what is buffered to the stream (the destructor does too).
+  /// Hands what is buffered to the stream (the destructor does too); nothing without a stream.
   void Flush()
   {
-    this->Stream.write(this->Buffer.data(), static_cast<std::streamsize>(this->Used));
-    this->Used = 0;
+    if (this->Stream)
+    {
+      this->Stream->write(this->Buffer.data(), static_cast<std::streamsize>(this->Used));
+      this->Used = 0;
+    }
   }
+
+  /// Appends the bytes another output holds in memory.
+  void Append(const vtkSubDBufferedOutput& text) { this->Append(text.Buffer.data(), text.Used); }
+  /// Forgets what is held in memory, keeping the room.
+  void Clear() { this->Used = 0; }
 
 private:
   vtkSubDBufferedOutput& Append(const char* text, std::size_t length)
   {
-    if (length > this->Buffer.size())
+    if (this->Stream && length > this->Buffer.size())
     {
       this->Flush();
-      this->Stream.write(text, static_cast<std::streamsize>(length));
+      this->Stream->write(text, static_cast<std::streamsize>(length));
       return *this;
     }
     std::memcpy(this->Room(length), text, length);
     this->Used += length;
     return *this;
   }
-  // Room for `size` characters at the end of what is buffered.
+  // Room for `size` characters at the end of what is buffered: the stream takes what is
+  // buffered, or (in memory) the buffer grows.
   char* Room(std::size_t size)
   {
     if (this->Used + size > this->Buffer.size())
     {
       this->Flush();
+      if (this->Used + size > this->Buffer.size())
+      {
+        this->Buffer.resize(std::max(2 * this->Buffer.size(), this->Used + size));
+      }
     }
     return this->Buffer.data() + this->Used;
   }
@@ -94,9 +114,56 @@ private:
     return *this;
   }
 
-  std::ostream& Stream;
+  std::ostream* Stream = nullptr;
   std::vector<char> Buffer;
   std::size_t Used = 0;
 };
+
+/// Writes items [0, count) to `out` with format(text, item), formatting them on vtkSMPTools'
+/// threads: chunks of items are formatted each into its own text, a batch of chunks at a
+/// time, and the texts appended in order. The bytes are those of one loop over the items;
+/// the time is what to_chars costs (most of writing a text mesh), divided among the threads.
+/// `format` must only read shared data.
+template <typename Format>
+void vtkSubDFormatInParallel(vtkSubDBufferedOutput& out, vtkIdType count, const Format& format)
+{
+  constexpr vtkIdType chunkSize = 8192;
+  const vtkIdType numChunks = (count + chunkSize - 1) / chunkSize;
+  // A few chunks per thread and batch: enough to balance, few enough that the texts held at
+  // once stay small (some MiB) next to the mesh.
+  const vtkIdType batchSize = 4 * std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  std::vector<vtkSubDBufferedOutput> texts(static_cast<std::size_t>(std::min(batchSize, numChunks)));
+  for (vtkIdType first = 0; first < numChunks; first += batchSize)
+  {
+    const vtkIdType last = std::min(numChunks, first + batchSize);
+    vtkSMPTools::For(first, last, 1, [&](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType chunk = begin; chunk < end; ++chunk)
+      {
+        vtkSubDBufferedOutput& text = texts[static_cast<std::size_t>(chunk - first)];
+        text.Clear();
+        const vtkIdType itemEnd = std::min(count, (chunk + 1) * chunkSize);
+        for (vtkIdType item = chunk * chunkSize; item < itemEnd; ++item)
+        {
+          format(text, item);
+        }
+      }
+    });
+    for (vtkIdType chunk = first; chunk < last; ++chunk)
+    {
+      out.Append(texts[static_cast<std::size_t>(chunk - first)]);
+    }
+  }
+}
+
+/// vtkSubDFormatInParallel over the cells of `cells`: format(text, points), `points` a range
+/// of the cell's point ids (read from the cell array's own storage, 32- or 64-bit).
+template <typename Format>
+void vtkSubDFormatCellsInParallel(vtkSubDBufferedOutput& out, vtkCellArray* cells, const Format& format)
+{
+  cells->Visit([&](auto& storage) {
+    vtkSubDFormatInParallel(out, cells->GetNumberOfCells(),
+      [&](vtkSubDBufferedOutput& text, vtkIdType cell) { format(text, storage.GetCellRange(cell)); });
+  });
+}
 
 #endif

@@ -18,32 +18,32 @@ void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
   vtkSubDBufferedOutput out(file); // numbers in their shortest exact form
   out << "# written by SubD (sharp features as OpenSubdiv tags, 0-based)\n";
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  double p[3];
-  for (vtkIdType i = 0; i < numPoints; ++i)
-  {
+  vtkSubDFormatInParallel(out, numPoints, [input](vtkSubDBufferedOutput& text, vtkIdType i) {
+    double p[3];
     input->GetPoint(i, p);
-    out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  }
+    text << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  });
 
   // Faces: polygons then strip triangles; holes are numbered among them.
-  vtkDataArray* holes = input->GetCellData()->GetArray("Hole");
-  const vtkIdType firstPolyCell = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  std::vector<vtkIdType> holeFaces;
-  vtkIdType n;
-  const vtkIdType* pts;
-  vtkIdType face = 0;
   vtkCellArray* polys = input->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, pts); ++face)
-  {
-    out << 'f';
-    for (vtkIdType k = 0; k < n; ++k)
+  vtkSubDFormatCellsInParallel(out, polys, [](vtkSubDBufferedOutput& text, const auto& pts) {
+    text << 'f';
+    for (const auto id : pts)
     {
-      out << ' ' << pts[k] + 1;
+      text << ' ' << id + 1;
     }
-    out << '\n';
-    if (holes && holes->GetComponent(firstPolyCell + face, 0) != 0.0)
+    text << '\n';
+  });
+  std::vector<vtkIdType> holeFaces;
+  if (vtkDataArray* holes = input->GetCellData()->GetArray("Hole"))
+  {
+    const vtkIdType firstPolyCell = input->GetNumberOfVerts() + input->GetNumberOfLines();
+    for (vtkIdType face = 0; face < polys->GetNumberOfCells(); ++face)
     {
-      holeFaces.push_back(face);
+      if (holes->GetComponent(firstPolyCell + face, 0) != 0.0)
+      {
+        holeFaces.push_back(face);
+      }
     }
   }
   vtkSubDForEachStripTriangle(input->GetStrips(), [&out](vtkIdType a, vtkIdType b, vtkIdType c) {
@@ -51,6 +51,8 @@ void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
   });
 
   // Sharp features.
+  vtkIdType n;
+  const vtkIdType* pts;
   vtkDataArray* sharpness = input->GetCellData()->GetArray("Sharpness");
   vtkIdType cell = input->GetNumberOfVerts();
   vtkCellArray* lines = input->GetLines();

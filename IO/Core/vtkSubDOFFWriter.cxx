@@ -17,27 +17,22 @@ void vtkSubDOFFWriter::WriteFile(vtkPolyData* input, std::ostream& file)
   }
   vtkCellArray* strips = input->GetStrips();
   const vtkIdType numTriangles = vtkSubDCountStripTriangles(strips);
-  vtkIdType n;
-  const vtkIdType* pts;
   const vtkIdType numPoints = input->GetNumberOfPoints();
   vtkSubDBufferedOutput out(file); // numbers in their shortest exact form
   out << "OFF\n" << numPoints << ' ' << input->GetNumberOfPolys() + numTriangles << " 0\n";
-  double p[3];
-  for (vtkIdType i = 0; i < numPoints; ++i)
-  {
+  vtkSubDFormatInParallel(out, numPoints, [input](vtkSubDBufferedOutput& text, vtkIdType i) {
+    double p[3];
     input->GetPoint(i, p);
-    out << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  }
-  vtkCellArray* polys = input->GetPolys();
-  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
-  {
-    out << n;
-    for (vtkIdType k = 0; k < n; ++k)
+    text << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+  });
+  vtkSubDFormatCellsInParallel(out, input->GetPolys(), [](vtkSubDBufferedOutput& text, const auto& pts) {
+    text << pts.size();
+    for (const auto id : pts)
     {
-      out << ' ' << pts[k];
+      text << ' ' << id;
     }
-    out << '\n';
-  }
+    text << '\n';
+  });
   vtkSubDForEachStripTriangle(strips, [&out](vtkIdType a, vtkIdType b, vtkIdType c) {
     out << "3 " << a << ' ' << b << ' ' << c << '\n';
   });

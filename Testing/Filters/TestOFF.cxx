@@ -1,4 +1,7 @@
-// OFF reader/writer: exact round trip, colours, and clear errors for broken files.
+// OFF reader/writer: exact round trip, colours, and clear errors for broken files; both text
+// writers (OFF, OBJ) the same bytes on any number of threads.
+#include "vtkSubDOBJReader.h"
+#include "vtkSubDOBJWriter.h"
 #include "vtkSubDOFFReader.h"
 #include "vtkSubDOFFWriter.h"
 
@@ -11,12 +14,15 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkSMPTools.h"
 #include "vtkUnsignedCharArray.h"
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 namespace
@@ -40,6 +46,38 @@ void CollectErrors(vtkObject* object, std::string& errors)
     *static_cast<std::string*>(client) += static_cast<const char*>(data);
   });
   object->AddObserver(vtkCommand::ErrorEvent, cb);
+}
+
+std::string ReadText(const std::string& path)
+{
+  std::ifstream file(path, std::ios::binary);
+  std::ostringstream text;
+  text << file.rdbuf();
+  return text.str();
+}
+
+// The bytes `writer` writes for `mesh` with `threads` vtkSMPTools threads.
+template <typename Writer>
+std::string WrittenBytes(vtkPolyData* mesh, int threads, const std::string& path)
+{
+  vtkSMPTools::Initialize(threads);
+  vtkNew<Writer> writer;
+  writer->SetInputData(mesh);
+  writer->SetFileName(path.c_str());
+  EXPECT_EQ(writer->Write(), 1);
+  return ReadText(path);
+}
+
+// Reads `path` back with `Reader` and checks it is `mesh`, bit for bit.
+template <typename Reader>
+void ExpectReadBack(const std::string& path, vtkPolyData* mesh)
+{
+  vtkNew<Reader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* back = reader->GetOutput();
+  EXPECT_EQ(subdtest::Coordinates(back), subdtest::Coordinates(mesh));
+  EXPECT_EQ(subdtest::Faces(back), subdtest::Faces(mesh));
 }
 
 // Reads `text` as an OFF file; returns the collected error text ("" if none).
@@ -150,4 +188,60 @@ TEST(OFF, MissingFileIsAnError)
   reader->SetFileName("/nonexistent/dir/mesh.off");
   reader->Update();
   EXPECT_NE(errors.find("Cannot open"), std::string::npos);
+}
+
+// The text writers format their lines on threads, chunk by chunk, and write the chunks in
+// order: on a mesh of many chunks (and batches of chunks) the file must not depend on the
+// number of threads, and must read back exactly. The faces are in 32-bit storage, as the
+// filters make them, and of several sizes.
+TEST(TextWriters, SameBytesOnOneAndTwoThreadsAndExactRoundTrip)
+{
+  const vtkIdType side = 400; // 160000 points: 20 chunks of points, several batches
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (vtkIdType j = 0; j < side; ++j)
+  {
+    for (vtkIdType i = 0; i < side; ++i)
+    {
+      points->InsertNextPoint(i / 3.0, std::sqrt(static_cast<double>(j)), std::sin(0.001 * i * j));
+    }
+  }
+  vtkNew<vtkCellArray> polys;
+  polys->Use32BitStorage();
+  for (vtkIdType j = 0; j + 1 < side; ++j)
+  {
+    for (vtkIdType i = 0; i + 1 < side; ++i)
+    {
+      const vtkIdType a = j * side + i, b = a + 1, c = a + side + 1, d = a + side;
+      if ((i + j) % 3 == 0)
+      {
+        const vtkIdType first[3] = { a, b, c }, second[3] = { a, c, d };
+        polys->InsertNextCell(3, first);
+        polys->InsertNextCell(3, second);
+      }
+      else
+      {
+        const vtkIdType quad[4] = { a, b, c, d };
+        polys->InsertNextCell(4, quad);
+      }
+    }
+  }
+  vtkNew<vtkPolyData> mesh;
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+
+  const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
+  const std::string off = TempPath("threads.off"), obj = TempPath("threads.obj");
+  const std::string offOne = WrittenBytes<vtkSubDOFFWriter>(mesh, 1, off);
+  const std::string offTwo = WrittenBytes<vtkSubDOFFWriter>(mesh, 2, off);
+  const std::string objOne = WrittenBytes<vtkSubDOBJWriter>(mesh, 1, obj);
+  const std::string objTwo = WrittenBytes<vtkSubDOBJWriter>(mesh, 2, obj);
+  vtkSMPTools::Initialize(threads);
+  ASSERT_GT(offOne.size(), 1000000u);
+  EXPECT_TRUE(offOne == offTwo);
+  EXPECT_TRUE(objOne == objTwo);
+  ExpectReadBack<vtkSubDOFFReader>(off, mesh);
+  ExpectReadBack<vtkSubDOBJReader>(obj, mesh);
+  std::remove(off.c_str());
+  std::remove(obj.c_str());
 }
