@@ -207,35 +207,32 @@ void vtkSubDPLYWriter::WriteFile(vtkPolyData* input, std::ostream& file)
   out << "element face " << numFaces << "\nproperty list " << (wideCounts ? "int" : "uchar")
       << " int vertex_indices\nend_header\n";
 
-  for (vtkIdType i = 0; i < numPoints; ++i)
-  {
+  // Records made on threads, chunk by chunk, and written in order (vtkSubDFormatInParallel).
+  vtkSubDFormatInParallel(out, numPoints, [&columns](vtkSubDBufferedOutput& record, vtkIdType i) {
     for (const Column& column : columns)
     {
-      PutAs(out, column.Type, column.Value(i));
+      PutAs(record, column.Type, column.Value(i));
     }
-  }
-  auto putCount = [&out, wideCounts](vtkIdType n) {
+  });
+  auto putCount = [wideCounts](vtkSubDBufferedOutput& record, vtkIdType n) {
     if (wideCounts)
     {
-      out.Put(static_cast<std::int32_t>(n));
+      record.Put(static_cast<std::int32_t>(n));
     }
     else
     {
-      out.Put(static_cast<std::uint8_t>(n));
+      record.Put(static_cast<std::uint8_t>(n));
     }
   };
-  vtkIdType n;
-  const vtkIdType* pts;
-  for (polys->InitTraversal(); polys->GetNextCell(n, pts);)
-  {
-    putCount(n);
-    for (vtkIdType k = 0; k < n; ++k)
+  vtkSubDFormatCellsInParallel(out, polys, [&putCount](vtkSubDBufferedOutput& record, const auto& pts) {
+    putCount(record, pts.size());
+    for (const auto id : pts)
     {
-      out.Put(static_cast<std::int32_t>(pts[k]));
+      record.Put(static_cast<std::int32_t>(id));
     }
-  }
+  });
   vtkSubDForEachStripTriangle(strips, [&](vtkIdType a, vtkIdType b, vtkIdType c) {
-    putCount(3);
+    putCount(out, 3);
     out.Put(static_cast<std::int32_t>(a));
     out.Put(static_cast<std::int32_t>(b));
     out.Put(static_cast<std::int32_t>(c));

@@ -1,15 +1,18 @@
-// OFF reader/writer: exact round trip, colours, and clear errors for broken files; both text
-// writers (OFF, OBJ) the same bytes on any number of threads.
+// OFF reader/writer: exact round trip, colours, and clear errors for broken files; the mesh
+// writers (OFF, OBJ, PLY) the same bytes on any number of threads.
 #include "vtkSubDOBJReader.h"
 #include "vtkSubDOBJWriter.h"
 #include "vtkSubDOFFReader.h"
 #include "vtkSubDOFFWriter.h"
+#include "vtkSubDPLYReader.h"
+#include "vtkSubDPLYWriter.h"
 
 #include "SubDFilterTestSupport.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCommand.h"
+#include "vtkDoubleArray.h"
 #include "vtkNew.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -190,11 +193,11 @@ TEST(OFF, MissingFileIsAnError)
   EXPECT_NE(errors.find("Cannot open"), std::string::npos);
 }
 
-// The text writers format their lines on threads, chunk by chunk, and write the chunks in
+// The writers make their lines (records) on threads, chunk by chunk, and write the chunks in
 // order: on a mesh of many chunks (and batches of chunks) the file must not depend on the
 // number of threads, and must read back exactly. The faces are in 32-bit storage, as the
-// filters make them, and of several sizes.
-TEST(TextWriters, SameBytesOnOneAndTwoThreadsAndExactRoundTrip)
+// filters make them, and of several sizes; PLY also writes a point-data array.
+TEST(MeshWriters, SameBytesOnOneAndTwoThreadsAndExactRoundTrip)
 {
   const vtkIdType side = 400; // 160000 points: 20 chunks of points, several batches
   vtkNew<vtkPoints> points;
@@ -229,19 +232,43 @@ TEST(TextWriters, SameBytesOnOneAndTwoThreadsAndExactRoundTrip)
   vtkNew<vtkPolyData> mesh;
   mesh->SetPoints(points);
   mesh->SetPolys(polys);
+  vtkNew<vtkDoubleArray> quality;
+  quality->SetName("quality");
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    quality->InsertNextValue(std::cos(0.01 * i) / 7.0);
+  }
+  mesh->GetPointData()->AddArray(quality);
 
   const int threads = vtkSMPTools::GetEstimatedNumberOfThreads();
-  const std::string off = TempPath("threads.off"), obj = TempPath("threads.obj");
+  const std::string off = TempPath("threads.off"), obj = TempPath("threads.obj"), ply = TempPath("threads.ply");
   const std::string offOne = WrittenBytes<vtkSubDOFFWriter>(mesh, 1, off);
   const std::string offTwo = WrittenBytes<vtkSubDOFFWriter>(mesh, 2, off);
   const std::string objOne = WrittenBytes<vtkSubDOBJWriter>(mesh, 1, obj);
   const std::string objTwo = WrittenBytes<vtkSubDOBJWriter>(mesh, 2, obj);
+  const std::string plyOne = WrittenBytes<vtkSubDPLYWriter>(mesh, 1, ply);
+  const std::string plyTwo = WrittenBytes<vtkSubDPLYWriter>(mesh, 2, ply);
   vtkSMPTools::Initialize(threads);
   ASSERT_GT(offOne.size(), 1000000u);
   EXPECT_TRUE(offOne == offTwo);
   EXPECT_TRUE(objOne == objTwo);
+  EXPECT_TRUE(plyOne == plyTwo);
   ExpectReadBack<vtkSubDOFFReader>(off, mesh);
   ExpectReadBack<vtkSubDOBJReader>(obj, mesh);
+  vtkNew<vtkSubDPLYReader> plyReader;
+  plyReader->SetFileName(ply.c_str());
+  plyReader->Update();
+  vtkPolyData* back = plyReader->GetOutput();
+  EXPECT_EQ(subdtest::Coordinates(back), subdtest::Coordinates(mesh));
+  EXPECT_EQ(subdtest::Faces(back), subdtest::Faces(mesh));
+  vtkDataArray* backQuality = back->GetPointData()->GetArray("quality");
+  ASSERT_NE(backQuality, nullptr);
+  ASSERT_EQ(backQuality->GetNumberOfTuples(), quality->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < quality->GetNumberOfTuples(); ++i)
+  {
+    ASSERT_EQ(backQuality->GetComponent(i, 0), quality->GetValue(i)) << "point " << i;
+  }
   std::remove(off.c_str());
   std::remove(obj.c_str());
+  std::remove(ply.c_str());
 }
