@@ -195,6 +195,43 @@ GrandchildRows::GrandchildRows(
   this->NumFaceRows = quads ? topo.GetNumFaceCorners() : 0;
   this->NumParents = (quads ? topo.GetNumFaces() : 0) + topo.GetNumEdges() + topo.GetNumVertices();
   this->NumRows = this->NumFaceRows + this->ParentEdges.FirstEdgeOfFace.back() + this->NumParents;
+  if (!WritesEveryRowFromGrandparent(scheme))
+  {
+    // Every row smooth (EveryGrandchildRowIsSmooth): the longest is a vertex row of the point
+    // of C with the most faces and edges, as many as the vertex, face or edge of P it stands
+    // for has. The same size as C's own writer finds (two-argument constructor, below).
+    Index mostFaces = std::max<Index>(topo.GetMaxValence(), quads ? 4 : 6);
+    for (Index f = 0; quads && f < topo.GetNumFaces(); ++f)
+    {
+      mostFaces = std::max(mostFaces, topo.GetFaceSize(f));
+    }
+    this->MaxRowSize = std::max<Index>(4, 1 + (quads ? 2 * mostFaces : mostFaces));
+  }
+}
+
+bool EveryGrandchildRowIsSmooth(GrandchildScheme scheme, const Level& grandparent)
+{
+  if (WritesEveryRowFromGrandparent(scheme))
+  {
+    return true;
+  }
+  const MeshTopology& topo = grandparent.Topology;
+  for (Index e = 0; e < topo.GetNumEdges(); ++e)
+  {
+    if (!IsSmoothEdge(grandparent, e))
+    {
+      return false;
+    }
+  }
+  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+  {
+    const Index numEdges = topo.GetVertexEdges(v).size();
+    if (numEdges == 0 || topo.GetVertexFaces(v).size() != numEdges || IsSharp(grandparent.VertexSharpness[v]))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 GrandchildRows::GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent,

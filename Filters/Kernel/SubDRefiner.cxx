@@ -47,8 +47,13 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
       {
         out.Stencils.push_back(StencilTable::FromSource(writtenRows));
         // The finest level's parent is not built when the finest comes from its grandparent
-        // alone (RefineFromGrandparent reads nothing of it).
-        current = finestFromGrandparentAlone && l + 2 == levels ? Level() : scheme.Split(*parent, depth);
+        // alone (RefineFromGrandparent reads nothing of it): always for the linear rules, and
+        // for the others written from their grandparent when none of their rows needs it.
+        const bool parentOfFinestUnused = l + 2 == levels &&
+          (finestFromGrandparentAlone ||
+            (levelRows == LevelRows::WrittenFromGrandparent && finest == ChildTopology::FacesOnly &&
+              scheme.RefinesFromGrandparentAlone(*parent)));
+        current = parentOfFinestUnused ? Level() : scheme.Split(*parent, depth);
         grandparent = parent;
       }
       else

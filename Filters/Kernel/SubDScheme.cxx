@@ -41,7 +41,7 @@ bool Scheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Lev
     return false;
   }
   const ParallelFor& parallelFor = this->GetParallelFor();
-  auto grandchildRows = WritesEveryRowFromGrandparent(which)
+  auto grandchildRows = EveryGrandchildRowIsSmooth(which, *grandparent)
     ? std::make_shared<GrandchildRows>(which, grandparent, parallelFor)
     : std::make_shared<GrandchildRows>(which, grandparent, parent, parallelFor);
   if (depth == ChildTopology::FacesOnly)

@@ -84,6 +84,15 @@ public:
     GrandchildScheme which;
     return this->GetGrandchildScheme(which) && WritesEveryRowFromGrandparent(which);
   }
+  /// True when RefineFromGrandparent reads nothing of `parent` for this `grandparent`: always
+  /// when RefinesFromGrandparentAlone(), else when no row needs the parent
+  /// (EveryGrandchildRowIsSmooth; with LevelRows::WrittenFromGrandparent, Refine then does
+  /// not build the level above a faces-only finest level).
+  bool RefinesFromGrandparentAlone(const Level& grandparent) const
+  {
+    GrandchildScheme which;
+    return this->GetGrandchildScheme(which) && EveryGrandchildRowIsSmooth(which, grandparent);
+  }
   /// The counts of the next level of a mesh with the given counts (for size guards).
   virtual MeshCounts PredictChildCounts(const MeshCounts& parent) const = 0;
   /// False for schemes whose points only interpolate within a face (linear, bilinear): the

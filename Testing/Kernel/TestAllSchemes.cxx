@@ -532,18 +532,23 @@ TEST(Level, SmoothClosedVerticesAgreeWithThePerVertexTest)
 // Every level's rows written as they are applied (LevelRows::Written, what the filters use,
 // and WrittenFromGrandparent, what they use with LowMemory, at levels 2 and 4 from their
 // grandparents, the finest faces then made after the points) give bit for bit the points,
-// faces, holes and origins the stored table gives, with semi-sharp and sharp creases and corners under both crease methods, for 3
-// double, 3 float and 5 float components.
+// faces, holes and origins the stored table gives, with semi-sharp and sharp creases and
+// corners under both crease methods and with no sharp feature, for 3 double, 3 float and 5
+// float components.
 TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
 {
   const auto scheme = GetParam().Make();
   const subd::BoundaryRule rule = scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly);
-  for (subd::CreaseMethod method : { subd::CreaseMethod::Uniform, subd::CreaseMethod::Chaikin })
+  // The creases' methods, and no sharp feature at all (where Catmull-Clark and Loop, with
+  // WrittenFromGrandparent, skip the finest level's parent on closed meshes:
+  // EveryGrandchildRowIsSmooth).
+  for (int creases = 0; creases < 3; ++creases)
   {
+    const subd::CreaseMethod method = creases == 1 ? subd::CreaseMethod::Chaikin : subd::CreaseMethod::Uniform;
     for (const subdtest::TestMesh& mesh : Fixtures())
     {
       const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
-      const subd::BaseTags tags = subdtest::MixedSharpnessTags(topology, method);
+      const subd::BaseTags tags = creases == 2 ? subd::BaseTags() : subdtest::MixedSharpnessTags(topology, method);
       std::vector<float> values(static_cast<size_t>(mesh.NumVertices()) * 5);
       for (size_t i = 0; i < values.size(); ++i)
         values[i] = static_cast<float>(std::sin(0.7 * i));
@@ -666,14 +671,16 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
   const std::vector<subdtest::TestMesh>& meshes)
 {
   subd::Index storedRows = 0, writtenRows = 0;
-  for (subd::CreaseMethod method : { subd::CreaseMethod::Uniform, subd::CreaseMethod::Chaikin })
+  subd::Index withoutParent = 0; // grandparents whose rows were also written without the parent
+  for (int creases = 0; creases < 3; ++creases) // two crease methods, then no sharp feature
   {
+    const subd::CreaseMethod method = creases == 1 ? subd::CreaseMethod::Chaikin : subd::CreaseMethod::Uniform;
     for (subd::BoundaryRule rule : { subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::None })
     {
       for (const subdtest::TestMesh& mesh : meshes)
       {
         const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
-        const subd::BaseTags tags = subdtest::MixedSharpnessTags(topology, method);
+        const subd::BaseTags tags = creases == 2 ? subd::BaseTags() : subdtest::MixedSharpnessTags(topology, method);
         auto grandparent = std::make_shared<subd::Level>(subd::MakeBaseLevel(topology, tags, rule));
         for (int depth = 0; depth < 2; ++depth)
         {
@@ -697,6 +704,34 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
           }
           storedRows += rows.GetNumStoredRows();
           writtenRows += rows.GetNumRows() - rows.GetNumStoredRows();
+          // Where no row needs the parent, the rows made without it are the same rows.
+          if (subd::EveryGrandchildRowIsSmooth(which, *grandparent))
+          {
+            EXPECT_EQ(rows.GetNumStoredRows(), 0) << what;
+            const subd::GrandchildRows alone(which, grandparent, subdtest::ThreeThreadFor);
+            const subd::StencilTable aloneTable = alone.ToStencilTable();
+            ASSERT_EQ(aloneTable.GetNumRows(), expected.GetNumRows()) << what;
+            for (subd::Index row = 0; row < expected.GetNumRows(); ++row)
+            {
+              const subd::IndexSpan a = aloneTable.GetSources(row), b = expected.GetSources(row);
+              ASSERT_EQ(std::vector<subd::Index>(a.begin(), a.end()), std::vector<subd::Index>(b.begin(), b.end()))
+                << what << " row " << row;
+              for (subd::Index k = 0; k < a.size(); ++k)
+                ASSERT_EQ(aloneTable.GetWeights(row)[k], expected.GetWeights(row)[k]) << what << " row " << row;
+            }
+            std::vector<float> parentsAlone(static_cast<size_t>(alone.GetNumParents()) * 3, 0.5f);
+            for (size_t i = 0; i < parentsAlone.size(); ++i)
+              parentsAlone[i] = static_cast<float>(std::sin(0.2 * i));
+            std::vector<float> viaAlone(static_cast<size_t>(alone.GetNumRows()) * 3), viaTable(viaAlone.size());
+            expected.Apply(parentsAlone.data(), viaTable.data(), 3);
+            const std::vector<subd::Index> aloneEnds = alone.GetBlockEnds();
+            for (size_t b = 0; b < aloneEnds.size(); ++b)
+              subdtest::ThreeThreadFor(b == 0 ? 0 : aloneEnds[b - 1], aloneEnds[b], [&](subd::Index begin, subd::Index end) {
+                alone.ApplyRows(parentsAlone.data(), viaAlone.data(), 3, begin, end);
+              });
+            EXPECT_EQ(viaAlone, viaTable) << what; // 3 components: the prefetching path
+            ++withoutParent;
+          }
 
           std::vector<float> parents(static_cast<size_t>(rows.GetNumParents()) * 5);
           for (size_t i = 0; i < parents.size(); ++i)
@@ -730,9 +765,11 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
     EXPECT_GT(writtenRows, 0);
     return;
   }
-  // Both kinds of rows were compared: written from the grandparent, and stored.
+  // Both kinds of rows were compared: written from the grandparent, and stored; and rows
+  // written without the parent, on the closed meshes without sharp features.
   EXPECT_GT(storedRows, 0);
   EXPECT_GT(writtenRows, 2 * storedRows);
+  EXPECT_GT(withoutParent, 0);
 }
 }
 
@@ -758,4 +795,38 @@ TEST(GrandchildRows, LinearTrianglesEqualsTheParentsRows)
 {
   ExpectGrandchildRowsEqualTheParentsRows(
     subd::GrandchildScheme::LinearTriangles, subd::LinearTriangleScheme(), subdtest::TriangleMeshes());
+}
+
+// Which grandparents need no parent for their grandchildren's rows: closed meshes without
+// sharp features (any rule); with a boundary, one semi-sharp edge or one sharp vertex, only
+// the linear rules (which have no rule for them).
+TEST(GrandchildRows, EveryRowSmoothOnlyOnClosedMeshesWithoutSharpFeatures)
+{
+  auto level = [](const subdtest::TestMesh& mesh, int sharpEdge, int sharpVertex) {
+    const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+    subd::BaseTags tags;
+    if (sharpEdge >= 0)
+    {
+      tags.EdgeSharpness.assign(static_cast<size_t>(topology.GetNumEdges()), 0.0f);
+      tags.EdgeSharpness[static_cast<size_t>(sharpEdge)] = 0.5f;
+    }
+    if (sharpVertex >= 0)
+    {
+      tags.VertexSharpness.assign(static_cast<size_t>(topology.GetNumVertices()), 0.0f);
+      tags.VertexSharpness[static_cast<size_t>(sharpVertex)] = 2.0f;
+    }
+    return subd::MakeBaseLevel(topology, tags, subd::BoundaryRule::EdgeOnly);
+  };
+  using subd::EveryGrandchildRowIsSmooth;
+  using subd::GrandchildScheme;
+  const subdtest::TestMesh cube = subdtest::Cube(), bipyramid = subdtest::Bipyramid(5), house = subdtest::House(true);
+  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::CatmullClark, level(cube, -1, -1)));
+  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::CatmullClark, level(cube, 3, -1)));
+  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::CatmullClark, level(cube, -1, 5)));
+  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::CatmullClark, level(house, -1, -1)));
+  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::Bilinear, level(house, 2, 1)));
+  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::Loop, level(bipyramid, -1, -1)));
+  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::Loop, level(bipyramid, 0, -1)));
+  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::Loop, level(bipyramid, -1, 0)));
+  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::LinearTriangles, level(bipyramid, 0, 0)));
 }
