@@ -144,6 +144,10 @@ public:
   vtkSmartPointer<vtkDataArray> LastCoords;
   subd::EvaluationScratch<double> Scratch; // the intermediate levels' values, reused likewise
   bool LowMemory = false; // refined with LevelRows::WrittenFromGrandparent (asked, or to fit MaximumMemory)
+  // Refined with LevelRows::WrittenLean and its finest rows still written from the
+  // grandparent: promoted (subd::PromoteFinestRows) when re-applied, and no scratch kept
+  // until then, so that a single update peaks like LowMemory.
+  bool LeanFinest = false;
   vtkDataArray* TakeRecyclableCoords()
   {
     vtkDataArray* last = this->LastCoords;
@@ -488,7 +492,7 @@ int vtkSubDSurfaceFilter::Execute(
     request.Levels = this->NumberOfSubdivisions;
     request.Finest = sharpFeatures || this->ProjectToLimit || limitGeometry ? subd::ChildTopology::Full
                                                                            : subd::ChildTopology::FacesOnly;
-    request.Rows = this->LowMemory ? subd::LevelRows::WrittenFromGrandparent : subd::LevelRows::Written;
+    request.Rows = this->LowMemory ? subd::LevelRows::WrittenFromGrandparent : subd::LevelRows::WrittenLean;
     int maxComponents = 3;
     vtkPointData* inPD = input->GetPointData();
     for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
@@ -565,7 +569,7 @@ int vtkSubDSurfaceFilter::Execute(
     cache.WritesDepth = scheme->DependsOnDepth();
     base.Depth = cache.WritesDepth ? inputDepth : 0;
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy, refineProgress,
-          request.Finest, cache.LowMemory ? subd::LevelRows::WrittenFromGrandparent : subd::LevelRows::Written))
+          request.Finest, cache.LowMemory ? subd::LevelRows::WrittenFromGrandparent : subd::LevelRows::WrittenLean))
     {
       return aborted();
     }
@@ -601,6 +605,7 @@ int vtkSubDSurfaceFilter::Execute(
       }
     }
     ++this->NumberOfStencilBuilds;
+    cache.LeanFinest = !cache.LowMemory && subd::HasFinestRowsToPromote(*scheme, cache.Hierarchy);
 
     if (!faceRank.empty())
     {
@@ -623,15 +628,23 @@ int vtkSubDSurfaceFilter::Execute(
   }
   else
   {
+    if (cache.LeanFinest)
+    {
+      // Re-applied (the points or point data changed, not the topology): from now on the
+      // finest rows come from their parent's lists, built once here (subd::PromoteFinestRows).
+      subd::PromoteFinestRows(*cache.Scheme, cache.Hierarchy);
+      cache.LeanFinest = false;
+    }
     refineProgress(1.0);
   }
 
   const subd::Hierarchy& hierarchy = cache.Hierarchy;
   const subd::Level& finest = hierarchy.Finest;
-  // LowMemory keeps no scratch levels between updates: they are freed before the faces (made
-  // last, below) take their memory.
+  // A single update keeps no scratch levels (LowMemory, and the lean finest rows until they
+  // are re-applied): they are freed before the faces (made last, below) take their memory.
   vtkSubDPointDataInterpolation interpolation(hierarchy, vtkSubDPointDataInterpolation::SMPFor,
-    cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr, cache.LowMemory ? nullptr : &cache.Scratch);
+    cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr,
+    cache.LowMemory || cache.LeanFinest ? nullptr : &cache.Scratch);
 
   // Points.
   vtkNew<vtkDoubleArray> basePoints;

@@ -1,4 +1,5 @@
 #include "SubDRefiner.h"
+#include "SubDGrandchildRows.h"
 
 namespace subd
 {
@@ -16,6 +17,10 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   // level with a topology, is never built.
   const bool finestFromGrandparentAlone =
     levelRows != LevelRows::Stored && finest == ChildTopology::FacesOnly && scheme.RefinesFromGrandparentAlone();
+  // The others skip it too where none of its rows needs it, if asked (LowMemory, WrittenLean).
+  const bool finestFromGrandparentIfSmooth = finest == ChildTopology::FacesOnly &&
+    (levelRows == LevelRows::WrittenFromGrandparent || levelRows == LevelRows::WrittenLean);
+  bool parentSkipped = false; // the finest level's parent was not built
   for (int l = 0; l < levels; ++l)
   {
     const bool last = l + 1 == levels;
@@ -26,7 +31,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
     // levels above it. (The level after one written from its grandparent has no grandparent
     // kept to be written from.)
     const bool everyOther = levelRows == LevelRows::WrittenFromGrandparent && (levels - 1 - l) % 2 == 0;
-    if ((everyOther || (last && finestFromGrandparentAlone)) && grandparent)
+    if ((everyOther || (last && parentSkipped)) && grandparent)
     {
       StencilTable rows;
       Level child;
@@ -49,11 +54,9 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         // The finest level's parent is not built when the finest comes from its grandparent
         // alone (RefineFromGrandparent reads nothing of it): always for the linear rules, and
         // for the others written from their grandparent when none of their rows needs it.
-        const bool parentOfFinestUnused = l + 2 == levels &&
-          (finestFromGrandparentAlone ||
-            (levelRows == LevelRows::WrittenFromGrandparent && finest == ChildTopology::FacesOnly &&
-              scheme.RefinesFromGrandparentAlone(*parent)));
-        current = parentOfFinestUnused ? Level() : scheme.Split(*parent, depth);
+        parentSkipped = l + 2 == levels &&
+          (finestFromGrandparentAlone || (finestFromGrandparentIfSmooth && scheme.RefinesFromGrandparentAlone(*parent)));
+        current = parentSkipped ? Level() : scheme.Split(*parent, depth);
         grandparent = parent;
       }
       else
@@ -79,6 +82,38 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   {
     ReleaseFreeMemory(); // the topologies of the levels between
   }
+  return true;
+}
+
+namespace
+{
+// The finest level's rows if they are written from its grandparent without its parent
+// (EveryGrandchildRowIsSmooth), for a scheme whose rows cost something to work out.
+const GrandchildRows* FinestRowsWithoutParent(const Scheme& scheme, const Hierarchy& hierarchy)
+{
+  if (hierarchy.Stencils.empty() || scheme.RefinesFromGrandparentAlone())
+  {
+    return nullptr; // the linear rules' rows are centroids, midpoints and copies
+  }
+  const auto* rows = dynamic_cast<const GrandchildRows*>(hierarchy.Stencils.back().GetSource());
+  return rows && scheme.RefinesFromGrandparentAlone(rows->GetGrandparent()) ? rows : nullptr;
+}
+}
+
+bool HasFinestRowsToPromote(const Scheme& scheme, const Hierarchy& hierarchy)
+{
+  return FinestRowsWithoutParent(scheme, hierarchy) != nullptr;
+}
+
+bool PromoteFinestRows(const Scheme& scheme, Hierarchy& hierarchy)
+{
+  const GrandchildRows* rows = FinestRowsWithoutParent(scheme, hierarchy);
+  if (!rows)
+  {
+    return false;
+  }
+  auto parent = std::make_shared<Level>(scheme.Split(rows->GetGrandparent(), ChildTopology::Full));
+  hierarchy.Stencils.back() = StencilTable::FromSource(scheme.MakeRowSource(parent));
   return true;
 }
 }

@@ -92,7 +92,22 @@ enum class LevelRows
                           ///< it: less peak memory, for slower evaluations
                           ///< (each row works out its neighbourhood). A faces-only finest
                           ///< level then gets its faces from Hierarchy::MakeFinestFaces.
+  WrittenLean, ///< as Written, but a faces-only finest level whose rows all have a smooth form
+               ///< (EveryGrandchildRowIsSmooth of its grandparent: a closed mesh without sharp
+               ///< features) is written from its grandparent, its parent never built:
+               ///< WrittenFromGrandparent's memory at Written's speed, for a single
+               ///< evaluation. Re-evaluations are slower until PromoteFinestRows builds the
+               ///< parent (what the filters do when they re-apply their rows).
 };
+
+/// If the finest level's rows are written from its grandparent without its parent
+/// (LevelRows::WrittenLean or WrittenFromGrandparent on a mesh without sharp features, for
+/// Catmull-Clark and Loop), builds that parent and writes the rows from its lists instead:
+/// the same rows, re-applied 2-3x faster, for the memory of the parent's topology (about as
+/// much as the finest level's own faces). Returns whether it did.
+SUBDKERNEL_EXPORT bool PromoteFinestRows(const Scheme& scheme, Hierarchy& hierarchy);
+/// Whether PromoteFinestRows would do something.
+SUBDKERNEL_EXPORT bool HasFinestRowsToPromote(const Scheme& scheme, const Hierarchy& hierarchy);
 
 /// Refines `base` `levels` times. The finest level has faces only unless `finest` asks
 /// for its full topology and tags (to read its sharp edges). Returns false if progress

@@ -46,6 +46,8 @@ public:
   /// GetWeights and GetRowSum must not be called on it (IsStored() is false).
   static StencilTable FromSource(std::shared_ptr<const RowSource> source);
   bool IsStored() const { return !this->Source; }
+  /// What writes the rows of a table made FromSource (else null).
+  const RowSource* GetSource() const { return this->Source.get(); }
 
   Index GetNumParents() const { return NumParents; }
   Index GetNumRows() const

@@ -540,8 +540,9 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
   const auto scheme = GetParam().Make();
   const subd::BoundaryRule rule = scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly);
   // The creases' methods, and no sharp feature at all (where Catmull-Clark and Loop, with
-  // WrittenFromGrandparent, skip the finest level's parent on closed meshes:
+  // WrittenFromGrandparent or WrittenLean, skip the finest level's parent on closed meshes:
   // EveryGrandchildRowIsSmooth).
+  int leanHierarchies = 0;
   for (int creases = 0; creases < 3; ++creases)
   {
     const subd::CreaseMethod method = creases == 1 ? subd::CreaseMethod::Chaikin : subd::CreaseMethod::Uniform;
@@ -556,11 +557,14 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
       {
         subd::Hierarchy stored;
         subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, stored);
-        for (int variant = 0; variant < 3; ++variant)
+        for (int variant = 0; variant < 4; ++variant)
         {
           // Written rows; written from the grandparent every other level (with the finest
-          // level faces only, and with its full topology).
-          const subd::LevelRows rows = variant == 0 ? subd::LevelRows::Written : subd::LevelRows::WrittenFromGrandparent;
+          // level faces only, and with its full topology); written, the finest level from its
+          // grandparent where no row needs its parent (WrittenLean).
+          const subd::LevelRows rows = variant == 0 ? subd::LevelRows::Written
+            : variant == 3                          ? subd::LevelRows::WrittenLean
+                                                    : subd::LevelRows::WrittenFromGrandparent;
           const subd::ChildTopology finest = variant == 2 ? subd::ChildTopology::Full : subd::ChildTopology::FacesOnly;
           subd::Hierarchy written;
           subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, written, nullptr, finest, rows);
@@ -573,8 +577,11 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
           // so with any written rows, without building its parent.
           const std::string name = scheme->GetName();
           const bool linear = name == "linear-triangles" || name == "bilinear";
+          const bool lean = subd::HasFinestRowsToPromote(*scheme, written);
           const bool fromGrandparent = levels >= 2 && variant != 2 &&
-            (linear || (variant == 1 && (name == "catmull-clark" || name == "loop")));
+            (linear || (variant == 1 && (name == "catmull-clark" || name == "loop")) || lean);
+          EXPECT_TRUE(!lean || variant != 0) << mesh.Name << " L" << levels;
+          leanHierarchies += lean && variant == 3;
           EXPECT_EQ(written.HasFinestFaces(), !fromGrandparent) << mesh.Name << " L" << levels;
           EXPECT_EQ(written.GetNumFinestFaces(), stored.GetNumFinestFaces()) << mesh.Name << " L" << levels;
           EXPECT_EQ(Evaluate(written, mesh.Points), Evaluate(stored, mesh.Points)) << mesh.Name << " L" << levels;
@@ -587,6 +594,17 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
           stored.Evaluate(values.data(), 3, c.data());
           written.Evaluate(values.data(), 3, d.data());
           EXPECT_EQ(c, d) << mesh.Name << " L" << levels;
+          if (lean)
+          {
+            // The same rows from the parent's lists, built now (what the filters do when
+            // they re-apply them).
+            EXPECT_TRUE(subd::PromoteFinestRows(*scheme, written));
+            EXPECT_FALSE(subd::HasFinestRowsToPromote(*scheme, written));
+            EXPECT_FALSE(subd::PromoteFinestRows(*scheme, written));
+            std::vector<float> promoted(c.size());
+            written.Evaluate(values.data(), 3, promoted.data());
+            EXPECT_EQ(c, promoted) << mesh.Name << " L" << levels;
+          }
           written.MakeFinestFaces();
           EXPECT_TRUE(written.HasFinestFaces());
           ASSERT_EQ(written.Finest.Topology.GetFaceVertexArray(), stored.Finest.Topology.GetFaceVertexArray());
@@ -604,6 +622,9 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
       }
     }
   }
+  // WrittenLean wrote the finest rows of some closed meshes without their parent.
+  const std::string name = scheme->GetName();
+  EXPECT_EQ(leanHierarchies > 0, name == "catmull-clark" || name == "loop") << leanHierarchies;
 }
 
 // The size guard's prediction (SubDMemoryEstimate.h) covers what a refinement holds once its
