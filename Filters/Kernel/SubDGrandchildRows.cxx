@@ -577,10 +577,27 @@ MeshTopology SplitTwiceFacesWith(const Shape& shape, const MeshTopology& topo, c
 template <typename Shape>
 Level SplitTwiceTagsWith(const Shape& shape, const Level& grandparent, const ParallelFor& parallelFor)
 {
-  // The tags stay with the faces of the level between (four finest faces each).
+  // The tags stay with the faces of the level between (four finest faces each) or, where
+  // every face of the grandparent has four children (quads split into quads, triangles into
+  // triangles), with the grandparent's own faces (sixteen each): a copy of its tags, a
+  // sixteenth of the finest level's faces.
   Level fine;
-  InheritFaceTags(grandparent, fine, [&shape](Index f) { return shape.CornerChild(f, 0); }, parallelFor);
-  fine.FaceTagShift = 2;
+  bool fourChildren = grandparent.FaceTagShift == 0;
+  for (Index f = 0; f < grandparent.Topology.GetNumFaces() && fourChildren; ++f)
+  {
+    fourChildren = shape.CornerChild(f, 0) == 4 * f;
+  }
+  if (fourChildren)
+  {
+    fine.FaceIsHole = grandparent.FaceIsHole;
+    fine.FaceOrigin = grandparent.FaceOrigin;
+    fine.FaceTagShift = 4;
+  }
+  else
+  {
+    InheritFaceTags(grandparent, fine, [&shape](Index f) { return shape.CornerChild(f, 0); }, parallelFor);
+    fine.FaceTagShift = 2;
+  }
   fine.Depth = grandparent.Depth + 2;
   fine.Creasing = grandparent.Creasing;
   return fine;

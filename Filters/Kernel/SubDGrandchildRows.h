@@ -113,8 +113,9 @@ SUBDKERNEL_EXPORT bool EveryGrandchildRowIsSmooth(GrandchildScheme scheme, const
 /// The finest level (faces only) of two splits of `grandparent` by `scheme`'s split, without
 /// the level between: the same faces, holes and origins as splitting twice (the first with
 /// the full topology, the second faces only), the tags kept per face of the level between
-/// (Level::FaceTagShift 2). `parentEdges` numbers the edges of the level
-/// between (GrandchildRows::GetParentEdgeNumbering). SplitTwiceTags and SplitTwiceFaces
+/// (Level::FaceTagShift 2), or of the grandparent when each of its faces has four children
+/// (4). `parentEdges` numbers the edges of the level between
+/// (GrandchildRows::GetParentEdgeNumbering). SplitTwiceTags and SplitTwiceFaces
 /// make its two parts, for a caller that makes the faces later (Hierarchy::MakeFinestFaces).
 SUBDKERNEL_EXPORT Level SplitTwice(GrandchildScheme scheme, const Level& grandparent,
   const ChildEdgeNumbering& parentEdges, const ParallelFor& parallelFor = SerialFor);

@@ -21,7 +21,8 @@ struct SUBDKERNEL_EXPORT Level
   LevelArray<Index> FaceOrigin;           ///< per face: the base-level face it comes from
   /// Face f's hole flag and origin are at f >> FaceTagShift: 0, one per face, except for a
   /// finest level written from its grandparent (SplitTwice), whose faces come four from each
-  /// face of the level between and keep that face's tags (2: a quarter of the memory).
+  /// face of the level between and keep that face's tags (2: a quarter of the memory), or
+  /// sixteen from each face of the grandparent when every face of it has four children (4).
   int FaceTagShift = 0;
   int Depth = 0;                         ///< 0 for the base level, then 1, 2, ...
 

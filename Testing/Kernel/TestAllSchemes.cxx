@@ -693,6 +693,7 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
 {
   subd::Index storedRows = 0, writtenRows = 0;
   subd::Index withoutParent = 0; // grandparents whose rows were also written without the parent
+  int tagShifts = 0; // the FaceTagShifts SplitTwice gave, as bits
   for (int creases = 0; creases < 3; ++creases) // two crease methods, then no sharp feature
   {
     const subd::CreaseMethod method = creases == 1 ? subd::CreaseMethod::Chaikin : subd::CreaseMethod::Uniform;
@@ -773,13 +774,18 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
           EXPECT_EQ(twice.Topology.GetFaceOffsetArray(), stepwise.Topology.GetFaceOffsetArray()) << what;
           EXPECT_EQ(twice.Topology.GetFaceVertexArray(), stepwise.Topology.GetFaceVertexArray()) << what;
           EXPECT_EQ(subdtest::FaceTags(twice), subdtest::FaceTags(stepwise)) << what;
-          EXPECT_EQ(twice.FaceOrigin.size() * 4, stepwise.FaceOrigin.size()) << what; // kept per parent face
+          // Kept per face of the level between, or of the grandparent (four children each).
+          EXPECT_EQ(twice.FaceOrigin.size() << twice.FaceTagShift, stepwise.FaceOrigin.size()) << what;
+          EXPECT_TRUE(twice.FaceTagShift == 2 || twice.FaceTagShift == 4) << what;
+          tagShifts |= 1 << twice.FaceTagShift;
           EXPECT_EQ(twice.Depth, stepwise.Depth) << what;
           grandparent = std::make_shared<subd::Level>(parent);
         }
       }
     }
   }
+  // Triangles always have four children; quads split from n-gons do not (one per corner).
+  EXPECT_EQ(tagShifts, subd::IsQuadSplit(which) ? (1 << 2) | (1 << 4) : 1 << 4);
   if (subd::WritesEveryRowFromGrandparent(which))
   {
     EXPECT_EQ(storedRows, 0); // the linear rules need no parent
