@@ -71,16 +71,18 @@ std::string WrittenBytes(vtkPolyData* mesh, int threads, const std::string& path
   return ReadText(path);
 }
 
-// Reads `path` back with `Reader` and checks it is `mesh`, bit for bit.
+// Reads `path` back with `Reader` and checks it is `mesh`'s points and faces, bit for bit;
+// returns what it read.
 template <typename Reader>
-void ExpectReadBack(const std::string& path, vtkPolyData* mesh)
+vtkSmartPointer<vtkPolyData> ExpectReadBack(const std::string& path, vtkPolyData* mesh)
 {
   vtkNew<Reader> reader;
   reader->SetFileName(path.c_str());
   reader->Update();
-  vtkPolyData* back = reader->GetOutput();
+  vtkSmartPointer<vtkPolyData> back = reader->GetOutput();
   EXPECT_EQ(subdtest::Coordinates(back), subdtest::Coordinates(mesh));
   EXPECT_EQ(subdtest::Faces(back), subdtest::Faces(mesh));
+  return back;
 }
 
 // Reads `text` as an OFF file; returns the collected error text ("" if none).
@@ -255,12 +257,7 @@ TEST(MeshWriters, SameBytesOnOneAndTwoThreadsAndExactRoundTrip)
   EXPECT_TRUE(plyOne == plyTwo);
   ExpectReadBack<vtkSubDOFFReader>(off, mesh);
   ExpectReadBack<vtkSubDOBJReader>(obj, mesh);
-  vtkNew<vtkSubDPLYReader> plyReader;
-  plyReader->SetFileName(ply.c_str());
-  plyReader->Update();
-  vtkPolyData* back = plyReader->GetOutput();
-  EXPECT_EQ(subdtest::Coordinates(back), subdtest::Coordinates(mesh));
-  EXPECT_EQ(subdtest::Faces(back), subdtest::Faces(mesh));
+  vtkSmartPointer<vtkPolyData> back = ExpectReadBack<vtkSubDPLYReader>(ply, mesh);
   vtkDataArray* backQuality = back->GetPointData()->GetArray("quality");
   ASSERT_NE(backQuality, nullptr);
   ASSERT_EQ(backQuality->GetNumberOfTuples(), quality->GetNumberOfTuples());

@@ -688,6 +688,37 @@ TEST_P(AllSchemes, PeakMemoryEstimateCoversTheHeldMemory)
 // from one level down.
 namespace
 {
+// `rows` are `expected`'s, entry for entry and bit for bit, in the same blocks, and applied
+// in small chunks on threads to `components` values they give the table's values.
+void ExpectSameRows(
+  const subd::GrandchildRows& rows, const subd::StencilTable& expected, int components, const std::string& what)
+{
+  const subd::StencilTable written = rows.ToStencilTable();
+  ASSERT_EQ(written.GetNumRows(), expected.GetNumRows()) << what;
+  ASSERT_EQ(written.GetNumBlocks(), expected.GetNumBlocks()) << what;
+  for (subd::Index b = 0; b < expected.GetNumBlocks(); ++b)
+    EXPECT_EQ(written.GetBlockEnd(b), expected.GetBlockEnd(b)) << what;
+  for (subd::Index row = 0; row < expected.GetNumRows(); ++row)
+  {
+    const subd::IndexSpan a = written.GetSources(row), b = expected.GetSources(row);
+    ASSERT_EQ(std::vector<subd::Index>(a.begin(), a.end()), std::vector<subd::Index>(b.begin(), b.end()))
+      << what << " row " << row;
+    for (subd::Index k = 0; k < a.size(); ++k)
+      ASSERT_EQ(written.GetWeights(row)[k], expected.GetWeights(row)[k]) << what << " row " << row;
+  }
+  std::vector<float> parents(static_cast<size_t>(rows.GetNumParents()) * components);
+  for (size_t i = 0; i < parents.size(); ++i)
+    parents[i] = static_cast<float>(std::cos(0.3 * i));
+  std::vector<float> fromTable(static_cast<size_t>(rows.GetNumRows()) * components), chunked(fromTable.size());
+  expected.Apply(parents.data(), fromTable.data(), components);
+  const std::vector<subd::Index> ends = rows.GetBlockEnds();
+  for (size_t b = 0; b < ends.size(); ++b)
+    subdtest::ThreeThreadFor(b == 0 ? 0 : ends[b - 1], ends[b], [&](subd::Index begin, subd::Index end) {
+      rows.ApplyRows(parents.data(), chunked.data(), components, begin, end);
+    });
+  EXPECT_EQ(chunked, fromTable) << what;
+}
+
 void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const subd::Scheme& scheme,
   const std::vector<subdtest::TestMesh>& meshes)
 {
@@ -711,19 +742,7 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
           const subd::GrandchildRows rows(which, grandparent, parent, subdtest::ThreeThreadFor);
           EXPECT_EQ(rows.GetNumParents(), parent.Topology.GetNumVertices()) << what; // counted from the grandparent
           const subd::StencilTable expected = scheme.BuildStencils(parent);
-          const subd::StencilTable written = rows.ToStencilTable();
-          ASSERT_EQ(written.GetNumRows(), expected.GetNumRows()) << what;
-          ASSERT_EQ(written.GetNumBlocks(), expected.GetNumBlocks()) << what;
-          for (subd::Index b = 0; b < expected.GetNumBlocks(); ++b)
-            EXPECT_EQ(written.GetBlockEnd(b), expected.GetBlockEnd(b)) << what;
-          for (subd::Index row = 0; row < expected.GetNumRows(); ++row)
-          {
-            const subd::IndexSpan a = written.GetSources(row), b = expected.GetSources(row);
-            ASSERT_EQ(std::vector<subd::Index>(a.begin(), a.end()), std::vector<subd::Index>(b.begin(), b.end()))
-              << what << " row " << row;
-            for (subd::Index k = 0; k < a.size(); ++k)
-              ASSERT_EQ(written.GetWeights(row)[k], expected.GetWeights(row)[k]) << what << " row " << row;
-          }
+          ExpectSameRows(rows, expected, 5, what);
           storedRows += rows.GetNumStoredRows();
           writtenRows += rows.GetNumRows() - rows.GetNumStoredRows();
           // Where no row needs the parent, the rows made without it are the same rows.
@@ -731,41 +750,9 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
           {
             EXPECT_EQ(rows.GetNumStoredRows(), 0) << what;
             const subd::GrandchildRows alone(which, grandparent, subdtest::ThreeThreadFor);
-            const subd::StencilTable aloneTable = alone.ToStencilTable();
-            ASSERT_EQ(aloneTable.GetNumRows(), expected.GetNumRows()) << what;
-            for (subd::Index row = 0; row < expected.GetNumRows(); ++row)
-            {
-              const subd::IndexSpan a = aloneTable.GetSources(row), b = expected.GetSources(row);
-              ASSERT_EQ(std::vector<subd::Index>(a.begin(), a.end()), std::vector<subd::Index>(b.begin(), b.end()))
-                << what << " row " << row;
-              for (subd::Index k = 0; k < a.size(); ++k)
-                ASSERT_EQ(aloneTable.GetWeights(row)[k], expected.GetWeights(row)[k]) << what << " row " << row;
-            }
-            std::vector<float> parentsAlone(static_cast<size_t>(alone.GetNumParents()) * 3, 0.5f);
-            for (size_t i = 0; i < parentsAlone.size(); ++i)
-              parentsAlone[i] = static_cast<float>(std::sin(0.2 * i));
-            std::vector<float> viaAlone(static_cast<size_t>(alone.GetNumRows()) * 3), viaTable(viaAlone.size());
-            expected.Apply(parentsAlone.data(), viaTable.data(), 3);
-            const std::vector<subd::Index> aloneEnds = alone.GetBlockEnds();
-            for (size_t b = 0; b < aloneEnds.size(); ++b)
-              subdtest::ThreeThreadFor(b == 0 ? 0 : aloneEnds[b - 1], aloneEnds[b], [&](subd::Index begin, subd::Index end) {
-                alone.ApplyRows(parentsAlone.data(), viaAlone.data(), 3, begin, end);
-              });
-            EXPECT_EQ(viaAlone, viaTable) << what; // 3 components: the prefetching path
+            ExpectSameRows(alone, expected, 3, what + " without the parent"); // 3: the prefetching path
             ++withoutParent;
           }
-
-          std::vector<float> parents(static_cast<size_t>(rows.GetNumParents()) * 5);
-          for (size_t i = 0; i < parents.size(); ++i)
-            parents[i] = static_cast<float>(std::cos(0.3 * i));
-          std::vector<float> fromTable(static_cast<size_t>(rows.GetNumRows()) * 5), chunked(fromTable.size());
-          expected.Apply(parents.data(), fromTable.data(), 5);
-          const std::vector<subd::Index> ends = rows.GetBlockEnds();
-          for (size_t b = 0; b < ends.size(); ++b)
-            subdtest::ThreeThreadFor(b == 0 ? 0 : ends[b - 1], ends[b], [&](subd::Index begin, subd::Index end) {
-              rows.ApplyRows(parents.data(), chunked.data(), 5, begin, end);
-            });
-          EXPECT_EQ(chunked, fromTable) << what;
 
           const subd::Level twice =
             subd::SplitTwice(which, *grandparent, rows.GetParentEdgeNumbering(), subdtest::ThreeThreadFor);
