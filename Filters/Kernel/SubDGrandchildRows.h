@@ -100,14 +100,14 @@ private:
 
 /// Whether every row GrandchildRows writes from `grandparent` has a smooth form (no row to
 /// store), so that the level between need not be built at all (Refine then skips it for a
-/// faces-only finest level with LevelRows::WrittenFromGrandparent). Always true for the
-/// linear rules. For Catmull-Clark and Loop: nothing of `grandparent` is sharp, every edge has
-/// two faces, and every vertex as many faces as edges (at least one). The level between then
-/// has the same, which is what its row writer's IsSmoothRow asks of every row: its edges are
-/// halves of those edges (the same faces) or lie inside a face (two faces); its points are
-/// those vertices (the same counts), edge points (4 faces and edges on the quad split, 6 on
-/// the triangle split) and face points (as many of each as the face has corners); and its
-/// sharpness is inherited, so none stays none.
+/// faces-only finest level with LevelRows::WrittenFromGrandparent or WrittenLean). Always
+/// true for the linear rules. For Catmull-Clark and Loop: nothing of `grandparent` is sharp,
+/// every edge has two faces, and every vertex as many faces as edges (at least one). The level
+/// between then has the same, which is what its row writer's IsSmoothRow asks of every row:
+/// its edges are halves of those edges (the same faces) or lie inside a face (two faces); its
+/// points are those vertices (the same counts), edge points (4 faces and edges on the quad
+/// split, 6 on the triangle split) and face points (as many of each as the face has corners);
+/// and its sharpness is inherited, so none stays none.
 SUBDKERNEL_EXPORT bool EveryGrandchildRowIsSmooth(GrandchildScheme scheme, const Level& grandparent);
 
 /// The finest level (faces only) of two splits of `grandparent` by `scheme`'s split, without

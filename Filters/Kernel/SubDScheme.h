@@ -86,8 +86,8 @@ public:
   }
   /// True when RefineFromGrandparent reads nothing of `parent` for this `grandparent`: always
   /// when RefinesFromGrandparentAlone(), else when no row needs the parent
-  /// (EveryGrandchildRowIsSmooth; with LevelRows::WrittenFromGrandparent, Refine then does
-  /// not build the level above a faces-only finest level).
+  /// (EveryGrandchildRowIsSmooth; with LevelRows::WrittenFromGrandparent or WrittenLean,
+  /// Refine then does not build the level above a faces-only finest level).
   bool RefinesFromGrandparentAlone(const Level& grandparent) const
   {
     GrandchildScheme which;
