@@ -583,7 +583,7 @@ Level SplitTwiceTagsWith(const Shape& shape, const Level& grandparent, const Par
   // sixteenth of the finest level's faces.
   Level fine;
   bool fourChildren = grandparent.FaceTagShift == 0;
-  for (Index f = 0; f < grandparent.Topology.GetNumFaces() && fourChildren; ++f)
+  for (Index f = 0; f <= grandparent.Topology.GetNumFaces() && fourChildren; ++f) // the last face's end too
   {
     fourChildren = shape.CornerChild(f, 0) == 4 * f;
   }

@@ -811,6 +811,29 @@ TEST(GrandchildRows, LinearTrianglesEqualsTheParentsRows)
     subd::GrandchildScheme::LinearTriangles, subd::LinearTriangleScheme(), subdtest::TriangleMeshes());
 }
 
+// The finest faces' tags are kept per grandparent face only where every grandparent face has
+// four children: not when only the last face has more (a quad, then a pentagon; found by the
+// filters' fuzzer: the tags were read past their end).
+TEST(GrandchildRows, FaceTagsPerGrandparentFaceOnlyWithFourChildrenEach)
+{
+  subdtest::TestMesh mesh;
+  mesh.Name = "quad-pentagon";
+  const double p[7][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 2, 0, 0 }, { 2.5, 0.5, 0 }, { 2, 1, 0 } };
+  for (auto& q : p)
+    mesh.AddPoint(q[0], q[1], q[2]);
+  mesh.AddFace({ 0, 1, 2, 3 });
+  mesh.AddFace({ 1, 4, 5, 6, 2 });
+  const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+  auto grandparent = std::make_shared<subd::Level>(subd::MakeBaseLevel(topology, {}, subd::BoundaryRule::EdgeOnly));
+  const subd::CatmullClarkScheme scheme;
+  const subd::Level parent = scheme.Split(*grandparent, subd::ChildTopology::Full);
+  const subd::GrandchildRows rows(subd::GrandchildScheme::CatmullClark, grandparent, parent);
+  const subd::Level twice = subd::SplitTwice(subd::GrandchildScheme::CatmullClark, *grandparent, rows.GetParentEdgeNumbering());
+  const subd::Level stepwise = scheme.Split(parent, subd::ChildTopology::FacesOnly);
+  EXPECT_EQ(twice.FaceTagShift, 2);
+  EXPECT_EQ(subdtest::FaceTags(twice), subdtest::FaceTags(stepwise));
+}
+
 // Which grandparents need no parent for their grandchildren's rows: closed meshes without
 // sharp features (any rule); with a boundary, one semi-sharp edge or one sharp vertex, only
 // the linear rules (which have no rule for them).
