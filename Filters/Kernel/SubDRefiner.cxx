@@ -87,16 +87,16 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
 
 namespace
 {
-// The finest level's rows if they are written from its grandparent without its parent
-// (EveryGrandchildRowIsSmooth), for a scheme whose rows cost something to work out.
+// The finest level's rows if they are written from its grandparent (the parent not kept),
+// for a scheme whose rows cost something to work out. The parent's own rows are the same
+// rows (GrandchildRows writes them in its writer's order and weights).
 const GrandchildRows* FinestRowsWithoutParent(const Scheme& scheme, const Hierarchy& hierarchy)
 {
   if (hierarchy.Stencils.empty() || scheme.RefinesFromGrandparentAlone())
   {
     return nullptr; // the linear rules' rows are centroids, midpoints and copies
   }
-  const auto* rows = dynamic_cast<const GrandchildRows*>(hierarchy.Stencils.back().GetSource());
-  return rows && scheme.RefinesFromGrandparentAlone(rows->GetGrandparent()) ? rows : nullptr;
+  return dynamic_cast<const GrandchildRows*>(hierarchy.Stencils.back().GetSource());
 }
 }
 

@@ -100,8 +100,8 @@ enum class LevelRows
                ///< parent (what the filters do when they re-apply their rows).
 };
 
-/// If the finest level's rows are written from its grandparent without its parent
-/// (LevelRows::WrittenLean or WrittenFromGrandparent on a mesh without sharp features, for
+/// If the finest level's rows are written from its grandparent, its parent not kept
+/// (LevelRows::WrittenLean on a mesh without sharp features, or WrittenFromGrandparent; for
 /// Catmull-Clark and Loop), builds that parent and writes the rows from its lists instead:
 /// the same rows, re-applied 2-3x faster, for the memory of the parent's topology (about as
 /// much as the finest level's own faces). Returns whether it did.

@@ -30,7 +30,7 @@ public:
     , Buffer(std::size_t(1) << 20)
   {
   }
-  /// Text kept in memory (Data, Size), growing as needed, until Clear.
+  /// Bytes kept in memory, growing as needed, until Clear (Append copies them elsewhere).
   vtkSubDBufferedOutput() = default;
   ~vtkSubDBufferedOutput() { this->Flush(); }
   vtkSubDBufferedOutput(const vtkSubDBufferedOutput&) = delete;
