@@ -304,20 +304,39 @@ void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
     const Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
     double sum = 0.0;
     // The first end's ring and v are distinct points: appended without a search.
-    void (Row::*put)(Index, double) = ends == 0 ? &Row::Append : &Row::Add;
-    for (Index j = 0, k = this->RingStart(v, end.second) % K; j < K; ++j, k = k + 1 == K ? 0 : k + 1)
+    const bool append = ends == 0;
+    const Index start = this->RingStart(v, end.second);
+    const bool tabled = K >= 3 && K < static_cast<Index>(this->ExtraordinaryWeights.size());
+    const double* table = tabled ? this->ExtraordinaryWeights[K].data() : nullptr;
+    for (Index j = 0, k = start == K ? 0 : start; j < K; ++j, k = k + 1 == K ? 0 : k + 1)
     {
-      const double s = this->ExtraordinaryWeight(K, j);
-      (smooth.*put)(ring[k], s); // RingFrom(v, end.second, j)
+      const double s = tabled ? table[j] : this->ExtraordinaryWeight(K, j);
+      if (append) // RingFrom(v, end.second, j)
+      {
+        smooth.Append(ring[k], s);
+      }
+      else
+      {
+        smooth.Add(ring[k], s);
+      }
       sum += s;
     }
-    (smooth.*put)(v, 1.0 - sum);
+    if (append)
+    {
+      smooth.Append(v, 1.0 - sum);
+    }
+    else
+    {
+      smooth.Add(v, 1.0 - sum);
+    }
     ++ends;
   }
-  const double scale = 1.0 / ends;
-  for (Index k = 0; k < smooth.Size; ++k)
+  if (ends == 2) // one end's rule alone is the row as it is
   {
-    smooth.Weights[k] *= scale;
+    for (Index k = 0; k < smooth.Size; ++k)
+    {
+      smooth.Weights[k] *= 0.5;
+    }
   }
 }
 

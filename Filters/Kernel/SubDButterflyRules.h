@@ -141,13 +141,27 @@ inline void ButterflyRowWriter::PrefetchRow(Index row, const T*, const T*) const
     return; // a copy: read in order
   }
   const Index* ev = topo.GetEdgeVertices(row);
-  PrefetchForRead(&this->RingKinds[ev[0]]);
-  PrefetchForRead(&this->RingKinds[ev[1]]);
+  for (int end = 0; end < 2; ++end)
+  {
+    PrefetchForRead(&this->RingKinds[ev[end]]);
+    PrefetchForRead(&this->RingValences[ev[end]]);
+    PrefetchForRead(&this->RingOffsets[ev[end]]);
+  }
   for (Index f : topo.GetEdgeFaces(row))
   {
     PrefetchForRead(topo.GetTriangleVertices(f));
     PrefetchForRead(topo.GetTriangleEdges(f));
     PrefetchForRead(this->Across.data() + MeshTopology::GetFirstTriangleCorner(f));
+  }
+  // The stored rings of a row half as far ahead, whose offsets were asked for above by then:
+  // the extraordinary rows (most rows of a scanned mesh) walk them.
+  const Index nearer = row - PrefetchDistance / 2;
+  if (nearer >= 0 && nearer < topo.GetNumEdges())
+  {
+    for (Index v : { topo.GetEdgeVertices(nearer)[0], topo.GetEdgeVertices(nearer)[1] })
+    {
+      PrefetchForRead(this->RingNeighbours.data() + this->RingOffsets[v]);
+    }
   }
 }
 

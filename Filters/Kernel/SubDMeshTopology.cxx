@@ -108,12 +108,18 @@ MeshTopology MeshTopology::Build(
   Index numVertices, IndexArray faceOffsets, IndexArray faceVertices, const ParallelFor& parallelFor)
 {
   MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), std::move(faceVertices));
+  bool allTriangles = true;
+  for (Index f = 0; f < topology.GetNumFaces() && allTriangles; ++f)
+  {
+    allTriangles = topology.FaceOffsets[f + 1] - topology.FaceOffsets[f] == 3;
+  }
   topology.BuildVertexFaces(parallelFor);
-  const HalfEdgePairing pairing = topology.PairHalfEdges(parallelFor);
+  IndexArray smallFans;
+  const HalfEdgePairing pairing = topology.PairHalfEdges(allTriangles, smallFans, parallelFor);
   topology.NumberEdges(pairing, parallelFor);
   topology.BuildEdgeFaces(pairing, parallelFor);
   topology.BuildVertexEdges(parallelFor);
-  topology.TagVertices(parallelFor);
+  topology.TagVertices(smallFans, parallelFor);
   return topology;
 }
 
@@ -139,38 +145,130 @@ void MeshTopology::BuildVertexFaces(const ParallelFor& parallelFor)
   FileByKey(this->NumVertices, this->GetNumFaces(), corners, place, this->VertexFaceOffsets, parallelFor);
 }
 
-// The half-edges of one vertex pair are filed under the pair's lower vertex and each
-// vertex's file is sorted by upper vertex and half-edge: linear in the mesh size for bounded
-// valence, and O(k log k) for a vertex of valence k, so even a 100k-valent hub stays fast.
-MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(const ParallelFor& parallelFor) const
+namespace
 {
-  const size_t numHalfEdges = this->FaceVertices.size();
-  // Each half-edge as one key, (upper vertex, h, whether it starts at the lower vertex):
-  // sorting compares the keys themselves, and a pair's half-edges come out in order.
-  auto halfEdges = [this](Index begin, Index end, const auto& visit) {
-    for (Index f = begin; f < end; ++f)
+// Counts the fans of a vertex's n <= 32 face corners: corner j follows corner k around the
+// vertex when j leaves it along the edge k enters it by (leaving[j] == entering[k]; called
+// where the vertex's edges are manifold and consistently oriented, so that each corner has
+// at most one follower and one predecessor). The fans are the chains of followers, open
+// (starting at a corner without predecessor) or closed; the followers are matched without
+// branches and each chain walked once.
+Index CountFansOfCorners(Index n, const Index* leaving, const Index* entering)
+{
+  if (n <= 1)
+  {
+    return n;
+  }
+  Index next[32];
+  std::uint32_t hasPredecessor = 0;
+  for (Index k = 0; k < n; ++k)
+  {
+    Index follower = InvalidIndex;
+    for (Index j = 0; j < n; ++j)
     {
-      const Index first = this->FaceOffsets[f], last = this->FaceOffsets[f + 1];
-      for (Index h = first; h < last; ++h)
-      {
-        const Index a = this->FaceVertices[h], b = this->FaceVertices[h + 1 < last ? h + 1 : first];
-        visit(std::min(a, b),
-          (static_cast<std::uint64_t>(static_cast<std::uint32_t>(std::max(a, b))) << 32) |
-            (static_cast<std::uint64_t>(h) << 1) | (a < b ? 1u : 0u));
-      }
+      follower = j != k && leaving[j] == entering[k] ? j : follower;
+    }
+    next[k] = follower;
+    hasPredecessor |= follower == InvalidIndex ? 0u : 1u << follower;
+  }
+  std::uint32_t visited = 0;
+  auto walk = [&](Index corner) {
+    while (corner != InvalidIndex && !(visited >> corner & 1u))
+    {
+      visited |= 1u << corner;
+      corner = next[corner];
     }
   };
-  LevelArray<std::uint64_t> files(numHalfEdges);
-  IndexArray fileOffsets;
-  auto place = [&files](Index slot, std::uint64_t key) { files[slot] = key; };
-  FileByKey(this->NumVertices, this->GetNumFaces(), halfEdges, place, fileOffsets, parallelFor);
+  Index fans = 0;
+  for (Index k = 0; k < n; ++k)
+  {
+    if (!(hasPredecessor >> k & 1u))
+    {
+      ++fans; // an open fan starts here
+      walk(k);
+    }
+  }
+  for (Index k = 0; k < n; ++k)
+  {
+    if (!(visited >> k & 1u))
+    {
+      ++fans; // a closed fan
+      walk(k);
+    }
+  }
+  return fans;
+}
+}
 
-  HalfEdgePairing pairing(numHalfEdges);
+// The half-edges of one vertex pair are paired at the pair's lower vertex v, from v's own
+// face corners: the half-edge leaving v at a corner, when it goes up (or loops back to v),
+// and the one entering it from a higher vertex. Sorted by upper vertex and half-edge, a
+// pair's half-edges come out in order: linear in the mesh size for bounded valence, and
+// O(k log k) for a vertex of valence k, so even a 100k-valent hub stays fast. The corners'
+// neighbours also tell v's fans (for up to 32 corners): the edge a corner leaves by is the
+// one another enters by exactly when both go to the same vertex, since a vertex pair is one
+// edge; so the fans come from the vertex ids read here, not from the edges numbered later.
+MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
+  bool allTriangles, IndexArray& smallFans, const ParallelFor& parallelFor) const
+{
+  HalfEdgePairing pairing(this->FaceVertices.size());
+  smallFans.resize(static_cast<size_t>(this->NumVertices));
   parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
+    constexpr Index smallValence = 32;
+    std::vector<std::uint64_t> keys;
+    Index leaving[smallValence], entering[smallValence];
     for (Index v = begin; v < end; ++v)
     {
-      std::uint64_t* first = files.data() + fileOffsets[v];
-      std::uint64_t* last = files.data() + fileOffsets[v + 1];
+      // A vertex's faces are scattered over the face list: ask for a later vertex's corners
+      // ahead of reading them (the reads below are this pass's cost).
+      constexpr Index ahead = 8;
+      if (v + ahead < end)
+      {
+        for (Index f : this->GetVertexFaces(v + ahead))
+        {
+          const Index corner = allTriangles ? 3 * f : this->FaceOffsets[f];
+          PrefetchForRead(this->FaceVertices.data() + corner);
+          PrefetchForRead(pairing.data() + corner); // written below
+        }
+      }
+      const IndexSpan faces = this->GetVertexFaces(v);
+      const IndexSpan corners = this->GetVertexFaceCorners(v);
+      const Index n = faces.size();
+      if (keys.size() < 2 * static_cast<size_t>(n))
+      {
+        keys.resize(2 * static_cast<size_t>(n));
+      }
+      // Each half-edge as one key, (upper vertex, h, whether it starts at the lower vertex):
+      // sorting compares the keys themselves.
+      auto key = [](Index upper, Index h, bool upward) {
+        return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(upper)) << 32) |
+          (static_cast<std::uint64_t>(h) << 1) | (upward ? 1u : 0u);
+      };
+      std::uint64_t* first = keys.data();
+      std::uint64_t* last = first;
+      for (Index k = 0; k < n; ++k)
+      {
+        const Index f = faces[k], c = corners[k];
+        const Index faceFirst = allTriangles ? 3 * f : this->FaceOffsets[f];
+        const Index size = allTriangles ? 3 : this->FaceOffsets[f + 1] - faceFirst;
+        const Index h = faceFirst + c, previous = faceFirst + (c == 0 ? size - 1 : c - 1);
+        const Index to = this->FaceVertices[c + 1 == size ? faceFirst : h + 1];
+        const Index from = this->FaceVertices[previous];
+        if (to >= v)
+        {
+          *last++ = key(to, h, to > v);
+        }
+        if (from > v)
+        {
+          *last++ = key(from, previous, false);
+        }
+        if (k < smallValence)
+        {
+          leaving[k] = to;
+          entering[k] = from;
+        }
+      }
+      smallFans[v] = n <= smallValence ? CountFansOfCorners(n, leaving, entering) : InvalidIndex;
       SortShortList(first, last);
       for (std::uint64_t* run = first; run != last;)
       {
@@ -185,11 +283,10 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(const ParallelFor& par
         {
           const Index h = static_cast<Index>((*it & 0xffffffffu) >> 1);
           pairing[h].Representative = representative;
-          pairing[h].Rank = static_cast<Index>(it - run);
+          pairing[h].RankOrGroup = static_cast<Index>(it - run);
           forward += (*it & 1u) == (*run & 1u);
         }
-        pairing[representative].GroupSize = static_cast<Index>(runEnd - run);
-        pairing[representative].Forward = forward;
+        pairing[representative].RankOrGroup = HalfEdgePair::Group(static_cast<Index>(runEnd - run), forward);
         run = runEnd;
       }
     }
@@ -235,14 +332,14 @@ void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const ParallelFor
         {
           continue;
         }
-        const Index faces = pairing[h].GroupSize;
+        const Index faces = pairing[h].GroupSize();
         this->FaceEdges[h] = e;
         this->EdgeVertices[2 * static_cast<size_t>(e)] = this->FaceVertices[h];
         this->EdgeVertices[2 * static_cast<size_t>(e) + 1] = this->FaceVertices[h + 1 < last ? h + 1 : first];
         this->EdgeFaceOffsets[e + 1] = faces;
         EdgeTag& tag = this->EdgeTags[e];
         tag.Boundary = faces == 1;
-        tag.NonManifold = faces > 2 || (faces == 2 && pairing[h].Forward != 1);
+        tag.NonManifold = faces > 2 || (faces == 2 && !pairing[h].RunsOppositeWays());
         ++e;
       }
     }
@@ -276,7 +373,7 @@ void MeshTopology::BuildEdgeFaces(const HalfEdgePairing& pairing, const Parallel
     {
       for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
       {
-        this->EdgeFaces[this->EdgeFaceOffsets[this->FaceEdges[h]] + pairing[h].Rank] = f;
+        this->EdgeFaces[this->EdgeFaceOffsets[this->FaceEdges[h]] + pairing[h].Rank(h)] = f;
       }
     }
   });
@@ -303,18 +400,12 @@ void MeshTopology::BuildVertexEdges(const ParallelFor& parallelFor)
   }
 }
 
-// A vertex is manifold when its faces form one fan: union the faces that share an edge at
-// the vertex (manifold edges only) and count the groups.
-void MeshTopology::TagVertices(const ParallelFor& parallelFor)
+// A vertex is manifold when its edges are and its faces form one fan: counted while pairing
+// the half-edges for up to 32 faces (`smallFans`), by CountFans beyond.
+void MeshTopology::TagVertices(const IndexArray& smallFans, const ParallelFor& parallelFor)
 {
   this->VertexTags.resize(static_cast<size_t>(this->NumVertices));
-  const Index numFaces = this->GetNumFaces();
-  bool allTriangles = true;
-  for (Index f = 0; f < numFaces && allTriangles; ++f)
-  {
-    allTriangles = this->FaceOffsets[f + 1] - this->FaceOffsets[f] == 3;
-  }
-  parallelFor(0, this->NumVertices, [this, allTriangles](Index begin, Index end) {
+  parallelFor(0, this->NumVertices, [this, &smallFans](Index begin, Index end) {
     std::vector<Index> fanScratch;
     for (Index v = begin; v < end; ++v)
     {
@@ -326,7 +417,8 @@ void MeshTopology::TagVertices(const ParallelFor& parallelFor)
       }
       if (!tag.NonManifold)
       {
-        tag.NonManifold = this->CountFans(v, allTriangles, fanScratch) > 1;
+        const Index fans = smallFans[v] != InvalidIndex ? smallFans[v] : this->CountFans(v, fanScratch);
+        tag.NonManifold = fans > 1;
       }
       this->VertexTags[v] = tag;
     }
@@ -338,84 +430,15 @@ void MeshTopology::TagVertices(const ParallelFor& parallelFor)
   }
 }
 
-// The fans of v's faces, joined across v's edges with two faces: chains of followers for up
-// to 32 faces, a union-find beyond. Both read only v's own lists and its faces' edges:
-// cheaper than walking from face to face, which reads each neighbour face's corners. In an
-// all-triangle mesh a face's edges are found at 3f without reading the face offsets (one
-// scattered read per face fewer).
-Index MeshTopology::CountFans(Index v, bool allTriangles, std::vector<Index>& parent) const
+// The fans of v's faces (of a vertex with manifold edges), joined across v's edges with two
+// faces by a union-find over v's own lists: for vertices of more than 32 faces, where
+// PairHalfEdges' chains of followers stop.
+Index MeshTopology::CountFans(Index v, std::vector<Index>& parent) const
 {
   const IndexSpan faces = this->GetVertexFaces(v);
   if (faces.size() <= 1)
   {
     return faces.size();
-  }
-  constexpr Index smallValence = 32;
-  if (faces.size() <= smallValence)
-  {
-    // Face j follows face k around v when j leaves v along the edge k enters it by (called
-    // for vertices whose edges are manifold and consistently oriented, so that each face has
-    // at most one follower and one predecessor): the fans are the chains of followers, open
-    // (starting at a face without predecessor) or closed. The followers are matched without
-    // branches, the edges read from the faces' own lists, and each chain walked once.
-    const IndexSpan corners = this->GetVertexFaceCorners(v);
-    const Index n = faces.size();
-    Index leaving[smallValence], entering[smallValence], next[smallValence];
-    for (Index k = 0; k < n; ++k)
-    {
-      const Index* fe;
-      Index size;
-      if (allTriangles)
-      {
-        fe = this->GetTriangleEdges(faces[k]);
-        size = 3;
-      }
-      else
-      {
-        const IndexSpan span = this->GetFaceEdges(faces[k]);
-        fe = span.begin();
-        size = span.size();
-      }
-      leaving[k] = fe[corners[k]];
-      entering[k] = fe[corners[k] == 0 ? size - 1 : corners[k] - 1];
-    }
-    std::uint32_t hasPredecessor = 0;
-    for (Index k = 0; k < n; ++k)
-    {
-      Index follower = InvalidIndex;
-      for (Index j = 0; j < n; ++j)
-      {
-        follower = j != k && leaving[j] == entering[k] ? j : follower;
-      }
-      next[k] = follower;
-      hasPredecessor |= follower == InvalidIndex ? 0u : 1u << follower;
-    }
-    std::uint32_t visited = 0;
-    auto walk = [&](Index face) {
-      while (face != InvalidIndex && !(visited >> face & 1u))
-      {
-        visited |= 1u << face;
-        face = next[face];
-      }
-    };
-    Index fans = 0;
-    for (Index k = 0; k < n; ++k)
-    {
-      if (!(hasPredecessor >> k & 1u))
-      {
-        ++fans; // an open fan starts here
-        walk(k);
-      }
-    }
-    for (Index k = 0; k < n; ++k)
-    {
-      if (!(visited >> k & 1u))
-      {
-        ++fans; // a closed fan
-        walk(k);
-      }
-    }
-    return fans;
   }
   parent.resize(faces.size());
   std::iota(parent.begin(), parent.end(), 0);

@@ -171,20 +171,27 @@ private:
     return IndexSpan{ data.data() + offsets[i], offsets[i + 1] - offsets[i] };
   }
   /// Build's pairing of half-edges into edges, each half-edge h with the first half-edge of
-  /// its vertex pair (lowest index) and its rank among them; the group's size and how many
-  /// run the way its first does are at the first.
+  /// its vertex pair (lowest index) and its rank among them. The first's rank is 0: its slot
+  /// holds the group's size instead, and whether a pair runs opposite ways (8 bytes per
+  /// half-edge rather than 16: half the pages to fault in on a first build).
   struct HalfEdgePair
   {
-    Index Representative, Rank, GroupSize, Forward;
+    Index Representative, RankOrGroup;
+    /// `forward`: how many of the group's half-edges run the way its first does.
+    static Index Group(Index size, Index forward) { return 2 * size + (forward == 1 ? 1 : 0); }
+    Index Rank(Index h) const { return h == this->Representative ? 0 : this->RankOrGroup; }
+    // At a group's first half-edge only:
+    Index GroupSize() const { return this->RankOrGroup >> 1; }
+    bool RunsOppositeWays() const { return (this->RankOrGroup & 1) != 0; }
   };
   using HalfEdgePairing = LevelArray<HalfEdgePair>; // one per half-edge: its writes share a line
   void BuildVertexFaces(const ParallelFor& parallelFor);
-  HalfEdgePairing PairHalfEdges(const ParallelFor& parallelFor) const;
+  HalfEdgePairing PairHalfEdges(bool allTriangles, IndexArray& smallFans, const ParallelFor& parallelFor) const;
   void NumberEdges(const HalfEdgePairing& pairing, const ParallelFor& parallelFor);
   void BuildEdgeFaces(const HalfEdgePairing& pairing, const ParallelFor& parallelFor);
   void BuildVertexEdges(const ParallelFor& parallelFor);
-  void TagVertices(const ParallelFor& parallelFor);
-  Index CountFans(Index v, bool allTriangles, std::vector<Index>& scratch) const;
+  void TagVertices(const IndexArray& smallFans, const ParallelFor& parallelFor);
+  Index CountFans(Index v, std::vector<Index>& scratch) const;
 
   Index NumVertices = 0;
   IndexArray FaceOffsets{ 0 };

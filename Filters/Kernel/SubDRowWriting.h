@@ -66,11 +66,6 @@ struct HasPrefetchRow<Writer, T,
 {
 };
 
-/// How many rows ahead PrefetchRow asks: enough rows to cover a memory access's latency
-/// (Catmull-Clark re-applied at level 4, one thread: 16 and 32 alike, 1.25x faster than
-/// without; 8 less).
-constexpr Index PrefetchDistance = 32;
-
 /// The rows of a Writer over `parent`, applied as they are written. Keeps the parent level
 /// alive: it is what the rows are written from.
 template <typename Writer>

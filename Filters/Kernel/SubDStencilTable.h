@@ -167,6 +167,11 @@ struct PointSum
   }
 };
 
+/// How many rows ahead a row writer's PrefetchRow asks (SubDRowWriting.h): enough rows to cover a memory access's latency
+/// (Catmull-Clark re-applied at level 4, one thread: 16 and 32 alike, 1.25x faster than
+/// without; 8 less).
+constexpr Index PrefetchDistance = 32;
+
 /// Asks for the three components at `point` ahead of reading them: both ends, since a point
 /// of three doubles straddles two 64-byte cache lines one time in four.
 template <typename T>

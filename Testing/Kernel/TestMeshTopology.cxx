@@ -136,6 +136,34 @@ TEST(MeshTopology, HighValenceHubAndIsolatedVertex)
   EXPECT_EQ(t.GetNumEdges(), 2 * n);
 }
 
+// Two closed cones of `sides` triangles sharing their apex 0 (a double cone pinched at its
+// tip): every edge is manifold, the apex has two closed fans. Fans of up to 32 faces are
+// counted while pairing the half-edges, larger ones by a union-find: both must see it.
+TEST(MeshTopology, PinchedConesAreNonManifoldAtAnyValence)
+{
+  for (const Index sides : { 3, 10, 16, 17, 40 })
+  {
+    std::vector<Index> offsets{ 0 }, verts;
+    for (Index cone = 0; cone < 2; ++cone)
+    {
+      const Index first = 1 + cone * (sides + 1), tip = first + sides; // rim, then the far tip
+      for (Index k = 0; k < sides; ++k)
+      {
+        const Index a = first + k, b = first + (k + 1) % sides;
+        verts.insert(verts.end(), { 0, a, b, b, a, tip });
+        offsets.push_back(static_cast<Index>(verts.size()) - 3);
+        offsets.push_back(static_cast<Index>(verts.size()));
+      }
+    }
+    const MeshTopology t = MeshTopology::Build(1 + 2 * (sides + 1), offsets, verts);
+    EXPECT_EQ(t.GetVertexFaces(0).size(), 2 * sides);
+    EXPECT_EQ(t.GetNumNonManifoldEdges(), 0) << sides;
+    EXPECT_EQ(t.GetNumBoundaryEdges(), 0) << sides;
+    EXPECT_TRUE(t.GetVertexTag(0).NonManifold) << sides << " faces per cone";
+    EXPECT_EQ(t.GetNumNonManifoldVertices(), 1) << sides;
+  }
+}
+
 namespace
 {
 bool SameSpan(subd::IndexSpan a, subd::IndexSpan b)
