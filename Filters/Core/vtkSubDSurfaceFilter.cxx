@@ -647,12 +647,17 @@ int vtkSubDSurfaceFilter::Execute(
     cache.LowMemory || cache.LeanFinest ? nullptr : &cache.Scratch);
 
   // Points.
-  vtkNew<vtkDoubleArray> basePoints;
-  basePoints->SetNumberOfComponents(3);
-  basePoints->SetNumberOfTuples(numPoints);
-  for (vtkIdType i = 0; i < numPoints; ++i)
+  // Double input points are read where they are; others are converted once.
+  vtkSmartPointer<vtkDoubleArray> basePoints = vtkDoubleArray::FastDownCast(input->GetPoints()->GetData());
+  if (!basePoints || basePoints->GetNumberOfComponents() != 3)
   {
-    input->GetPoint(i, basePoints->GetPointer(3 * i));
+    basePoints = vtkSmartPointer<vtkDoubleArray>::New();
+    basePoints->SetNumberOfComponents(3);
+    basePoints->SetNumberOfTuples(numPoints);
+    for (vtkIdType i = 0; i < numPoints; ++i)
+    {
+      input->GetPoint(i, basePoints->GetPointer(3 * i));
+    }
   }
   int precision = this->OutputPointsPrecision;
   if (precision == DEFAULT_PRECISION)

@@ -45,6 +45,21 @@ FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offse
   for (Index f = 0; f < numFaces; ++f)
   {
     const IdType begin = offsets[f], end = offsets[f + 1];
+    if (end - begin == 3)
+    {
+      // Most faces: a triangle of three distinct vertices in range, kept as it is.
+      const IdType a = vertices[begin], b = vertices[begin + 1], c = vertices[begin + 2];
+      const IdType n = static_cast<IdType>(numVertices);
+      if (a >= 0 && a < n && b >= 0 && b < n && c >= 0 && c < n && a != b && b != c && c != a)
+      {
+        s.Vertices.push_back(static_cast<Index>(a));
+        s.Vertices.push_back(static_cast<Index>(b));
+        s.Vertices.push_back(static_cast<Index>(c));
+        s.Offsets.push_back(static_cast<Index>(s.Vertices.size()));
+        s.KeptFaces.push_back(f);
+        continue;
+      }
+    }
     bool inRange = true;
     for (IdType k = begin; k < end; ++k)
     {
