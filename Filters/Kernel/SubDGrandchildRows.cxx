@@ -71,6 +71,14 @@ struct ParentFromGrandparent
     edges = scratch + 2 * listSize;
     WriteChildPointRelations(this->Split, this->ParentEdges.EdgeOfKey.data(), p, faces, scratch + listSize, edges, numFaces, numEdges);
   }
+  // C's point p: its edges only (for rules that read no faces; P's lists of faces around its
+  // vertices may then be freed: Scheme::GrandchildReadsVertexFaceLists).
+  void GetPointEdges(Index p, Index* scratch, Index*& edges, Index& numEdges) const
+  {
+    Index numFaces;
+    edges = scratch;
+    WriteChildPointRelations(this->Split, this->ParentEdges.EdgeOfKey.data(), p, nullptr, nullptr, edges, numFaces, numEdges);
+  }
 };
 
 // Catmull-Clark's smooth rows (CatmullClarkRowWriter's, in its order and weights).
@@ -127,8 +135,9 @@ struct LoopSmoothRows : ParentFromGrandparent<TriangleSplitShape>
   }
   Index WriteVertexRow(Index p, Index* sources, double* weights, Index* scratch, Index listSize) const
   {
-    Index *faces, *edges, numFaces, numEdges;
-    this->GetPoint(p, scratch, listSize, faces, numFaces, edges, numEdges);
+    Index* edges;
+    Index numEdges;
+    this->GetPointEdges(p, scratch, edges, numEdges);
     return WriteLoopSmoothVertexRow(
       p, numEdges, this->Beta(numEdges), [&](Index i) { return this->NumParents + edges[i]; }, sources, weights);
   }

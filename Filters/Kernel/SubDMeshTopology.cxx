@@ -123,6 +123,20 @@ MeshTopology MeshTopology::Build(
   return topology;
 }
 
+void MeshTopology::ReleaseVertexFaceLists()
+{
+  IndexArray().swap(this->VertexFaces);
+  IndexArray().swap(this->VertexFaceCorners);
+}
+
+void MeshTopology::RestoreVertexFaceLists(const ParallelFor& parallelFor)
+{
+  if (!this->HasVertexFaceLists())
+  {
+    this->BuildVertexFaces(parallelFor);
+  }
+}
+
 // Every pass below runs per face, per vertex or per block of items and writes only its own
 // entries, so the topology is the same for any number of threads.
 void MeshTopology::BuildVertexFaces(const ParallelFor& parallelFor)

@@ -63,9 +63,20 @@ public:
   const Index* GetEdgeVertices(Index e) const { return &EdgeVertices[2 * static_cast<size_t>(e)]; }
   IndexSpan GetEdgeFaces(Index e) const { return Span(EdgeFaces, EdgeFaceOffsets, e); }
 
-  IndexSpan GetVertexFaces(Index v) const { return Span(VertexFaces, VertexFaceOffsets, v); }
+  IndexSpan GetVertexFaces(Index v) const { return this->VertexFaceSpan(VertexFaces, v); }
   /// For each face of GetVertexFaces(v), the corner (0..size-1) at which v sits in it.
-  IndexSpan GetVertexFaceCorners(Index v) const { return Span(VertexFaceCorners, VertexFaceOffsets, v); }
+  IndexSpan GetVertexFaceCorners(Index v) const { return this->VertexFaceSpan(VertexFaceCorners, v); }
+  Index GetNumVertexFaces(Index v) const { return VertexFaceOffsets[v + 1] - VertexFaceOffsets[v]; }
+
+  /// Frees the lists of faces around each vertex (and their corners), keeping their counts:
+  /// for a level kept only for rows that never read them (Loop's finest rows written from
+  /// their grandparent), whose lists would otherwise be a large share of the peak. Until
+  /// RestoreVertexFaceLists, GetVertexFaces and GetVertexFaceCorners give spans of the right
+  /// size and no data (a null pointer: reading them faults at once).
+  void ReleaseVertexFaceLists();
+  bool HasVertexFaceLists() const { return !VertexFaces.empty() || FaceVertices.empty(); }
+  /// Builds the lists again, as Build made them (each vertex's faces in increasing order).
+  void RestoreVertexFaceLists(const ParallelFor& parallelFor = SerialFor);
   /// The corner of face f at vertex v, or InvalidIndex (faces of v are sorted: binary search).
   Index FindCorner(Index v, Index f) const;
 
@@ -169,6 +180,11 @@ private:
   static IndexSpan Span(const IndexArray& data, const IndexArray& offsets, Index i)
   {
     return IndexSpan{ data.data() + offsets[i], offsets[i + 1] - offsets[i] };
+  }
+  IndexSpan VertexFaceSpan(const IndexArray& lists, Index v) const
+  {
+    const Index first = VertexFaceOffsets[v];
+    return IndexSpan{ lists.empty() ? nullptr : lists.data() + first, VertexFaceOffsets[v + 1] - first };
   }
   /// Build's pairing of half-edges into edges, each half-edge h with the first half-edge of
   /// its vertex pair (lowest index) and its rank among them. The first's rank is 0: its slot

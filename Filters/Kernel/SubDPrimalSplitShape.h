@@ -231,7 +231,9 @@ struct TriangleSplitShape
 };
 
 /// The faces around child point `point` in increasing order, with the point's corner in each,
-/// and its edges, sorted: the lists MeshTopology::Build gives. Writes their sizes.
+/// and its edges, sorted: the lists MeshTopology::Build gives. Writes their sizes. For an
+/// edge or vertex point, `faces` and `corners` may be null: the edges alone, read without the
+/// parent's lists of faces around its vertices.
 template <typename Shape>
 void WriteChildPointRelations(const Shape& shape, const Index* edgeOfKey, Index point, Index* faces,
   Index* corners, Index* edges, Index& numFaces, Index& numEdges)
@@ -257,7 +259,10 @@ void WriteChildPointRelations(const Shape& shape, const Index* edgeOfKey, Index 
     {
       const Index g = parentFaces[k];
       const Index i = parent.GetEdgePosition(g, e);
-      shape.WriteEdgePointFaces(g, i, faces + Shape::EdgePointFacesPerFace * k, corners + Shape::EdgePointFacesPerFace * k);
+      if (faces)
+      {
+        shape.WriteEdgePointFaces(g, i, faces + Shape::EdgePointFacesPerFace * k, corners + Shape::EdgePointFacesPerFace * k);
+      }
       shape.WriteEdgePointEdges(g, i, edgeOfKey, edges + 2 + Shape::EdgePointEdgesPerFace * k);
     }
     numFaces = Shape::EdgePointFacesPerFace * parentFaces.size();
@@ -268,19 +273,22 @@ void WriteChildPointRelations(const Shape& shape, const Index* edgeOfKey, Index 
   // A vertex point sits at corner 0 of the child at its vertex's corner in each face, and
   // ends the halves of its vertex's edges.
   const Index v = point - firstVertexPoint;
-  const IndexSpan parentFaces = parent.GetVertexFaces(v);
-  const IndexSpan parentCorners = parent.GetVertexFaceCorners(v);
-  for (Index k = 0; k < parentFaces.size(); ++k)
+  if (faces)
   {
-    faces[k] = shape.CornerChild(parentFaces[k], parentCorners[k]);
-    corners[k] = 0;
+    const IndexSpan parentFaces = parent.GetVertexFaces(v);
+    const IndexSpan parentCorners = parent.GetVertexFaceCorners(v);
+    for (Index k = 0; k < parentFaces.size(); ++k)
+    {
+      faces[k] = shape.CornerChild(parentFaces[k], parentCorners[k]);
+      corners[k] = 0;
+    }
   }
   const IndexSpan parentEdges = parent.GetVertexEdges(v);
   for (Index k = 0; k < parentEdges.size(); ++k)
   {
     edges[k] = edgeOfKey[HalfEdgeKey(parent, parentEdges[k], v)];
   }
-  numFaces = parentFaces.size();
+  numFaces = parent.GetNumVertexFaces(v);
   numEdges = parentEdges.size();
   SortShortList(edges, edges + numEdges);
 }

@@ -57,6 +57,10 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         parentSkipped = l + 2 == levels &&
           (finestFromGrandparentAlone || (finestFromGrandparentIfSmooth && scheme.RefinesFromGrandparentAlone(*parent)));
         current = parentSkipped ? Level() : scheme.Split(*parent, depth);
+        if (parentSkipped && !scheme.GrandchildReadsVertexFaceLists())
+        {
+          parent->Topology.ReleaseVertexFaceLists(); // kept for rows that never read them
+        }
         grandparent = parent;
       }
       else
@@ -112,7 +116,20 @@ bool PromoteFinestRows(const Scheme& scheme, Hierarchy& hierarchy)
   {
     return false;
   }
-  auto parent = std::make_shared<Level>(scheme.Split(rows->GetGrandparent(), ChildTopology::Full));
+  const Level& grandparent = rows->GetGrandparent();
+  std::shared_ptr<Level> parent;
+  if (grandparent.Topology.HasVertexFaceLists())
+  {
+    parent = std::make_shared<Level>(scheme.Split(grandparent, ChildTopology::Full));
+  }
+  else
+  {
+    // The split reads the faces around each vertex, freed after refining: a copy has them
+    // again for as long as the split takes (the rows keep the grandparent as it is).
+    Level whole = grandparent;
+    whole.Topology.RestoreVertexFaceLists(scheme.GetParallelFor());
+    parent = std::make_shared<Level>(scheme.Split(whole, ChildTopology::Full));
+  }
   hierarchy.Stencils.back() = StencilTable::FromSource(scheme.MakeRowSource(parent));
   return true;
 }

@@ -542,7 +542,7 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
   // The creases' methods, and no sharp feature at all (where Catmull-Clark and Loop, with
   // WrittenFromGrandparent or WrittenLean, skip the finest level's parent on closed meshes:
   // EveryGrandchildRowIsSmooth).
-  int leanHierarchies = 0;
+  int leanHierarchies = 0, releasedVertexFaceLists = 0;
   for (int creases = 0; creases < 3; ++creases)
   {
     const subd::CreaseMethod method = creases == 1 ? subd::CreaseMethod::Chaikin : subd::CreaseMethod::Uniform;
@@ -596,6 +596,14 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
           EXPECT_EQ(c, d) << mesh.Name << " L" << levels;
           if (lean)
           {
+            // Loop's rows read the grandparent's vertex rings through its edges: the lists of
+            // faces around its vertices are freed where the parent was skipped, and restored
+            // for the promotion's split (below, which must give the same values).
+            const auto* grandchildRows = dynamic_cast<const subd::GrandchildRows*>(written.Stencils.back().GetSource());
+            ASSERT_NE(grandchildRows, nullptr);
+            const bool released = !grandchildRows->GetGrandparent().Topology.HasVertexFaceLists();
+            EXPECT_TRUE(!released || name == "loop") << mesh.Name << " L" << levels;
+            releasedVertexFaceLists += released;
             // The same rows from the parent's lists, built now (what the filters do when
             // they re-apply them).
             EXPECT_TRUE(subd::PromoteFinestRows(*scheme, written));
@@ -625,6 +633,7 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
   // WrittenLean wrote the finest rows of some closed meshes without their parent.
   const std::string name = scheme->GetName();
   EXPECT_EQ(leanHierarchies > 0, name == "catmull-clark" || name == "loop") << leanHierarchies;
+  EXPECT_EQ(releasedVertexFaceLists > 0, name == "loop") << releasedVertexFaceLists;
 }
 
 // The size guard's prediction (SubDMemoryEstimate.h) covers what a refinement holds once its
