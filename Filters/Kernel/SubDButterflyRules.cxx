@@ -305,30 +305,19 @@ void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
     double sum = 0.0;
     // The first end's ring and v are distinct points: appended without a search.
     const bool append = ends == 0;
+    auto put = [&smooth, append](Index source, double weight) {
+      append ? smooth.Append(source, weight) : smooth.Add(source, weight);
+    };
     const Index start = this->RingStart(v, end.second);
     const bool tabled = K >= 3 && K < static_cast<Index>(this->ExtraordinaryWeights.size());
     const double* table = tabled ? this->ExtraordinaryWeights[K].data() : nullptr;
     for (Index j = 0, k = start == K ? 0 : start; j < K; ++j, k = k + 1 == K ? 0 : k + 1)
     {
       const double s = tabled ? table[j] : this->ExtraordinaryWeight(K, j);
-      if (append) // RingFrom(v, end.second, j)
-      {
-        smooth.Append(ring[k], s);
-      }
-      else
-      {
-        smooth.Add(ring[k], s);
-      }
+      put(ring[k], s); // RingFrom(v, end.second, j)
       sum += s;
     }
-    if (append)
-    {
-      smooth.Append(v, 1.0 - sum);
-    }
-    else
-    {
-      smooth.Add(v, 1.0 - sum);
-    }
+    put(v, 1.0 - sum);
     ++ends;
   }
   if (ends == 2) // one end's rule alone is the row as it is

@@ -161,12 +161,24 @@ void MeshTopology::BuildVertexFaces(const ParallelFor& parallelFor)
 
 namespace
 {
+// The corner among a vertex's n that follows corner k around it: the one leaving the vertex
+// by the edge (or, by vertex ids, toward the vertex) that k enters it by; InvalidIndex at
+// the end of an open fan. Matched without branches: the lists are short.
+Index FollowerOf(Index k, Index n, const Index* leaving, const Index* entering)
+{
+  Index follower = InvalidIndex;
+  for (Index j = 0; j < n; ++j)
+  {
+    follower = j != k && leaving[j] == entering[k] ? j : follower;
+  }
+  return follower;
+}
+
 // Counts the fans of a vertex's n <= 32 face corners: corner j follows corner k around the
 // vertex when j leaves it along the edge k enters it by (leaving[j] == entering[k]; called
 // where the vertex's edges are manifold and consistently oriented, so that each corner has
 // at most one follower and one predecessor). The fans are the chains of followers, open
-// (starting at a corner without predecessor) or closed; the followers are matched without
-// branches and each chain walked once.
+// (starting at a corner without predecessor) or closed, each walked once.
 Index CountFansOfCorners(Index n, const Index* leaving, const Index* entering)
 {
   if (n <= 1)
@@ -177,11 +189,7 @@ Index CountFansOfCorners(Index n, const Index* leaving, const Index* entering)
   std::uint32_t hasPredecessor = 0;
   for (Index k = 0; k < n; ++k)
   {
-    Index follower = InvalidIndex;
-    for (Index j = 0; j < n; ++j)
-    {
-      follower = j != k && leaving[j] == entering[k] ? j : follower;
-    }
+    const Index follower = FollowerOf(k, n, leaving, entering);
     next[k] = follower;
     hasPredecessor |= follower == InvalidIndex ? 0u : 1u << follower;
   }
@@ -559,12 +567,7 @@ bool MeshTopology::GetOrderedVertexFaces(
     {
       faces.push_back(vf[current]);
       corners.push_back(vc[current]);
-      Index next = InvalidIndex;
-      for (Index j = 0; j < K; ++j)
-      {
-        next = j != current && leaving[j] == entering[current] ? j : next;
-      }
-      current = next;
+      current = FollowerOf(current, K, leaving, entering);
     }
     return static_cast<Index>(faces.size()) == K;
   }
