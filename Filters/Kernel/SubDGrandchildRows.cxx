@@ -458,15 +458,148 @@ private:
 };
 }
 
+namespace
+{
+// Weighted sums of the level between's points (sources below NumParents), as ApplyRow sums
+// them: each component from 0 over the sources in order, so the bits are ApplyRow's.
+template <typename T>
+struct ParentSums
+{
+  const T* Parents;
+  T* Children;
+  int Components;
+
+  void Average(Index row, const Index* sources, Index size, double weight) const
+  {
+    T* dst = this->Children + static_cast<size_t>(row) * this->Components;
+    if (this->Components == 3)
+    {
+      PointSum point;
+      for (Index k = 0; k < size; ++k)
+      {
+        point.Add(weight, this->Parents + 3 * static_cast<size_t>(sources[k]));
+      }
+      point.Store(dst);
+      return;
+    }
+    for (int c = 0; c < this->Components; ++c)
+    {
+      double sum = 0.0;
+      for (Index k = 0; k < size; ++k)
+      {
+        sum += weight * static_cast<double>(this->Parents[static_cast<size_t>(sources[k]) * this->Components + c]);
+      }
+      dst[c] = static_cast<T>(sum);
+    }
+  }
+};
+
+// The linear rules' rows [begin, end) summed where WriteRowsWith would write them
+// (LinearRows: centroids, midpoints and copies, whose writing costs more than their sums):
+// a child's corners are worked out once for all the edges first met in it, not once per
+// edge, and the vertex rows, C's points in order, are one sweep. Each row is summed as
+// ApplyRow sums LinearRows' row, so the values are the same bits.
+template <typename Shape, typename T>
+void ApplyLinearRows(const MeshTopology& topo, const ChildEdgeNumbering& parentEdges, Index numFaceRows,
+  const ParentSums<T>& sums, Index begin, Index end)
+{
+  const Shape split{ topo };
+  constexpr Index size = Shape::ChildFaceSize;
+  Index corners[4];
+  if constexpr (size == 4) // face points (bilinear): the centroids of C's faces
+  {
+    const IndexArray& faceOffsets = topo.GetFaceOffsetArray();
+    const Index facesEnd = std::min(end, numFaceRows);
+    if (begin < facesEnd)
+    {
+      Index f =
+        static_cast<Index>(std::upper_bound(faceOffsets.begin(), faceOffsets.end(), begin) - faceOffsets.begin()) - 1;
+      for (Index c = begin; c < facesEnd; ++c)
+      {
+        while (faceOffsets[f + 1] <= c)
+        {
+          ++f;
+        }
+        split.GetChildCorners(f, c - faceOffsets[f], corners);
+        sums.Average(c, corners, 4, 1.0 / 4);
+      }
+    }
+  }
+
+  // Edge points: the midpoints of C's edges, in the order the walk over P's faces' children
+  // first meets them.
+  const IndexArray& firstEdge = parentEdges.FirstEdgeOfFace;
+  const Index numChildEdges = firstEdge.back();
+  const Index edgesBegin = std::max(begin, numFaceRows) - numFaceRows;
+  const Index edgesEnd = std::min(end, numFaceRows + numChildEdges) - numFaceRows;
+  if (edgesBegin < edgesEnd)
+  {
+    Index f = static_cast<Index>(std::upper_bound(firstEdge.begin(), firstEdge.end(), edgesBegin) - firstEdge.begin()) - 1;
+    for (; f < topo.GetNumFaces() && firstEdge[f] < edgesEnd; ++f)
+    {
+      Index next = firstEdge[f];
+      Index cornersOf = InvalidIndex; // the child whose corners `corners` holds
+      split.VisitCorners(f, [&](Index corner, Index, bool isNew) {
+        if (!isNew)
+        {
+          return;
+        }
+        const Index k = next++;
+        if (k < edgesBegin || k >= edgesEnd)
+        {
+          return;
+        }
+        const Index child = corner / size, slot = corner % size;
+        if (child != cornersOf)
+        {
+          split.GetChildCorners(f, child - split.CornerChild(f, 0), corners);
+          cornersOf = child;
+        }
+        const Index ends[2] = { corners[slot], corners[slot + 1 == size ? 0 : slot + 1] };
+        sums.Average(numFaceRows + k, ends, 2, 0.5);
+      });
+    }
+  }
+
+  // Vertex points: C's points, each summed as a row of one entry of weight 1 (0 + x: a
+  // negative zero comes out positive, as from ApplyRow).
+  const Index firstVertexRow = numFaceRows + numChildEdges;
+  const Index rowsBegin = std::max(begin, firstVertexRow);
+  if (rowsBegin < end)
+  {
+    const size_t components = static_cast<size_t>(sums.Components);
+    const T* src = sums.Parents + static_cast<size_t>(rowsBegin - firstVertexRow) * components;
+    T* dst = sums.Children + static_cast<size_t>(rowsBegin) * components;
+    const size_t count = static_cast<size_t>(end - rowsBegin) * components;
+    for (size_t i = 0; i < count; ++i)
+    {
+      dst[i] = static_cast<T>(0.0 + static_cast<double>(src[i]));
+    }
+  }
+}
+}
+
 template <typename T>
 void GrandchildRows::Apply(const T* parents, T* children, int components, Index begin, Index end) const
 {
+  if (WritesEveryRowFromGrandparent(this->Scheme))
+  {
+    const MeshTopology& topo = this->Grandparent->Topology;
+    const ParentSums<T> sums{ parents, children, components };
+    if (IsQuadSplit(this->Scheme))
+    {
+      ApplyLinearRows<QuadSplitShape>(topo, this->ParentEdges, this->NumFaceRows, sums, begin, end);
+    }
+    else
+    {
+      ApplyLinearRows<TriangleSplitShape>(topo, this->ParentEdges, this->NumFaceRows, sums, begin, end);
+    }
+    return;
+  }
   std::vector<Index> buffers(4 * static_cast<size_t>(this->MaxRowSize)); // sources, a point's lists
   std::vector<double> weights(static_cast<size_t>(this->MaxRowSize));
-  // The linear rules' rows cost next to nothing to write, so there is nothing to hide the
-  // fetches behind (measured: no gain); they and other values than points are applied as
-  // written.
-  if (components != 3 || WritesEveryRowFromGrandparent(this->Scheme))
+  // Other values than points are applied as written.
+  if (components != 3)
   {
     std::vector<double> sum(static_cast<size_t>(components));
     this->WriteRows(begin, end, buffers.data(), weights.data(),

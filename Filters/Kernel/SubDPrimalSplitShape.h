@@ -54,15 +54,21 @@ struct QuadSplitShape
   {
     const IndexSpan fe = this->Parent.GetFaceEdges(f);
     const Index n = fe.size(), first = this->Parent.GetFaceOffset(f);
+    // Each edge's first face is looked up once (two dependent reads out of order), though
+    // two children hold a half of it.
+    const bool lastMetHere = IsFirstFace(this->Parent, fe[n - 1], f);
+    bool previousMetHere = lastMetHere;
     for (Index j = 0; j < n; ++j)
     {
       const Index h = first + j;
+      const bool metHere = j + 1 == n ? lastMetHere : IsFirstFace(this->Parent, fe[j], f);
       Index keys[4];
       this->GetChildEdgeKeys(f, j, keys);
-      visit(4 * h, keys[0], IsFirstFace(this->Parent, fe[j], f));
+      visit(4 * h, keys[0], metHere);
       visit(4 * h + 1, keys[1], j != n - 1);
       visit(4 * h + 2, keys[2], j == 0);
-      visit(4 * h + 3, keys[3], IsFirstFace(this->Parent, fe[j == 0 ? n - 1 : j - 1], f));
+      visit(4 * h + 3, keys[3], previousMetHere);
+      previousMetHere = metHere;
     }
   }
   // The keys of the edges leaving the corners of the child of f at its corner j: the half of
@@ -154,15 +160,18 @@ struct TriangleSplitShape
   void VisitCorners(Index f, Visit&& visit) const
   {
     const IndexSpan fe = this->Parent.GetFaceEdges(f);
+    // Each edge's first face looked up once (as for quads).
+    const bool metHere[3] = { IsFirstFace(this->Parent, fe[0], f), IsFirstFace(this->Parent, fe[1], f),
+      IsFirstFace(this->Parent, fe[2], f) };
     for (Index j = 0; j < 4; ++j)
     {
       Index keys[3];
       this->GetChildEdgeKeys(f, j, keys);
       const Index corner = 12 * f + 3 * j;
       const bool middle = j == 3;
-      visit(corner, keys[0], !middle && IsFirstFace(this->Parent, fe[j], f));
+      visit(corner, keys[0], !middle && metHere[j]);
       visit(corner + 1, keys[1], !middle);
-      visit(corner + 2, keys[2], !middle && IsFirstFace(this->Parent, fe[j == 0 ? 2 : j - 1], f));
+      visit(corner + 2, keys[2], !middle && metHere[j == 0 ? 2 : j - 1]);
     }
   }
   // The keys of the edges leaving the corners of f's child j: for a corner child, the half of
