@@ -537,6 +537,21 @@ void ApplyLinearRows(const MeshTopology& topo, const ChildEdgeNumbering& parentE
     Index f = static_cast<Index>(std::upper_bound(firstEdge.begin(), firstEdge.end(), edgesBegin) - firstEdge.begin()) - 1;
     for (; f < topo.GetNumFaces() && firstEdge[f] < edgesEnd; ++f)
     {
+      // The sums wait on their points (C's points of a face are scattered): ask for a later
+      // face's ahead of summing them. The children at a face's corners hold all its points.
+      constexpr Index ahead = 8;
+      if (f + ahead < topo.GetNumFaces())
+      {
+        Index later[4];
+        for (Index c = 0; c < topo.GetFaceSize(f + ahead); ++c)
+        {
+          split.GetChildCorners(f + ahead, c, later);
+          for (Index k = 0; k < size; ++k)
+          {
+            PrefetchPoint(sums.Parents + static_cast<size_t>(later[k]) * sums.Components);
+          }
+        }
+      }
       Index next = firstEdge[f];
       Index cornersOf = InvalidIndex; // the child whose corners `corners` holds
       split.VisitCorners(f, [&](Index corner, Index, bool isNew) {
@@ -672,6 +687,17 @@ MeshTopology SplitTwiceFacesWith(const Shape& shape, const MeshTopology& topo, c
   parallelFor(0, topo.GetNumFaces(), [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {
+      // A face's edges are read out of order (their ends, their halves' numbers): asked for
+      // a few faces ahead.
+      constexpr Index ahead = 8;
+      if (f + ahead < end)
+      {
+        for (Index e : topo.GetFaceEdges(f + ahead))
+        {
+          PrefetchForRead(topo.GetEdgeVertices(e));
+          PrefetchForRead(parentEdges.EdgeOfKey.data() + 2 * static_cast<size_t>(e));
+        }
+      }
       for (Index j = 0; j < shape.GetNumChildren(f); ++j)
       {
         const Index c = shape.CornerChild(f, j);

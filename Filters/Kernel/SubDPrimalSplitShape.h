@@ -25,9 +25,17 @@
 namespace subd
 {
 // Walking the faces in order, an edge is first met in the first of its faces (they are
-// listed in increasing order).
-inline bool IsFirstFace(const MeshTopology& topo, Index e, Index f)
+// listed in increasing order). Where no edge is non-manifold, an edge has one face or two
+// that run it opposite ways, and the first is the one whose half-edge along it starts where
+// the edge does (an edge takes its ends from its first half-edge): one read, where the
+// edge's list of faces takes two dependent ones. `from` is the vertex f's half-edge along e
+// starts at.
+inline bool IsFirstFace(const MeshTopology& topo, Index e, Index f, Index from)
 {
+  if (topo.GetNumNonManifoldEdges() == 0)
+  {
+    return topo.GetEdgeVertices(e)[0] == from;
+  }
   return topo.GetEdgeFaces(e)[0] == f;
 }
 
@@ -52,16 +60,16 @@ struct QuadSplitShape
   template <typename Visit>
   void VisitCorners(Index f, Visit&& visit) const
   {
-    const IndexSpan fe = this->Parent.GetFaceEdges(f);
+    const IndexSpan fv = this->Parent.GetFaceVertices(f), fe = this->Parent.GetFaceEdges(f);
     const Index n = fe.size(), first = this->Parent.GetFaceOffset(f);
-    // Each edge's first face is looked up once (two dependent reads out of order), though
-    // two children hold a half of it.
-    const bool lastMetHere = IsFirstFace(this->Parent, fe[n - 1], f);
+    // Each edge's first face is looked up once (a read out of order), though two children
+    // hold a half of it.
+    const bool lastMetHere = IsFirstFace(this->Parent, fe[n - 1], f, fv[n - 1]);
     bool previousMetHere = lastMetHere;
     for (Index j = 0; j < n; ++j)
     {
       const Index h = first + j;
-      const bool metHere = j + 1 == n ? lastMetHere : IsFirstFace(this->Parent, fe[j], f);
+      const bool metHere = j + 1 == n ? lastMetHere : IsFirstFace(this->Parent, fe[j], f, fv[j]);
       Index keys[4];
       this->GetChildEdgeKeys(f, j, keys);
       visit(4 * h, keys[0], metHere);
@@ -159,10 +167,10 @@ struct TriangleSplitShape
   template <typename Visit>
   void VisitCorners(Index f, Visit&& visit) const
   {
-    const IndexSpan fe = this->Parent.GetFaceEdges(f);
+    const IndexSpan fv = this->Parent.GetFaceVertices(f), fe = this->Parent.GetFaceEdges(f);
     // Each edge's first face looked up once (as for quads).
-    const bool metHere[3] = { IsFirstFace(this->Parent, fe[0], f), IsFirstFace(this->Parent, fe[1], f),
-      IsFirstFace(this->Parent, fe[2], f) };
+    const bool metHere[3] = { IsFirstFace(this->Parent, fe[0], f, fv[0]), IsFirstFace(this->Parent, fe[1], f, fv[1]),
+      IsFirstFace(this->Parent, fe[2], f, fv[2]) };
     for (Index j = 0; j < 4; ++j)
     {
       Index keys[3];
