@@ -74,6 +74,9 @@ public:
   /// RestoreVertexFaceLists, GetVertexFaces and GetVertexFaceCorners give spans of the right
   /// size and no data (a null pointer: reading them faults at once).
   void ReleaseVertexFaceLists();
+  /// False for a level between split with ChildTopology::FacesAndEdges (and a faces-only
+  /// one): no list, count or tag around its vertices, no valence.
+  bool HasVertexRelations() const { return VertexEdgeOffsets.size() == static_cast<size_t>(NumVertices) + 1; }
   bool HasVertexFaceLists() const { return !VertexFaces.empty() || FaceVertices.empty(); }
   /// Builds the lists again, as Build made them (each vertex's faces in increasing order).
   void RestoreVertexFaceLists(const ParallelFor& parallelFor = SerialFor);

@@ -12,12 +12,12 @@ struct PrimalChildAssembly
 {
   template <typename Shape>
   static MeshTopology Assemble(const Shape& shape, IndexArray offsets, IndexArray vertices,
-    const ParallelFor& parallelFor);
+    const ParallelFor& parallelFor, ChildTopology depth);
 };
 
 template <typename Shape>
 MeshTopology PrimalChildAssembly::Assemble(
-  const Shape& shape, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
+  const Shape& shape, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor, ChildTopology depth)
 {
   const MeshTopology& parent = shape.Parent;
   const Index numFaces = parent.GetNumFaces();
@@ -101,6 +101,11 @@ MeshTopology PrimalChildAssembly::Assemble(
     });
   });
 
+  if (depth == ChildTopology::FacesAndEdges)
+  {
+    return child; // nothing around vertices
+  }
+
   // Vertex relations, by the kind of point: face points, edge points, vertex points.
   const size_t numSlots = static_cast<size_t>(numChildVertices) + 1;
   child.VertexFaceOffsets.resize(numSlots); // counts of every point below
@@ -162,17 +167,18 @@ MeshTopology PrimalChildAssembly::Assemble(
   return child;
 }
 
-MeshTopology PrimalChildTopology::OfQuadSplit(const MeshTopology& parent, IndexArray offsets,
-  IndexArray vertices, const ParallelFor& parallelFor)
+MeshTopology PrimalChildTopology::OfQuadSplit(const MeshTopology& parent, IndexArray offsets, IndexArray vertices,
+  const ParallelFor& parallelFor, ChildTopology depth)
 {
-  return PrimalChildAssembly::Assemble(QuadSplitShape{ parent }, std::move(offsets), std::move(vertices), parallelFor);
+  return PrimalChildAssembly::Assemble(
+    QuadSplitShape{ parent }, std::move(offsets), std::move(vertices), parallelFor, depth);
 }
 
 MeshTopology PrimalChildTopology::OfTriangleSplit(const MeshTopology& parent, IndexArray offsets,
-  IndexArray vertices, const ParallelFor& parallelFor)
+  IndexArray vertices, const ParallelFor& parallelFor, ChildTopology depth)
 {
   return PrimalChildAssembly::Assemble(
-    TriangleSplitShape{ parent }, std::move(offsets), std::move(vertices), parallelFor);
+    TriangleSplitShape{ parent }, std::move(offsets), std::move(vertices), parallelFor, depth);
 }
 
 void PrimalChildTopology::SetChildLevel(const Level& parent, Level& child, Split split, Index numChildVertices,
@@ -187,8 +193,11 @@ void PrimalChildTopology::SetChildLevel(const Level& parent, Level& child, Split
   child.Depth = parent.Depth + 1;
   child.Creasing = parent.Creasing;
   child.Topology = split == Split::Quads
-    ? OfQuadSplit(parent.Topology, std::move(offsets), std::move(vertices), parallelFor)
-    : OfTriangleSplit(parent.Topology, std::move(offsets), std::move(vertices), parallelFor);
-  InheritPrimalSharpness(parent, child, firstEdgePoint, firstVertexPoint);
+    ? OfQuadSplit(parent.Topology, std::move(offsets), std::move(vertices), parallelFor, depth)
+    : OfTriangleSplit(parent.Topology, std::move(offsets), std::move(vertices), parallelFor, depth);
+  if (depth == ChildTopology::Full) // a level of faces and edges is for rules without sharpness
+  {
+    InheritPrimalSharpness(parent, child, firstEdgePoint, firstVertexPoint);
+  }
 }
 }

@@ -21,10 +21,13 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   const bool finestFromGrandparentIfSmooth = finest == ChildTopology::FacesOnly &&
     (levelRows == LevelRows::WrittenFromGrandparent || levelRows == LevelRows::WrittenLean);
   bool parentSkipped = false; // the finest level's parent was not built
+  // A full finest level is split from a full parent; else the levels between have what the
+  // scheme reads of them.
+  const ChildTopology between = finest == ChildTopology::FacesOnly ? scheme.GetTopologyBetween() : ChildTopology::Full;
   for (int l = 0; l < levels; ++l)
   {
     const bool last = l + 1 == levels;
-    const ChildTopology depth = last ? finest : ChildTopology::Full;
+    const ChildTopology depth = last ? finest : between;
     bool refined = false;
     // Every other level, ending with the finest, from its grandparent: the largest topology of
     // all, the finest level's parent, need not outlive its step, nor do the ones two, four...

@@ -93,6 +93,14 @@ public:
     GrandchildScheme which;
     return this->GetGrandchildScheme(which) && EveryGrandchildRowIsSmooth(which, grandparent);
   }
+  /// How much of the levels between the base and a faces-only finest level Refine builds: the
+  /// full topology, except for the linear rules, whose rows, splits and grandchild rows read
+  /// faces and edges only (the faces of an edge where it is non-manifold): the lists and tags
+  /// around each vertex, about half of a level's topology, are then never made.
+  ChildTopology GetTopologyBetween() const
+  {
+    return this->RefinesFromGrandparentAlone() ? ChildTopology::FacesAndEdges : ChildTopology::Full;
+  }
   /// Whether a level kept for the rows of its grandchild, written from it with its child
   /// skipped, is still read for the lists of faces around its vertices: by its own rows, the
   /// grandchild's rows or faces. Loop's rules read vertex rings through edges and only count

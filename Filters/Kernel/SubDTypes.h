@@ -138,10 +138,14 @@ SUBDKERNEL_EXPORT const char* ToString(BoundaryRule rule);
 /// How much of a child level's topology a split builds. The last level of a refinement only
 /// needs its faces (to be output); its edges and incidence relations, the costliest part of a
 /// level at four times the size of the one before, are only built when another level follows.
+/// A level between read by rules that only ask for faces and edges (the linear rules) needs
+/// no relation around its vertices, nor sharpness (FacesAndEdges: the primal splits; see
+/// Scheme::GetTopologyBetween).
 enum class ChildTopology : int
 {
   Full = 0,
-  FacesOnly = 1
+  FacesOnly = 1,
+  FacesAndEdges = 2
 };
 }
 

@@ -225,6 +225,43 @@ void ExpectSplitKnowsItsChild(const subdtest::TestMesh& mesh, Split split, const
   }
 }
 
+// A primal split with faces and edges only (the linear rules' levels between), level after
+// level from such parents, has the faces, edges, edge faces and edge tags of the full split,
+// and nothing around its vertices.
+template <typename Split>
+void ExpectFacesAndEdgesOfTheFullSplit(const subdtest::TestMesh& mesh, Split split, const std::string& what)
+{
+  subd::Level full = subdtest::BaseLevel(mesh), lean = subdtest::BaseLevel(mesh);
+  for (int l = 1; l <= 3; ++l)
+  {
+    SCOPED_TRACE(what + " level " + std::to_string(l));
+    full = split(full, subd::ChildTopology::Full, subdtest::ThreeThreadFor);
+    lean = split(lean, subd::ChildTopology::FacesAndEdges, subdtest::ThreeThreadFor);
+    const MeshTopology& a = full.Topology;
+    const MeshTopology& b = lean.Topology;
+    EXPECT_TRUE(a.HasVertexRelations());
+    EXPECT_FALSE(b.HasVertexRelations());
+    ASSERT_EQ(a.GetNumVertices(), b.GetNumVertices());
+    ASSERT_EQ(a.GetNumEdges(), b.GetNumEdges());
+    EXPECT_EQ(a.GetFaceOffsetArray(), b.GetFaceOffsetArray());
+    EXPECT_EQ(a.GetFaceVertexArray(), b.GetFaceVertexArray());
+    EXPECT_EQ(a.GetNumBoundaryEdges(), b.GetNumBoundaryEdges());
+    EXPECT_EQ(a.GetNumNonManifoldEdges(), b.GetNumNonManifoldEdges());
+    for (Index f = 0; f < a.GetNumFaces(); ++f)
+    {
+      EXPECT_TRUE(SameSpan(a.GetFaceEdges(f), b.GetFaceEdges(f))) << "face " << f;
+    }
+    for (Index e = 0; e < a.GetNumEdges(); ++e)
+    {
+      EXPECT_EQ(a.GetEdgeVertices(e)[0], b.GetEdgeVertices(e)[0]) << "edge " << e;
+      EXPECT_EQ(a.GetEdgeVertices(e)[1], b.GetEdgeVertices(e)[1]) << "edge " << e;
+      EXPECT_TRUE(SameSpan(a.GetEdgeFaces(e), b.GetEdgeFaces(e))) << "edge " << e;
+      EXPECT_EQ(a.GetEdgeTag(e).Boundary, b.GetEdgeTag(e).Boundary) << "edge " << e;
+      EXPECT_EQ(a.GetEdgeTag(e).NonManifold, b.GetEdgeTag(e).NonManifold) << "edge " << e;
+    }
+  }
+}
+
 // Meshes with every kind of vertex the tags distinguish: boundary, non-manifold edges,
 // bow-ties, pinched fans, inconsistent orientation, an isolated vertex.
 std::vector<subdtest::TestMesh> TagFixtures()
@@ -244,6 +281,7 @@ TEST(MeshTopology, QuadSplitChildEqualsSearchedTopology)
   int i = 0;
   for (const subdtest::TestMesh& mesh : TagFixtures())
   {
+    ExpectFacesAndEdgesOfTheFullSplit(mesh, subd::SplitQuads, "mesh " + std::to_string(i));
     ExpectSplitKnowsItsChild(mesh, subd::SplitQuads, "mesh " + std::to_string(i++));
   }
 }
@@ -255,6 +293,7 @@ TEST(MeshTopology, TriangleSplitChildEqualsSearchedTopology)
   meshes.push_back(TagFixtures().back());
   for (const subdtest::TestMesh& mesh : meshes)
   {
+    ExpectFacesAndEdgesOfTheFullSplit(mesh, subd::SplitTriangles, "mesh " + std::to_string(i));
     ExpectSplitKnowsItsChild(mesh, subd::SplitTriangles, "mesh " + std::to_string(i++));
   }
 }
