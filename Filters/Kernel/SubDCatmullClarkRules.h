@@ -137,7 +137,7 @@ inline void CatmullClarkRowWriter::PrefetchRow(Index row, const T* parents, cons
 // sharp at or around them and a closed fan (PlanVertexRule's smooth case), from the edge
 // points. Sources and weights in WriteRow's order.
 template <typename T>
-inline bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
+SUBD_ALWAYS_INLINE bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
 {
   const MeshTopology& topo = this->Topology;
   if (!this->IsSmoothRow(row))

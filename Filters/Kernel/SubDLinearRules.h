@@ -42,7 +42,7 @@ private:
 };
 
 template <typename T>
-inline bool LinearRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
+SUBD_ALWAYS_INLINE bool LinearRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
 {
   PointSum point;
   if (row < this->FirstEdgeRow)

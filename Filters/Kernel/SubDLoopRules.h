@@ -124,7 +124,7 @@ inline void LoopRowWriter::PrefetchRow(Index row, const T* parents, const T* chi
 }
 
 template <typename T>
-inline bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
+SUBD_ALWAYS_INLINE bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
 {
   if (!this->IsSmoothRow(row))
   {

