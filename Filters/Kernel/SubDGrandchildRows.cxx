@@ -168,6 +168,56 @@ struct LinearRows : ParentFromGrandparent<SplitShape>
   }
 };
 
+// C's faces c in [begin, end) on the quad split, c being child j of P's face f:
+// visit(c, f, j).
+template <typename Visit>
+void ForEachQuadSplitChild(const IndexArray& faceOffsets, Index begin, Index end, Visit&& visit)
+{
+  if (begin >= end)
+  {
+    return;
+  }
+  Index f = static_cast<Index>(std::upper_bound(faceOffsets.begin(), faceOffsets.end(), begin) - faceOffsets.begin()) - 1;
+  for (Index c = begin; c < end; ++c)
+  {
+    while (faceOffsets[f + 1] <= c)
+    {
+      ++f;
+    }
+    visit(c, f, c - faceOffsets[f]);
+  }
+}
+
+// C's edges k in [begin, end), numbered as the walk over P's faces' children first meets
+// them: visit(k, f, corner, key) for the edge first met at `corner` of P's face f's children,
+// with key `key`; startFace(f) before each face of P the walk reads.
+template <typename Shape, typename StartFace, typename Visit>
+void ForEachChildEdge(const Shape& split, const IndexArray& firstEdge, Index begin, Index end, StartFace&& startFace,
+  Visit&& visit)
+{
+  if (begin >= end)
+  {
+    return;
+  }
+  Index f = static_cast<Index>(std::upper_bound(firstEdge.begin(), firstEdge.end(), begin) - firstEdge.begin()) - 1;
+  for (; f < split.Parent.GetNumFaces() && firstEdge[f] < end; ++f)
+  {
+    startFace(f);
+    Index next = firstEdge[f];
+    split.VisitCorners(f, [&](Index corner, Index key, bool isNew) {
+      if (!isNew)
+      {
+        return;
+      }
+      const Index k = next++;
+      if (k >= begin && k < end)
+      {
+        visit(k, f, corner, key);
+      }
+    });
+  }
+}
+
 // The rows `writer` (over the parent C) has no smooth form for, from row `first` on.
 template <typename Writer>
 void StoreRowsWithoutSmoothForm(const Writer& writer, Index first, std::vector<Index>& rows, StencilTable& table)
@@ -323,48 +373,18 @@ void GrandchildRows::WriteRowsWith(Index begin, Index end, Index* buffers, doubl
   // Face points (Catmull-Clark): C's faces, the children of P's faces corner by corner.
   if constexpr (Rules::HasFaceRows)
   {
-    const IndexArray& faceOffsets = topo.GetFaceOffsetArray();
-    const Index facesEnd = std::min(end, this->NumFaceRows);
-    if (begin < facesEnd)
-    {
-      Index f =
-        static_cast<Index>(std::upper_bound(faceOffsets.begin(), faceOffsets.end(), begin) - faceOffsets.begin()) - 1;
-      for (Index c = begin; c < facesEnd; ++c)
-      {
-        while (faceOffsets[f + 1] <= c)
-        {
-          ++f;
-        }
-        put(c, [&] { return rules.WriteFaceRow(f, c - faceOffsets[f], sources, weights); });
-      }
-    }
+    ForEachQuadSplitChild(topo.GetFaceOffsetArray(), begin, std::min(end, this->NumFaceRows),
+      [&](Index c, Index f, Index j) { put(c, [&] { return rules.WriteFaceRow(f, j, sources, weights); }); });
   }
 
   // Edge points: C's edges, numbered as the walk over P's faces' children first meets them.
   const Index firstEdgeRow = this->NumFaceRows;
   const Index numChildEdges = this->ParentEdges.FirstEdgeOfFace.back();
-  const Index edgesBegin = std::max(begin, firstEdgeRow) - firstEdgeRow;
-  const Index edgesEnd = std::min(end, firstEdgeRow + numChildEdges) - firstEdgeRow;
-  if (edgesBegin < edgesEnd)
-  {
-    const IndexArray& firstEdge = this->ParentEdges.FirstEdgeOfFace;
-    Index f = static_cast<Index>(std::upper_bound(firstEdge.begin(), firstEdge.end(), edgesBegin) - firstEdge.begin()) - 1;
-    for (; f < topo.GetNumFaces() && firstEdge[f] < edgesEnd; ++f)
-    {
-      Index next = firstEdge[f];
-      rules.Split.VisitCorners(f, [&](Index corner, Index key, bool isNew) {
-        if (!isNew)
-        {
-          return;
-        }
-        const Index k = next++;
-        if (k >= edgesBegin && k < edgesEnd)
-        {
-          put(firstEdgeRow + k, [&] { return rules.WriteEdgeRow(f, corner, key, sources, weights); });
-        }
-      });
-    }
-  }
+  ForEachChildEdge(rules.Split, this->ParentEdges.FirstEdgeOfFace, std::max(begin, firstEdgeRow) - firstEdgeRow,
+    std::min(end, firstEdgeRow + numChildEdges) - firstEdgeRow, [](Index) {},
+    [&](Index k, Index f, Index corner, Index key) {
+      put(firstEdgeRow + k, [&] { return rules.WriteEdgeRow(f, corner, key, sources, weights); });
+    });
 
   // Vertex points: C's points.
   const Index firstVertexRow = firstEdgeRow + numChildEdges;
@@ -508,73 +528,45 @@ void ApplyLinearRows(const MeshTopology& topo, const ChildEdgeNumbering& parentE
   Index corners[4];
   if constexpr (size == 4) // face points (bilinear): the centroids of C's faces
   {
-    const IndexArray& faceOffsets = topo.GetFaceOffsetArray();
-    const Index facesEnd = std::min(end, numFaceRows);
-    if (begin < facesEnd)
-    {
-      Index f =
-        static_cast<Index>(std::upper_bound(faceOffsets.begin(), faceOffsets.end(), begin) - faceOffsets.begin()) - 1;
-      for (Index c = begin; c < facesEnd; ++c)
-      {
-        while (faceOffsets[f + 1] <= c)
-        {
-          ++f;
-        }
-        split.GetChildCorners(f, c - faceOffsets[f], corners);
-        sums.Average(c, corners, 4, 1.0 / 4);
-      }
-    }
+    ForEachQuadSplitChild(topo.GetFaceOffsetArray(), begin, std::min(end, numFaceRows), [&](Index c, Index f, Index j) {
+      split.GetChildCorners(f, j, corners);
+      sums.Average(c, corners, 4, 1.0 / 4);
+    });
   }
 
   // Edge points: the midpoints of C's edges, in the order the walk over P's faces' children
   // first meets them.
-  const IndexArray& firstEdge = parentEdges.FirstEdgeOfFace;
-  const Index numChildEdges = firstEdge.back();
-  const Index edgesBegin = std::max(begin, numFaceRows) - numFaceRows;
-  const Index edgesEnd = std::min(end, numFaceRows + numChildEdges) - numFaceRows;
-  if (edgesBegin < edgesEnd)
-  {
-    Index f = static_cast<Index>(std::upper_bound(firstEdge.begin(), firstEdge.end(), edgesBegin) - firstEdge.begin()) - 1;
-    for (; f < topo.GetNumFaces() && firstEdge[f] < edgesEnd; ++f)
+  const Index numChildEdges = parentEdges.FirstEdgeOfFace.back();
+  Index cornersOf = InvalidIndex; // the child whose corners `corners` holds
+  auto askForLaterPoints = [&](Index f) {
+    // The sums wait on their points (C's points of a face are scattered): ask for a later
+    // face's ahead of summing them. The children at a face's corners hold all its points.
+    constexpr Index ahead = 8;
+    if (f + ahead < topo.GetNumFaces())
     {
-      // The sums wait on their points (C's points of a face are scattered): ask for a later
-      // face's ahead of summing them. The children at a face's corners hold all its points.
-      constexpr Index ahead = 8;
-      if (f + ahead < topo.GetNumFaces())
+      Index later[4];
+      for (Index c = 0; c < topo.GetFaceSize(f + ahead); ++c)
       {
-        Index later[4];
-        for (Index c = 0; c < topo.GetFaceSize(f + ahead); ++c)
+        split.GetChildCorners(f + ahead, c, later);
+        for (Index k = 0; k < size; ++k)
         {
-          split.GetChildCorners(f + ahead, c, later);
-          for (Index k = 0; k < size; ++k)
-          {
-            PrefetchPoint(sums.Parents + static_cast<size_t>(later[k]) * sums.Components);
-          }
+          PrefetchPoint(sums.Parents + static_cast<size_t>(later[k]) * sums.Components);
         }
       }
-      Index next = firstEdge[f];
-      Index cornersOf = InvalidIndex; // the child whose corners `corners` holds
-      split.VisitCorners(f, [&](Index corner, Index, bool isNew) {
-        if (!isNew)
-        {
-          return;
-        }
-        const Index k = next++;
-        if (k < edgesBegin || k >= edgesEnd)
-        {
-          return;
-        }
-        const Index child = corner / size, slot = corner % size;
-        if (child != cornersOf)
-        {
-          split.GetChildCorners(f, child - split.CornerChild(f, 0), corners);
-          cornersOf = child;
-        }
-        const Index ends[2] = { corners[slot], corners[slot + 1 == size ? 0 : slot + 1] };
-        sums.Average(numFaceRows + k, ends, 2, 0.5);
-      });
     }
-  }
+  };
+  ForEachChildEdge(split, parentEdges.FirstEdgeOfFace, std::max(begin, numFaceRows) - numFaceRows,
+    std::min(end, numFaceRows + numChildEdges) - numFaceRows, askForLaterPoints,
+    [&](Index k, Index f, Index corner, Index) {
+      const Index child = corner / size, slot = corner % size;
+      if (child != cornersOf)
+      {
+        split.GetChildCorners(f, child - split.CornerChild(f, 0), corners);
+        cornersOf = child;
+      }
+      const Index ends[2] = { corners[slot], corners[slot + 1 == size ? 0 : slot + 1] };
+      sums.Average(numFaceRows + k, ends, 2, 0.5);
+    });
 
   // Vertex points: C's points, each summed as a row of one entry of weight 1 (0 + x: a
   // negative zero comes out positive, as from ApplyRow).
