@@ -23,6 +23,18 @@ double ButterflyExtraordinaryWeight(Index K, Index j)
   return (0.25 + std::cos(2.0 * pi * j / K) + 0.5 * std::cos(4.0 * pi * j / K)) / K;
 }
 
+ButterflyWeightTable::ButterflyWeightTable()
+  : Weights(32)
+{
+  for (Index K = 3; K < static_cast<Index>(this->Weights.size()); ++K)
+  {
+    for (Index j = 0; j < K; ++j)
+    {
+      this->Weights[K].push_back(ButterflyExtraordinaryWeight(K, j));
+    }
+  }
+}
+
 StencilTable BuildButterflyStencils(const Level& parent, double tension, const ParallelFor& parallelFor)
 {
   const MeshTopology& topo = parent.Topology;
@@ -131,22 +143,6 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
   // A row holds at most the crease rule's 4 sources and the smooth rule's: 10 for the
   // butterfly, K + 1 for each extraordinary end.
   this->RowBound = std::max<Index>(16, 6 + 2 * this->Topology.GetMaxValence());
-  this->ExtraordinaryWeights.resize(32);
-  for (Index K = 3; K < 32; ++K)
-  {
-    for (Index j = 0; j < K; ++j)
-    {
-      this->ExtraordinaryWeights[K].push_back(ButterflyExtraordinaryWeight(K, j));
-    }
-  }
-}
-
-double ButterflyRowWriter::ExtraordinaryWeight(Index K, Index j) const
-{
-  // The table covers Zorin's valences 3..31; a ring of 1 or 2 faces (a degenerate, closed
-  // double-sided fan) takes the general formula too.
-  return K >= 3 && K < static_cast<Index>(this->ExtraordinaryWeights.size()) ? this->ExtraordinaryWeights[K][j]
-                                                                            : ButterflyExtraordinaryWeight(K, j);
 }
 
 // The vertex across edge (x, b) of triangle `face`, from the other triangle on that edge
@@ -302,22 +298,15 @@ void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
     }
     const Index K = this->RingValence(v);
     const Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
-    double sum = 0.0;
-    // The first end's ring and v are distinct points: appended without a search.
+    // The first end's ring and v are distinct points: appended without a search. The table
+    // covers Zorin's valences 3..31; a ring of 1 or 2 faces (a degenerate, closed
+    // double-sided fan) takes the general formula too.
     const bool append = ends == 0;
-    auto put = [&smooth, append](Index source, double weight) {
-      append ? smooth.Append(source, weight) : smooth.Add(source, weight);
-    };
-    const Index start = this->RingStart(v, end.second);
-    const bool tabled = K >= 3 && K < static_cast<Index>(this->ExtraordinaryWeights.size());
-    const double* table = tabled ? this->ExtraordinaryWeights[K].data() : nullptr;
-    for (Index j = 0, k = start == K ? 0 : start; j < K; ++j, k = k + 1 == K ? 0 : k + 1)
-    {
-      const double s = tabled ? table[j] : this->ExtraordinaryWeight(K, j);
-      put(ring[k], s); // RingFrom(v, end.second, j)
-      sum += s;
-    }
-    put(v, 1.0 - sum);
+    PutButterflyExtraordinaryStencil(
+      v, K, this->RingStart(v, end.second), this->ExtraordinaryWeights.Get(K), [ring](Index k) { return ring[k]; },
+      [&smooth, append](Index source, double weight) {
+        append ? smooth.Append(source, weight) : smooth.Add(source, weight);
+      });
     ++ends;
   }
   if (ends == 2) // one end's rule alone is the row as it is
@@ -389,6 +378,22 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
     }
   }
   return repeated ? 0 : size;
+}
+
+bool ButterflyRowWriter::IsSmoothRow(Index row) const
+{
+  const MeshTopology& topo = this->Topology;
+  if (row >= topo.GetNumEdges())
+  {
+    return true;
+  }
+  if (topo.GetEdgeFaces(row).size() != 2 || topo.GetEdgeTag(row).NonManifold || this->Parent.EdgeSharpness[row] != 0.0f)
+  {
+    return false;
+  }
+  const std::uint8_t kind0 = this->RingKinds[topo.GetEdgeVertices(row)[0]];
+  const std::uint8_t kind1 = this->RingKinds[topo.GetEdgeVertices(row)[1]];
+  return (kind0 == SmoothRegularRing && kind1 != NoSmoothRing) || (kind1 == SmoothRegularRing && kind0 != NoSmoothRing);
 }
 
 Index ButterflyRowWriter::WriteRow(Index row, Index* sources, double* weights) const

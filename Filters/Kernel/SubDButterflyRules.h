@@ -43,6 +43,40 @@ namespace subd
 /// itself gets 1 - sum_j s_j = 3/4).
 SUBDKERNEL_EXPORT double ButterflyExtraordinaryWeight(Index K, Index j);
 
+/// ButterflyExtraordinaryWeight for the valences 3..31, worked out once (two cosines per
+/// weight otherwise).
+class SUBDKERNEL_EXPORT ButterflyWeightTable
+{
+public:
+  ButterflyWeightTable();
+  /// s_0 .. s_{K-1} of valence K, or null when K is not in the table.
+  const double* Get(Index K) const
+  {
+    return K >= 3 && K < static_cast<Index>(this->Weights.size()) ? this->Weights[K].data() : nullptr;
+  }
+
+private:
+  std::vector<std::vector<double>> Weights; // [K][j]
+};
+
+/// Zorin's stencil of the extraordinary interior vertex `vertex` of valence K for its edge to
+/// ring point `start` (K when not in the ring: from 0): put(ring(k), s_j) for the ring's
+/// points from `start` on, counter-clockwise, then put(vertex, 1 - sum of the s_j). `table`
+/// holds the s_j of valence K, or is null. The one order both ButterflyRowWriter and the rows
+/// written two levels down (SubDGrandchildRows.h) sum in.
+template <typename Ring, typename Put>
+void PutButterflyExtraordinaryStencil(Index vertex, Index K, Index start, const double* table, Ring&& ring, Put&& put)
+{
+  double sum = 0.0;
+  for (Index j = 0, k = start == K ? 0 : start; j < K; ++j, k = k + 1 == K ? 0 : k + 1)
+  {
+    const double s = table ? table[j] : ButterflyExtraordinaryWeight(K, j);
+    put(ring(k), s);
+    sum += s;
+  }
+  put(vertex, 1.0 - sum);
+}
+
 /// Requires every face of `parent` to be a triangle.
 SUBDKERNEL_EXPORT StencilTable BuildButterflyStencils(
   const Level& parent, double tension, const ParallelFor& parallelFor = SerialFor);
@@ -63,6 +97,11 @@ public:
   /// buffers before blending it into the row.
   Index GetMaxRowSize() const { return 2 * this->RowBound; }
   Index WriteRow(Index row, Index* sources, double* weights) const;
+  /// Whether row `row` is one the rows written two levels down (SubDGrandchildRows.h, without
+  /// tension) write from the grandparent: a vertex point (a copy), or the edge point of an
+  /// edge with two triangles and no sharpness whose ends both have a smooth ring, one at
+  /// least of valence 6 (the 8-point butterfly, or Zorin's stencil of the other end).
+  bool IsSmoothRow(Index row) const;
   /// Vertex points (copies of the parent's vertices) and the edge points of the regular
   /// butterfly (RegularButterflyRow); the other edge points are written.
   template <typename T>
@@ -105,7 +144,6 @@ private:
   void AddSmoothRule(Index e, Row& row) const;
   void AddWing(Index x, Index b, Index y, Index face, double weight, Row& row) const;
   void AddTip(Index x, Index y, double weight, Row& row) const;
-  double ExtraordinaryWeight(Index K, Index j) const;
 
   const Level& Parent;
   const MeshTopology& Topology;
@@ -129,7 +167,7 @@ private:
   // Per corner of each triangle: the third vertex of the other triangle on the edge that
   // starts at the corner, when that edge is manifold with two faces; else InvalidIndex.
   IndexArray Across;
-  std::vector<std::vector<double>> ExtraordinaryWeights; // [K][j] for small K
+  ButterflyWeightTable ExtraordinaryWeights;
 };
 
 template <typename T>

@@ -1,9 +1,11 @@
 #include "SubDGrandchildRows.h"
+#include "SubDButterflyRules.h"
 #include "SubDCatmullClarkRules.h"
 #include "SubDLoopRules.h"
 #include "SubDRowWriting.h" // PrefetchDistance
 
 #include <algorithm>
+#include <type_traits>
 
 namespace subd
 {
@@ -143,6 +145,138 @@ struct LoopSmoothRows : ParentFromGrandparent<TriangleSplitShape>
   }
 };
 
+// The modified butterfly's smooth rows without tension (ButterflyRowWriter's, in its order
+// and weights): the 8-point butterfly of a C edge between two regular points, or Zorin's
+// stencil of its end at an extraordinary vertex of P. C's triangles are P's triangles'
+// children: a C edge's two triangles and those across their other edges are found from P's
+// faces, and the rings of P's extraordinary vertices are stored (ButterflyGrandparentRings).
+struct ButterflySmoothRows : ParentFromGrandparent<TriangleSplitShape>
+{
+  static constexpr bool HasFaceRows = false;
+  const ButterflyGrandparentRings* Rings = nullptr;
+
+  Index WriteFaceRow(Index, Index, Index*, double*) const { return 0; }
+  Index WriteEdgeRow(Index f, Index corner, Index key, Index* sources, double* weights) const
+  {
+    const MeshTopology& topo = this->Topology;
+    ButterflyRowWriter::Row row{ sources, weights };
+    if (key < 2 * this->Split.NumEdges)
+    {
+      // A half of P's edge e at P's vertex v: Zorin's stencil when v is extraordinary.
+      const Index e = key / 2, v = topo.GetEdgeVertices(e)[key % 2];
+      const Index first = this->Rings->Offsets[v], K = this->Rings->Offsets[v + 1] - first;
+      if (K > 0)
+      {
+        const Index* ring = this->Rings->Edges.data() + first; // an edge's point is numbered as the edge
+        PutButterflyExtraordinaryStencil(
+          TriangleSplitNumbering{ this->Split.NumEdges }.VertexPoint(v), K,
+          static_cast<Index>(std::find(ring, ring + K, e) - ring), this->Rings->Weights.Get(K),
+          [ring](Index k) { return ring[k]; }, [&row](Index source, double weight) { row.Append(source, weight); });
+        return row.Size;
+      }
+    }
+    Index ends[2], faces[2], b[2], wings[2][2];
+    this->GetEdge(f, corner, key, ends, faces);
+    for (int side = 0; side < 2; ++side)
+    {
+      const Index g = faces[side] / 4, j = faces[side] % 4;
+      Index corners[3], keys[3];
+      this->Split.GetChildCorners(g, j, corners);
+      this->Split.GetChildEdgeKeys(g, j, keys); // keys[s]: from corner s to corner s + 1
+      const Index s = corners[0] == ends[0] ? 0 : (corners[1] == ends[0] ? 1 : 2);
+      const Index next = s == 2 ? 0 : s + 1, previous = s == 0 ? 2 : s - 1;
+      const bool leaving = corners[next] == ends[1]; // the edge runs from corner s to `next`
+      b[side] = corners[leaving ? previous : next];
+      // The triangles across (ends[0], b) and (ends[1], b).
+      wings[side][0] = this->AcrossChildEdge(g, j, leaving ? keys[previous] : keys[s], ends[0], b[side]);
+      wings[side][1] = this->AcrossChildEdge(g, j, keys[next], ends[1], b[side]); // either way, next to previous
+    }
+    // Added as WriteRow adds them: points met twice (tiny closed meshes) merged.
+    row.Add(ends[0], 0.5);
+    row.Add(ends[1], 0.5);
+    row.Add(b[0], 0.125);
+    row.Add(b[1], 0.125);
+    for (int side = 0; side < 2; ++side)
+    {
+      row.Add(wings[side][0], -0.0625);
+      row.Add(wings[side][1], -0.0625);
+    }
+    return row.Size;
+  }
+  Index WriteVertexRow(Index p, Index* sources, double* weights, Index*, Index) const
+  {
+    sources[0] = p;
+    weights[0] = 1.0;
+    return 1;
+  }
+
+  // The corner other than x and y of the C triangle across the edge (x, y) with key `key` of
+  // P's face g's child j.
+  Index AcrossChildEdge(Index g, Index j, Index key, Index x, Index y) const
+  {
+    const MeshTopology& topo = this->Topology;
+    Index h = g, i;
+    if (key >= 2 * this->Split.NumEdges)
+    {
+      Index faces[2]; // an edge inside g: between a corner child and the middle one
+      this->Split.GetInteriorEdgeFaces(g, key, faces);
+      i = (faces[0] == 4 * g + j ? faces[1] : faces[0]) - 4 * g;
+    }
+    else
+    {
+      // A half of P's edge e at its vertex v: the child at v of e's other face.
+      const Index e = key / 2, v = topo.GetEdgeVertices(e)[key % 2];
+      const IndexSpan ef = topo.GetEdgeFaces(e);
+      h = ef[0] == g ? ef[1] : ef[0];
+      const Index* hv = topo.GetTriangleVertices(h);
+      i = hv[0] == v ? 0 : (hv[1] == v ? 1 : 2);
+    }
+    Index corners[3];
+    this->Split.GetChildCorners(h, i, corners);
+    return corners[0] != x && corners[0] != y ? corners[0] : (corners[1] != x && corners[1] != y ? corners[1] : corners[2]);
+  }
+};
+
+// The butterfly's stored rings of P's extraordinary interior vertices (see
+// ButterflyGrandparentRings).
+ButterflyGrandparentRings OrderExtraordinaryRings(const MeshTopology& topo, const ParallelFor& parallelFor)
+{
+  ButterflyGrandparentRings rings;
+  const Index numVertices = topo.GetNumVertices();
+  rings.Offsets.resize(static_cast<size_t>(numVertices) + 1);
+  rings.Offsets[0] = 0;
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v)
+    {
+      const VertexTag tag = topo.GetVertexTag(v);
+      const Index K = topo.GetVertexFaces(v).size();
+      const bool closedFan = !tag.Boundary && !tag.NonManifold && K == topo.GetVertexEdges(v).size();
+      rings.Offsets[v + 1] = closedFan && K != 6 ? K : 0;
+    }
+  });
+  std::partial_sum(rings.Offsets.begin(), rings.Offsets.end(), rings.Offsets.begin());
+  rings.Edges.resize(static_cast<size_t>(rings.Offsets.back()));
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
+    std::vector<Index> faces, corners;
+    for (Index v = begin; v < end; ++v)
+    {
+      Index* ring = rings.Edges.data() + rings.Offsets[v];
+      if (rings.Offsets[v + 1] == rings.Offsets[v])
+      {
+        continue;
+      }
+      // In C, v's ring is the vertex after v in each of its triangles: the point of the edge
+      // leaving v in the face of P that triangle is the child of.
+      topo.GetOrderedVertexFaces(v, faces, corners);
+      for (size_t k = 0; k < faces.size(); ++k)
+      {
+        ring[k] = topo.GetFaceEdges(faces[k])[corners[k]];
+      }
+    }
+  });
+  return rings;
+}
+
 // The linear rules (LinearRowWriter's, in its order and weights): centroids (bilinear),
 // midpoints and copies, each row from the grandparent alone.
 template <typename SplitShape>
@@ -266,6 +400,11 @@ GrandchildRows::GrandchildRows(
     }
     this->MaxRowSize = std::max<Index>(4, 1 + (quads ? 2 * mostFaces : mostFaces));
   }
+  if (scheme == GrandchildScheme::Butterfly)
+  {
+    this->Rings = OrderExtraordinaryRings(topo, parallelFor);
+    this->MaxRowSize = std::max<Index>(8, 1 + topo.GetMaxValence()); // the butterfly, or Zorin's stencil
+  }
 }
 
 bool EveryGrandchildRowIsSmooth(GrandchildScheme scheme, const Level& grandparent)
@@ -275,9 +414,10 @@ bool EveryGrandchildRowIsSmooth(GrandchildScheme scheme, const Level& grandparen
     return true;
   }
   const MeshTopology& topo = grandparent.Topology;
+  const bool butterfly = scheme == GrandchildScheme::Butterfly;
   for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
-    if (!IsSmoothEdge(grandparent, e))
+    if (!IsSmoothEdge(grandparent, e) || (butterfly && topo.GetEdgeTag(e).NonManifold))
     {
       return false;
     }
@@ -285,7 +425,8 @@ bool EveryGrandchildRowIsSmooth(GrandchildScheme scheme, const Level& grandparen
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
     const Index numEdges = topo.GetVertexEdges(v).size();
-    if (numEdges == 0 || topo.GetVertexFaces(v).size() != numEdges || IsSharp(grandparent.VertexSharpness[v]))
+    const bool sharp = butterfly ? topo.GetVertexTag(v).NonManifold : IsSharp(grandparent.VertexSharpness[v]);
+    if (numEdges == 0 || topo.GetVertexFaces(v).size() != numEdges || sharp)
     {
       return false;
     }
@@ -311,11 +452,17 @@ GrandchildRows::GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Le
     this->MaxRowSize = writer.GetMaxRowSize();
     StoreRowsWithoutSmoothForm(writer, 0, this->StoredRows, this->StoredTable);
   }
+  else if (scheme == GrandchildScheme::Butterfly)
+  {
+    const ButterflyRowWriter writer(parent, 0.0, parallelFor);
+    this->MaxRowSize = writer.GetMaxRowSize();
+    StoreRowsWithoutSmoothForm(writer, 0, this->StoredRows, this->StoredTable);
+  }
 }
 
 std::vector<Index> GrandchildRows::GetBlockEnds() const
 {
-  if (WritesEveryRowFromGrandparent(this->Scheme))
+  if (ReadsParentPointsOnly(this->Scheme))
   {
     return { this->NumRows }; // no row reads another
   }
@@ -341,6 +488,9 @@ void GrandchildRows::WriteRows(Index begin, Index end, Index* buffers, double* w
     case GrandchildScheme::Loop:
       this->WriteRowsWith<LoopSmoothRows>(begin, end, buffers, weights, emit);
       break;
+    case GrandchildScheme::Butterfly:
+      this->WriteRowsWith<ButterflySmoothRows>(begin, end, buffers, weights, emit);
+      break;
     case GrandchildScheme::Bilinear:
       this->WriteRowsWith<LinearRows<QuadSplitShape>>(begin, end, buffers, weights, emit);
       break;
@@ -354,7 +504,11 @@ template <typename Rules, typename Emit>
 void GrandchildRows::WriteRowsWith(Index begin, Index end, Index* buffers, double* weights, Emit&& emit) const
 {
   const MeshTopology& topo = this->Grandparent->Topology;
-  const Rules rules{ { topo, this->ParentEdges, this->NumParents } };
+  Rules rules{ { topo, this->ParentEdges, this->NumParents } };
+  if constexpr (std::is_same_v<Rules, ButterflySmoothRows>)
+  {
+    rules.Rings = &this->Rings;
+  }
   Index* sources = buffers;
   Index* scratch = buffers + this->MaxRowSize;
   size_t stored = static_cast<size_t>(

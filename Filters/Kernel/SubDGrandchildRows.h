@@ -19,12 +19,19 @@
 // out of order, which makes re-applying the rows about 1.5x to 2x slower than from C's
 // lists. The faces of the finest level follow from P the same way (SplitTwice).
 //
+// The modified butterfly (without tension) reads two rings around an edge of C: its two
+// triangles, the four across their other edges, and the rings of its ends where one is an
+// extraordinary vertex of P (every other point of C, the points of P's edges, has valence
+// 6). All of those are children of P's faces around the edge, found the same way; the rings
+// of P's extraordinary vertices are ordered once (P is a quarter of C).
+//
 // The linear rules (bilinear on the quad split, linear triangles on the triangle split) have
 // no row that needs C: every row is a centroid, a midpoint or a copy. For them C need not be
 // built at all, which makes the finest level both leaner and faster to refine.
 #ifndef SubDGrandchildRows_h
 #define SubDGrandchildRows_h
 
+#include "SubDButterflyRules.h"
 #include "SubDLevel.h"
 #include "SubDPrimalSplitShape.h"
 #include "SubDStencilTable.h"
@@ -38,6 +45,7 @@ enum class GrandchildScheme
 {
   CatmullClark,   ///< on the quad split
   Loop,           ///< on the triangle split
+  Butterfly,      ///< the modified butterfly without tension, on the triangle split
   Bilinear,       ///< on the quad split; every row in closed form
   LinearTriangles ///< on the triangle split; every row in closed form
 };
@@ -54,6 +62,23 @@ inline bool WritesEveryRowFromGrandparent(GrandchildScheme scheme)
 {
   return scheme == GrandchildScheme::Bilinear || scheme == GrandchildScheme::LinearTriangles;
 }
+
+/// Whether the scheme's rows read the points of the level between only (no row reads another
+/// row of the finest level): one block of rows.
+inline bool ReadsParentPointsOnly(GrandchildScheme scheme)
+{
+  return scheme == GrandchildScheme::Butterfly || WritesEveryRowFromGrandparent(scheme);
+}
+
+/// For the butterfly's rows: the interior vertices of the grandparent P with a closed fan of
+/// other than 6 faces, each with the edges leaving it in the faces of its fan in order
+/// (counter-clockwise): the points of those edges are its ring in the level between.
+struct ButterflyGrandparentRings
+{
+  IndexArray Offsets; // per vertex of P (+ 1); an empty ring for the other vertices
+  IndexArray Edges;
+  ButterflyWeightTable Weights;
+};
 
 class SUBDKERNEL_EXPORT GrandchildRows final : public RowSource
 {
@@ -96,6 +121,7 @@ private:
   Index MaxRowSize = 4;
   std::vector<Index> StoredRows; // sorted; row StoredRows[i] is StoredTable's row i
   StencilTable StoredTable;
+  ButterflyGrandparentRings Rings; // the butterfly's
 };
 
 /// Whether every row GrandchildRows writes from `grandparent` has a smooth form (no row to
@@ -107,7 +133,10 @@ private:
 /// its edges are halves of those edges (the same faces) or lie inside a face (two faces); its
 /// points are those vertices (the same counts), edge points (4 faces and edges on the quad
 /// split, 6 on the triangle split) and face points (as many of each as the face has corners);
-/// and its sharpness is inherited, so none stays none.
+/// and its sharpness is inherited, so none stays none. The butterfly asks the same, except
+/// that a sharp vertex does not matter (it has no vertex rule) and a non-manifold one does
+/// (it has no ring): then every point of the level between has a smooth ring, of valence 6
+/// but at P's vertices, which no edge of the level between joins.
 SUBDKERNEL_EXPORT bool EveryGrandchildRowIsSmooth(GrandchildScheme scheme, const Level& grandparent);
 
 /// The finest level (faces only) of two splits of `grandparent` by `scheme`'s split, without

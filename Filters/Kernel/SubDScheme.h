@@ -266,6 +266,14 @@ public:
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
   bool UsesBoundaryRule() const override { return false; }
 
+protected:
+  /// Without tension only: the tips' rings would take two more steps around each end.
+  bool GetGrandchildScheme(GrandchildScheme& which) const override
+  {
+    which = GrandchildScheme::Butterfly; // SubDGrandchildRows.h
+    return this->Tension == 0.0;
+  }
+
 private:
   double Tension;
 };

@@ -807,6 +807,15 @@ TEST(GrandchildRows, LoopEqualsTheParentsRows)
   ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme::Loop, subd::LoopScheme(), subdtest::TriangleMeshes());
 }
 
+// The butterfly without tension: the 8-point butterfly from two rings of the grandparent's
+// triangles, Zorin's stencils from its extraordinary vertices' ordered fans; on the tiny
+// closed meshes some butterflies meet a point twice (merged as the writer merges them).
+TEST(GrandchildRows, ButterflyEqualsTheParentsRows)
+{
+  ExpectGrandchildRowsEqualTheParentsRows(
+    subd::GrandchildScheme::Butterfly, subd::ButterflyScheme(0.0), subdtest::TriangleMeshes());
+}
+
 // The linear rules (centroids, midpoints, copies), written from the grandparent alone.
 TEST(GrandchildRows, BilinearEqualsTheParentsRows)
 {
@@ -845,7 +854,7 @@ TEST(GrandchildRows, FaceTagsPerGrandparentFaceOnlyWithFourChildrenEach)
 
 // Which grandparents need no parent for their grandchildren's rows: closed meshes without
 // sharp features (any rule); with a boundary, one semi-sharp edge or one sharp vertex, only
-// the linear rules (which have no rule for them).
+// the linear rules (which have no rule for them); with a sharp vertex, the butterfly too.
 TEST(GrandchildRows, EveryRowSmoothOnlyOnClosedMeshesWithoutSharpFeatures)
 {
   auto level = [](const subdtest::TestMesh& mesh, int sharpEdge, int sharpVertex) {
@@ -875,4 +884,8 @@ TEST(GrandchildRows, EveryRowSmoothOnlyOnClosedMeshesWithoutSharpFeatures)
   EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::Loop, level(bipyramid, 0, -1)));
   EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::Loop, level(bipyramid, -1, 0)));
   EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::LinearTriangles, level(bipyramid, 0, 0)));
+  // The butterfly has no vertex rule: a sharp vertex changes none of its rows.
+  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::Butterfly, level(bipyramid, -1, -1)));
+  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::Butterfly, level(bipyramid, 0, -1)));
+  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::Butterfly, level(bipyramid, -1, 0)));
 }
