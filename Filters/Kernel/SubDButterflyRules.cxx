@@ -43,28 +43,6 @@ StencilTable BuildButterflyStencils(const Level& parent, double tension, const P
   return WriteStencilTable(ButterflyRowWriter(parent, tension, parallelFor), expected);
 }
 
-void ButterflyRowWriter::Row::Append(Index source, double weight)
-{
-  this->Sources[this->Size] = source;
-  this->Weights[this->Size] = weight;
-  ++this->Size;
-}
-
-void ButterflyRowWriter::Row::Add(Index source, double weight)
-{
-  for (Index k = 0; k < this->Size; ++k)
-  {
-    if (this->Sources[k] == source)
-    {
-      this->Weights[k] += weight;
-      return;
-    }
-  }
-  this->Sources[this->Size] = source;
-  this->Weights[this->Size] = weight;
-  ++this->Size;
-}
-
 ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, const ParallelFor& parallelFor)
   : Parent(parent)
   , Topology(parent.Topology)

@@ -122,9 +122,25 @@ public:
     Index* Sources;
     double* Weights;
     Index Size = 0;
-    void Add(Index source, double weight);
+    void Add(Index source, double weight)
+    {
+      for (Index k = 0; k < this->Size; ++k)
+      {
+        if (this->Sources[k] == source)
+        {
+          this->Weights[k] += weight;
+          return;
+        }
+      }
+      this->Append(source, weight);
+    }
     /// For a source known not to be in the row yet.
-    void Append(Index source, double weight);
+    void Append(Index source, double weight)
+    {
+      this->Sources[this->Size] = source;
+      this->Weights[this->Size] = weight;
+      ++this->Size;
+    }
   };
 
 private:

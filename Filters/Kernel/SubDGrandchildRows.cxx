@@ -148,58 +148,69 @@ struct LoopSmoothRows : ParentFromGrandparent<TriangleSplitShape>
 // The modified butterfly's smooth rows without tension (ButterflyRowWriter's, in its order
 // and weights): the 8-point butterfly of a C edge between two regular points, or Zorin's
 // stencil of its end at an extraordinary vertex of P. C's triangles are P's triangles'
-// children: a C edge's two triangles and those across their other edges are found from P's
-// faces, and the rings of P's extraordinary vertices are stored (ButterflyGrandparentRings).
+// children (SubDTriangleSplit.h): the triangle across an edge of a child is another child of
+// the same face, or the child at the same vertex of the face across P's edge, which P's
+// faces store (ButterflyGrandparentTables::FaceAcross); the rings of P's extraordinary
+// vertices are stored too.
 struct ButterflySmoothRows : ParentFromGrandparent<TriangleSplitShape>
 {
   static constexpr bool HasFaceRows = false;
-  const ButterflyGrandparentRings* Rings = nullptr;
+  const ButterflyGrandparentTables* Tables = nullptr;
+
+  // Child j of P's face g (j = 3: the middle one) and its corners, C's points.
+  struct ChildTriangle
+  {
+    Index Face, Child;
+    Index Corners[3];
+  };
 
   Index WriteFaceRow(Index, Index, Index*, double*) const { return 0; }
-  Index WriteEdgeRow(Index f, Index corner, Index key, Index* sources, double* weights) const
+  Index WriteEdgeRow(Index f, Index corner, Index, Index* sources, double* weights) const
   {
     const MeshTopology& topo = this->Topology;
     ButterflyRowWriter::Row row{ sources, weights };
-    if (key < 2 * this->Split.NumEdges)
+    // The edge leaves corner s of f's child j (SubDPrimalSplitShape.h, VisitCorners).
+    const Index j = (corner / 3) % 4, s = corner % 3;
+    if (j < 3 && s != 1)
     {
-      // A half of P's edge e at P's vertex v: Zorin's stencil when v is extraordinary.
-      const Index e = key / 2, v = topo.GetEdgeVertices(e)[key % 2];
-      const Index first = this->Rings->Offsets[v], K = this->Rings->Offsets[v + 1] - first;
+      // A half of P's edge e at f's corner v: Zorin's stencil when v is extraordinary.
+      const Index v = topo.GetTriangleVertices(f)[j];
+      const Index first = this->Tables->RingOffsets[v], K = this->Tables->RingOffsets[v + 1] - first;
       if (K > 0)
       {
-        const Index* ring = this->Rings->Edges.data() + first; // an edge's point is numbered as the edge
+        const Index e = topo.GetTriangleEdges(f)[s == 0 ? j : Previous(j)];
+        const Index* ring = this->Tables->RingEdges.data() + first; // an edge's point is numbered as the edge
         PutButterflyExtraordinaryStencil(
           TriangleSplitNumbering{ this->Split.NumEdges }.VertexPoint(v), K,
-          static_cast<Index>(std::find(ring, ring + K, e) - ring), this->Rings->Weights.Get(K),
+          static_cast<Index>(std::find(ring, ring + K, e) - ring), this->Tables->Weights.Get(K),
           [ring](Index k) { return ring[k]; }, [&row](Index source, double weight) { row.Append(source, weight); });
         return row.Size;
       }
     }
-    Index ends[2], faces[2], b[2], wings[2][2];
-    this->GetEdge(f, corner, key, ends, faces);
-    for (int side = 0; side < 2; ++side)
+    // The butterfly: the edge's ends a0, a1 (C lists them from the triangle it is first met
+    // in, the lower-numbered of its two), the third corners b0, b1 of its triangles and the
+    // corners across those triangles' other edges.
+    ChildTriangle t0;
+    this->GetChild(f, j, t0);
+    Index s1;
+    ChildTriangle t1;
+    this->GetTriangleAcross(t0, s, t1, s1); // the edge leaves its corner s1 the other way
+    const Index points[8] = { t0.Corners[s], t0.Corners[Next(s)], t0.Corners[Previous(s)],
+      t1.Corners[Previous(s1)], this->GetCornerAcross(t0, Previous(s)), this->GetCornerAcross(t0, Next(s)),
+      this->GetCornerAcross(t1, Next(s1)), this->GetCornerAcross(t1, Previous(s1)) };
+    constexpr double pointWeights[8] = { 0.5, 0.5, 0.125, 0.125, -0.0625, -0.0625, -0.0625, -0.0625 };
+    bool repeated = false;
+    for (int i = 1; i < 8; ++i)
     {
-      const Index g = faces[side] / 4, j = faces[side] % 4;
-      Index corners[3], keys[3];
-      this->Split.GetChildCorners(g, j, corners);
-      this->Split.GetChildEdgeKeys(g, j, keys); // keys[s]: from corner s to corner s + 1
-      const Index s = corners[0] == ends[0] ? 0 : (corners[1] == ends[0] ? 1 : 2);
-      const Index next = s == 2 ? 0 : s + 1, previous = s == 0 ? 2 : s - 1;
-      const bool leaving = corners[next] == ends[1]; // the edge runs from corner s to `next`
-      b[side] = corners[leaving ? previous : next];
-      // The triangles across (ends[0], b) and (ends[1], b).
-      wings[side][0] = this->AcrossChildEdge(g, j, leaving ? keys[previous] : keys[s], ends[0], b[side]);
-      wings[side][1] = this->AcrossChildEdge(g, j, keys[next], ends[1], b[side]); // either way, next to previous
+      for (int k = 0; k < i; ++k)
+      {
+        repeated |= points[i] == points[k];
+      }
     }
-    // Added as WriteRow adds them: points met twice (tiny closed meshes) merged.
-    row.Add(ends[0], 0.5);
-    row.Add(ends[1], 0.5);
-    row.Add(b[0], 0.125);
-    row.Add(b[1], 0.125);
-    for (int side = 0; side < 2; ++side)
+    for (int i = 0; i < 8; ++i)
     {
-      row.Add(wings[side][0], -0.0625);
-      row.Add(wings[side][1], -0.0625);
+      // Added as WriteRow adds them: a point met twice (tiny closed meshes) merged.
+      repeated ? row.Add(points[i], pointWeights[i]) : row.Append(points[i], pointWeights[i]);
     }
     return row.Size;
   }
@@ -210,58 +221,86 @@ struct ButterflySmoothRows : ParentFromGrandparent<TriangleSplitShape>
     return 1;
   }
 
-  // The corner other than x and y of the C triangle across the edge (x, y) with key `key` of
-  // P's face g's child j.
-  Index AcrossChildEdge(Index g, Index j, Index key, Index x, Index y) const
+  static Index Next(Index i) { return i == 2 ? 0 : i + 1; }
+  static Index Previous(Index i) { return i == 0 ? 2 : i - 1; }
+  void GetChild(Index g, Index j, ChildTriangle& t) const
+  {
+    t.Face = g;
+    t.Child = j;
+    this->Split.GetChildCorners(g, j, t.Corners);
+  }
+  // The triangle across the edge leaving corner s of t, and the corner that edge leaves in
+  // it. A corner child's corners are (v_j, m_j, m_{j-1}), m_i the point of edge i (from v_i
+  // to v_{i+1}), the middle child's (m_0, m_1, m_2).
+  void GetTriangleAcross(const ChildTriangle& t, Index s, ChildTriangle& across, Index& slot) const
+  {
+    const Index g = t.Face, j = t.Child;
+    if (j == 3) // (m_s, m_{s+1}): in the corner child at v_{s+1}, from its corner 1
+    {
+      this->GetChild(g, Next(s), across);
+      slot = 1;
+      return;
+    }
+    if (s == 1) // (m_j, m_{j-1}): in the middle child, from its corner j - 1
+    {
+      this->GetChild(g, 3, across);
+      slot = Previous(j);
+      return;
+    }
+    // A half of edge j (s = 0) or j - 1 (s = 2) at v_j: in the child at v_j of the face h
+    // across, where the edge is h's edge p, run the other way: v_j is h's corner p + 1
+    // (s = 0), or p (s = 2).
+    const Index packed = this->Tables->FaceAcross[MeshTopology::GetFirstTriangleCorner(g) + (s == 0 ? j : Previous(j))];
+    const Index h = packed / 4, p = packed % 4;
+    this->GetChild(h, s == 0 ? Next(p) : p, across);
+    slot = s == 0 ? 2 : 0;
+  }
+  // The corner of the triangle across the edge leaving corner s of t that is not on that
+  // edge (GetTriangleAcross's, without its other corners).
+  Index GetCornerAcross(const ChildTriangle& t, Index s) const
   {
     const MeshTopology& topo = this->Topology;
-    Index h = g, i;
-    if (key >= 2 * this->Split.NumEdges)
+    const Index g = t.Face, j = t.Child;
+    if (j == 3)
     {
-      Index faces[2]; // an edge inside g: between a corner child and the middle one
-      this->Split.GetInteriorEdgeFaces(g, key, faces);
-      i = (faces[0] == 4 * g + j ? faces[1] : faces[0]) - 4 * g;
+      return TriangleSplitNumbering{ this->Split.NumEdges }.VertexPoint(topo.GetTriangleVertices(g)[Next(s)]);
     }
-    else
+    if (s == 1)
     {
-      // A half of P's edge e at its vertex v: the child at v of e's other face.
-      const Index e = key / 2, v = topo.GetEdgeVertices(e)[key % 2];
-      const IndexSpan ef = topo.GetEdgeFaces(e);
-      h = ef[0] == g ? ef[1] : ef[0];
-      const Index* hv = topo.GetTriangleVertices(h);
-      i = hv[0] == v ? 0 : (hv[1] == v ? 1 : 2);
+      return topo.GetTriangleEdges(g)[Next(j)]; // m_{j+1}
     }
-    Index corners[3];
-    this->Split.GetChildCorners(h, i, corners);
-    return corners[0] != x && corners[0] != y ? corners[0] : (corners[1] != x && corners[1] != y ? corners[1] : corners[2]);
+    const Index packed = this->Tables->FaceAcross[MeshTopology::GetFirstTriangleCorner(g) + (s == 0 ? j : Previous(j))];
+    const Index* he = topo.GetTriangleEdges(packed / 4);
+    const Index p = packed % 4;
+    return he[s == 0 ? Next(p) : Previous(p)]; // h's other edge at v_j
   }
 };
 
-// The butterfly's stored rings of P's extraordinary interior vertices (see
-// ButterflyGrandparentRings).
-ButterflyGrandparentRings OrderExtraordinaryRings(const MeshTopology& topo, const ParallelFor& parallelFor)
+// The rings of P's extraordinary interior vertices and the faces across its triangles' edges (see
+// ButterflyGrandparentTables).
+ButterflyGrandparentTables MakeButterflyGrandparentTables(const MeshTopology& topo, const ParallelFor& parallelFor)
 {
-  ButterflyGrandparentRings rings;
+  ButterflyGrandparentTables tables;
   const Index numVertices = topo.GetNumVertices();
-  rings.Offsets.resize(static_cast<size_t>(numVertices) + 1);
-  rings.Offsets[0] = 0;
+  tables.RingOffsets.resize(static_cast<size_t>(numVertices) + 1);
+  tables.RingOffsets[0] = 0;
   parallelFor(0, numVertices, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v)
     {
       const VertexTag tag = topo.GetVertexTag(v);
       const Index K = topo.GetVertexFaces(v).size();
       const bool closedFan = !tag.Boundary && !tag.NonManifold && K == topo.GetVertexEdges(v).size();
-      rings.Offsets[v + 1] = closedFan && K != 6 ? K : 0;
+      tables.RingOffsets[v + 1] = closedFan && K != 6 ? K : 0;
     }
   });
-  std::partial_sum(rings.Offsets.begin(), rings.Offsets.end(), rings.Offsets.begin());
-  rings.Edges.resize(static_cast<size_t>(rings.Offsets.back()));
+  std::partial_sum(tables.RingOffsets.begin(), tables.RingOffsets.end(), tables.RingOffsets.begin());
+  tables.RingEdges.resize(static_cast<size_t>(tables.RingOffsets.back()));
   parallelFor(0, numVertices, [&](Index begin, Index end) {
     std::vector<Index> faces, corners;
     for (Index v = begin; v < end; ++v)
     {
-      Index* ring = rings.Edges.data() + rings.Offsets[v];
-      if (rings.Offsets[v + 1] == rings.Offsets[v])
+      Index* ring = tables.RingEdges.data() + tables.RingOffsets[v];
+      if (tables.RingOffsets[v + 1] == tables.RingOffsets[v])
       {
         continue;
       }
@@ -274,7 +313,25 @@ ButterflyGrandparentRings OrderExtraordinaryRings(const MeshTopology& topo, cons
       }
     }
   });
-  return rings;
+  // Per corner i of each triangle g: the face h across g's edge i (from corner i), and that
+  // edge's place p in h, as 4 h + p.
+  tables.FaceAcross.assign(topo.GetFaceVertexArray().size(), InvalidIndex);
+  parallelFor(0, topo.GetNumFaces(), [&](Index begin, Index end) {
+    for (Index g = begin; g < end; ++g)
+    {
+      for (Index i = 0; i < 3; ++i)
+      {
+        const Index e = topo.GetTriangleEdges(g)[i];
+        const IndexSpan ef = topo.GetEdgeFaces(e);
+        if (ef.size() == 2 && ef[0] != ef[1])
+        {
+          const Index h = ef[0] == g ? ef[1] : ef[0];
+          tables.FaceAcross[MeshTopology::GetFirstTriangleCorner(g) + i] = 4 * h + topo.GetEdgePosition(h, e);
+        }
+      }
+    }
+  });
+  return tables;
 }
 
 // The linear rules (LinearRowWriter's, in its order and weights): centroids (bilinear),
@@ -402,7 +459,7 @@ GrandchildRows::GrandchildRows(
   }
   if (scheme == GrandchildScheme::Butterfly)
   {
-    this->Rings = OrderExtraordinaryRings(topo, parallelFor);
+    this->ButterflyTables = MakeButterflyGrandparentTables(topo, parallelFor);
     this->MaxRowSize = std::max<Index>(8, 1 + topo.GetMaxValence()); // the butterfly, or Zorin's stencil
   }
 }
@@ -507,7 +564,7 @@ void GrandchildRows::WriteRowsWith(Index begin, Index end, Index* buffers, doubl
   Rules rules{ { topo, this->ParentEdges, this->NumParents } };
   if constexpr (std::is_same_v<Rules, ButterflySmoothRows>)
   {
-    rules.Rings = &this->Rings;
+    rules.Tables = &this->ButterflyTables;
   }
   Index* sources = buffers;
   Index* scratch = buffers + this->MaxRowSize;

@@ -72,12 +72,16 @@ inline bool ReadsParentPointsOnly(GrandchildScheme scheme)
 
 /// For the butterfly's rows: the interior vertices of the grandparent P with a closed fan of
 /// other than 6 faces, each with the edges leaving it in the faces of its fan in order
-/// (counter-clockwise): the points of those edges are its ring in the level between.
-struct ButterflyGrandparentRings
+/// (counter-clockwise): the points of those edges are its ring in the level between; and the
+/// face across each edge of each triangle.
+struct ButterflyGrandparentTables
 {
-  IndexArray Offsets; // per vertex of P (+ 1); an empty ring for the other vertices
-  IndexArray Edges;
+  IndexArray RingOffsets; // per vertex of P (+ 1); an empty ring for the other vertices
+  IndexArray RingEdges;
   ButterflyWeightTable Weights;
+  // Per corner i of each triangle of P: 4 h + p for the face h across its edge i, that edge
+  // being h's edge p (InvalidIndex where the edge has not two faces).
+  IndexArray FaceAcross;
 };
 
 class SUBDKERNEL_EXPORT GrandchildRows final : public RowSource
@@ -121,7 +125,7 @@ private:
   Index MaxRowSize = 4;
   std::vector<Index> StoredRows; // sorted; row StoredRows[i] is StoredTable's row i
   StencilTable StoredTable;
-  ButterflyGrandparentRings Rings; // the butterfly's
+  ButterflyGrandparentTables ButterflyTables;
 };
 
 /// Whether every row GrandchildRows writes from `grandparent` has a smooth form (no row to

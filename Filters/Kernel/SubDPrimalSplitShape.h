@@ -196,7 +196,7 @@ struct TriangleSplitShape
       keys[2] = inside;
       return;
     }
-    const IndexSpan fv = this->Parent.GetFaceVertices(f), fe = this->Parent.GetFaceEdges(f);
+    const Index *fv = this->Parent.GetTriangleVertices(f), *fe = this->Parent.GetTriangleEdges(f);
     keys[0] = HalfEdgeKey(this->Parent, fe[j], fv[j]);
     keys[1] = inside + j;
     keys[2] = HalfEdgeKey(this->Parent, fe[j == 0 ? 2 : j - 1], fv[j]);

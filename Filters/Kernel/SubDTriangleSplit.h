@@ -30,11 +30,11 @@ struct TriangleSplitNumbering
 
 /// The corners of the child j (0, 1, 2: at corner j; 3: the middle) of triangle f (see
 /// above), in `number`'s points.
-inline void GetTriangleSplitChild(
+SUBD_ALWAYS_INLINE void GetTriangleSplitChild(
   const MeshTopology& topo, const TriangleSplitNumbering& number, Index f, Index j, Index* out)
 {
-  const IndexSpan fv = topo.GetFaceVertices(f);
-  const IndexSpan fe = topo.GetFaceEdges(f);
+  const Index* fv = topo.GetTriangleVertices(f); // every face a triangle: no offsets to read
+  const Index* fe = topo.GetTriangleEdges(f);
   if (j == 3)
   {
     out[0] = number.EdgePoint(fe[0]);
