@@ -296,20 +296,38 @@ ButterflyGrandparentTables MakeButterflyGrandparentTables(const MeshTopology& to
   std::partial_sum(tables.RingOffsets.begin(), tables.RingOffsets.end(), tables.RingOffsets.begin());
   tables.RingEdges.resize(static_cast<size_t>(tables.RingOffsets.back()));
   parallelFor(0, numVertices, [&](Index begin, Index end) {
-    std::vector<Index> faces, corners;
     for (Index v = begin; v < end; ++v)
     {
       Index* ring = tables.RingEdges.data() + tables.RingOffsets[v];
-      if (tables.RingOffsets[v + 1] == tables.RingOffsets[v])
+      const Index K = tables.RingOffsets[v + 1] - tables.RingOffsets[v];
+      if (K == 0)
       {
         continue;
       }
       // In C, v's ring is the vertex after v in each of its triangles: the point of the edge
-      // leaving v in the face of P that triangle is the child of.
-      topo.GetOrderedVertexFaces(v, faces, corners);
-      for (size_t k = 0; k < faces.size(); ++k)
+      // leaving v in the face of P that triangle is the child of, face after face around v
+      // (each next one across the edge entering v in the one before, as
+      // MeshTopology::GetOrderedVertexFaces orders them). Walked through edges' faces: the
+      // lists of faces around vertices may be released by now
+      // (Scheme::GrandchildReadsVertexFaceLists).
+      const Index start = topo.GetVertexEdges(v)[0];
+      const IndexSpan startFaces = topo.GetEdgeFaces(start);
+      Index e = start;
+      Index g = topo.GetTriangleVertices(startFaces[0])[topo.GetEdgePosition(startFaces[0], e)] == v ? startFaces[0]
+                                                                                                      : startFaces[1];
+      bool closed = true;
+      for (Index k = 0; k < K && closed; ++k)
       {
-        ring[k] = topo.GetFaceEdges(faces[k])[corners[k]];
+        ring[k] = e;
+        const Index p = topo.GetEdgePosition(g, e); // e leaves v at g's corner p
+        e = topo.GetTriangleEdges(g)[p == 0 ? 2 : p - 1];
+        const IndexSpan ef = topo.GetEdgeFaces(e);
+        closed = ef.size() == 2;
+        g = ef[0] == g ? ef[1] : ef[0];
+      }
+      if (!closed || e != start) // not expected of a closed manifold fan
+      {
+        std::fill(ring, ring + K, 0);
       }
     }
   });

@@ -104,12 +104,14 @@ public:
   /// Whether a level kept for the rows of its grandchild, written from it with its child
   /// skipped, is still read for the lists of faces around its vertices: by its own rows, the
   /// grandchild's rows or faces. Loop's rules read vertex rings through edges and only count
-  /// faces, so Refine frees those lists there (PromoteFinestRows restores them for the split);
-  /// Catmull-Clark's vertex rows sum the faces around.
+  /// faces, and the butterfly's order their rings through edges' faces, so Refine frees those
+  /// lists there (PromoteFinestRows restores them for the split); Catmull-Clark's vertex rows
+  /// sum the faces around.
   bool GrandchildReadsVertexFaceLists() const
   {
     GrandchildScheme which;
-    return !this->GetGrandchildScheme(which) || which != GrandchildScheme::Loop;
+    return !this->GetGrandchildScheme(which) ||
+      (which != GrandchildScheme::Loop && which != GrandchildScheme::Butterfly);
   }
   /// The counts of the next level of a mesh with the given counts (for size guards).
   virtual MeshCounts PredictChildCounts(const MeshCounts& parent) const = 0;
