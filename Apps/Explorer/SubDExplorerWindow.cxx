@@ -191,7 +191,7 @@ QWidget* ExplorerWindow::BuildControls()
   form->addRow(cageRow);
   this->ShowWireframe = new QCheckBox("Refined wireframe (W)");
   form->addRow(this->ShowWireframe);
-  this->LowMemory = new QCheckBox("Low memory (Catmull-Clark, Loop)");
+  this->LowMemory = new QCheckBox("Low memory (Catmull-Clark, Loop, butterfly)");
   this->LowMemory->setToolTip("Write the finest level from the level two above, keeping no topology of the level "
                               "between: the same surface with about half the peak memory, refined more slowly");
   form->addRow(this->LowMemory);

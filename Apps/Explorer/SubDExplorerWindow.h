@@ -64,7 +64,7 @@ public:
   void SetCageOpacity(double opacity); ///< in [0, 1]
   void SetShowWireframe(bool show);
   void SetLimit(bool limit); ///< every view's Limit box
-  /// Catmull-Clark and Loop views refined with vtkSubDSurfaceFilter::LowMemory (about half
+  /// Catmull-Clark, Loop and butterfly views refined with vtkSubDSurfaceFilter::LowMemory (about half
   /// the peak memory for the same surface, slower).
   void SetLowMemory(bool lowMemory);
 

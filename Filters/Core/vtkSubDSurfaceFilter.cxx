@@ -369,7 +369,7 @@ int vtkSubDSurfaceFilter::Execute(
     return fail();
   }
   subd::FaceScreening screened = subd::ScreenFaces(static_cast<subd::Index>(numPoints),
-    static_cast<subd::Index>(faces.NumFaces), faces.Offsets, faces.Connectivity);
+    static_cast<subd::Index>(faces.NumFaces), faces.Offsets, faces.Connectivity, &vtkSubDPointDataInterpolation::SMPFor);
   const vtkIdType numPolys = input->GetNumberOfPolys();
   if (screened.NumOutOfRange > 0)
   {

@@ -245,7 +245,8 @@ public:
    * prediction (SubDMemoryEstimate.h) follows the refinement level by level and errs on the
    * safe side: 1.1 to 1.3 times the measured peak for the schemes that write their rows,
    * more for Doo-Sabin, sqrt(3) and midpoint. A request that does not fit by default but fits
-   * with LowMemory (Catmull-Clark, Loop) is refined so, with a warning saying so.
+   * with LowMemory (Catmull-Clark, Loop, the butterfly without tension) is refined so, with a
+   * warning saying so.
    */
   vtkSetClampMacro(MaximumMemory, double, 1.0, 1.0e9);
   vtkGetMacro(MaximumMemory, double);
@@ -253,7 +254,8 @@ public:
 
   ///@{
   /**
-   * Trade speed for memory (default off). On, the schemes that can (Catmull-Clark, Loop) write
+   * Trade speed for memory (default off). On, the schemes that can (Catmull-Clark, Loop, the
+   * butterfly without tension) write
    * the finest level, and every other level above it, from the level two above, so that the
    * topologies of the levels between (the largest of all is the finest level's parent's) are
    * never kept. The finest faces are made after the points, once the evaluation's scratch
@@ -265,8 +267,8 @@ public:
    * limit positions or limit geometry the finest level keeps its own topology, and the
    * saving is smaller.
    *
-   * Off (the default), a closed mesh without sharp features (Catmull-Clark, Loop, faces-only
-   * output) still gets its finest level written from the level two above, the finest level's
+   * Off (the default), a closed mesh without sharp features (Catmull-Clark, Loop, butterfly;
+   * faces-only output) still gets its finest level written from the level two above, the finest level's
    * parent never built (subd::LevelRows::WrittenLean): one update peaks at LowMemory's memory
    * (about 1.4x the output at level 4) at the default's speed. The first update that
    * re-applies the rows (the points or point data changed, not the topology) then builds that

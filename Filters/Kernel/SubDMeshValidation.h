@@ -8,7 +8,10 @@
 #ifndef SubDMeshValidation_h
 #define SubDMeshValidation_h
 
+#include "SubDParallel.h"
 #include "SubDTypes.h"
+
+#include <atomic>
 #include <vector>
 
 namespace subd
@@ -27,17 +30,75 @@ struct FaceScreening
 };
 
 /// Screens `numFaces` faces given as offsets (numFaces+1 entries) into `vertices`.
-/// IdType is any integer type (VTK's vtkIdType, or Index).
+/// IdType is any integer type (VTK's vtkIdType, or Index). A mesh that needs no repair (the
+/// usual case) is checked and copied on `parallelFor`'s threads.
 template <typename IdType>
-FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offsets, const IdType* vertices);
+FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offsets, const IdType* vertices,
+  const ParallelFor& parallelFor = SerialFor);
 
 /// True when the n corners hold a vertex twice (n small: pairwise, else sorted copy).
 SUBDKERNEL_EXPORT bool HasRepeatedVertex(const Index* corners, Index n, std::vector<Index>& scratch);
 
+/// Whether face [begin, end) of `vertices` is kept as it is by ScreenFaces: at least three
+/// corners, all in range, no vertex twice. Faces of more than 16 corners are left to
+/// ScreenFaces' own loop (false).
 template <typename IdType>
-FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offsets, const IdType* vertices)
+bool IsCleanFace(Index numVertices, const IdType* vertices, IdType begin, IdType end)
+{
+  const IdType n = end - begin;
+  if (n < 3 || n > 16)
+  {
+    return false;
+  }
+  bool clean = true;
+  for (IdType i = begin; i < end; ++i)
+  {
+    clean &= vertices[i] >= 0 && vertices[i] < static_cast<IdType>(numVertices);
+    for (IdType j = begin; j < i; ++j)
+    {
+      clean &= vertices[i] != vertices[j];
+    }
+  }
+  return clean;
+}
+
+template <typename IdType>
+FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offsets, const IdType* vertices,
+  const ParallelFor& parallelFor)
 {
   FaceScreening s;
+  // Most meshes need no repair: every face checked, then copied, on threads (the loop below
+  // appends one face at a time).
+  std::atomic<bool> allClean{ true };
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    bool clean = true;
+    for (Index f = begin; f < end && clean; ++f)
+    {
+      clean = IsCleanFace(numVertices, vertices, offsets[f], offsets[f + 1]);
+    }
+    if (!clean)
+    {
+      allClean = false;
+    }
+  });
+  if (allClean)
+  {
+    s.Offsets.resize(static_cast<size_t>(numFaces) + 1);
+    s.Vertices.resize(static_cast<size_t>(offsets[numFaces] - offsets[0]));
+    s.KeptFaces.resize(static_cast<size_t>(numFaces));
+    parallelFor(0, numFaces, [&](Index begin, Index end) {
+      for (Index f = begin; f < end; ++f)
+      {
+        s.Offsets[f + 1] = static_cast<Index>(offsets[f + 1] - offsets[0]);
+        for (IdType k = offsets[f]; k < offsets[f + 1]; ++k)
+        {
+          s.Vertices[static_cast<size_t>(k - offsets[0])] = static_cast<Index>(vertices[k]);
+        }
+        s.KeptFaces[f] = f;
+      }
+    });
+    return s;
+  }
   s.Offsets.reserve(static_cast<size_t>(numFaces) + 1);
   s.Vertices.reserve(static_cast<size_t>(offsets[numFaces] - offsets[0]));
   s.KeptFaces.reserve(static_cast<size_t>(numFaces));

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <numeric>
 
 using subd::Index;
 using subd::MeshTopology;
@@ -370,4 +371,54 @@ TEST(MeshValidation, CollapsesDropsAndReports)
   EXPECT_EQ(r.FirstOutOfRangeFace, 0);
   EXPECT_EQ(r.FirstOutOfRangeId, 7);
   EXPECT_TRUE(r.KeptFaces.empty());
+}
+
+// A mesh needing no repair is copied as it is (on threads); one bad face among clean ones, or
+// a face of more than 16 corners, sends every face through the repairing loop, with the
+// same result for the clean ones.
+TEST(MeshValidation, CleanFacesKeptAsTheyAreOnThreads)
+{
+  std::vector<long long> offsets{ 5 }, verts(5, -1); // offsets need not start at 0
+  std::vector<Index> expectedVerts, expectedOffsets{ 0 };
+  for (int f = 0; f < 300; ++f)
+  {
+    const int n = 3 + f % 4 + (f == 250 ? 20 : 0); // triangles to hexagons, one 25-gon
+    for (int k = 0; k < n; ++k)
+    {
+      verts.push_back((7 * f + 3 * k) % 400);
+      expectedVerts.push_back(static_cast<Index>(verts.back()));
+    }
+    offsets.push_back(static_cast<long long>(verts.size()));
+    expectedOffsets.push_back(static_cast<Index>(expectedVerts.size()));
+  }
+  std::vector<Index> all(300);
+  std::iota(all.begin(), all.end(), 0);
+  for (bool bigFace : { false, true })
+  {
+    std::vector<long long> o = offsets, v = verts;
+    std::vector<Index> ev = expectedVerts, eo = expectedOffsets;
+    if (!bigFace) // the 25-gon becomes a hexagon
+    {
+      const long long removed = o[251] - o[250] - 6;
+      v.erase(v.begin() + o[250] + 6, v.begin() + o[251]);
+      ev.erase(ev.begin() + eo[250] + 6, ev.begin() + eo[251]);
+      for (size_t f = 251; f < o.size(); ++f)
+      {
+        o[f] -= removed;
+        eo[f] -= static_cast<Index>(removed);
+      }
+    }
+    const subd::FaceScreening clean = subd::ScreenFaces(400, 300, o.data(), v.data(), subdtest::ThreeThreadFor);
+    EXPECT_EQ(clean.Offsets, eo);
+    EXPECT_EQ(clean.Vertices, ev);
+    EXPECT_EQ(clean.KeptFaces, all);
+    EXPECT_EQ(clean.NumDropped + clean.NumOutOfRange + clean.NumCollapsedCorners, 0);
+    // Face 100, a triangle, repeats its first corner: dropped, the others as before.
+    v[static_cast<size_t>(o[100] + 2)] = v[static_cast<size_t>(o[100])];
+    const subd::FaceScreening repaired = subd::ScreenFaces(400, 300, o.data(), v.data(), subdtest::ThreeThreadFor);
+    EXPECT_EQ(repaired.NumDropped, 1);
+    EXPECT_EQ(repaired.FirstDroppedFace, 100);
+    EXPECT_EQ(repaired.KeptFaces.size(), 299u);
+    EXPECT_EQ(repaired.Vertices.size(), ev.size() - static_cast<size_t>(eo[101] - eo[100]));
+  }
 }
