@@ -640,11 +640,15 @@ int vtkSubDSurfaceFilter::Execute(
 
   const subd::Hierarchy& hierarchy = cache.Hierarchy;
   const subd::Level& finest = hierarchy.Finest;
-  // A single update keeps no scratch levels (LowMemory, and the lean finest rows until they
-  // are re-applied): they are freed before the faces (made last, below) take their memory.
+  // Only re-applications keep the scratch levels (the intermediate levels' values) for the
+  // next update, and not with LowMemory: the first update of a topology, which may be the
+  // only one, frees its own (shared by its arrays) before the faces (made last, below) take
+  // their memory, which keeps them out of its peak (linear, bunny, level 4: 744 to about 670
+  // MiB). A lean hierarchy is promoted above when re-applied, so it never gets here with reuse.
+  subd::EvaluationScratch<double> updateScratch;
   vtkSubDPointDataInterpolation interpolation(hierarchy, vtkSubDPointDataInterpolation::SMPFor,
     cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr,
-    cache.LowMemory || cache.LeanFinest ? nullptr : &cache.Scratch);
+    reuse && !cache.LowMemory ? &cache.Scratch : &updateScratch);
 
   // Points.
   // Double input points are read where they are; others are converted once.
@@ -753,6 +757,11 @@ int vtkSubDSurfaceFilter::Execute(
   // The faces depend on the topology only: re-applied stencils reuse them.
   if (!cache.OutputFaces)
   {
+    if (!updateScratch.Levels[0].empty())
+    {
+      updateScratch = subd::EvaluationScratch<double>();
+      subd::ReleaseFreeMemory(); // to the system, where the faces are not going
+    }
     cache.OutputFaces = this->MakeOutputFaces();
   }
   output->SetPolys(cache.OutputFaces);
