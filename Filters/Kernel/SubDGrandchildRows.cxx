@@ -276,8 +276,8 @@ struct ButterflySmoothRows : ParentFromGrandparent<TriangleSplitShape>
   }
 };
 
-// The rings of P's extraordinary interior vertices and the faces across its triangles' edges (see
-// ButterflyGrandparentTables).
+// The rings of P's extraordinary interior vertices and the faces across its triangles'
+// edges (see ButterflyGrandparentTables).
 ButterflyGrandparentTables MakeButterflyGrandparentTables(const MeshTopology& topo, const ParallelFor& parallelFor)
 {
   ButterflyGrandparentTables tables;
@@ -312,10 +312,11 @@ ButterflyGrandparentTables MakeButterflyGrandparentTables(const MeshTopology& to
       // (Scheme::GrandchildReadsVertexFaceLists).
       const Index start = topo.GetVertexEdges(v)[0];
       const IndexSpan startFaces = topo.GetEdgeFaces(start);
+      bool closed = startFaces.size() == 2;
       Index e = start;
-      Index g = topo.GetTriangleVertices(startFaces[0])[topo.GetEdgePosition(startFaces[0], e)] == v ? startFaces[0]
-                                                                                                      : startFaces[1];
-      bool closed = true;
+      Index g = closed && topo.GetTriangleVertices(startFaces[0])[topo.GetEdgePosition(startFaces[0], e)] != v
+        ? startFaces[1]
+        : startFaces[0];
       for (Index k = 0; k < K && closed; ++k)
       {
         ring[k] = e;
@@ -500,8 +501,10 @@ bool EveryGrandchildRowIsSmooth(GrandchildScheme scheme, const Level& grandparen
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
     const Index numEdges = topo.GetVertexEdges(v).size();
-    const bool sharp = butterfly ? topo.GetVertexTag(v).NonManifold : IsSharp(grandparent.VertexSharpness[v]);
-    if (numEdges == 0 || topo.GetVertexFaces(v).size() != numEdges || sharp)
+    // A sharp vertex changes Catmull-Clark's and Loop's vertex rows; a non-manifold one has
+    // no ring for the butterfly.
+    const bool ruledOut = butterfly ? topo.GetVertexTag(v).NonManifold : IsSharp(grandparent.VertexSharpness[v]);
+    if (numEdges == 0 || topo.GetVertexFaces(v).size() != numEdges || ruledOut)
     {
       return false;
     }
