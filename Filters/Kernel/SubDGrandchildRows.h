@@ -1,5 +1,5 @@
-// SubD kernel: the Catmull-Clark and Loop rows of the finest level written from its
-// grandparent's topology, so that its parent's topology need not be kept.
+// SubD kernel: the Catmull-Clark, Loop and butterfly rows of the finest level written from
+// its grandparent's topology, so that its parent's topology need not be kept.
 //
 // Rows written as they are applied (SubDRowWriting.h) keep the level they are written from.
 // For the finest level that is the largest topology of a refinement (about 170 bytes per
