@@ -608,8 +608,8 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
           {
             // Loop's rows read the grandparent's vertex rings through its edges, the butterfly's
             // order them through edges' faces: the lists of faces around its vertices are
-            // freed where the parent was skipped, and restored
-            // for the promotion's split (below, which must give the same values).
+            // freed where the parent was skipped, and restored for the promotion's split
+            // (below, which must give the same values).
             const auto* grandchildRows = dynamic_cast<const subd::GrandchildRows*>(written.Stencils.back().GetSource());
             ASSERT_NE(grandchildRows, nullptr);
             const bool released = !grandchildRows->GetGrandparent().Topology.HasVertexFaceLists();
