@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace subd
 {
@@ -79,6 +80,101 @@ private:
   static constexpr Index MaxSize = 8;
   double Weights[MaxSize + 1][MaxSize] = {};
 };
+
+// Writes the row of corner i of face f: its boundary row, else the face's vertices with
+// alpha_n. Returns the row's size (at most the face's size, and 2 on a boundary).
+Index WriteCornerRow(const Level& parent, const DualPoints& points, const DooSabinWeightTable& weights, Index f,
+  Index i, Index* src, double* wts)
+{
+  const Index boundary = BoundaryCornerRow(parent, points, f, i, src, wts);
+  if (boundary > 0)
+  {
+    return boundary;
+  }
+  const IndexSpan fv = parent.Topology.GetFaceVertices(f);
+  std::copy(fv.begin(), fv.end(), src);
+  weights.WriteRow(fv.size(), i, wts);
+  return fv.size();
+}
+
+// The face a corner belongs to (binary search over the faces' offsets).
+Index FaceOfCorner(const MeshTopology& topo, Index corner)
+{
+  const IndexArray& offsets = topo.GetFaceOffsetArray();
+  return static_cast<Index>(std::upper_bound(offsets.begin(), offsets.end(), corner) - offsets.begin()) - 1;
+}
+
+// BuildDooSabinStencils' rows written as they are applied: from the parent's faces (their
+// corners and edge numbers) and the dual numbering only.
+class DooSabinWrittenRows final : public RowSource
+{
+public:
+  DooSabinWrittenRows(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
+    : Parent(std::move(parent))
+    , Points(NumberDualPoints(*this->Parent, parallelFor))
+  {
+    const MeshTopology& topo = this->Parent->Topology;
+    for (Index f = 0; f < topo.GetNumFaces(); ++f)
+    {
+      this->MaxRowSize = std::max(this->MaxRowSize, topo.GetFaceSize(f));
+    }
+  }
+  Index GetNumParents() const override { return this->Parent->Topology.GetNumVertices(); }
+  Index GetNumRows() const override { return this->Points.NumPoints; }
+  std::vector<Index> GetBlockEnds() const override { return { this->Points.NumPoints }; }
+  void ApplyRows(const double* parents, double* children, int components, Index begin, Index end) const override
+  {
+    this->Apply(parents, children, components, begin, end);
+  }
+  void ApplyRows(const float* parents, float* children, int components, Index begin, Index end) const override
+  {
+    this->Apply(parents, children, components, begin, end);
+  }
+
+private:
+  template <typename T>
+  void Apply(const T* parents, T* children, int components, Index begin, Index end) const
+  {
+    if (begin >= end)
+    {
+      return;
+    }
+    const MeshTopology& topo = this->Parent->Topology;
+    const Index numParents = topo.GetNumVertices();
+    std::vector<Index> src(static_cast<size_t>(this->MaxRowSize));
+    std::vector<double> wts(src.size()), sum(static_cast<size_t>(components));
+    auto applyCorner = [&](Index f, Index corner, Index row) {
+      const Index size =
+        WriteCornerRow(*this->Parent, this->Points, this->Weights, f, corner - topo.GetFaceOffset(f), src.data(), wts.data());
+      ApplyRow(src.data(), wts.data(), size, numParents, parents, children, components, sum.data(),
+        children + static_cast<size_t>(row) * components);
+    };
+    if (this->Points.Unwelded)
+    {
+      // Rows are corners, in the order of the faces: walk the faces from the first row's.
+      Index f = FaceOfCorner(topo, begin);
+      for (Index corner = begin; corner < end; ++corner)
+      {
+        while (topo.GetFaceOffset(f + 1) <= corner)
+        {
+          ++f;
+        }
+        applyCorner(f, corner, corner);
+      }
+      return;
+    }
+    for (Index row = begin; row < end; ++row)
+    {
+      const Index corner = this->Points.CornerOf(row);
+      applyCorner(FaceOfCorner(topo, corner), corner, row);
+    }
+  }
+
+  std::shared_ptr<const Level> Parent;
+  DualPoints Points;
+  DooSabinWeightTable Weights;
+  Index MaxRowSize = 2; // a boundary row's size, at least
+};
 }
 
 StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points, const ParallelFor& parallelFor)
@@ -86,11 +182,9 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
   const MeshTopology& topo = parent.Topology;
   const Index numFaces = topo.GetNumFaces();
   // Welded corners have equal rows; each point takes its first corner's.
-  auto ownsRow = [&points](Index corner) {
-    return points.Unwelded || points.CornerOfPoint[points.PointOfCorner[corner]] == corner;
-  };
+  auto ownsRow = [&points](Index corner) { return points.CornerOf(points.PointOf(corner)) == corner; };
   StencilTable table(topo.GetNumVertices());
-  table.ReserveRows(static_cast<Index>(points.CornerOfPoint.size()));
+  table.ReserveRows(points.NumPoints);
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {
@@ -103,7 +197,7 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
           Index scratchSource[2];
           double scratchWeight[2];
           const Index boundary = BoundaryCornerRow(parent, points, f, j, scratchSource, scratchWeight);
-          table.SetRowSize(points.PointOfCorner[corner], boundary > 0 ? boundary : n);
+          table.SetRowSize(points.PointOf(corner), boundary > 0 ? boundary : n);
         }
       }
     }
@@ -113,26 +207,24 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {
-      const IndexSpan fv = topo.GetFaceVertices(f);
-      const Index n = fv.size();
-      for (Index i = 0; i < n; ++i)
+      for (Index i = 0; i < topo.GetFaceSize(f); ++i)
       {
         const Index corner = topo.GetFaceOffset(f) + i;
-        if (!ownsRow(corner))
+        if (ownsRow(corner))
         {
-          continue;
-        }
-        Index* src = table.GetMutableSources(points.PointOfCorner[corner]);
-        double* wts = table.GetMutableWeights(points.PointOfCorner[corner]);
-        if (BoundaryCornerRow(parent, points, f, i, src, wts) == 0)
-        {
-          std::copy(fv.begin(), fv.end(), src);
-          weights.WriteRow(n, i, wts);
+          const Index point = points.PointOf(corner);
+          WriteCornerRow(parent, points, weights, f, i, table.GetMutableSources(point), table.GetMutableWeights(point));
         }
       }
     }
   });
-  table.EndBlock(static_cast<Index>(points.CornerOfPoint.size()));
+  table.EndBlock(points.NumPoints);
   return table;
 }
+
+std::shared_ptr<const RowSource> MakeDooSabinRowSource(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
+{
+  return std::make_shared<DooSabinWrittenRows>(std::move(parent), parallelFor);
 }
+}
+

@@ -28,6 +28,8 @@
 #include "SubDLevel.h"
 #include "SubDStencilTable.h"
 
+#include <memory>
+
 namespace subd
 {
 /// alpha_ik for an n-gon, with d = i - k.
@@ -36,6 +38,12 @@ SUBDKERNEL_EXPORT double DooSabinWeight(Index n, Index d);
 /// `parallelFor` (each row by one task: the same table for any number of threads).
 SUBDKERNEL_EXPORT StencilTable BuildDooSabinStencils(
   const Level& parent, const DualPoints& points, const ParallelFor& parallelFor = SerialFor);
+/// The same rows written as they are applied (SubDRowWriting.h), with the numbering of
+/// `parent` made here by `parallelFor`. They read the parent's faces (corners and edge
+/// numbers) and that numbering only: the rest of its topology may be freed
+/// (MeshTopology::ReleaseAllButFaces) once its child is split.
+SUBDKERNEL_EXPORT std::shared_ptr<const RowSource> MakeDooSabinRowSource(
+  std::shared_ptr<const Level> parent, const ParallelFor& parallelFor = SerialFor);
 }
 
 #endif

@@ -70,7 +70,7 @@ bool BuildDooSabinLimitStencils(const Level& level, bool tangents, StencilTable&
   const MeshTopology& topo = level.Topology;
   const DualPoints points = NumberDualPoints(level);
   const StencilTable children = BuildDooSabinStencils(level, points);
-  auto childOfCorner = [&](Index f, Index corner) { return points.PointOfCorner[topo.GetFaceOffset(f) + corner]; };
+  auto childOfCorner = [&](Index f, Index corner) { return points.PointOf(topo.GetFaceOffset(f) + corner); };
   StencilRows rows;
   std::vector<Index> faces, corners, ring;
   for (Index v = 0; v < topo.GetNumVertices(); ++v)

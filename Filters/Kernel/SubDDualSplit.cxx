@@ -132,7 +132,13 @@ void NumberWeldedPoints(const Level& level, DualPoints& points)
       points.PointOfCorner[c] = points.PointOfCorner[root]; // root < c: numbered already
     }
   }
+  points.NumPoints = static_cast<Index>(points.CornerOfPoint.size());
   points.Unwelded = points.CornerOfPoint.size() == points.PointOfCorner.size();
+  if (points.Unwelded)
+  {
+    IndexArray().swap(points.PointOfCorner);
+    IndexArray().swap(points.CornerOfPoint);
+  }
 }
 }
 
@@ -179,12 +185,7 @@ DualPoints NumberDualPoints(const Level& level, const ParallelFor& parallelFor)
     NumberWeldedPoints(level, points);
     return points;
   }
-  points.PointOfCorner.resize(static_cast<size_t>(numCorners));
-  points.CornerOfPoint.resize(static_cast<size_t>(numCorners));
-  parallelFor(0, numCorners, [&points](Index begin, Index end) {
-    std::iota(points.PointOfCorner.begin() + begin, points.PointOfCorner.begin() + end, begin);
-    std::iota(points.CornerOfPoint.begin() + begin, points.CornerOfPoint.begin() + end, begin);
-  });
+  points.NumPoints = numCorners; // Unwelded
   return points;
 }
 
@@ -227,8 +228,7 @@ public:
 private:
   Index CornerPoint(Index f, Index corner) const
   {
-    const Index c = this->Topo.GetFaceOffset(f) + corner;
-    return this->Points.Unwelded ? c : this->Points.PointOfCorner[c]; // spares a random read
+    return this->Points.PointOf(this->Topo.GetFaceOffset(f) + corner);
   }
 
   // F-face: the corner points of face f.
@@ -330,7 +330,7 @@ void InheritDualSharpness(const Level& parent, const DualPoints& points, Level& 
 {
   const MeshTopology& topo = parent.Topology;
   const MeshTopology& childTopo = child.Topology;
-  auto pointAt = [&](Index f, Index v) { return points.PointOfCorner[topo.GetFaceOffset(f) + topo.FindCorner(v, f)]; };
+  auto pointAt = [&](Index f, Index v) { return points.PointOf(topo.GetFaceOffset(f) + topo.FindCorner(v, f)); };
   for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
     if (!IsSharp(parent.EdgeSharpness[e]) || topo.GetEdgeFaces(e).empty())
@@ -383,7 +383,7 @@ Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology dep
   Level child;
   child.FaceOrigin = std::move(faces.Origins);
   child.FaceIsHole = std::move(faces.Holes);
-  const Index numPoints = static_cast<Index>(points.CornerOfPoint.size());
+  const Index numPoints = points.NumPoints;
   if (depth == ChildTopology::Full && DualChildTopology::Applies(parent, points))
   {
     child.Depth = parent.Depth + 1;

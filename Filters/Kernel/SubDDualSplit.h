@@ -35,8 +35,8 @@ SUBDKERNEL_EXPORT bool IsDualCornerVertex(const Level& level, Index v);
 /// vertices (IsDualCornerVertex). Computed once per level, shared by split and stencils.
 struct DualPoints
 {
-  IndexArray PointOfCorner;
-  IndexArray CornerOfPoint;
+  IndexArray PointOfCorner; ///< empty when Unwelded (the identity): use PointOf
+  IndexArray CornerOfPoint; ///< empty when Unwelded: use CornerOf
   std::vector<std::uint8_t> IsCornerVertex;
   /// Corner vertices with fewer than two crease edges (a sharp vertex inside smooth
   /// surface, or at the end of a crease): every corner around them is the vertex itself.
@@ -45,9 +45,13 @@ struct DualPoints
   /// several times per edge, and a byte is cheaper to read than the sharpness, the edge's
   /// faces and its tags.
   std::vector<std::uint8_t> EdgeActsAsBoundary;
-  /// No corner is welded to another: PointOfCorner is the identity (no crease, no corner
-  /// vertex, which is every level of a smooth closed mesh).
+  /// No corner is welded to another: each corner is its own point (no crease, no corner
+  /// vertex, which is every level of a smooth closed mesh), and the two numberings are left
+  /// empty rather than spelling out the identity (8 bytes per corner of the largest level).
   bool Unwelded = true;
+  Index NumPoints = 0;
+  Index PointOf(Index corner) const { return this->Unwelded ? corner : this->PointOfCorner[corner]; }
+  Index CornerOf(Index point) const { return this->Unwelded ? point : this->CornerOfPoint[point]; }
 };
 /// `parallelFor` runs the per-edge and per-vertex classification and, when nothing is
 /// welded, the numbering.

@@ -306,4 +306,13 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
   }
   return level;
 }
+
+void ReleaseAllButFaces(Level& level)
+{
+  level.Topology.ReleaseAllButFaces();
+  LevelArray<float>().swap(level.EdgeSharpness);
+  LevelArray<float>().swap(level.VertexSharpness);
+  LevelArray<std::uint8_t>().swap(level.FaceIsHole);
+  LevelArray<Index>().swap(level.FaceOrigin);
+}
 }

@@ -298,6 +298,10 @@ struct BaseTags
 /// that has a boundary edge not explicitly infinitely sharp become holes. Those tags are
 /// inherited by later levels, never re-derived from their topology.
 SUBDKERNEL_EXPORT Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule rule);
+
+/// Frees all of a level but its faces' corners and edge numbers
+/// (MeshTopology::ReleaseAllButFaces) and its vertex count: no tags, no sharpness.
+SUBDKERNEL_EXPORT void ReleaseAllButFaces(Level& level);
 }
 
 #endif

@@ -52,6 +52,22 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
     return std::max(refinePeak, tables + output + scratch);
   }
 
+  // Rows that read their parent's faces only keep those of each level (and the numbering they
+  // are written in: 8 bytes per corner where corners are welded, bytes per edge and vertex);
+  // each level is whole while it is split.
+  if (scheme.WrittenRowsReadFacesOnly())
+  {
+    double kept = 0.0, splitPeak = 0.0;
+    for (int l = 0; l < levels; ++l)
+    {
+      const double numbering = 8.0 * counts[l].Corners + counts[l].Edges + 2.0 * counts[l].Vertices;
+      const double child = l + 1 < levels ? TopologyBytes(counts[l + 1]) : output - finest.Vertices * request.OutputBytesPerPoint;
+      splitPeak = std::max(splitPeak, kept + TopologyBytes(counts[l]) + numbering + child);
+      kept += FacesBytes(counts[l]) + 4.0 * counts[l].Corners + numbering;
+    }
+    return std::max(splitPeak, kept + output + scratch);
+  }
+
   // Written rows keep the levels they are written from; with WrittenFromGrandparent (or the
   // linear schemes' finest level) the levels between are built one at a time, or not at all.
   const bool everyOther = request.Rows == LevelRows::WrittenFromGrandparent && scheme.RefinesFromGrandparent();

@@ -129,6 +129,21 @@ void MeshTopology::ReleaseVertexFaceLists()
   IndexArray().swap(this->VertexFaceCorners);
 }
 
+void MeshTopology::ReleaseAllButFaces()
+{
+  for (IndexArray* lists : { &this->EdgeVertices, &this->EdgeFaces, &this->VertexFaces, &this->VertexFaceCorners,
+         &this->VertexEdges })
+  {
+    IndexArray().swap(*lists);
+  }
+  for (IndexArray* offsets : { &this->EdgeFaceOffsets, &this->VertexFaceOffsets, &this->VertexEdgeOffsets })
+  {
+    IndexArray{ 0 }.swap(*offsets);
+  }
+  LevelArray<EdgeTag>().swap(this->EdgeTags);
+  LevelArray<VertexTag>().swap(this->VertexTags);
+}
+
 void MeshTopology::RestoreVertexFaceLists(const ParallelFor& parallelFor)
 {
   if (!this->HasVertexFaceLists())

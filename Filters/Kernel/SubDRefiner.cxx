@@ -60,6 +60,10 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         parentSkipped = l + 2 == levels &&
           (finestFromGrandparentAlone || (finestFromGrandparentIfSmooth && scheme.RefinesFromGrandparentAlone(*parent)));
         current = parentSkipped ? Level() : scheme.Split(*parent, depth);
+        if (scheme.WrittenRowsReadFacesOnly())
+        {
+          ReleaseAllButFaces(*parent);
+        }
         if (parentSkipped && !scheme.GrandchildReadsVertexFaceLists())
         {
           parent->Topology.ReleaseVertexFaceLists(); // kept for rows that never read them

@@ -147,6 +147,11 @@ LevelRefinement DooSabinScheme::RefineLevel(const Level& parent, ChildTopology d
   return r;
 }
 
+std::shared_ptr<const RowSource> DooSabinScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
+{
+  return MakeDooSabinRowSource(std::move(parent), this->GetParallelFor());
+}
+
 MeshCounts DooSabinScheme::PredictChildCounts(const MeshCounts& parent) const
 {
   // Upper bounds (a closed mesh): a point per corner; F-, E- and V-faces; the corners of

@@ -61,6 +61,11 @@ public:
     (void)parent;
     return nullptr;
   }
+  /// True when the rows MakeRowSource writes read nothing of their parent level but its
+  /// faces' corners and edge numbers: Refine then frees the rest of each such level once it is
+  /// split (ReleaseAllButFaces), which it keeps for those rows only. Only for schemes without
+  /// RefineFromGrandparent, whose levels are never read again as grandparents.
+  virtual bool WrittenRowsReadFacesOnly() const { return false; }
   /// For levels whose rows are written as applied (LevelRows::WrittenFromGrandparent):
   /// `parent`'s child (with `depth`) and its rows, written from `grandparent`, whose child
   /// `parent` is (full topology), so that `parent`'s topology need not be kept: it is
@@ -250,6 +255,9 @@ public:
   Level Split(const Level& parent, ChildTopology depth) const override;
   StencilTable BuildStencils(const Level& parent) const override;
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
+  /// MakeDooSabinRowSource: the rows read the parent's faces and the dual numbering only.
+  std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
+  bool WrittenRowsReadFacesOnly() const override { return true; }
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
 };
 

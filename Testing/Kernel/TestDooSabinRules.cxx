@@ -85,6 +85,7 @@ TEST(DualSplit, ThreadsGiveTheSerialPointsFacesAndRows)
         EXPECT_EQ(serial.IsCornerVertex, threaded.IsCornerVertex);
         EXPECT_EQ(serial.PinsEveryCorner, threaded.PinsEveryCorner);
         EXPECT_EQ(serial.Unwelded, threaded.Unwelded);
+        EXPECT_EQ(serial.NumPoints, threaded.NumPoints);
         const subd::StencilTable rows = subd::BuildDooSabinStencils(level, serial);
         const subd::StencilTable threadedRows = subd::BuildDooSabinStencils(level, threaded, subdtest::ThreeThreadFor);
         ASSERT_EQ(rows.GetNumRows(), threadedRows.GetNumRows());

@@ -225,7 +225,7 @@ TEST(DualLimitMasks, VFaceDescendantsShrinkOntoTheLimitPoint)
         std::vector<Index> faces, corners, ring;
         if (!subd::GetOrderedRing(topo, v, faces, corners, ring))
           continue; // boundary vertices: no V-face
-        const Index corner = isDooSabin ? dual.PointOfCorner[topo.GetFaceOffset(faces[0]) + corners[0]]
+        const Index corner = isDooSabin ? dual.PointOf(topo.GetFaceOffset(faces[0]) + corners[0])
                                         : topo.FindEdge(v, ring[0]); // midpoint child e: edge e
         for (Index g : next.Level.Topology.GetVertexFaces(corner))
         {
@@ -235,7 +235,7 @@ TEST(DualLimitMasks, VFaceDescendantsShrinkOntoTheLimitPoint)
             bool all = true; // every corner is a child of v's corners
             for (Index j = 0; j < gv.size(); ++j)
             {
-              const Index expected = isDooSabin ? dual.PointOfCorner[topo.GetFaceOffset(faces[j]) + corners[j]]
+              const Index expected = isDooSabin ? dual.PointOf(topo.GetFaceOffset(faces[j]) + corners[j])
                                                 : topo.FindEdge(v, ring[j]);
               all = all && std::find(gv.begin(), gv.end(), expected) != gv.end();
             }
