@@ -152,14 +152,31 @@ private:
     if (this->Points.Unwelded)
     {
       // Rows are corners, in the order of the faces: walk the faces from the first row's.
-      Index f = FaceOfCorner(topo, begin);
-      for (Index corner = begin; corner < end; ++corner)
+      for (Index f = FaceOfCorner(topo, begin), corner = begin; corner < end; ++f)
       {
-        while (topo.GetFaceOffset(f + 1) <= corner)
+        const Index first = topo.GetFaceOffset(f);
+        const Index stop = std::min(end, topo.GetFaceOffset(f + 1));
+        if (components != 3 || !this->HasInteriorCorners(f))
         {
-          ++f;
+          for (; corner < stop; ++corner)
+          {
+            applyCorner(f, corner, corner);
+          }
+          continue;
         }
-        applyCorner(f, corner, corner);
+        // Every corner's row is alpha_n over the face's vertices: summed straight from them,
+        // in the row's order (the same bits as the written row).
+        const IndexSpan fv = topo.GetFaceVertices(f);
+        for (; corner < stop; ++corner)
+        {
+          this->Weights.WriteRow(fv.size(), corner - first, wts.data());
+          PointSum point;
+          for (Index k = 0; k < fv.size(); ++k)
+          {
+            point.Add(wts[k], parents + 3 * static_cast<size_t>(fv[k]));
+          }
+          point.Store(children + 3 * static_cast<size_t>(corner));
+        }
       }
       return;
     }
@@ -168,6 +185,22 @@ private:
       const Index corner = this->Points.CornerOf(row);
       applyCorner(FaceOfCorner(topo, corner), corner, row);
     }
+  }
+
+  // No corner of face f has a boundary row (BoundaryCornerRow): no edge of it acts as a
+  // boundary, no vertex of it pins its corners.
+  bool HasInteriorCorners(Index f) const
+  {
+    const IndexSpan fv = this->Parent->Topology.GetFaceVertices(f);
+    const IndexSpan fe = this->Parent->Topology.GetFaceEdges(f);
+    for (Index j = 0; j < fv.size(); ++j)
+    {
+      if (this->Points.EdgeActsAsBoundary[fe[j]] || this->Points.PinsEveryCorner[fv[j]])
+      {
+        return false;
+      }
+    }
+    return true;
   }
 
   std::shared_ptr<const Level> Parent;
