@@ -41,7 +41,7 @@ SUBDKERNEL_EXPORT StencilTable BuildDooSabinStencils(
 /// The same rows written as they are applied (SubDRowWriting.h), with the numbering of
 /// `parent` made here by `parallelFor`. They read the parent's faces (corners and edge
 /// numbers) and that numbering only: the rest of its topology may be freed
-/// (MeshTopology::ReleaseAllButFaces) once its child is split.
+/// (MeshTopology::KeepOnly) once its child is split.
 SUBDKERNEL_EXPORT std::shared_ptr<const RowSource> MakeDooSabinRowSource(
   std::shared_ptr<const Level> parent, const ParallelFor& parallelFor = SerialFor);
 }

@@ -307,9 +307,9 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
   return level;
 }
 
-void ReleaseAllButFaces(Level& level)
+void KeepOnly(Level& level, MeshTopology::Part part)
 {
-  level.Topology.ReleaseAllButFaces();
+  level.Topology.KeepOnly(part);
   LevelArray<float>().swap(level.EdgeSharpness);
   LevelArray<float>().swap(level.VertexSharpness);
   LevelArray<std::uint8_t>().swap(level.FaceIsHole);

@@ -299,9 +299,9 @@ struct BaseTags
 /// inherited by later levels, never re-derived from their topology.
 SUBDKERNEL_EXPORT Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule rule);
 
-/// Frees all of a level but its faces' corners and edge numbers
-/// (MeshTopology::ReleaseAllButFaces) and its vertex count: no tags, no sharpness.
-SUBDKERNEL_EXPORT void ReleaseAllButFaces(Level& level);
+/// Frees all of a level but a part of its topology (MeshTopology::KeepOnly) and its vertex
+/// count: no tags, no sharpness.
+SUBDKERNEL_EXPORT void KeepOnly(Level& level, MeshTopology::Part part);
 }
 
 #endif

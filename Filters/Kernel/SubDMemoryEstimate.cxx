@@ -52,18 +52,23 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
     return std::max(refinePeak, tables + output + scratch);
   }
 
-  // Rows that read their parent's faces only keep those of each level (and the numbering they
-  // are written in: 8 bytes per corner where corners are welded, bytes per edge and vertex);
-  // each level is whole while it is split.
-  if (scheme.WrittenRowsReadFacesOnly())
+  // Rows that read a part of their parent's topology keep that part of each level, and what
+  // they number their rows with (Doo-Sabin's dual numbering: 8 bytes per corner where
+  // corners are welded, a byte per edge, two per vertex; the midpoint's kept vertices); each
+  // level is whole while it is split.
+  MeshTopology::Part part;
+  if (scheme.WrittenRowsReadOnly(part))
   {
     double kept = 0.0, splitPeak = 0.0;
     for (int l = 0; l < levels; ++l)
     {
-      const double numbering = 8.0 * counts[l].Corners + counts[l].Edges + 2.0 * counts[l].Vertices;
+      const MeshCounts& c = counts[l];
+      const double rows = part == MeshTopology::Part::Faces
+        ? FacesBytes(c) + 4.0 * c.Corners + 8.0 * c.Corners + c.Edges + 2.0 * c.Vertices
+        : 8.0 * c.Edges + 4.0 * c.Vertices;
       const double child = l + 1 < levels ? TopologyBytes(counts[l + 1]) : output - finest.Vertices * request.OutputBytesPerPoint;
-      splitPeak = std::max(splitPeak, kept + TopologyBytes(counts[l]) + numbering + child);
-      kept += FacesBytes(counts[l]) + 4.0 * counts[l].Corners + numbering;
+      splitPeak = std::max(splitPeak, kept + TopologyBytes(c) + rows + child);
+      kept += rows;
     }
     return std::max(splitPeak, kept + output + scratch);
   }

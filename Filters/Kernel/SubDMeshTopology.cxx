@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <numeric>
 #include <utility>
+#include <vector>
 
 namespace subd
 {
@@ -129,16 +130,26 @@ void MeshTopology::ReleaseVertexFaceLists()
   IndexArray().swap(this->VertexFaceCorners);
 }
 
-void MeshTopology::ReleaseAllButFaces()
+void MeshTopology::KeepOnly(Part part)
 {
-  for (IndexArray* lists : { &this->EdgeVertices, &this->EdgeFaces, &this->VertexFaces, &this->VertexFaceCorners,
-         &this->VertexEdges })
+  std::vector<IndexArray*> lists{ &this->EdgeFaces, &this->VertexFaces, &this->VertexFaceCorners, &this->VertexEdges };
+  std::vector<IndexArray*> offsets{ &this->EdgeFaceOffsets, &this->VertexFaceOffsets, &this->VertexEdgeOffsets };
+  if (part == Part::Faces)
   {
-    IndexArray().swap(*lists);
+    lists.push_back(&this->EdgeVertices);
   }
-  for (IndexArray* offsets : { &this->EdgeFaceOffsets, &this->VertexFaceOffsets, &this->VertexEdgeOffsets })
+  else
   {
-    IndexArray{ 0 }.swap(*offsets);
+    lists.insert(lists.end(), { &this->FaceVertices, &this->FaceEdges });
+    offsets.push_back(&this->FaceOffsets);
+  }
+  for (IndexArray* list : lists)
+  {
+    IndexArray().swap(*list);
+  }
+  for (IndexArray* list : offsets)
+  {
+    IndexArray{ 0 }.swap(*list);
   }
   LevelArray<EdgeTag>().swap(this->EdgeTags);
   LevelArray<VertexTag>().swap(this->VertexTags);

@@ -74,10 +74,17 @@ public:
   /// RestoreVertexFaceLists, GetVertexFaces and GetVertexFaceCorners give spans of the right
   /// size and no data (a null pointer: reading them faults at once).
   void ReleaseVertexFaceLists();
-  /// Frees everything but each face's corners and edge numbers (and the vertex count): for a
-  /// level kept only for rows that read nothing else (Doo-Sabin's). GetNumEdges() is then 0,
-  /// and only GetFaceSize, GetFaceOffset, GetFaceVertices and GetFaceEdges may be called.
-  void ReleaseAllButFaces();
+  /// A part of the topology that rows written from a level may read alone.
+  enum class Part
+  {
+    Faces,   ///< each face's corners and edge numbers (Doo-Sabin's rows)
+    EdgeEnds ///< each edge's two vertices (the midpoint rows)
+  };
+  /// Frees everything but `part` (and the vertex count): for a level kept only for rows that
+  /// read nothing else. Only that part's accessors may be called then (GetNumFaces,
+  /// GetFaceSize, GetFaceOffset, GetFaceVertices, GetFaceEdges; GetNumEdges,
+  /// GetEdgeVertices).
+  void KeepOnly(Part part);
   /// False for a level between split with ChildTopology::FacesAndEdges (and a faces-only
   /// one): no list, count or tag around its vertices, no valence.
   bool HasVertexRelations() const { return VertexEdgeOffsets.size() == static_cast<size_t>(NumVertices) + 1; }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
+#include <vector>
 
 namespace subd
 {
@@ -187,13 +189,15 @@ void AddVertexFaces(const Level& parent, const std::vector<Index>& keptPoint, st
 }
 }
 
-LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
+namespace
+{
+// The child point of each vertex the split keeps (else InvalidIndex), numbered after the
+// midpoints in vertex order; `numChildPoints` counts them all.
+std::vector<Index> NumberKeptPoints(const Level& parent, Index& numChildPoints)
 {
   const MeshTopology& topo = parent.Topology;
-
-  // Child points: midpoints, then kept vertices.
   std::vector<Index> keptPoint(static_cast<size_t>(topo.GetNumVertices()), InvalidIndex);
-  Index numChildPoints = topo.GetNumEdges();
+  numChildPoints = topo.GetNumEdges();
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
     if (MidpointKeepsVertex(parent, v))
@@ -201,9 +205,75 @@ LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth, const P
       keptPoint[v] = numChildPoints++;
     }
   }
-  LevelRefinement result;
-  WriteStencils(topo, keptPoint, numChildPoints, result.Stencils);
+  return keptPoint;
+}
 
+// WriteStencils' rows written as they are applied, from the parent's edges' ends and the
+// kept vertices only.
+class MidpointWrittenRows final : public RowSource
+{
+public:
+  explicit MidpointWrittenRows(std::shared_ptr<const Level> parent)
+    : Parent(std::move(parent))
+  {
+    Index numChildPoints = 0;
+    const std::vector<Index> keptPoint = NumberKeptPoints(*this->Parent, numChildPoints);
+    for (Index v = 0; v < static_cast<Index>(keptPoint.size()); ++v)
+    {
+      if (keptPoint[v] != InvalidIndex)
+      {
+        this->KeptVertices.push_back(v);
+      }
+    }
+  }
+  Index GetNumParents() const override { return this->Parent->Topology.GetNumVertices(); }
+  Index GetNumRows() const override
+  {
+    return this->Parent->Topology.GetNumEdges() + static_cast<Index>(this->KeptVertices.size());
+  }
+  std::vector<Index> GetBlockEnds() const override { return { this->GetNumRows() }; }
+  void ApplyRows(const double* parents, double* children, int components, Index begin, Index end) const override
+  {
+    this->Apply(parents, children, components, begin, end);
+  }
+  void ApplyRows(const float* parents, float* children, int components, Index begin, Index end) const override
+  {
+    this->Apply(parents, children, components, begin, end);
+  }
+
+private:
+  template <typename T>
+  void Apply(const T* parents, T* children, int components, Index begin, Index end) const
+  {
+    const MeshTopology& topo = this->Parent->Topology;
+    const Index numEdges = topo.GetNumEdges();
+    std::vector<double> sum(static_cast<size_t>(components));
+    const double halves[2] = { 0.5, 0.5 }, one = 1.0;
+    for (Index row = begin; row < end; ++row)
+    {
+      T* dst = children + static_cast<size_t>(row) * components;
+      if (row < numEdges)
+      {
+        ApplyRow(topo.GetEdgeVertices(row), halves, 2, topo.GetNumVertices(), parents, children, components,
+          sum.data(), dst);
+      }
+      else
+      {
+        ApplyRow(&this->KeptVertices[row - numEdges], &one, 1, topo.GetNumVertices(), parents, children,
+          components, sum.data(), dst);
+      }
+    }
+  }
+
+  std::shared_ptr<const Level> Parent;
+  std::vector<Index> KeptVertices; // the vertex of each kept point
+};
+
+// The child level (the split without its stencils).
+Level SplitWithKeptPoints(const Level& parent, const std::vector<Index>& keptPoint, Index numChildPoints,
+  ChildTopology depth, const ParallelFor& parallelFor)
+{
+  const MeshTopology& topo = parent.Topology;
   // V-faces first (kept aside: they follow the F-faces), because a sector of a single face
   // puts its kept point into that face's F-face instead.
   std::vector<Index> insertedAtCorner(static_cast<size_t>(topo.GetNumFaceCorners()), InvalidIndex);
@@ -211,7 +281,7 @@ LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth, const P
   std::vector<std::uint8_t> vHoles;
   AddVertexFaces(parent, keptPoint, insertedAtCorner, vOffsets, vVertices, vOrigins, vHoles);
 
-  Level& child = result.Child;
+  Level child;
   IndexArray offsets{ 0 }, vertices;
   for (Index f = 0; f < topo.GetNumFaces(); ++f)
   {
@@ -243,6 +313,29 @@ LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth, const P
   {
     InheritMidpointSharpness(parent, keptPoint, child);
   }
+  return child;
+}
+}
+
+LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
+{
+  Index numChildPoints = 0;
+  const std::vector<Index> keptPoint = NumberKeptPoints(parent, numChildPoints);
+  LevelRefinement result;
+  WriteStencils(parent.Topology, keptPoint, numChildPoints, result.Stencils);
+  result.Child = SplitWithKeptPoints(parent, keptPoint, numChildPoints, depth, parallelFor);
   return result;
+}
+
+Level SplitMidpoint(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
+{
+  Index numChildPoints = 0;
+  const std::vector<Index> keptPoint = NumberKeptPoints(parent, numChildPoints);
+  return SplitWithKeptPoints(parent, keptPoint, numChildPoints, depth, parallelFor);
+}
+
+std::shared_ptr<const RowSource> MakeMidpointRowSource(std::shared_ptr<const Level> parent)
+{
+  return std::make_shared<MidpointWrittenRows>(std::move(parent));
 }
 }

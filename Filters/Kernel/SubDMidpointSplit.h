@@ -32,6 +32,8 @@
 #include "SubDLevel.h"
 #include "SubDStencilTable.h"
 
+#include <memory>
+
 namespace subd
 {
 /// True for a vertex the split keeps (a child point of its own): on a boundary, sharp, or
@@ -41,6 +43,13 @@ SUBDKERNEL_EXPORT bool MidpointKeepsVertex(const Level& level, Index v);
 /// The split and its stencils together: both depend on which boundary vertices are kept.
 SUBDKERNEL_EXPORT LevelRefinement RefineMidpoint(
   const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
+/// The split alone (RefineMidpoint's child).
+SUBDKERNEL_EXPORT Level SplitMidpoint(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
+/// RefineMidpoint's rows written as they are applied (SubDRowWriting.h): each midpoint from
+/// its edge's ends, each kept vertex copied. They read the parent's edges' ends and which
+/// vertices are kept only: the rest of its topology may be freed (MeshTopology::KeepOnly)
+/// once its child is split.
+SUBDKERNEL_EXPORT std::shared_ptr<const RowSource> MakeMidpointRowSource(std::shared_ptr<const Level> parent);
 }
 
 #endif

@@ -60,9 +60,10 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         parentSkipped = l + 2 == levels &&
           (finestFromGrandparentAlone || (finestFromGrandparentIfSmooth && scheme.RefinesFromGrandparentAlone(*parent)));
         current = parentSkipped ? Level() : scheme.Split(*parent, depth);
-        if (scheme.WrittenRowsReadFacesOnly())
+        MeshTopology::Part part;
+        if (scheme.WrittenRowsReadOnly(part))
         {
-          ReleaseAllButFaces(*parent);
+          KeepOnly(*parent, part);
         }
         if (parentSkipped && !scheme.GrandchildReadsVertexFaceLists())
         {

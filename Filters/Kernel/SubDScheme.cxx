@@ -170,6 +170,16 @@ LevelRefinement MidpointScheme::RefineLevel(const Level& parent, ChildTopology d
   return RefineMidpoint(parent, depth, this->GetParallelFor());
 }
 
+Level MidpointScheme::Split(const Level& parent, ChildTopology depth) const
+{
+  return SplitMidpoint(parent, depth, this->GetParallelFor());
+}
+
+std::shared_ptr<const RowSource> MidpointScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
+{
+  return MakeMidpointRowSource(std::move(parent));
+}
+
 MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
 {
   // Upper bounds (plus kept boundary vertices, at most V): a point per edge; F- and

@@ -61,11 +61,15 @@ public:
     (void)parent;
     return nullptr;
   }
-  /// True when the rows MakeRowSource writes read nothing of their parent level but its
-  /// faces' corners and edge numbers: Refine then frees the rest of each such level once it is
-  /// split (ReleaseAllButFaces), which it keeps for those rows only. Only for schemes without
+  /// True when the rows MakeRowSource writes read nothing of their parent level but `part`
+  /// of its topology: Refine then frees the rest of each such level once it is split
+  /// (KeepOnly), since it keeps it for those rows only. Only for schemes without
   /// RefineFromGrandparent, whose levels are never read again as grandparents.
-  virtual bool WrittenRowsReadFacesOnly() const { return false; }
+  virtual bool WrittenRowsReadOnly(MeshTopology::Part& part) const
+  {
+    (void)part;
+    return false;
+  }
   /// For levels whose rows are written as applied (LevelRows::WrittenFromGrandparent):
   /// `parent`'s child (with `depth`) and its rows, written from `grandparent`, whose child
   /// `parent` is (full topology), so that `parent`'s topology need not be kept: it is
@@ -257,7 +261,11 @@ public:
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   /// MakeDooSabinRowSource: the rows read the parent's faces and the dual numbering only.
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
-  bool WrittenRowsReadFacesOnly() const override { return true; }
+  bool WrittenRowsReadOnly(MeshTopology::Part& part) const override
+  {
+    part = MeshTopology::Part::Faces;
+    return true;
+  }
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
 };
 
@@ -328,6 +336,15 @@ public:
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
   bool BuildLimitTangentStencils(const Level& level, StencilTable& tangents, std::string& error) const override;
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
+  /// SplitMidpoint: the split without the rows, for rows written as applied.
+  Level Split(const Level& parent, ChildTopology depth) const override;
+  /// MakeMidpointRowSource: the rows read the parent's edges' ends only.
+  std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
+  bool WrittenRowsReadOnly(MeshTopology::Part& part) const override
+  {
+    part = MeshTopology::Part::EdgeEnds;
+    return true;
+  }
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
 };
