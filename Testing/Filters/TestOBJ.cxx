@@ -4,6 +4,7 @@
 #include "vtkSubDOBJWriter.h"
 
 #include "SubDFilterTestSupport.h"
+#include "SubDTempFiles.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -18,7 +19,7 @@ namespace
 {
 std::string TempPath(const std::string& name)
 {
-  return std::string(::testing::TempDir()) + "subd_obj_" + name;
+  return subdtest::ProcessTempPath("subd_obj_", name);
 }
 
 vtkSmartPointer<vtkPolyData> ReadOBJ(const std::string& path, subdtest::Messages& messages)

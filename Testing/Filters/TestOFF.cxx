@@ -8,6 +8,7 @@
 #include "vtkSubDPLYWriter.h"
 
 #include "SubDFilterTestSupport.h"
+#include "SubDTempFiles.h"
 
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -32,7 +33,7 @@ namespace
 {
 std::string TempPath(const std::string& name)
 {
-  return std::string(::testing::TempDir()) + "subd_off_" + name;
+  return subdtest::ProcessTempPath("subd_off_", name);
 }
 
 void WriteText(const std::string& path, const std::string& text)
@@ -95,6 +96,7 @@ std::string ReadErrors(const std::string& text, vtkPolyData* result = nullptr)
   CollectErrors(reader, errors);
   reader->SetFileName(path.c_str());
   reader->Update();
+  std::remove(path.c_str());
   if (result)
     result->DeepCopy(reader->GetOutput());
   if (!errors.empty())

@@ -4,6 +4,8 @@
 #ifndef SubDReaderTestSupport_h
 #define SubDReaderTestSupport_h
 
+#include "SubDTempFiles.h"
+
 #include "vtkAbstractArray.h"
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
@@ -22,14 +24,12 @@
 #include <cstring>
 #include <fstream>
 #include <string>
-#include <unistd.h>
 
 namespace subdtest
 {
-// Per process: ctest -j runs the cases of one program side by side, each in its own process.
 inline std::string ReaderTempPath(const std::string& name)
 {
-  return std::string(::testing::TempDir()) + "subd_reader_" + std::to_string(::getpid()) + "_" + name;
+  return ProcessTempPath("subd_reader_", name);
 }
 
 inline void WriteFileBytes(const std::string& path, const std::string& bytes)
