@@ -106,8 +106,10 @@ Index FaceOfCorner(const MeshTopology& topo, Index corner)
 
 // BuildDooSabinStencils' rows written as they are applied: from the parent's faces (their
 // corners and edge numbers) and the dual numbering only.
-class DooSabinWrittenRows final : public RowSource
+class DooSabinWrittenRows final : public RowSourceWithApply<DooSabinWrittenRows>
 {
+  friend class RowSourceWithApply<DooSabinWrittenRows>;
+
 public:
   DooSabinWrittenRows(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
     : Parent(std::move(parent))
@@ -122,14 +124,6 @@ public:
   Index GetNumParents() const override { return this->Parent->Topology.GetNumVertices(); }
   Index GetNumRows() const override { return this->Points.NumPoints; }
   std::vector<Index> GetBlockEnds() const override { return { this->Points.NumPoints }; }
-  void ApplyRows(const double* parents, double* children, int components, Index begin, Index end) const override
-  {
-    this->Apply(parents, children, components, begin, end);
-  }
-  void ApplyRows(const float* parents, float* children, int components, Index begin, Index end) const override
-  {
-    this->Apply(parents, children, components, begin, end);
-  }
 
 private:
   template <typename T>

@@ -210,8 +210,10 @@ std::vector<Index> NumberKeptPoints(const Level& parent, Index& numChildPoints)
 
 // WriteStencils' rows written as they are applied, from the parent's edges' ends and the
 // kept vertices only.
-class MidpointWrittenRows final : public RowSource
+class MidpointWrittenRows final : public RowSourceWithApply<MidpointWrittenRows>
 {
+  friend class RowSourceWithApply<MidpointWrittenRows>;
+
 public:
   explicit MidpointWrittenRows(std::shared_ptr<const Level> parent)
     : Parent(std::move(parent))
@@ -232,14 +234,6 @@ public:
     return this->Parent->Topology.GetNumEdges() + static_cast<Index>(this->KeptVertices.size());
   }
   std::vector<Index> GetBlockEnds() const override { return { this->GetNumRows() }; }
-  void ApplyRows(const double* parents, double* children, int components, Index begin, Index end) const override
-  {
-    this->Apply(parents, children, components, begin, end);
-  }
-  void ApplyRows(const float* parents, float* children, int components, Index begin, Index end) const override
-  {
-    this->Apply(parents, children, components, begin, end);
-  }
 
 private:
   template <typename T>

@@ -69,8 +69,10 @@ struct HasPrefetchRow<Writer, T,
 /// The rows of a Writer over `parent`, applied as they are written. Keeps the parent level
 /// alive: it is what the rows are written from.
 template <typename Writer>
-class WrittenRows final : public RowSource
+class WrittenRows final : public RowSourceWithApply<WrittenRows<Writer>>
 {
+  friend class RowSourceWithApply<WrittenRows<Writer>>;
+
 public:
   /// `writerOptions` follow the parent level in the Writer's constructor.
   template <typename... WriterOptions>
@@ -82,14 +84,6 @@ public:
   Index GetNumParents() const override { return this->RowWriter.GetNumParents(); }
   Index GetNumRows() const override { return this->RowWriter.GetNumRows(); }
   std::vector<Index> GetBlockEnds() const override { return this->RowWriter.GetBlockEnds(); }
-  void ApplyRows(const double* parents, double* children, int components, Index begin, Index end) const override
-  {
-    this->Apply(parents, children, components, begin, end);
-  }
-  void ApplyRows(const float* parents, float* children, int components, Index begin, Index end) const override
-  {
-    this->Apply(parents, children, components, begin, end);
-  }
 
 private:
   template <typename T>

@@ -34,6 +34,23 @@ public:
   virtual void ApplyRows(const float* parents, float* children, int components, Index begin, Index end) const = 0;
 };
 
+/// A RowSource whose Derived applies its rows with one template,
+///   template <typename T> void Apply(const T* parents, T* children, int components, Index begin, Index end) const;
+/// for both precisions.
+template <typename Derived>
+class RowSourceWithApply : public RowSource
+{
+public:
+  void ApplyRows(const double* parents, double* children, int components, Index begin, Index end) const override
+  {
+    static_cast<const Derived*>(this)->Apply(parents, children, components, begin, end);
+  }
+  void ApplyRows(const float* parents, float* children, int components, Index begin, Index end) const override
+  {
+    static_cast<const Derived*>(this)->Apply(parents, children, components, begin, end);
+  }
+};
+
 class SUBDKERNEL_EXPORT StencilTable
 {
 public:
