@@ -132,15 +132,24 @@ void MeshTopology::ReleaseVertexFaceLists()
 
 void MeshTopology::KeepOnly(Part part)
 {
-  std::vector<IndexArray*> lists{ &this->EdgeFaces, &this->VertexFaces, &this->VertexFaceCorners, &this->VertexEdges };
-  std::vector<IndexArray*> offsets{ &this->EdgeFaceOffsets, &this->VertexFaceOffsets, &this->VertexEdgeOffsets };
+  std::vector<IndexArray*> lists{ &this->EdgeFaces, &this->VertexFaces, &this->VertexFaceCorners };
+  std::vector<IndexArray*> offsets{ &this->EdgeFaceOffsets, &this->VertexFaceOffsets };
+  if (part != Part::FacesAndRings)
+  {
+    lists.push_back(&this->VertexEdges);
+    offsets.push_back(&this->VertexEdgeOffsets);
+  }
   if (part == Part::Faces)
   {
     lists.push_back(&this->EdgeVertices);
   }
   else
   {
-    lists.insert(lists.end(), { &this->FaceVertices, &this->FaceEdges });
+    lists.push_back(&this->FaceEdges);
+  }
+  if (part == Part::EdgeEnds)
+  {
+    lists.push_back(&this->FaceVertices);
     offsets.push_back(&this->FaceOffsets);
   }
   for (IndexArray* list : lists)

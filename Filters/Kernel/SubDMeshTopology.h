@@ -77,13 +77,14 @@ public:
   /// A part of the topology that rows written from a level may read alone.
   enum class Part
   {
-    Faces,   ///< each face's corners and edge numbers (Doo-Sabin's rows)
-    EdgeEnds ///< each edge's two vertices (the midpoint rows)
+    Faces,         ///< each face's corners and edge numbers (Doo-Sabin's rows)
+    EdgeEnds,      ///< each edge's two vertices (the midpoint rows)
+    FacesAndRings, ///< each face's corners, vertex's edges and edge's ends (sqrt(3)'s rows)
   };
   /// Frees everything but `part` (and the vertex count): for a level kept only for rows that
   /// read nothing else. Only that part's accessors may be called then (GetNumFaces,
   /// GetFaceSize, GetFaceOffset, GetFaceVertices, GetFaceEdges; GetNumEdges,
-  /// GetEdgeVertices).
+  /// GetEdgeVertices, GetOtherEndpoint; GetVertexEdges).
   void KeepOnly(Part part);
   /// False for a level between split with ChildTopology::FacesAndEdges (and a faces-only
   /// one): no list, count or tag around its vertices, no valence.

@@ -53,6 +53,36 @@ StencilTable WriteStencilTable(const Writer& writer, size_t expectedEntries)
   return table;
 }
 
+/// The rows of `writer` in a table, written by `parallelFor` (each row by one task, so the
+/// same table for any number of threads): sized in one pass, written in place in another.
+template <typename Writer>
+StencilTable WriteStencilTable(const Writer& writer, const ParallelFor& parallelFor)
+{
+  StencilTable table(writer.GetNumParents());
+  const Index numRows = writer.GetNumRows();
+  table.ReserveRows(numRows);
+  parallelFor(0, numRows, [&](Index begin, Index end) {
+    std::vector<Index> sources(static_cast<size_t>(writer.GetMaxRowSize()));
+    std::vector<double> weights(sources.size());
+    for (Index row = begin; row < end; ++row)
+    {
+      table.SetRowSize(row, writer.WriteRow(row, sources.data(), weights.data()));
+    }
+  });
+  table.FinalizeSizesUnfilled();
+  parallelFor(0, numRows, [&](Index begin, Index end) {
+    for (Index row = begin; row < end; ++row)
+    {
+      writer.WriteRow(row, table.GetMutableSources(row), table.GetMutableWeights(row));
+    }
+  });
+  for (Index end : writer.GetBlockEnds())
+  {
+    table.EndBlock(end);
+  }
+  return table;
+}
+
 /// Whether a row writer has PrefetchRow(row, parents, children): a hint that asks for the
 /// points row `row` reads, so that they arrive while the rows before it are evaluated.
 template <typename Writer, typename T, typename = void>

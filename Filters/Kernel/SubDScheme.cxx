@@ -204,6 +204,16 @@ LevelRefinement Sqrt3Scheme::RefineLevel(const Level& parent, ChildTopology dept
   return RefineSqrt3(parent, depth, this->GetParallelFor());
 }
 
+Level Sqrt3Scheme::Split(const Level& parent, ChildTopology depth) const
+{
+  return SplitSqrt3(parent, depth, this->GetParallelFor());
+}
+
+std::shared_ptr<const RowSource> Sqrt3Scheme::MakeRowSource(std::shared_ptr<const Level> parent) const
+{
+  return MakeSqrt3RowSource(std::move(parent), this->GetParallelFor());
+}
+
 MeshCounts Sqrt3Scheme::PredictChildCounts(const MeshCounts& parent) const
 {
   // Three triangles per triangle. Each face adds a point and three edges; in the steps that

@@ -323,6 +323,15 @@ public:
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
   bool BuildLimitTangentStencils(const Level& level, StencilTable& tangents, std::string& error) const override;
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
+  /// SplitSqrt3: the split without the rows, for rows written as applied.
+  Level Split(const Level& parent, ChildTopology depth) const override;
+  /// MakeSqrt3RowSource: the rows read the parent's faces and vertex rings only.
+  std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
+  bool WrittenRowsReadOnly(MeshTopology::Part& part) const override
+  {
+    part = MeshTopology::Part::FacesAndRings;
+    return true;
+  }
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
 };

@@ -1,8 +1,10 @@
 #include "SubDSqrt3Rules.h"
 #include "SubDFaceBlocks.h"
+#include "SubDRowWriting.h"
 #include "SubDSqrt3ChildTopology.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 namespace subd
@@ -183,118 +185,179 @@ struct Sqrt3Points
   }
 };
 
-// The rows of one step, written in parallel (each row by one task).
-StencilTable BuildSqrt3Stencils(const Level& parent, const Sqrt3Points& points, bool evenStep, const ParallelFor& parallelFor)
+// The rows of one step, numbered like Sqrt3Points, written one at a time (SubDRowWriting.h).
+// What the rows need beyond the parent's faces, vertices' edges and edges' ends is kept here
+// in compact form (each vertex's rule; the curve neighbours of the few curve vertices and
+// trisected edges), so that rows written as they are applied let the rest of the parent go
+// (MeshTopology::Part::FacesAndRings).
+class Sqrt3RowWriter
 {
-  const MeshTopology& topo = parent.Topology;
-  const Index numFaces = topo.GetNumFaces();
-  const Index numVertices = topo.GetNumVertices();
-  const Index numEdges = topo.GetNumEdges();
-  StencilTable table(numVertices);
-  table.ReserveRows(points.NumPoints);
-  std::vector<Sqrt3VertexRule> rules(static_cast<size_t>(numVertices));
-  parallelFor(0, numVertices, [&](Index begin, Index end) {
-    for (Index v = begin; v < end; ++v)
-    {
-      rules[v] = ClassifySqrt3Vertex(parent, v, evenStep);
-      const Index size = rules[v] == Sqrt3VertexRule::Relax ? 1 + topo.GetVertexEdges(v).size()
-                                                             : (rules[v] == Sqrt3VertexRule::Curve ? 3 : 1);
-      table.SetRowSize(points.FirstVertexPoint + v, size);
-    }
-  });
-  parallelFor(0, numFaces, [&](Index begin, Index end) {
-    for (Index f = begin; f < end; ++f)
-    {
-      if (points.CentroidPoint[f] != InvalidIndex)
-      {
-        table.SetRowSize(points.CentroidPoint[f], 3);
-      }
-    }
-  });
-  parallelFor(0, numEdges, [&](Index begin, Index end) {
-    for (Index e = begin; e < end; ++e)
-    {
-      if (points.FirstEdgePoint[e] != InvalidIndex)
-      {
-        table.SetRowSize(points.FirstEdgePoint[e], 3);
-        table.SetRowSize(points.FirstEdgePoint[e] + 1, 3);
-      }
-    }
-  });
-  table.FinalizeSizesUnfilled();
-  auto setRow = [&](Index row, std::initializer_list<std::pair<Index, double>> entries) {
-    Index* src = table.GetMutableSources(row);
-    double* wts = table.GetMutableWeights(row);
-    for (const auto& entry : entries)
-    {
-      *src++ = entry.first;
-      *wts++ = entry.second;
-    }
-  };
-  parallelFor(0, numFaces, [&](Index begin, Index end) {
-    for (Index f = begin; f < end; ++f)
-    {
-      if (points.CentroidPoint[f] != InvalidIndex)
-      {
-        const IndexSpan fv = topo.GetFaceVertices(f);
-        setRow(points.CentroidPoint[f], { { fv[0], 1.0 / 3.0 }, { fv[1], 1.0 / 3.0 }, { fv[2], 1.0 / 3.0 } });
-      }
-    }
-  });
-  // Kobbelt's alpha_n for the valences most meshes have, tabulated: the cosine would be
-  // most of the cost of a row.
-  std::vector<double> alphas(16);
-  for (Index n = 1; n < static_cast<Index>(alphas.size()); ++n)
+public:
+  Sqrt3RowWriter(const Level& parent, const ParallelFor& parallelFor)
+    : Sqrt3RowWriter(parent, Sqrt3Points(parent, IsEvenStep(parent)), parallelFor)
   {
-    alphas[n] = Sqrt3Alpha(n);
   }
-  parallelFor(0, numVertices, [&](Index begin, Index end) {
-    for (Index v = begin; v < end; ++v)
-    {
-      const Index row = points.FirstVertexPoint + v;
-      if (rules[v] == Sqrt3VertexRule::Relax)
+  Sqrt3RowWriter(const Level& parent, const Sqrt3Points& points, const ParallelFor& parallelFor)
+    : Topo(parent.Topology)
+    , NumVertices(parent.Topology.GetNumVertices())
+    , FirstVertexPoint(points.FirstVertexPoint)
+    , FirstTrisectionPoint(points.FirstVertexPoint + parent.Topology.GetNumVertices())
+    , NumPoints(points.NumPoints)
+    , Rules(static_cast<size_t>(this->NumVertices))
+  {
+    const bool evenStep = IsEvenStep(parent);
+    std::vector<Index> maxValence(1, 0);
+    parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
+      for (Index v = begin; v < end; ++v)
       {
-        const IndexSpan edges = topo.GetVertexEdges(v);
-        const Index n = edges.size();
-        const double alpha = n < static_cast<Index>(alphas.size()) ? alphas[n] : Sqrt3Alpha(n);
-        Index* src = table.GetMutableSources(row);
-        double* wts = table.GetMutableWeights(row);
-        src[0] = v;
-        wts[0] = 1.0 - alpha;
-        for (Index i = 0; i < n; ++i)
+        this->Rules[v] = ClassifySqrt3Vertex(parent, v, evenStep);
+      }
+    });
+    for (Index v = 0; v < this->NumVertices; ++v)
+    {
+      if (this->Rules[v] == Sqrt3VertexRule::Relax)
+      {
+        this->MaxRowSize = std::max(this->MaxRowSize, 1 + this->Topo.GetVertexEdges(v).size());
+      }
+      else if (this->Rules[v] == Sqrt3VertexRule::Curve)
+      {
+        if (this->CurveSlot.empty())
         {
-          src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
-          wts[1 + i] = alpha / n;
+          this->CurveSlot.assign(static_cast<size_t>(this->NumVertices), InvalidIndex);
+        }
+        const Index p = Sqrt3CurveNeighbour(parent, v, InvalidIndex);
+        this->CurveSlot[v] = static_cast<Index>(this->CurveEnds.size());
+        this->CurveEnds.push_back({ p, Sqrt3CurveNeighbour(parent, v, p) });
+      }
+    }
+    const Index numFaces = this->Topo.GetNumFaces();
+    for (Index f = 0; f < numFaces; ++f)
+    {
+      const Index e = points.TrisectedEdge[f];
+      if (e != InvalidIndex && points.FirstEdgePoint[e] == this->FirstTrisectionPoint + 2 * this->NumTrisections())
+      {
+        const Index a = this->Topo.GetEdgeVertices(e)[0], b = this->Topo.GetEdgeVertices(e)[1];
+        this->Trisections.push_back({ a, b, Sqrt3CurveNeighbour(parent, a, b), Sqrt3CurveNeighbour(parent, b, a) });
+      }
+    }
+    if (points.FirstVertexPoint != numFaces) // some faces trisect an edge instead of a centroid
+    {
+      for (Index f = 0; f < numFaces; ++f)
+      {
+        if (points.CentroidPoint[f] != InvalidIndex)
+        {
+          this->CentroidFace.push_back(f);
         }
       }
-      else if (rules[v] == Sqrt3VertexRule::Curve)
-      {
-        const Index p = Sqrt3CurveNeighbour(parent, v, InvalidIndex);
-        const Index q = Sqrt3CurveNeighbour(parent, v, p);
-        setRow(row, { { p, 4.0 / 27.0 }, { v, 19.0 / 27.0 }, { q, 4.0 / 27.0 } });
-      }
-      else
-      {
-        setRow(row, { { v, 1.0 } });
-      }
     }
-  });
-  parallelFor(0, numEdges, [&](Index begin, Index end) {
-    for (Index e = begin; e < end; ++e)
+    for (Index n = 1; n < MaxTabulatedValence; ++n)
     {
-      if (points.FirstEdgePoint[e] == InvalidIndex)
-      {
-        continue;
-      }
-      const Index a = topo.GetEdgeVertices(e)[0], b = topo.GetEdgeVertices(e)[1];
-      const Index p = Sqrt3CurveNeighbour(parent, a, b), q = Sqrt3CurveNeighbour(parent, b, a);
-      setRow(points.FirstEdgePoint[e], { { p, 1.0 / 27.0 }, { a, 16.0 / 27.0 }, { b, 10.0 / 27.0 } });
-      setRow(points.FirstEdgePoint[e] + 1, { { a, 10.0 / 27.0 }, { b, 16.0 / 27.0 }, { q, 1.0 / 27.0 } });
+      this->Alphas[n] = Sqrt3Alpha(n);
     }
-  });
-  table.EndBlock(points.NumPoints);
-  return table;
-}
+  }
+  static bool IsEvenStep(const Level& parent) { return (parent.Depth % 2) == 1; } // makes level Depth + 1
+
+  Index GetNumParents() const { return this->NumVertices; }
+  Index GetNumRows() const { return this->NumPoints; }
+  std::vector<Index> GetBlockEnds() const { return { this->NumPoints }; }
+  Index GetMaxRowSize() const { return this->MaxRowSize; }
+
+  Index WriteRow(Index row, Index* src, double* wts) const
+  {
+    auto write = [&](std::initializer_list<std::pair<Index, double>> entries) {
+      Index size = 0;
+      for (const auto& entry : entries)
+      {
+        src[size] = entry.first;
+        wts[size++] = entry.second;
+      }
+      return size;
+    };
+    if (row < this->FirstVertexPoint)
+    {
+      const IndexSpan fv = this->Topo.GetFaceVertices(this->CentroidFace.empty() ? row : this->CentroidFace[row]);
+      return write({ { fv[0], 1.0 / 3.0 }, { fv[1], 1.0 / 3.0 }, { fv[2], 1.0 / 3.0 } });
+    }
+    if (row < this->FirstTrisectionPoint)
+    {
+      const Index v = row - this->FirstVertexPoint;
+      if (this->Rules[v] == Sqrt3VertexRule::Relax)
+      {
+        const IndexSpan edges = this->Topo.GetVertexEdges(v);
+        const double alpha = this->Alpha(edges.size());
+        src[0] = v;
+        wts[0] = 1.0 - alpha;
+        for (Index i = 0; i < edges.size(); ++i)
+        {
+          src[1 + i] = this->Topo.GetOtherEndpoint(edges[i], v);
+          wts[1 + i] = alpha / edges.size();
+        }
+        return 1 + edges.size();
+      }
+      if (this->Rules[v] == Sqrt3VertexRule::Curve)
+      {
+        const std::array<Index, 2>& ends = this->CurveEnds[this->CurveSlot[v]];
+        return write({ { ends[0], 4.0 / 27.0 }, { v, 19.0 / 27.0 }, { ends[1], 4.0 / 27.0 } });
+      }
+      return write({ { v, 1.0 } });
+    }
+    // a, b, p, q: the trisected edge's ends and their neighbours along the curve.
+    const std::array<Index, 4>& t = this->Trisections[(row - this->FirstTrisectionPoint) / 2];
+    return (row - this->FirstTrisectionPoint) % 2 == 0
+      ? write({ { t[2], 1.0 / 27.0 }, { t[0], 16.0 / 27.0 }, { t[1], 10.0 / 27.0 } })
+      : write({ { t[0], 10.0 / 27.0 }, { t[1], 16.0 / 27.0 }, { t[3], 1.0 / 27.0 } });
+  }
+
+  // Centroids and relaxed vertices, summed as ApplyRow sums WriteRow's row.
+  template <typename T>
+  bool ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
+  {
+    auto point = [parents](Index v) { return parents + 3 * static_cast<size_t>(v); };
+    PointSum sum;
+    if (row < this->FirstVertexPoint)
+    {
+      const IndexSpan fv = this->Topo.GetFaceVertices(this->CentroidFace.empty() ? row : this->CentroidFace[row]);
+      for (Index k = 0; k < 3; ++k)
+      {
+        sum.Add(1.0 / 3.0, point(fv[k]));
+      }
+      sum.Store(dst);
+      return true;
+    }
+    const Index v = row - this->FirstVertexPoint;
+    if (row >= this->FirstTrisectionPoint || this->Rules[v] != Sqrt3VertexRule::Relax)
+    {
+      return false;
+    }
+    const IndexSpan edges = this->Topo.GetVertexEdges(v);
+    const double alpha = this->Alpha(edges.size());
+    sum.Add(1.0 - alpha, point(v));
+    const double w = alpha / edges.size();
+    for (Index e : edges)
+    {
+      sum.Add(w, point(this->Topo.GetOtherEndpoint(e, v)));
+    }
+    sum.Store(dst);
+    return true;
+  }
+
+private:
+  Index NumTrisections() const { return static_cast<Index>(this->Trisections.size()); }
+  // Kobbelt's alpha_n for the valences most meshes have, tabulated: the cosine would be most
+  // of the cost of a row.
+  double Alpha(Index n) const { return n < MaxTabulatedValence ? this->Alphas[n] : Sqrt3Alpha(n); }
+
+  static constexpr Index MaxTabulatedValence = 16;
+  const MeshTopology& Topo;
+  Index NumVertices, FirstVertexPoint, FirstTrisectionPoint, NumPoints;
+  Index MaxRowSize = 3;
+  std::vector<Sqrt3VertexRule> Rules;            // per vertex
+  std::vector<Index> CentroidFace;               // per centroid point; empty when every face has one
+  std::vector<Index> CurveSlot;                  // per vertex: its CurveEnds (empty: no curve vertex)
+  std::vector<std::array<Index, 2>> CurveEnds;   // the curve neighbours p, q of a curve vertex
+  std::vector<std::array<Index, 4>> Trisections; // a, b, p, q per trisected edge, in point order
+  double Alphas[MaxTabulatedValence] = {};
+};
 
 // Writes the child triangles of the parent's edges (flipped or kept), then of its faces
 // (the middle triangle of a trisected one).
@@ -399,19 +462,14 @@ private:
   const MeshTopology& Topo;
   const Sqrt3Points& Points;
 };
-}
 
-LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
+// The child level of one step (without its rows).
+Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopology depth, const ParallelFor& parallelFor)
 {
-  const bool evenStep = (parent.Depth % 2) == 1; // the step making level Depth + 1
-  const Sqrt3Points points(parent, evenStep);
-  LevelRefinement result;
-  result.Stencils = BuildSqrt3Stencils(parent, points, evenStep, parallelFor);
-
   const Sqrt3FaceWriter writer(parent, points);
   EmittedFaces faces = EmitFacesInParallel(writer.GetNumElements(), parallelFor,
     [&writer](Index begin, Index end, FaceBlock& block) { writer.WriteBlock(begin, end, block); });
-  Level& child = result.Child;
+  Level child;
   child.FaceOrigin = std::move(faces.Origins);
   child.FaceIsHole = std::move(faces.Holes);
   if (depth == ChildTopology::Full && Sqrt3ChildTopology::Applies(parent, points.NumPoints))
@@ -431,7 +489,27 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const Para
   {
     InheritSqrt3Sharpness(parent, points.FirstEdgePoint, points.FirstVertexPoint, child);
   }
+  return child;
+}
+}
+
+LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
+{
+  const Sqrt3Points points(parent, Sqrt3RowWriter::IsEvenStep(parent));
+  LevelRefinement result;
+  result.Stencils = WriteStencilTable(Sqrt3RowWriter(parent, points, parallelFor), parallelFor);
+  result.Child = SplitWithPoints(parent, points, depth, parallelFor);
   return result;
+}
+
+Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
+{
+  return SplitWithPoints(parent, Sqrt3Points(parent, Sqrt3RowWriter::IsEvenStep(parent)), depth, parallelFor);
+}
+
+std::shared_ptr<const RowSource> MakeSqrt3RowSource(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
+{
+  return std::make_shared<WrittenRows<Sqrt3RowWriter>>(std::move(parent), parallelFor);
 }
 
 Index Sqrt3FirstVertexPoint(const Level& parent)

@@ -43,6 +43,8 @@
 #include "SubDLevel.h"
 #include "SubDStencilTable.h"
 
+#include <memory>
+
 namespace subd
 {
 /// Kobbelt's alpha_n.
@@ -71,6 +73,14 @@ SUBDKERNEL_EXPORT Index Sqrt3FirstVertexPoint(const Level& parent);
 /// triangle.
 SUBDKERNEL_EXPORT LevelRefinement RefineSqrt3(
   const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
+/// The split alone (RefineSqrt3's child).
+SUBDKERNEL_EXPORT Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
+/// RefineSqrt3's rows written as they are applied (SubDRowWriting.h). Besides what they keep
+/// of their own (each vertex's rule, the curve vertices' and trisected edges' neighbours),
+/// they read the parent's faces' corners, vertices' edges and edges' ends only: the rest of
+/// its topology may be freed (MeshTopology::KeepOnly) once its child is split.
+SUBDKERNEL_EXPORT std::shared_ptr<const RowSource> MakeSqrt3RowSource(
+  std::shared_ptr<const Level> parent, const ParallelFor& parallelFor = SerialFor);
 }
 
 #endif
