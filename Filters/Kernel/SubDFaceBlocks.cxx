@@ -1,6 +1,7 @@
 #include "SubDFaceBlocks.h"
 
 #include <algorithm>
+#include <atomic>
 #include <mutex>
 #include <utility>
 
@@ -30,10 +31,18 @@ std::ptrdiff_t Offset(size_t i)
 }
 
 // Calls copy(block, localBegin, localEnd, globalBegin) for every part of the concatenation
-// [0, firsts.back()) of blocks (block b starting at firsts[b]), in parallel ranges.
-template <typename Copy>
-void ForEachBlockPart(const ParallelFor& parallelFor, const std::vector<size_t>& firsts, Copy&& copy)
+// [0, firsts.back()) of blocks (block b starting at firsts[b]), in parallel ranges, and
+// release(block) once all of a block is copied (by whichever range copied its last part),
+// so that the blocks' memory goes back as the concatenation's is filled: the faces are not
+// held twice at the end of the copy.
+template <typename Copy, typename Release>
+void ForEachBlockPart(const ParallelFor& parallelFor, const std::vector<size_t>& firsts, Copy&& copy, Release&& release)
 {
+  std::vector<std::atomic<size_t>> uncopied(firsts.size() - 1);
+  for (size_t b = 0; b + 1 < firsts.size(); ++b)
+  {
+    uncopied[b] = firsts[b + 1] - firsts[b];
+  }
   parallelFor(0, static_cast<Index>(firsts.back()), [&](Index begin, Index end) {
     // The block holding `begin`: the last one starting at or before it.
     size_t b = static_cast<size_t>(std::upper_bound(firsts.begin(), firsts.end(), static_cast<size_t>(begin)) - firsts.begin()) - 1;
@@ -43,6 +52,10 @@ void ForEachBlockPart(const ParallelFor& parallelFor, const std::vector<size_t>&
       if (stop > at)
       {
         copy(b, at - firsts[b], stop - firsts[b], at);
+        if (uncopied[b].fetch_sub(stop - at) == stop - at)
+        {
+          release(b);
+        }
       }
       at = std::max(at, stop);
     }
@@ -87,11 +100,16 @@ EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelF
     }
     std::copy(block.Origins.begin() + Offset(from), block.Origins.begin() + Offset(to), faces.Origins.begin() + Offset(at));
     std::copy(block.Holes.begin() + Offset(from), block.Holes.begin() + Offset(to), faces.Holes.begin() + Offset(at));
+  }, [&written](size_t b) {
+    FaceBlock& block = written[b].second;
+    IndexArray().swap(block.Ends);
+    IndexArray().swap(block.Origins);
+    LevelArray<std::uint8_t>().swap(block.Holes);
   });
   ForEachBlockPart(parallelFor, firstCorner, [&](size_t b, size_t from, size_t to, size_t at) {
-    const std::vector<Index>& vertices = written[b].second.Vertices;
+    const IndexArray& vertices = written[b].second.Vertices;
     std::copy(vertices.begin() + Offset(from), vertices.begin() + Offset(to), faces.Vertices.begin() + Offset(at));
-  });
+  }, [&written](size_t b) { IndexArray().swap(written[b].second.Vertices); });
   return faces;
 }
 }

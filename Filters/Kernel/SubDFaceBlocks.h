@@ -22,10 +22,12 @@ namespace subd
 /// The faces written for one range of parent elements.
 struct SUBDKERNEL_EXPORT FaceBlock
 {
-  std::vector<Index> Ends;          ///< corner count after each face
-  std::vector<Index> Vertices;      ///< faces' corners; a face in progress is at the end
-  std::vector<Index> Origins;       ///< one per face
-  std::vector<std::uint8_t> Holes;  ///< one per face
+  // Level arrays: a large block's memory goes back to the system when it is freed (as the
+  // blocks are concatenated, EmitFacesInParallel), instead of staying with the C library.
+  IndexArray Ends;                 ///< corner count after each face
+  IndexArray Vertices;             ///< faces' corners; a face in progress is at the end
+  IndexArray Origins;              ///< one per face
+  LevelArray<std::uint8_t> Holes;  ///< one per face
 
   /// Room for `faces` faces of `corners` corners in all (a writer's estimate).
   void Reserve(size_t faces, size_t corners)

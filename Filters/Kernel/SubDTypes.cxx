@@ -39,10 +39,16 @@ void* AllocateLargeBlock(std::size_t bytes)
     }
   }
   else
-#endif
   {
-    block = std::malloc(bytes);
+    // Straight from the system, so that FreeLargeBlock gives it straight back: malloc keeps
+    // freed blocks below its moving threshold (up to 32 MiB) for reuse, and those count in
+    // the peak of every later phase that allocates larger ones.
+    block = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    block = block == MAP_FAILED ? nullptr : block;
   }
+#else
+  block = std::malloc(bytes);
+#endif
   if (!block)
   {
     throw std::bad_alloc();
@@ -50,8 +56,16 @@ void* AllocateLargeBlock(std::size_t bytes)
   return block;
 }
 
-void FreeLargeBlock(void* block) noexcept
+void FreeLargeBlock(void* block, std::size_t bytes) noexcept
 {
+#ifdef __linux__
+  if (!HugePagesRequested())
+  {
+    munmap(block, bytes);
+    return;
+  }
+#endif
+  (void)bytes;
   std::free(block);
 }
 

@@ -28,8 +28,10 @@ constexpr std::size_t LargeBlockBytes = std::size_t(4) << 20;
 /// median (Catmull-Clark armadillo L3 on one thread: 0.31 s against 0.36 s) but now and then
 /// two to three times slower (fresh huge pages the hypervisor had not backed yet), where 4 KiB
 /// pages gave steady times. Throws std::bad_alloc when out of memory.
+/// Otherwise it is mapped from the system and given back to it when freed.
 SUBDKERNEL_EXPORT void* AllocateLargeBlock(std::size_t bytes);
-SUBDKERNEL_EXPORT void FreeLargeBlock(void* block) noexcept;
+/// Frees a block of `bytes` bytes from AllocateLargeBlock.
+SUBDKERNEL_EXPORT void FreeLargeBlock(void* block, std::size_t bytes) noexcept;
 /// Hands the memory the process has freed back to the system where the C library keeps it
 /// (glibc keeps freed blocks below its moving mmap threshold, up to 32 MiB each, for reuse):
 /// called between the phases of a low-memory refinement, so that freed topology does not
@@ -92,7 +94,7 @@ struct DefaultInitAllocator : std::allocator<T>
   {
     if (n >= LargeBlockBytes / sizeof(T))
     {
-      FreeLargeBlock(p);
+      FreeLargeBlock(p, n * sizeof(T));
       return;
     }
     std::allocator<T>::deallocate(p, n);
