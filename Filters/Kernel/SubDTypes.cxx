@@ -1,5 +1,6 @@
 #include "SubDTypes.h"
 
+#include <atomic>
 #include <cstdlib>
 #ifdef __linux__
 #include <sys/mman.h>
@@ -12,6 +13,9 @@ namespace subd
 {
 namespace
 {
+// Bytes of the blocks AllocateLargeBlock handed out and FreeLargeBlock has not taken back.
+std::atomic<std::size_t> LargeBlockBytesInUse{ 0 };
+
 // SUBD_HUGE_PAGES=1 in the environment (read once).
 bool HugePagesRequested()
 {
@@ -53,11 +57,18 @@ void* AllocateLargeBlock(std::size_t bytes)
   {
     throw std::bad_alloc();
   }
+  LargeBlockBytesInUse += bytes;
   return block;
+}
+
+std::size_t GetLargeBlockBytesInUse() noexcept
+{
+  return LargeBlockBytesInUse;
 }
 
 void FreeLargeBlock(void* block, std::size_t bytes) noexcept
 {
+  LargeBlockBytesInUse -= bytes;
 #ifdef __linux__
   if (!HugePagesRequested())
   {

@@ -35,6 +35,9 @@ constexpr std::size_t LargeBlockBytes = std::size_t(256) << 10;
 SUBDKERNEL_EXPORT void* AllocateLargeBlock(std::size_t bytes);
 /// Frees a block of `bytes` bytes from AllocateLargeBlock.
 SUBDKERNEL_EXPORT void FreeLargeBlock(void* block, std::size_t bytes) noexcept;
+/// The bytes of the large blocks in use: the memory the C library's statistics (mallinfo2)
+/// do not see, since it comes from the system directly.
+SUBDKERNEL_EXPORT std::size_t GetLargeBlockBytesInUse() noexcept;
 /// Hands the memory the process has freed back to the system where the C library keeps it
 /// (glibc keeps freed blocks below its moving mmap threshold, up to 32 MiB each, for reuse):
 /// called between the phases of a low-memory refinement, so that freed topology does not
