@@ -25,13 +25,20 @@ bool HugePagesRequested()
   }();
   return requested;
 }
+
+// Blocks backed by huge pages (when asked): from 4 MiB up, since each is rounded up to
+// whole 2 MiB pages.
+bool UsesHugePages(std::size_t bytes)
+{
+  return HugePagesRequested() && bytes >= (std::size_t(4) << 20);
+}
 }
 
 void* AllocateLargeBlock(std::size_t bytes)
 {
   void* block = nullptr;
 #ifdef __linux__
-  if (HugePagesRequested())
+  if (UsesHugePages(bytes))
   {
     // Whole 2 MiB pages: aligned, and rounded up to a multiple.
     constexpr std::size_t hugePage = std::size_t(2) << 20;
@@ -70,7 +77,7 @@ void FreeLargeBlock(void* block, std::size_t bytes) noexcept
 {
   LargeBlockBytesInUse -= bytes;
 #ifdef __linux__
-  if (!HugePagesRequested())
+  if (!UsesHugePages(bytes))
   {
     munmap(block, bytes);
     return;

@@ -24,14 +24,15 @@ constexpr Index InvalidIndex = -1;
 /// split, per-vertex offsets, tags) do too: left with the C library, they stayed in the
 /// process through the later, larger phases (Doo-Sabin, bunny level 3: peak 393 to 269 MB).
 constexpr std::size_t LargeBlockBytes = std::size_t(256) << 10;
-/// Memory for a large array (freed by FreeLargeBlock). With SUBD_HUGE_PAGES=1 in the
-/// environment it is aligned to 2 MiB and marked for transparent huge pages (Linux "madvise" mode, Debian's default):
-/// filling a fresh array then takes one page fault per 2 MiB instead of one per 4 KiB. That
-/// is opt-in because on the 2-core VM of the benchmarks it made refinements faster in the
-/// median (Catmull-Clark armadillo L3 on one thread: 0.31 s against 0.36 s) but now and then
-/// two to three times slower (fresh huge pages the hypervisor had not backed yet), where 4 KiB
-/// pages gave steady times. Throws std::bad_alloc when out of memory.
-/// Otherwise it is mapped from the system and given back to it when freed.
+/// Memory for a large array (freed by FreeLargeBlock), mapped from the system and given back
+/// to it when freed (on Linux; elsewhere malloc's). With SUBD_HUGE_PAGES=1 in the environment
+/// a block of 4 MiB or more is instead aligned to 2 MiB and marked for transparent huge
+/// pages (Linux "madvise" mode, Debian's default): filling a fresh array then takes one page
+/// fault per 2 MiB instead of one per 4 KiB. That is opt-in because on the 2-core VM of the
+/// benchmarks it made refinements faster in the median (Catmull-Clark armadillo L3 on one
+/// thread: 0.31 s against 0.36 s) but now and then two to three times slower (fresh huge
+/// pages the hypervisor had not backed yet), where 4 KiB pages gave steady times. Throws
+/// std::bad_alloc when out of memory.
 SUBDKERNEL_EXPORT void* AllocateLargeBlock(std::size_t bytes);
 /// Frees a block of `bytes` bytes from AllocateLargeBlock.
 SUBDKERNEL_EXPORT void FreeLargeBlock(void* block, std::size_t bytes) noexcept;
