@@ -25,7 +25,8 @@ constexpr Index InvalidIndex = -1;
 /// process through the later, larger phases (Doo-Sabin, bunny level 3: peak 393 to 269 MB).
 constexpr std::size_t LargeBlockBytes = std::size_t(256) << 10;
 /// Memory for a large array (freed by FreeLargeBlock), mapped from the system and given back
-/// to it when freed (on Linux; elsewhere malloc's). With SUBD_HUGE_PAGES=1 in the environment
+/// to it when freed (on Linux; elsewhere, and under AddressSanitizer, which checks malloc's
+/// blocks only, malloc's). With SUBD_HUGE_PAGES=1 in the environment
 /// a block of 4 MiB or more is instead aligned to 2 MiB and marked for transparent huge
 /// pages (Linux "madvise" mode, Debian's default): filling a fresh array then takes one page
 /// fault per 2 MiB instead of one per 4 KiB. That is opt-in because on the 2-core VM of the
