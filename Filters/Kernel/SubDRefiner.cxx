@@ -50,6 +50,10 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
     if (levelRows != LevelRows::Stored && !refined)
     {
       auto parent = std::make_shared<Level>(std::move(current));
+      if (last && depth == ChildTopology::FacesOnly && !scheme.FinestSplitReadsVertexFaceLists())
+      {
+        parent->Topology.ReleaseVertexFaceLists(); // a large share of the split's peak
+      }
       writtenRows = scheme.MakeRowSource(parent);
       if (writtenRows)
       {

@@ -61,6 +61,10 @@ public:
     (void)parent;
     return nullptr;
   }
+  /// Whether the split into a faces-only child and the rows MakeRowSource writes read the
+  /// lists of faces around the parent's vertices (not only their counts): where they do not
+  /// (sqrt(3)), Refine frees them before the finest level, faces only, is split from it.
+  virtual bool FinestSplitReadsVertexFaceLists() const { return true; }
   /// True when the rows MakeRowSource writes read nothing of their parent level but `part`
   /// of its topology: Refine then frees the rest of each such level once it is split
   /// (KeepOnly), since it keeps it for those rows only. Only for schemes without
@@ -332,6 +336,8 @@ public:
     part = MeshTopology::Part::FacesAndRings;
     return true;
   }
+  /// Its flips read each edge's faces, its rows each vertex's edges and face count.
+  bool FinestSplitReadsVertexFaceLists() const override { return false; }
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
 };
