@@ -143,6 +143,12 @@ void InheritSqrt3Sharpness(const Level& parent, const std::vector<Index>& firstE
 
 namespace
 {
+// Whether the step from `parent` (making level Depth + 1) is an even one (see the header).
+bool IsEvenStep(const Level& parent)
+{
+  return (parent.Depth % 2) == 1;
+}
+
 // The child points of one step (see the header): centroids, old vertices, trisection points.
 struct Sqrt3Points
 {
@@ -206,7 +212,6 @@ public:
     , Rules(static_cast<size_t>(this->NumVertices))
   {
     const bool evenStep = IsEvenStep(parent);
-    std::vector<Index> maxValence(1, 0);
     parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
       for (Index v = begin; v < end; ++v)
       {
@@ -255,7 +260,6 @@ public:
       this->Alphas[n] = Sqrt3Alpha(n);
     }
   }
-  static bool IsEvenStep(const Level& parent) { return (parent.Depth % 2) == 1; } // makes level Depth + 1
 
   Index GetNumParents() const { return this->NumVertices; }
   Index GetNumRows() const { return this->NumPoints; }
@@ -495,7 +499,7 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
 
 LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
-  const Sqrt3Points points(parent, Sqrt3RowWriter::IsEvenStep(parent));
+  const Sqrt3Points points(parent, IsEvenStep(parent));
   LevelRefinement result;
   result.Stencils = WriteStencilTable(Sqrt3RowWriter(parent, points, parallelFor), parallelFor);
   result.Child = SplitWithPoints(parent, points, depth, parallelFor);
@@ -504,7 +508,7 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const Para
 
 Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
-  return SplitWithPoints(parent, Sqrt3Points(parent, Sqrt3RowWriter::IsEvenStep(parent)), depth, parallelFor);
+  return SplitWithPoints(parent, Sqrt3Points(parent, IsEvenStep(parent)), depth, parallelFor);
 }
 
 std::shared_ptr<const RowSource> MakeSqrt3RowSource(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
@@ -514,7 +518,7 @@ std::shared_ptr<const RowSource> MakeSqrt3RowSource(std::shared_ptr<const Level>
 
 Index Sqrt3FirstVertexPoint(const Level& parent)
 {
-  const std::vector<Index> trisected = ChooseTrisectedEdges(parent, (parent.Depth % 2) == 1);
+  const std::vector<Index> trisected = ChooseTrisectedEdges(parent, IsEvenStep(parent));
   return static_cast<Index>(std::count(trisected.begin(), trisected.end(), InvalidIndex));
 }
 }
