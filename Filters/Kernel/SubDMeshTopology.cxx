@@ -2,6 +2,10 @@
 #include "SubDShortLists.h"
 
 #include <algorithm>
+#include <cstdint>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -209,71 +213,157 @@ Index FollowerOf(Index k, Index n, const Index* leaving, const Index* entering)
   return follower;
 }
 
-// Counts the fans of a vertex's n <= 32 face corners: corner j follows corner k around the
-// vertex when j leaves it along the edge k enters it by (leaving[j] == entering[k]; called
-// where the vertex's edges are manifold and consistently oriented, so that each corner has
-// at most one follower and one predecessor). The fans are the chains of followers, open
-// (starting at a corner without predecessor) or closed, each walked once.
-Index CountFansOfCorners(Index n, const Index* leaving, const Index* entering)
+// The neighbours of a vertex's n <= 32 face corners: the vertex each corner's edges leave
+// toward and enter from. The usual vertex has at most 8 corners: its neighbours are compared
+// 4 at a time (SSE2), the lanes past n holding InvalidIndex, which no vertex matches.
+struct CornerNeighbours
 {
-  if (n <= 1)
+  static constexpr Index MaxCorners = 32;
+  alignas(16) Index Leaving[MaxCorners];
+  alignas(16) Index Entering[MaxCorners];
+  Index N = 0;
+
+  // Bit j set where lanes[j] == value, for j < N.
+  std::uint32_t Matching(const Index* lanes, Index value) const
   {
-    return n;
-  }
-  Index next[32];
-  std::uint32_t hasPredecessor = 0;
-  for (Index k = 0; k < n; ++k)
-  {
-    const Index follower = FollowerOf(k, n, leaving, entering);
-    next[k] = follower;
-    hasPredecessor |= follower == InvalidIndex ? 0u : 1u << follower;
-  }
-  std::uint32_t visited = 0;
-  auto walk = [&](Index corner) {
-    while (corner != InvalidIndex && !(visited >> corner & 1u))
+#if defined(__SSE2__)
+    if (this->N <= 8)
     {
-      visited |= 1u << corner;
-      corner = next[corner];
+      const __m128i wanted = _mm_set1_epi32(value);
+      const __m128i low = _mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(lanes)), wanted);
+      const __m128i high = _mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(lanes + 4)), wanted);
+      return static_cast<std::uint32_t>(
+        _mm_movemask_ps(_mm_castsi128_ps(low)) | _mm_movemask_ps(_mm_castsi128_ps(high)) << 4);
     }
-  };
-  Index fans = 0;
-  for (Index k = 0; k < n; ++k)
-  {
-    if (!(hasPredecessor >> k & 1u))
+#endif
+    std::uint32_t mask = 0;
+    for (Index j = 0; j < this->N; ++j)
     {
-      ++fans; // an open fan starts here
-      walk(k);
+      mask |= static_cast<std::uint32_t>(lanes[j] == value) << j;
     }
+    return mask;
   }
-  for (Index k = 0; k < n; ++k)
+
+  // Pads the lanes the 8-wide comparison reads past N.
+  void Pad()
   {
-    if (!(visited >> k & 1u))
+    for (Index j = this->N; j < 8; ++j)
     {
-      ++fans; // a closed fan
-      walk(k);
+      this->Leaving[j] = this->Entering[j] = InvalidIndex;
     }
   }
-  return fans;
+
+  // Whether no two corners leave toward, or enter from, the same vertex: then each edge has
+  // at most one half-edge each way, and each corner at most one follower and one predecessor.
+  bool Distinct() const
+  {
+    bool distinct = true;
+    for (Index k = 0; k < this->N; ++k)
+    {
+      distinct &= (this->Matching(this->Leaving, this->Leaving[k]) | this->Matching(this->Entering, this->Entering[k])) ==
+        1u << k;
+    }
+    return distinct;
+  }
+};
+
+// The lowest set bit of a non-zero mask.
+inline Index LowestBit(std::uint32_t mask)
+{
+#if defined(__GNUC__)
+  return static_cast<Index>(__builtin_ctz(mask));
+#else
+  Index bit = 0;
+  while (!(mask >> bit & 1u))
+  {
+    ++bit;
+  }
+  return bit;
+#endif
 }
+
+// The chains of followers among a vertex's corners with distinct neighbours: corner j
+// follows corner k around the vertex when j leaves it along the edge k enters it by
+// (Leaving[j] == Entering[k]).
+struct CornerChains
+{
+  Index Next[CornerNeighbours::MaxCorners];
+  std::uint32_t HasPredecessor = 0;
+
+  explicit CornerChains(const CornerNeighbours& corners)
+  {
+    for (Index k = 0; k < corners.N; ++k)
+    {
+      const std::uint32_t follower = corners.Matching(corners.Leaving, corners.Entering[k]);
+      this->Next[k] = follower ? LowestBit(follower) : InvalidIndex;
+      this->HasPredecessor |= follower;
+    }
+  }
+
+  // The fans are the chains, open (starting at a corner without predecessor) or closed,
+  // each walked once.
+  Index CountFans(Index n) const
+  {
+    std::uint32_t visited = 0;
+    auto walk = [&](Index corner) {
+      while (corner != InvalidIndex && !(visited >> corner & 1u))
+      {
+        visited |= 1u << corner;
+        corner = this->Next[corner];
+      }
+    };
+    Index fans = 0;
+    for (Index k = 0; k < n; ++k)
+    {
+      if (!(this->HasPredecessor >> k & 1u))
+      {
+        ++fans; // an open fan starts here
+        walk(k);
+      }
+    }
+    for (Index k = 0; k < n; ++k)
+    {
+      if (!(visited >> k & 1u))
+      {
+        ++fans; // a closed fan
+        walk(k);
+      }
+    }
+    return fans;
+  }
+};
 }
 
 // The half-edges of one vertex pair are paired at the pair's lower vertex v, from v's own
 // face corners: the half-edge leaving v at a corner, when it goes up (or loops back to v),
-// and the one entering it from a higher vertex. Sorted by upper vertex and half-edge, a
-// pair's half-edges come out in order: linear in the mesh size for bounded valence, and
-// O(k log k) for a vertex of valence k, so even a 100k-valent hub stays fast. The corners'
-// neighbours also tell v's fans (for up to 32 corners): the edge a corner leaves by is the
-// one another enters by exactly when both go to the same vertex, since a vertex pair is one
-// edge; so the fans come from the vertex ids read here, not from the edges numbered later.
+// and the one entering it from a higher vertex. At most vertices (up to 32 corners, no
+// neighbour met twice the same way) each such pair is one link of the chains of corners
+// around v, which also tell v's fans: the edge a corner leaves by is the one another enters
+// by exactly when both go to the same vertex, since a vertex pair is one edge; so the fans
+// come from the vertex ids read here, not from the edges numbered later. Elsewhere the
+// half-edges, sorted by upper vertex and index, come out in their pairs: O(k log k) for a
+// vertex of valence k, so even a 100k-valent hub stays fast.
 MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
   bool allTriangles, IndexArray& smallFans, const ParallelFor& parallelFor) const
 {
   HalfEdgePairing pairing(this->FaceVertices.size());
   smallFans.resize(static_cast<size_t>(this->NumVertices));
   parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
-    constexpr Index smallValence = 32;
+    constexpr Index smallValence = CornerNeighbours::MaxCorners;
     std::vector<std::uint64_t> keys;
-    Index leaving[smallValence], entering[smallValence];
+    CornerNeighbours neighbours;
+    Index leavingEdge[smallValence], enteringEdge[smallValence];
+    // A group of one half-edge, or of two running opposite ways, the lower one first.
+    auto pairUp = [&pairing](Index a, Index b) {
+      if (b == InvalidIndex)
+      {
+        pairing[a] = { a, HalfEdgePair::Group(1, 1) };
+        return;
+      }
+      const Index first = std::min(a, b), second = std::max(a, b);
+      pairing[first] = { first, HalfEdgePair::Group(2, 1) };
+      pairing[second] = { first, 1 };
+    };
     for (Index v = begin; v < end; ++v)
     {
       // A vertex's faces are scattered over the face list: ask for a later vertex's corners
@@ -291,6 +381,41 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
       const IndexSpan faces = this->GetVertexFaces(v);
       const IndexSpan corners = this->GetVertexFaceCorners(v);
       const Index n = faces.size();
+      const Index kept = std::min(n, smallValence);
+      auto cornerAt = [&](Index k, Index& h, Index& previous, Index& to, Index& from) {
+        const Index f = faces[k], c = corners[k];
+        const Index faceFirst = allTriangles ? 3 * f : this->FaceOffsets[f];
+        const Index size = allTriangles ? 3 : this->FaceOffsets[f + 1] - faceFirst;
+        h = faceFirst + c;
+        previous = faceFirst + (c == 0 ? size - 1 : c - 1);
+        to = this->FaceVertices[c + 1 == size ? faceFirst : h + 1];
+        from = this->FaceVertices[previous];
+      };
+      for (Index k = 0; k < kept; ++k)
+      {
+        cornerAt(k, leavingEdge[k], enteringEdge[k], neighbours.Leaving[k], neighbours.Entering[k]);
+      }
+      neighbours.N = kept;
+      neighbours.Pad();
+      if (n <= smallValence && neighbours.Distinct())
+      {
+        const CornerChains chains(neighbours);
+        smallFans[v] = chains.CountFans(n);
+        for (Index k = 0; k < n; ++k)
+        {
+          if (neighbours.Entering[k] > v)
+          {
+            const Index follower = chains.Next[k];
+            pairUp(enteringEdge[k], follower == InvalidIndex ? InvalidIndex : leavingEdge[follower]);
+          }
+          if (neighbours.Leaving[k] > v && !(chains.HasPredecessor >> k & 1u))
+          {
+            pairUp(leavingEdge[k], InvalidIndex); // an edge without a way back: a boundary
+          }
+        }
+        continue;
+      }
+      smallFans[v] = InvalidIndex; // counted by TagVertices (CountFans)
       if (keys.size() < 2 * static_cast<size_t>(n))
       {
         keys.resize(2 * static_cast<size_t>(n));
@@ -305,12 +430,8 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
       std::uint64_t* last = first;
       for (Index k = 0; k < n; ++k)
       {
-        const Index f = faces[k], c = corners[k];
-        const Index faceFirst = allTriangles ? 3 * f : this->FaceOffsets[f];
-        const Index size = allTriangles ? 3 : this->FaceOffsets[f + 1] - faceFirst;
-        const Index h = faceFirst + c, previous = faceFirst + (c == 0 ? size - 1 : c - 1);
-        const Index to = this->FaceVertices[c + 1 == size ? faceFirst : h + 1];
-        const Index from = this->FaceVertices[previous];
+        Index h, previous, to, from;
+        cornerAt(k, h, previous, to, from);
         if (to >= v)
         {
           *last++ = key(to, h, to > v);
@@ -319,13 +440,7 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
         {
           *last++ = key(from, previous, false);
         }
-        if (k < smallValence)
-        {
-          leaving[k] = to;
-          entering[k] = from;
-        }
       }
-      smallFans[v] = n <= smallValence ? CountFansOfCorners(n, leaving, entering) : InvalidIndex;
       SortShortList(first, last);
       for (std::uint64_t* run = first; run != last;)
       {
@@ -351,52 +466,76 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
   return pairing;
 }
 
-// Edges are numbered in the order their first half-edges come walking the faces: a count
-// per face, a prefix sum, then each face numbers its own. Each edge's face offsets and tags
-// come from its pairing: one face is a boundary; more than two, or two running it the same
-// way, are non-manifold.
+// Edges are numbered in the order their first half-edges come walking the faces. The faces
+// are cut into fixed blocks: each block counts its edges (and their faces, boundaries and
+// non-manifold ones), a prefix sum over the blocks gives each block its first edge and
+// first edge-face slot, and each block then numbers its own. Each edge's face offsets and
+// tags come from its pairing: one face is a boundary; more than two, or two running it the
+// same way, are non-manifold.
 void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const ParallelFor& parallelFor)
 {
   const Index numFaces = this->GetNumFaces();
-  IndexArray firstEdge(static_cast<size_t>(numFaces) + 1);
-  firstEdge[0] = 0;
-  parallelFor(0, numFaces, [&](Index begin, Index end) {
-    for (Index f = begin; f < end; ++f)
+  constexpr Index blocks = 64;
+  auto blockBegin = [numFaces](Index b) {
+    return static_cast<Index>(static_cast<std::int64_t>(numFaces) * b / blocks);
+  };
+  struct BlockCounts
+  {
+    Index Edges = 0, EdgeFaces = 0, Boundary = 0, NonManifold = 0;
+  };
+  std::vector<BlockCounts> firsts(blocks + 1);
+  auto isNonManifold = [](const HalfEdgePair& group) {
+    return group.GroupSize() > 2 || (group.GroupSize() == 2 && !group.RunsOppositeWays());
+  };
+  ForEachBlock(blocks, parallelFor, [&](Index b) {
+    BlockCounts counts; // local: the pairing's reads could alias firsts' entries
+    for (Index h = this->FaceOffsets[blockBegin(b)]; h < this->FaceOffsets[blockBegin(b + 1)]; ++h)
     {
-      Index count = 0;
-      for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
-      {
-        count += pairing[h].Representative == h;
-      }
-      firstEdge[f + 1] = count;
+      const HalfEdgePair& group = pairing[h];
+      const Index isFirst = group.Representative == h;
+      counts.Edges += isFirst;
+      counts.EdgeFaces += isFirst * group.GroupSize();
+      counts.Boundary += isFirst & (group.GroupSize() == 1);
+      counts.NonManifold += isFirst & isNonManifold(group);
     }
+    firsts[b + 1] = counts;
   });
-  CountsToOffsets(firstEdge);
-  const Index numEdges = firstEdge[numFaces];
+  for (Index b = 0; b < blocks; ++b)
+  {
+    firsts[b + 1].Edges += firsts[b].Edges;
+    firsts[b + 1].EdgeFaces += firsts[b].EdgeFaces;
+    firsts[b + 1].Boundary += firsts[b].Boundary;
+    firsts[b + 1].NonManifold += firsts[b].NonManifold;
+  }
+  const Index numEdges = firsts[blocks].Edges;
+  this->NumBoundaryEdges = firsts[blocks].Boundary;
+  this->NumNonManifoldEdges = firsts[blocks].NonManifold;
   this->FaceEdges.resize(this->FaceVertices.size());
   this->EdgeVertices.resize(2 * static_cast<size_t>(numEdges));
   this->EdgeFaceOffsets.resize(static_cast<size_t>(numEdges) + 1);
-  this->EdgeFaceOffsets[0] = 0;
+  this->EdgeFaceOffsets[numEdges] = firsts[blocks].EdgeFaces;
   this->EdgeTags.resize(static_cast<size_t>(numEdges));
-  parallelFor(0, numFaces, [&](Index begin, Index end) {
-    for (Index f = begin; f < end; ++f)
+  ForEachBlock(blocks, parallelFor, [&](Index b) {
+    Index e = firsts[b].Edges;
+    Index slot = firsts[b].EdgeFaces;
+    for (Index f = blockBegin(b); f < blockBegin(b + 1); ++f)
     {
-      Index e = firstEdge[f];
       const Index first = this->FaceOffsets[f], last = this->FaceOffsets[f + 1];
       for (Index h = first; h < last; ++h)
       {
-        if (pairing[h].Representative != h)
+        const HalfEdgePair& group = pairing[h];
+        if (group.Representative != h)
         {
           continue;
         }
-        const Index faces = pairing[h].GroupSize();
         this->FaceEdges[h] = e;
         this->EdgeVertices[2 * static_cast<size_t>(e)] = this->FaceVertices[h];
         this->EdgeVertices[2 * static_cast<size_t>(e) + 1] = this->FaceVertices[h + 1 < last ? h + 1 : first];
-        this->EdgeFaceOffsets[e + 1] = faces;
+        this->EdgeFaceOffsets[e] = slot;
+        slot += group.GroupSize();
         EdgeTag& tag = this->EdgeTags[e];
-        tag.Boundary = faces == 1;
-        tag.NonManifold = faces > 2 || (faces == 2 && !pairing[h].RunsOppositeWays());
+        tag.Boundary = group.GroupSize() == 1;
+        tag.NonManifold = isNonManifold(group);
         ++e;
       }
     }
@@ -411,14 +550,6 @@ void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const ParallelFor
       }
     }
   });
-  CountsToOffsets(this->EdgeFaceOffsets);
-  this->NumNonManifoldEdges = 0;
-  this->NumBoundaryEdges = 0;
-  for (const EdgeTag& tag : this->EdgeTags)
-  {
-    this->NumNonManifoldEdges += tag.NonManifold;
-    this->NumBoundaryEdges += tag.Boundary;
-  }
 }
 
 // An edge's faces in increasing order: its half-edges' ranks in their pairing.

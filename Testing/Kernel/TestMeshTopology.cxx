@@ -422,3 +422,154 @@ TEST(MeshValidation, CleanFacesKeptAsTheyAreOnThreads)
     EXPECT_EQ(repaired.Vertices.size(), ev.size() - static_cast<size_t>(eo[101] - eo[100]));
   }
 }
+
+namespace
+{
+// Build's relations worked out the obvious way, for comparing: an edge per vertex pair met
+// walking the faces, numbered in that order; a vertex's fans joined across its edges of two
+// faces by a union-find.
+void ExpectBuildEqualsBruteForce(Index numVertices, const std::vector<Index>& offsets,
+  const std::vector<Index>& vertices, const std::string& what)
+{
+  SCOPED_TRACE(what);
+  const MeshTopology t = MeshTopology::Build(numVertices, offsets, vertices, subdtest::ThreeThreadFor);
+  const Index numFaces = static_cast<Index>(offsets.size()) - 1;
+  std::vector<std::pair<Index, Index>> pairs;           // per edge, (lower, upper)
+  std::vector<std::vector<Index>> edgeFaces;            // per edge
+  std::vector<Index> forward;                           // per edge, faces running it as its first does
+  std::vector<Index> faceEdges(vertices.size());
+  std::vector<std::vector<Index>> vertexFaces(numVertices), vertexEdges(numVertices);
+  for (Index f = 0; f < numFaces; ++f)
+  {
+    const Index n = offsets[f + 1] - offsets[f];
+    for (Index c = 0; c < n; ++c)
+    {
+      const Index a = vertices[offsets[f] + c], b = vertices[offsets[f] + (c + 1) % n];
+      const std::pair<Index, Index> key(std::min(a, b), std::max(a, b));
+      Index e = static_cast<Index>(std::find(pairs.begin(), pairs.end(), key) - pairs.begin());
+      if (e == static_cast<Index>(pairs.size()))
+      {
+        pairs.push_back(key);
+        edgeFaces.emplace_back();
+        forward.push_back(0);
+        ASSERT_EQ(t.GetEdgeVertices(e)[0], a) << "edge " << e;
+        ASSERT_EQ(t.GetEdgeVertices(e)[1], b) << "edge " << e;
+        vertexEdges[key.first].push_back(e);
+        vertexEdges[key.second].push_back(e);
+      }
+      edgeFaces[e].push_back(f);
+      forward[e] += a == t.GetEdgeVertices(e)[0];
+      faceEdges[offsets[f] + c] = e;
+      vertexFaces[a].push_back(f);
+    }
+  }
+  ASSERT_EQ(t.GetNumEdges(), static_cast<Index>(pairs.size()));
+  for (Index f = 0; f < numFaces; ++f)
+  {
+    const subd::IndexSpan fe = t.GetFaceEdges(f);
+    EXPECT_TRUE(std::equal(fe.begin(), fe.end(), faceEdges.begin() + offsets[f])) << "face " << f;
+  }
+  std::vector<bool> edgeNonManifold(pairs.size()), edgeBoundary(pairs.size());
+  for (size_t e = 0; e < pairs.size(); ++e)
+  {
+    const Index faces = static_cast<Index>(edgeFaces[e].size());
+    edgeBoundary[e] = faces == 1;
+    edgeNonManifold[e] = faces > 2 || (faces == 2 && forward[e] == 2);
+    const subd::IndexSpan ef = t.GetEdgeFaces(static_cast<Index>(e));
+    EXPECT_TRUE(std::equal(ef.begin(), ef.end(), edgeFaces[e].begin(), edgeFaces[e].end())) << "edge " << e;
+    EXPECT_EQ(t.GetEdgeTag(static_cast<Index>(e)).Boundary, edgeBoundary[e]) << "edge " << e;
+    EXPECT_EQ(t.GetEdgeTag(static_cast<Index>(e)).NonManifold, edgeNonManifold[e]) << "edge " << e;
+  }
+  for (Index v = 0; v < numVertices; ++v)
+  {
+    std::sort(vertexEdges[v].begin(), vertexEdges[v].end());
+    const subd::IndexSpan vf = t.GetVertexFaces(v), ve = t.GetVertexEdges(v);
+    EXPECT_TRUE(std::equal(vf.begin(), vf.end(), vertexFaces[v].begin(), vertexFaces[v].end())) << "vertex " << v;
+    EXPECT_TRUE(std::equal(ve.begin(), ve.end(), vertexEdges[v].begin(), vertexEdges[v].end())) << "vertex " << v;
+    bool boundary = false, nonManifold = false;
+    for (Index e : vertexEdges[v])
+    {
+      boundary = boundary || edgeBoundary[e];
+      nonManifold = nonManifold || edgeNonManifold[e];
+    }
+    // Fans: v's faces (by slot), joined across v's edges of exactly two faces.
+    const std::vector<Index>& faces = vertexFaces[v];
+    std::vector<Index> parent(faces.size());
+    std::iota(parent.begin(), parent.end(), 0);
+    auto root = [&parent](Index i) {
+      while (parent[i] != i)
+      {
+        i = parent[i];
+      }
+      return i;
+    };
+    Index fans = static_cast<Index>(faces.size());
+    for (Index e : vertexEdges[v])
+    {
+      if (edgeFaces[e].size() == 2)
+      {
+        const Index a = root(static_cast<Index>(std::find(faces.begin(), faces.end(), edgeFaces[e][0]) - faces.begin()));
+        const Index b = root(static_cast<Index>(std::find(faces.begin(), faces.end(), edgeFaces[e][1]) - faces.begin()));
+        fans -= a != b;
+        parent[a] = b;
+      }
+    }
+    nonManifold = nonManifold || fans > 1;
+    EXPECT_EQ(t.GetVertexTag(v).Boundary, boundary) << "vertex " << v;
+    EXPECT_EQ(t.GetVertexTag(v).NonManifold, nonManifold) << "vertex " << v;
+  }
+}
+}
+
+// Random polygons over few vertices: every valence (the comparisons of up to 8 corners at
+// once, up to 32, and the sorted lists beyond), repeated and flipped edges, pinched fans.
+TEST(MeshTopology, BuildEqualsBruteForceOnRandomPolygonSoups)
+{
+  std::uint32_t state = 12345;
+  auto random = [&state](Index n) {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<Index>((state >> 8) % static_cast<std::uint32_t>(n));
+  };
+  for (int round = 0; round < 60; ++round)
+  {
+    const Index numVertices = 5 + random(40);
+    const Index numFaces = 1 + random(round < 30 ? 40 : 200);
+    std::vector<Index> offsets{ 0 }, vertices;
+    for (Index f = 0; f < numFaces; ++f)
+    {
+      const Index size = 3 + (round % 3 == 0 ? random(3) : 0);
+      std::vector<Index> face;
+      while (static_cast<Index>(face.size()) < size)
+      {
+        // Half the corners at vertex 0: a hub of high valence in the larger rounds.
+        const Index v = random(4) == 0 ? 0 : random(numVertices);
+        if (std::find(face.begin(), face.end(), v) == face.end())
+        {
+          face.push_back(v);
+        }
+      }
+      vertices.insert(vertices.end(), face.begin(), face.end());
+      offsets.push_back(static_cast<Index>(vertices.size()));
+    }
+    ExpectBuildEqualsBruteForce(numVertices, offsets, vertices, "round " + std::to_string(round));
+  }
+}
+
+// Closed and open fans of every size around one vertex, manifold: no vertex tagged.
+TEST(MeshTopology, BuildEqualsBruteForceOnFansOfEverySize)
+{
+  for (Index sides = 3; sides <= 40; ++sides)
+  {
+    for (bool closed : { true, false })
+    {
+      std::vector<Index> offsets{ 0 }, vertices;
+      for (Index k = 0; k < (closed ? sides : sides - 1); ++k)
+      {
+        vertices.insert(vertices.end(), { 0, 1 + k, 1 + (k + 1) % sides });
+        offsets.push_back(static_cast<Index>(vertices.size()));
+      }
+      ExpectBuildEqualsBruteForce(1 + sides, offsets, vertices, std::to_string(sides) + (closed ? " closed" : " open"));
+      EXPECT_EQ(MeshTopology::Build(1 + sides, offsets, vertices).GetNumNonManifoldVertices(), 0);
+    }
+  }
+}
