@@ -263,7 +263,7 @@ void vtkSubDOrderFacesAlikeInEveryPiece(vtkPolyData* input, subd::FaceScreening&
 {
   const size_t numFaces = faceCells.size();
   const std::vector<subd::Index> order = OrderAlike(input, faces, faceCells);
-  std::vector<subd::Index> offsets{ 0 }, vertices, kept;
+  subd::IndexArray offsets{ 0 }, vertices, kept;
   std::vector<vtkIdType> cells;
   vertices.reserve(faces.Vertices.size());
   kept.reserve(numFaces);

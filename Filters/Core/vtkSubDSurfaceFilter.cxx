@@ -62,7 +62,8 @@ subd::Index TriangulateFaces(subd::FaceScreening& faces, vtkPoints* points)
     return 0;
   }
   split = 0;
-  std::vector<subd::Index> offsets{ 0 }, vertices, kept, local;
+  subd::IndexArray offsets{ 0 }, vertices, kept;
+  std::vector<subd::Index> local;
   std::vector<double> xyz;
   for (size_t f = 0; f < numFaces; ++f)
   {
@@ -113,8 +114,8 @@ public:
   bool Valid = false;
   vtkMTimeType FilterMTime = 0;
   vtkIdType NumInputPoints = 0;
-  std::vector<subd::Index> Offsets, Vertices;
-  std::vector<subd::Index> KeptFaces;
+  subd::IndexArray Offsets, Vertices;
+  subd::IndexArray KeptFaces;
   std::vector<std::uint8_t> FaceIsGhost; // per kept face; empty unless the input is a piece with ghosts
   // With ghosts: per kept face, 0 if the piece's own, else its ghost layer (vtkSubDGhostLayers);
   // the children of faces up to layer OutputGhostLevels are output, those beyond 0 as ghosts.

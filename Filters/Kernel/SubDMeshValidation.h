@@ -18,9 +18,9 @@ namespace subd
 {
 struct FaceScreening
 {
-  std::vector<Index> Offsets{ 0 };  ///< kept faces, offsets
-  std::vector<Index> Vertices;      ///< kept faces, corners
-  std::vector<Index> KeptFaces;     ///< for each kept face, its index in the input
+  IndexArray Offsets{ 0 };          ///< kept faces, offsets
+  IndexArray Vertices;              ///< kept faces, corners
+  IndexArray KeptFaces;             ///< for each kept face, its index in the input
   Index NumOutOfRange = 0;          ///< faces naming a vertex outside [0, numVertices)
   Index FirstOutOfRangeFace = InvalidIndex;
   Index FirstOutOfRangeId = InvalidIndex;

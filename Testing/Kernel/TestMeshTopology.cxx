@@ -358,10 +358,10 @@ TEST(MeshValidation, CollapsesDropsAndReports)
   const std::vector<long long> verts{ 0, 1, 2, 0, 2, 2, 3, 1, 1, 2, 0, 1, 2, 0, 3 };
   subd::FaceScreening s = subd::ScreenFaces(4, 4, offsets.data(), verts.data());
   EXPECT_EQ(s.NumOutOfRange, 0);
-  EXPECT_EQ(s.KeptFaces, (std::vector<Index>{ 0, 1 }));
+  EXPECT_EQ(s.KeptFaces, (subd::IndexArray{ 0, 1 }));
   EXPECT_EQ(s.NumDropped, 2);
   EXPECT_EQ(s.FirstDroppedFace, 2);
-  EXPECT_EQ(s.Vertices, (std::vector<Index>{ 0, 1, 2, 0, 2, 3 }));
+  EXPECT_EQ(s.Vertices, (subd::IndexArray{ 0, 1, 2, 0, 2, 3 }));
   EXPECT_EQ(s.NumCollapsedCorners, 2);
 
   const std::vector<long long> bad{ 0, 1, 7 };
@@ -379,7 +379,7 @@ TEST(MeshValidation, CollapsesDropsAndReports)
 TEST(MeshValidation, CleanFacesKeptAsTheyAreOnThreads)
 {
   std::vector<long long> offsets{ 5 }, verts(5, -1); // offsets need not start at 0
-  std::vector<Index> expectedVerts, expectedOffsets{ 0 };
+  subd::IndexArray expectedVerts, expectedOffsets{ 0 };
   for (int f = 0; f < 300; ++f)
   {
     const int n = 3 + f % 4 + (f == 250 ? 20 : 0); // triangles to hexagons, one 25-gon
@@ -391,12 +391,12 @@ TEST(MeshValidation, CleanFacesKeptAsTheyAreOnThreads)
     offsets.push_back(static_cast<long long>(verts.size()));
     expectedOffsets.push_back(static_cast<Index>(expectedVerts.size()));
   }
-  std::vector<Index> all(300);
+  subd::IndexArray all(300);
   std::iota(all.begin(), all.end(), 0);
   for (bool bigFace : { false, true })
   {
     std::vector<long long> o = offsets, v = verts;
-    std::vector<Index> ev = expectedVerts, eo = expectedOffsets;
+    subd::IndexArray ev = expectedVerts, eo = expectedOffsets;
     if (!bigFace) // the 25-gon becomes a hexagon
     {
       const long long removed = o[251] - o[250] - 6;
