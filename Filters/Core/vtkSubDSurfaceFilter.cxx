@@ -442,11 +442,8 @@ int vtkSubDSurfaceFilter::Execute(
     cache.OutputFaces = nullptr;
     cache.LastCoords = nullptr;
     cache.Scratch = subd::EvaluationScratch<double>();
-    bool allTriangles = true;
-    for (size_t f = 0; f + 1 < screened.Offsets.size() && allTriangles; ++f)
-    {
-      allTriangles = screened.Offsets[f + 1] - screened.Offsets[f] == 3;
-    }
+    // Screened faces have at least three corners: three per face on average is three each.
+    const bool allTriangles = screened.Vertices.size() == 3 * (screened.Offsets.size() - 1);
     cache.Scheme.reset(this->NewScheme(allTriangles));
     cache.Scheme->SetParallelFor(&vtkSubDPointDataInterpolation::SMPFor);
     const subd::Scheme* scheme = cache.Scheme.get();

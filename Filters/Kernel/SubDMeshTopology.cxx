@@ -57,19 +57,34 @@ void FileByKey(Index numKeys, Index numItems, const Items& items, const Place& p
     counts.assign(static_cast<size_t>(numKeys), 0);
     items(blockBegin(b), blockBegin(b + 1), [&counts](Index key, const auto&) { ++counts[key]; });
   });
+  // Each key's count, its offset (the one serial pass, over keys alone), then each block's
+  // first slot in it.
   offsets.resize(static_cast<size_t>(numKeys) + 1);
   offsets[0] = 0;
-  for (Index key = 0; key < numKeys; ++key)
-  {
-    Index slot = offsets[key];
-    for (IndexArray& cursor : cursors)
+  parallelFor(0, numKeys, [&](Index begin, Index end) {
+    for (Index key = begin; key < end; ++key)
     {
-      const Index count = cursor[key];
-      cursor[key] = slot;
-      slot += count;
+      Index count = 0;
+      for (const IndexArray& blockCounts : cursors)
+      {
+        count += blockCounts[key];
+      }
+      offsets[key + 1] = count;
     }
-    offsets[key + 1] = slot;
-  }
+  });
+  CountsToOffsets(offsets);
+  parallelFor(0, numKeys, [&](Index begin, Index end) {
+    for (Index key = begin; key < end; ++key)
+    {
+      Index slot = offsets[key];
+      for (IndexArray& cursor : cursors)
+      {
+        const Index count = cursor[key];
+        cursor[key] = slot;
+        slot += count;
+      }
+    }
+  });
   ForEachBlock(blocks, parallelFor, [&](Index b) {
     IndexArray& cursor = cursors[b];
     items(blockBegin(b), blockBegin(b + 1), [&](Index key, const auto& payload) { place(cursor[key]++, payload); });
@@ -113,11 +128,8 @@ MeshTopology MeshTopology::Build(
   Index numVertices, IndexArray faceOffsets, IndexArray faceVertices, const ParallelFor& parallelFor)
 {
   MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), std::move(faceVertices));
-  bool allTriangles = true;
-  for (Index f = 0; f < topology.GetNumFaces() && allTriangles; ++f)
-  {
-    allTriangles = topology.FaceOffsets[f + 1] - topology.FaceOffsets[f] == 3;
-  }
+  // Faces have at least three corners: three per face on average is three each.
+  const bool allTriangles = topology.FaceVertices.size() == 3 * static_cast<size_t>(topology.GetNumFaces());
   topology.BuildVertexFaces(parallelFor);
   IndexArray smallFans;
   const HalfEdgePairing pairing = topology.PairHalfEdges(allTriangles, smallFans, parallelFor);
