@@ -267,6 +267,24 @@ void InheritFaceTags(const Level& parent, Level& child, FirstChild firstChild, c
   });
 }
 
+/// InheritFaceTags for a primal split's child: a faces-only child (a finest level, only
+/// output) whose faces come four from each parent face in order (`fourEach`: child faces
+/// 4f .. 4f + 3 of face f) keeps the parent's tags, one per parent face (FaceTagShift 2),
+/// instead of a copy per child face: 5 bytes per output face less.
+template <typename FirstChild>
+void InheritPrimalFaceTags(const Level& parent, Level& child, ChildTopology depth, bool fourEach,
+  FirstChild firstChild, const ParallelFor& parallelFor = SerialFor)
+{
+  if (depth == ChildTopology::FacesOnly && fourEach && parent.FaceTagShift == 0)
+  {
+    child.FaceIsHole = parent.FaceIsHole;
+    child.FaceOrigin = parent.FaceOrigin;
+    child.FaceTagShift = 2;
+    return;
+  }
+  InheritFaceTags(parent, child, firstChild, parallelFor);
+}
+
 /// For primal splits (each edge gets an edge point, each vertex a vertex point): the two
 /// halves of a sharp edge inherit its sharpness decayed by one level, a vertex point its
 /// vertex's decayed sharpness; everything new is smooth. `child.Topology` must be complete.

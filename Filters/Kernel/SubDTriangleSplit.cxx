@@ -29,7 +29,7 @@ Level SplitTriangles(const Level& parent, ChildTopology depth, const ParallelFor
   childOffsets[4 * static_cast<size_t>(numFaces)] = 12 * numFaces;
 
   Level child;
-  InheritFaceTags(parent, child, [](Index f) { return 4 * f; }, parallelFor);
+  InheritPrimalFaceTags(parent, child, depth, true, [](Index f) { return 4 * f; }, parallelFor);
   PrimalChildTopology::SetChildLevel(parent, child, PrimalChildTopology::Split::Triangles, numEdges + topo.GetNumVertices(),
     std::move(childOffsets), std::move(childVertices), depth, number.EdgePoint(0), number.VertexPoint(0), parallelFor);
   return child;

@@ -787,8 +787,14 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
           EXPECT_EQ(twice.Topology.GetFaceOffsetArray(), stepwise.Topology.GetFaceOffsetArray()) << what;
           EXPECT_EQ(twice.Topology.GetFaceVertexArray(), stepwise.Topology.GetFaceVertexArray()) << what;
           EXPECT_EQ(subdtest::FaceTags(twice), subdtest::FaceTags(stepwise)) << what;
-          // Kept per face of the level between, or of the grandparent (four children each).
-          EXPECT_EQ(twice.FaceOrigin.size() << twice.FaceTagShift, stepwise.FaceOrigin.size()) << what;
+          // Kept per face of the level between, or of the grandparent (four children each); a
+          // faces-only split of a level with a tag per face keeps the parent's (four each).
+          EXPECT_EQ(twice.FaceOrigin.size() << twice.FaceTagShift, stepwise.FaceOrigin.size() << stepwise.FaceTagShift)
+            << what;
+          if (!subd::IsQuadSplit(which) && parent.FaceTagShift == 0)
+          {
+            EXPECT_EQ(stepwise.FaceTagShift, 2) << what;
+          }
           EXPECT_TRUE(twice.FaceTagShift == 2 || twice.FaceTagShift == 4) << what;
           tagShifts |= 1 << twice.FaceTagShift;
           EXPECT_EQ(twice.Depth, stepwise.Depth) << what;
