@@ -22,7 +22,9 @@ struct SUBDKERNEL_EXPORT Level
   /// Face f's hole flag and origin are at f >> FaceTagShift: 0, one per face, except for a
   /// finest level written from its grandparent (SplitTwice), whose faces come four from each
   /// face of the level between and keep that face's tags (2: a quarter of the memory), or
-  /// sixteen from each face of the grandparent when every face of it has four children (4).
+  /// sixteen from each face of the grandparent when every face of it has four children (4),
+  /// and for a faces-only primal split whose parent's faces have four children each
+  /// (InheritPrimalFaceTags: 2).
   int FaceTagShift = 0;
   int Depth = 0;                         ///< 0 for the base level, then 1, 2, ...
 
