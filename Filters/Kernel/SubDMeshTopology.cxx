@@ -365,16 +365,20 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
     std::vector<std::uint64_t> keys;
     CornerNeighbours neighbours;
     Index leavingEdge[smallValence], enteringEdge[smallValence];
-    // A group of one half-edge, or of two running opposite ways, the lower one first.
-    auto pairUp = [&pairing](Index a, Index b) {
-      if (b == InvalidIndex)
+    // One vertex pair's group: its `count` half-edges in increasing order (halfEdgeAt(i)),
+    // `forward` of them running the way the first does.
+    auto writeGroup = [&pairing](Index count, Index forward, const auto& halfEdgeAt) {
+      const Index first = halfEdgeAt(0);
+      for (Index i = 0; i < count; ++i)
       {
-        pairing[a] = { a, HalfEdgePair::Group(1, 1) };
-        return;
+        pairing[halfEdgeAt(i)] = { first, i };
       }
-      const Index first = std::min(a, b), second = std::max(a, b);
-      pairing[first] = { first, HalfEdgePair::Group(2, 1) };
-      pairing[second] = { first, 1 };
+      pairing[first].RankOrGroup = HalfEdgePair::Group(count, forward);
+    };
+    // A group of one half-edge, or of two running opposite ways (b != InvalidIndex).
+    auto pairUp = [&writeGroup](Index a, Index b) {
+      const Index lower = b == InvalidIndex ? a : std::min(a, b), upper = std::max(a, b);
+      writeGroup(b == InvalidIndex ? 1 : 2, 1, [=](Index i) { return i == 0 ? lower : upper; });
     };
     for (Index v = begin; v < end; ++v)
     {
@@ -461,16 +465,13 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
         {
           ++runEnd;
         }
-        const Index representative = static_cast<Index>((*run & 0xffffffffu) >> 1);
         Index forward = 0;
         for (std::uint64_t* it = run; it != runEnd; ++it)
         {
-          const Index h = static_cast<Index>((*it & 0xffffffffu) >> 1);
-          pairing[h].Representative = representative;
-          pairing[h].RankOrGroup = static_cast<Index>(it - run);
           forward += (*it & 1u) == (*run & 1u);
         }
-        pairing[representative].RankOrGroup = HalfEdgePair::Group(static_cast<Index>(runEnd - run), forward);
+        writeGroup(static_cast<Index>(runEnd - run), forward,
+          [run](Index i) { return static_cast<Index>((run[i] & 0xffffffffu) >> 1); });
         run = runEnd;
       }
     }
