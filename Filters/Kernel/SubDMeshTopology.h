@@ -69,8 +69,8 @@ public:
   Index GetNumVertexFaces(Index v) const { return VertexFaceOffsets[v + 1] - VertexFaceOffsets[v]; }
 
   /// Frees the lists of faces around each vertex (and their corners), keeping their counts:
-  /// for a level kept only for rows that never read them (Loop's finest rows written from
-  /// their grandparent), whose lists would otherwise be a large share of the peak. Until
+  /// for a level kept only for rows that never read them (Loop's and the butterfly's levels
+  /// once split), whose lists would otherwise be a large share of the peak. Until
   /// RestoreVertexFaceLists, GetVertexFaces and GetVertexFaceCorners give spans of the right
   /// size and no data (a null pointer: reading them faults at once).
   void ReleaseVertexFaceLists();

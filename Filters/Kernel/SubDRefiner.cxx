@@ -69,9 +69,11 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         {
           KeepOnly(*parent, part);
         }
-        if (parentSkipped && !scheme.GrandchildReadsVertexFaceLists())
+        if (!scheme.GrandchildReadsVertexFaceLists())
         {
-          parent->Topology.ReleaseVertexFaceLists(); // kept for rows that never read them
+          // Split, the level is kept for its rows and its grandchild's, which never read them
+          // (a fifth of a level's topology, all of it in the peak of the levels after).
+          parent->Topology.ReleaseVertexFaceLists();
         }
         grandparent = parent;
       }

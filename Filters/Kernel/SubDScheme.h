@@ -114,12 +114,12 @@ public:
   {
     return this->RefinesFromGrandparentAlone() ? ChildTopology::FacesAndEdges : ChildTopology::Full;
   }
-  /// Whether a level kept for the rows of its grandchild, written from it with its child
-  /// skipped, is still read for the lists of faces around its vertices: by its own rows, the
-  /// grandchild's rows or faces. Loop's rules read vertex rings through edges and only count
-  /// faces, and the butterfly's order their rings through edges' faces, so Refine frees those
-  /// lists there (PromoteFinestRows restores them for the split); Catmull-Clark's vertex rows
-  /// sum the faces around.
+  /// Whether a level kept for its rows and its grandchild's (written from it, its child built
+  /// or skipped) is still read for the lists of faces around its vertices once split: by its
+  /// own rows, the grandchild's rows or faces. Loop's rules read vertex rings through edges
+  /// and only count faces, and the butterfly's order their rings through edges' faces, so
+  /// Refine frees those lists there after the split (PromoteFinestRows restores them for a
+  /// split again); Catmull-Clark's vertex rows sum the faces around.
   bool GrandchildReadsVertexFaceLists() const
   {
     GrandchildScheme which;
