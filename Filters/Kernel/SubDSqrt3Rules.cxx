@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 
 namespace subd
@@ -78,7 +79,7 @@ std::vector<Index> ChooseTrisectedEdges(const Level& level, bool evenStep)
 
 }
 
-Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep)
+Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep, bool creasesInside)
 {
   const MeshTopology& topo = level.Topology;
   const VertexTag tag = topo.GetVertexTag(v);
@@ -88,15 +89,37 @@ Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep)
     return Sqrt3VertexRule::Fixed;
   }
   Index curves = 0;
-  for (Index e : topo.GetVertexEdges(v))
+  if (creasesInside || tag.Boundary) // else its curve edges would be boundary edges: none
   {
-    curves += IsSqrt3CurveEdge(level, e);
+    for (Index e : topo.GetVertexEdges(v))
+    {
+      curves += IsSqrt3CurveEdge(level, e);
+    }
   }
   if (!tag.Boundary && curves < 2 && faces == topo.GetVertexEdges(v).size())
   {
     return Sqrt3VertexRule::Relax;
   }
   return evenStep && curves == 2 ? Sqrt3VertexRule::Curve : Sqrt3VertexRule::Fixed;
+}
+
+bool HasSqrt3InteriorCurveEdge(const Level& level, const ParallelFor& parallelFor)
+{
+  const MeshTopology& topo = level.Topology;
+  std::atomic<bool> found{ false };
+  parallelFor(0, topo.GetNumEdges(), [&](Index begin, Index end) {
+    bool here = false;
+    for (Index e = begin; e < end && !here; ++e)
+    {
+      // Boundary edges are sharp too (MakeBaseLevel): their faces tell them apart.
+      here = IsSharp(level.EdgeSharpness[e]) && topo.GetEdgeFaces(e).size() == 2 && IsSqrt3CurveEdge(level, e);
+    }
+    if (here)
+    {
+      found = true;
+    }
+  });
+  return found;
 }
 
 namespace
@@ -212,10 +235,11 @@ public:
     , Rules(static_cast<size_t>(this->NumVertices))
   {
     const bool evenStep = IsEvenStep(parent);
+    const bool creasesInside = HasSqrt3InteriorCurveEdge(parent, parallelFor);
     parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
       for (Index v = begin; v < end; ++v)
       {
-        this->Rules[v] = ClassifySqrt3Vertex(parent, v, evenStep);
+        this->Rules[v] = ClassifySqrt3Vertex(parent, v, evenStep, creasesInside);
       }
     });
     for (Index v = 0; v < this->NumVertices; ++v)
@@ -397,12 +421,15 @@ public:
 private:
   Index VertexPoint(Index v) const { return this->Points.FirstVertexPoint + v; }
 
-  // Edge e's ends (a, b) in the order triangle f runs them.
+  // Edge e's ends (a, b) in the order triangle f runs them (every face is a triangle: its
+  // corners are found without the face offsets).
   void OrientedEnds(Index e, Index f, Index& a, Index& b) const
   {
-    const Index i = this->Topo.GetEdgePosition(f, e);
-    a = this->Topo.GetFaceVertices(f)[i];
-    b = this->Topo.GetFaceVertices(f)[(i + 1) % 3];
+    const Index* fe = this->Topo.GetTriangleEdges(f);
+    const Index i = fe[0] == e ? 0 : (fe[1] == e ? 1 : 2);
+    const Index* fv = this->Topo.GetTriangleVertices(f);
+    a = fv[i];
+    b = fv[i == 2 ? 0 : i + 1];
   }
 
   // The point an old edge e of face f is flipped to: the centroid, or in a triangle that

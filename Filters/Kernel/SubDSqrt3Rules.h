@@ -64,7 +64,13 @@ enum class Sqrt3VertexRule : std::uint8_t
   Curve, ///< the boundary rule along the two curve edges (even steps)
   Fixed  ///< stays in place
 };
-SUBDKERNEL_EXPORT Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep);
+/// `creasesInside` false promises that no edge between two triangles is sharp
+/// (HasSqrt3InteriorCurveEdge): a vertex off the boundary then has no curve edge, and its
+/// edges need not be walked.
+SUBDKERNEL_EXPORT Sqrt3VertexRule ClassifySqrt3Vertex(
+  const Level& level, Index v, bool evenStep, bool creasesInside = true);
+/// Whether some curve edge of `level` is a crease between two triangles (not a boundary).
+SUBDKERNEL_EXPORT bool HasSqrt3InteriorCurveEdge(const Level& level, const ParallelFor& parallelFor = SerialFor);
 
 /// The child point of the old vertex 0 in the step from `parent` (old vertex v: this + v).
 SUBDKERNEL_EXPORT Index Sqrt3FirstVertexPoint(const Level& parent);
