@@ -50,7 +50,7 @@ struct SUBDKERNEL_EXPORT FaceBlock
   /// with fewer than three corners is dropped.
   void EndFaceWithoutRepeats(size_t first, Index origin, std::uint8_t hole);
   /// Appends a triangle (inlined, one push per value: the sqrt(3) split writes every face
-  /// so, and a range insert costs it three times as many instructions).
+  /// so, and the out-of-line range insert was half of that split's instructions).
   SUBD_ALWAYS_INLINE void AddTriangle(Index a, Index b, Index c, Index origin, std::uint8_t hole)
   {
     this->Vertices.push_back(a);

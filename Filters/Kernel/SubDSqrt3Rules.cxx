@@ -111,7 +111,7 @@ bool HasSqrt3InteriorCurveEdge(const Level& level, const ParallelFor& parallelFo
     bool here = false;
     for (Index e = begin; e < end && !here; ++e)
     {
-      // Boundary edges are sharp too (MakeBaseLevel): their faces tell them apart.
+      // The cheap test first: a curve edge between two triangles is a sharp one.
       here = IsSharp(level.EdgeSharpness[e]) && topo.GetEdgeFaces(e).size() == 2 && IsSqrt3CurveEdge(level, e);
     }
     if (here)

@@ -64,7 +64,7 @@ enum class Sqrt3VertexRule : std::uint8_t
   Curve, ///< the boundary rule along the two curve edges (even steps)
   Fixed  ///< stays in place
 };
-/// `creasesInside` false promises that no edge between two triangles is sharp
+/// `creasesInside` false promises that no curve edge lies between two triangles
 /// (HasSqrt3InteriorCurveEdge): a vertex off the boundary then has no curve edge, and its
 /// edges need not be walked.
 SUBDKERNEL_EXPORT Sqrt3VertexRule ClassifySqrt3Vertex(
