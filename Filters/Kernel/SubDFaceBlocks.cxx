@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <atomic>
 #include <mutex>
+#include <numeric>
+#include <stdexcept>
 #include <utility>
 
 namespace subd
@@ -110,6 +112,57 @@ EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelF
     const IndexArray& vertices = written[b].second.Vertices;
     std::copy(vertices.begin() + Offset(from), vertices.begin() + Offset(to), faces.Vertices.begin() + Offset(at));
   }, [&written](size_t b) { IndexArray().swap(written[b].second.Vertices); });
+  return faces;
+}
+
+EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallelFor,
+  const std::function<Index(Index begin, Index end)>& count,
+  const std::function<void(Index begin, Index end, TriangleCursor& cursor)>& write)
+{
+  // Fixed ranges, not the ParallelFor's (which may cut differently each call): the counts
+  // and the writes must cover the same elements.
+  const Index numRanges = std::max<Index>(1, std::min<Index>(numElements, 1024));
+  auto rangeBegin = [numElements, numRanges](Index r) {
+    return static_cast<Index>(static_cast<std::int64_t>(numElements) * r / numRanges);
+  };
+  std::vector<size_t> firstTriangle(static_cast<size_t>(numRanges) + 1, 0);
+  parallelFor(0, numRanges, [&](Index begin, Index end) {
+    for (Index r = begin; r < end; ++r)
+    {
+      firstTriangle[r + 1] = static_cast<size_t>(count(rangeBegin(r), rangeBegin(r + 1)));
+    }
+  });
+  std::partial_sum(firstTriangle.begin(), firstTriangle.end(), firstTriangle.begin());
+  const size_t numTriangles = firstTriangle.back();
+  EmittedFaces faces;
+  faces.Offsets.resize(numTriangles + 1);
+  faces.Vertices.resize(3 * numTriangles);
+  faces.Origins.resize(numTriangles);
+  faces.Holes.resize(numTriangles);
+  std::atomic<bool> miscounted{ false };
+  parallelFor(0, numRanges, [&](Index begin, Index end) {
+    for (Index r = begin; r < end; ++r)
+    {
+      const size_t first = firstTriangle[r], last = firstTriangle[r + 1];
+      TriangleCursor cursor{ faces.Vertices.data() + 3 * first, faces.Origins.data() + first,
+        faces.Holes.data() + first, faces.Vertices.data() + 3 * last };
+      write(rangeBegin(r), rangeBegin(r + 1), cursor);
+      if (cursor.Overflowed || cursor.Vertices != cursor.End)
+      {
+        miscounted = true;
+      }
+    }
+  });
+  if (miscounted)
+  {
+    throw std::logic_error("EmitTrianglesInPlace: a range of elements wrote other than the triangles it counted");
+  }
+  parallelFor(0, static_cast<Index>(numTriangles) + 1, [&faces](Index begin, Index end) {
+    for (Index t = begin; t < end; ++t)
+    {
+      faces.Offsets[t] = 3 * t;
+    }
+  });
   return faces;
 }
 }

@@ -400,11 +400,36 @@ public:
   }
   Index GetNumElements() const { return this->Topo.GetNumEdges() + this->Topo.GetNumFaces(); }
 
-  void WriteBlock(Index begin, Index end, FaceBlock& out) const
+  // The triangles WriteBlock writes for the same elements, told without working them out.
+  Index CountBlock(Index begin, Index end) const
   {
     const Index numEdges = this->Topo.GetNumEdges();
-    const size_t flips = static_cast<size_t>(std::max<Index>(0, std::min(end, numEdges) - begin));
-    out.Reserve(2 * flips, 6 * flips); // two triangles per flipped edge: most of a block
+    Index count = 0;
+    for (Index element = begin; element < end; ++element)
+    {
+      if (element < numEdges)
+      {
+        if (this->Flips(element))
+        {
+          count += 2;
+          continue;
+        }
+        for (Index f : this->Topo.GetEdgeFaces(element))
+        {
+          count += this->KeepsPartNextTo(element, f);
+        }
+      }
+      else
+      {
+        count += this->Trisects(element - numEdges);
+      }
+    }
+    return count;
+  }
+
+  void WriteBlock(Index begin, Index end, TriangleCursor& out) const
+  {
+    const Index numEdges = this->Topo.GetNumEdges();
     for (Index element = begin; element < end; ++element)
     {
       if (element < numEdges)
@@ -447,11 +472,19 @@ private:
     return this->Points.TrisectionPoint(this->Topo, t, shared);
   }
 
-  void WriteEdgeTriangles(Index e, FaceBlock& out) const
+  // Whether edge e is flipped (two triangles across it), or each of its faces keeps its
+  // part next to it (KeepsPartNextTo).
+  bool Flips(Index e) const { return !ActsAsBoundary(this->Parent, e); }
+  // For an edge not flipped: whether face f keeps a triangle next to it (not when e is the
+  // edge f trisects: its middle triangle comes with the face).
+  bool KeepsPartNextTo(Index e, Index f) const { return e != this->Points.TrisectedEdge[f]; }
+  bool Trisects(Index f) const { return this->Points.TrisectedEdge[f] != InvalidIndex; }
+
+  void WriteEdgeTriangles(Index e, TriangleCursor& out) const
   {
     const IndexSpan ef = this->Topo.GetEdgeFaces(e);
     const LevelArray<std::uint8_t>& isHole = this->Parent.FaceIsHole;
-    if (!ActsAsBoundary(this->Parent, e))
+    if (this->Flips(e))
     {
       Index f1 = ef[0], f2 = ef[1], a, b;
       this->OrientedEnds(e, f1, a, b);
@@ -464,7 +497,7 @@ private:
     // unless e is the edge the face trisects (its middle triangle comes with the face).
     for (Index f : ef)
     {
-      if (e != this->Points.TrisectedEdge[f])
+      if (this->KeepsPartNextTo(e, f))
       {
         Index a, b;
         this->OrientedEnds(e, f, a, b);
@@ -475,13 +508,13 @@ private:
 
   // Triangles (a, b, m) trisecting (a, b): the middle triangle (x_a, x_b, m); the triangles
   // (a, x_a, m) and (x_b, b, m) come from the flips of (m, a) and (b, m).
-  void WriteMiddleTriangle(Index f, FaceBlock& out) const
+  void WriteMiddleTriangle(Index f, TriangleCursor& out) const
   {
-    const Index e = this->Points.TrisectedEdge[f];
-    if (e == InvalidIndex)
+    if (!this->Trisects(f))
     {
       return;
     }
+    const Index e = this->Points.TrisectedEdge[f];
     Index a, b;
     this->OrientedEnds(e, f, a, b);
     const Index m = this->Topo.GetTriangleOppositeVertex(f, e);
@@ -498,8 +531,9 @@ private:
 Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopology depth, const ParallelFor& parallelFor)
 {
   const Sqrt3FaceWriter writer(parent, points);
-  EmittedFaces faces = EmitFacesInParallel(writer.GetNumElements(), parallelFor,
-    [&writer](Index begin, Index end, FaceBlock& block) { writer.WriteBlock(begin, end, block); });
+  EmittedFaces faces = EmitTrianglesInPlace(
+    writer.GetNumElements(), parallelFor, [&writer](Index begin, Index end) { return writer.CountBlock(begin, end); },
+    [&writer](Index begin, Index end, TriangleCursor& cursor) { writer.WriteBlock(begin, end, cursor); });
   Level child;
   child.FaceOrigin = std::move(faces.Origins);
   child.FaceIsHole = std::move(faces.Holes);
