@@ -29,14 +29,6 @@ struct SUBDKERNEL_EXPORT FaceBlock
   IndexArray Origins;              ///< one per face
   LevelArray<std::uint8_t> Holes;  ///< one per face
 
-  /// Room for `faces` faces of `corners` corners in all (a writer's estimate).
-  void Reserve(size_t faces, size_t corners)
-  {
-    this->Ends.reserve(faces);
-    this->Origins.reserve(faces);
-    this->Holes.reserve(faces);
-    this->Vertices.reserve(corners);
-  }
   /// Starts a face: returns where its corners begin, for EndFaceWithoutRepeats.
   size_t BeginFace() const { return this->Vertices.size(); }
   /// Closes the face of the corners pushed since the last face ended.
