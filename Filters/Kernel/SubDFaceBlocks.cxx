@@ -135,7 +135,6 @@ EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallel
   std::partial_sum(firstTriangle.begin(), firstTriangle.end(), firstTriangle.begin());
   const size_t numTriangles = firstTriangle.back();
   EmittedFaces faces;
-  faces.Offsets.resize(numTriangles + 1);
   faces.Vertices.resize(3 * numTriangles);
   faces.Origins.resize(numTriangles);
   faces.Holes.resize(numTriangles);
@@ -157,12 +156,7 @@ EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallel
   {
     throw std::logic_error("EmitTrianglesInPlace: a range of elements wrote other than the triangles it counted");
   }
-  parallelFor(0, static_cast<Index>(numTriangles) + 1, [&faces](Index begin, Index end) {
-    for (Index t = begin; t < end; ++t)
-    {
-      faces.Offsets[t] = 3 * t;
-    }
-  });
+  FillStrided(faces.Offsets, static_cast<Index>(numTriangles), 3, parallelFor);
   return faces;
 }
 }

@@ -979,16 +979,10 @@ Level SplitTwiceTagsWith(const Shape& shape, const Level& grandparent, const Par
   {
     fourChildren = shape.CornerChild(f, 0) == 4 * f;
   }
-  if (fourChildren)
+  if (!ShareOrInheritFaceTags(grandparent, fine, fourChildren, 4, [&shape](Index f) { return shape.CornerChild(f, 0); },
+        parallelFor))
   {
-    fine.FaceIsHole = grandparent.FaceIsHole;
-    fine.FaceOrigin = grandparent.FaceOrigin;
-    fine.FaceTagShift = 4;
-  }
-  else
-  {
-    InheritFaceTags(grandparent, fine, [&shape](Index f) { return shape.CornerChild(f, 0); }, parallelFor);
-    fine.FaceTagShift = 2;
+    fine.FaceTagShift = 2; // a tag per face of the level between
   }
   fine.Depth = grandparent.Depth + 2;
   fine.Creasing = grandparent.Creasing;

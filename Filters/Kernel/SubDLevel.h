@@ -269,6 +269,24 @@ void InheritFaceTags(const Level& parent, Level& child, FirstChild firstChild, c
   });
 }
 
+/// InheritFaceTags, or with `share` (the parent has a tag per face, and each of its faces
+/// has 2^shift children, in order) the parent's tags themselves, one per parent face, with
+/// FaceTagShift `shift`: no copy per child face. Returns whether it shared them.
+template <typename FirstChild>
+bool ShareOrInheritFaceTags(const Level& parent, Level& child, bool share, int shift, FirstChild firstChild,
+  const ParallelFor& parallelFor = SerialFor)
+{
+  if (share)
+  {
+    child.FaceIsHole = parent.FaceIsHole;
+    child.FaceOrigin = parent.FaceOrigin;
+    child.FaceTagShift = shift;
+    return true;
+  }
+  InheritFaceTags(parent, child, firstChild, parallelFor);
+  return false;
+}
+
 /// InheritFaceTags for a primal split's child: a faces-only child (a finest level, only
 /// output) whose faces come four from each parent face in order (`fourEach`: child faces
 /// 4f .. 4f + 3 of face f) keeps the parent's tags, one per parent face (FaceTagShift 2),
@@ -277,14 +295,8 @@ template <typename FirstChild>
 void InheritPrimalFaceTags(const Level& parent, Level& child, ChildTopology depth, bool fourEach,
   FirstChild firstChild, const ParallelFor& parallelFor = SerialFor)
 {
-  if (depth == ChildTopology::FacesOnly && fourEach && parent.FaceTagShift == 0)
-  {
-    child.FaceIsHole = parent.FaceIsHole;
-    child.FaceOrigin = parent.FaceOrigin;
-    child.FaceTagShift = 2;
-    return;
-  }
-  InheritFaceTags(parent, child, firstChild, parallelFor);
+  const bool share = depth == ChildTopology::FacesOnly && fourEach && parent.FaceTagShift == 0;
+  ShareOrInheritFaceTags(parent, child, share, 2, firstChild, parallelFor);
 }
 
 /// For primal splits (each edge gets an edge point, each vertex a vertex point): the two
