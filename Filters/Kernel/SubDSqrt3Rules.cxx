@@ -44,12 +44,14 @@ Index Sqrt3CurveNeighbour(const Level& level, Index v, Index other)
 
 namespace
 {
-// In even steps, the edge each triangle trisects (or InvalidIndex): every curve edge whose
-// triangles trisect nothing else yet, in edge order.
+// In even steps, the edge each triangle trisects: every curve edge whose triangles trisect
+// nothing else yet, in edge order. Empty when no triangle trisects one (every odd step, and
+// every step of a closed mesh without creases): a per-face array would be most of a large
+// step's scratch, and nearly all of it InvalidIndex.
 std::vector<Index> ChooseTrisectedEdges(const Level& level, bool evenStep)
 {
   const MeshTopology& topo = level.Topology;
-  std::vector<Index> trisected(static_cast<size_t>(topo.GetNumFaces()), InvalidIndex);
+  std::vector<Index> trisected;
   if (!evenStep)
   {
     return trisected;
@@ -59,6 +61,10 @@ std::vector<Index> ChooseTrisectedEdges(const Level& level, bool evenStep)
     if (!IsSqrt3CurveEdge(level, e))
     {
       continue;
+    }
+    if (trisected.empty())
+    {
+      trisected.assign(static_cast<size_t>(topo.GetNumFaces()), InvalidIndex);
     }
     const IndexSpan ef = topo.GetEdgeFaces(e);
     bool free = true;
@@ -76,7 +82,6 @@ std::vector<Index> ChooseTrisectedEdges(const Level& level, bool evenStep)
   }
   return trisected;
 }
-
 }
 
 Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep, bool creasesInside)
@@ -124,10 +129,76 @@ bool HasSqrt3InteriorCurveEdge(const Level& level, const ParallelFor& parallelFo
 
 namespace
 {
+// Whether the step from `parent` (making level Depth + 1) is an even one (see the header).
+bool IsEvenStep(const Level& parent)
+{
+  return (parent.Depth % 2) == 1;
+}
+
+// The child points of one step (see the header): centroids, old vertices, trisection points.
+// Where no triangle trisects an edge, its per-face and per-edge tables stay empty: every
+// face then has the centroid of its own number and no edge has trisection points.
+class Sqrt3Points
+{
+public:
+  Index FirstVertexPoint = 0;
+  Index NumPoints = 0;
+
+  Sqrt3Points(const Level& parent, bool evenStep)
+    : TrisectedEdges(ChooseTrisectedEdges(parent, evenStep))
+  {
+    const MeshTopology& topo = parent.Topology;
+    const Index numFaces = topo.GetNumFaces();
+    if (this->TrisectedEdges.empty())
+    {
+      this->FirstVertexPoint = numFaces;
+      this->NumPoints = numFaces + topo.GetNumVertices();
+      return;
+    }
+    this->CentroidPoints.assign(static_cast<size_t>(numFaces), InvalidIndex);
+    for (Index f = 0; f < numFaces; ++f)
+    {
+      if (this->TrisectedEdges[f] == InvalidIndex)
+      {
+        this->CentroidPoints[f] = this->NumPoints++;
+      }
+    }
+    this->FirstVertexPoint = this->NumPoints;
+    this->NumPoints += topo.GetNumVertices();
+    this->FirstEdgePoints.assign(static_cast<size_t>(topo.GetNumEdges()), InvalidIndex);
+    for (Index f = 0; f < numFaces; ++f)
+    {
+      const Index e = this->TrisectedEdges[f];
+      if (e != InvalidIndex && this->FirstEdgePoints[e] == InvalidIndex)
+      {
+        this->FirstEdgePoints[e] = this->NumPoints;
+        this->NumPoints += 2;
+      }
+    }
+  }
+  /// Whether some triangle trisects an edge instead of getting a centroid.
+  bool AnyTrisected() const { return !this->TrisectedEdges.empty(); }
+  /// The edge face f trisects, or InvalidIndex.
+  Index TrisectedEdge(Index f) const { return this->TrisectedEdges.empty() ? InvalidIndex : this->TrisectedEdges[f]; }
+  /// Face f's centroid point, or InvalidIndex for a trisecting face.
+  Index CentroidPoint(Index f) const { return this->CentroidPoints.empty() ? f : this->CentroidPoints[f]; }
+  /// The first of edge e's two trisection points, or InvalidIndex.
+  Index FirstEdgePoint(Index e) const { return this->FirstEdgePoints.empty() ? InvalidIndex : this->FirstEdgePoints[e]; }
+  // The trisection point of edge e next to its end v.
+  Index TrisectionPoint(const MeshTopology& topo, Index e, Index v) const
+  {
+    return this->FirstEdgePoint(e) + (topo.GetEdgeVertices(e)[0] == v ? 0 : 1);
+  }
+
+private:
+  std::vector<Index> TrisectedEdges; // per face (ChooseTrisectedEdges); empty: none
+  std::vector<Index> CentroidPoints; // per face, InvalidIndex for a trisecting face; empty: f
+  std::vector<Index> FirstEdgePoints; // per edge, InvalidIndex unless trisected; empty: none
+};
+
 // Sets the sharpness of the child pieces of each sharp edge (the unflipped edge, or the
 // three pieces of a trisected one) and of each vertex, one unit down.
-void InheritSqrt3Sharpness(const Level& parent, const std::vector<Index>& firstEdgePoint,
-  Index firstVertexPoint, Level& child)
+void InheritSqrt3Sharpness(const Level& parent, const Sqrt3Points& points, Level& child)
 {
   const MeshTopology& topo = parent.Topology;
   const MeshTopology& childTopo = child.Topology;
@@ -145,9 +216,9 @@ void InheritSqrt3Sharpness(const Level& parent, const std::vector<Index>& firstE
       continue;
     }
     const float sharpness = DecaySharpness(parent.EdgeSharpness[e]);
-    const Index a = firstVertexPoint + topo.GetEdgeVertices(e)[0];
-    const Index b = firstVertexPoint + topo.GetEdgeVertices(e)[1];
-    const Index x = firstEdgePoint[e];
+    const Index a = points.FirstVertexPoint + topo.GetEdgeVertices(e)[0];
+    const Index b = points.FirstVertexPoint + topo.GetEdgeVertices(e)[1];
+    const Index x = points.FirstEdgePoint(e);
     if (x == InvalidIndex)
     {
       setSharpness(a, b, sharpness);
@@ -159,60 +230,9 @@ void InheritSqrt3Sharpness(const Level& parent, const std::vector<Index>& firstE
   }
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
-    child.VertexSharpness[firstVertexPoint + v] = DecaySharpness(parent.VertexSharpness[v]);
+    child.VertexSharpness[points.FirstVertexPoint + v] = DecaySharpness(parent.VertexSharpness[v]);
   }
 }
-}
-
-namespace
-{
-// Whether the step from `parent` (making level Depth + 1) is an even one (see the header).
-bool IsEvenStep(const Level& parent)
-{
-  return (parent.Depth % 2) == 1;
-}
-
-// The child points of one step (see the header): centroids, old vertices, trisection points.
-struct Sqrt3Points
-{
-  std::vector<Index> TrisectedEdge;  // per face (ChooseTrisectedEdges)
-  std::vector<Index> CentroidPoint;  // per face, InvalidIndex for a trisecting face
-  Index FirstVertexPoint = 0;
-  std::vector<Index> FirstEdgePoint; // per edge, InvalidIndex unless trisected
-  Index NumPoints = 0;
-
-  Sqrt3Points(const Level& parent, bool evenStep)
-    : TrisectedEdge(ChooseTrisectedEdges(parent, evenStep))
-  {
-    const MeshTopology& topo = parent.Topology;
-    const Index numFaces = topo.GetNumFaces();
-    this->CentroidPoint.assign(static_cast<size_t>(numFaces), InvalidIndex);
-    for (Index f = 0; f < numFaces; ++f)
-    {
-      if (this->TrisectedEdge[f] == InvalidIndex)
-      {
-        this->CentroidPoint[f] = this->NumPoints++;
-      }
-    }
-    this->FirstVertexPoint = this->NumPoints;
-    this->NumPoints += topo.GetNumVertices();
-    this->FirstEdgePoint.assign(static_cast<size_t>(topo.GetNumEdges()), InvalidIndex);
-    for (Index f = 0; f < numFaces; ++f)
-    {
-      const Index e = this->TrisectedEdge[f];
-      if (e != InvalidIndex && this->FirstEdgePoint[e] == InvalidIndex)
-      {
-        this->FirstEdgePoint[e] = this->NumPoints;
-        this->NumPoints += 2;
-      }
-    }
-  }
-  // The trisection point of edge e next to its end v.
-  Index TrisectionPoint(const MeshTopology& topo, Index e, Index v) const
-  {
-    return this->FirstEdgePoint[e] + (topo.GetEdgeVertices(e)[0] == v ? 0 : 1);
-  }
-};
 
 // The rows of one step, numbered like Sqrt3Points, written one at a time (SubDRowWriting.h).
 // What the rows need beyond the parent's faces, vertices' edges and edges' ends is kept here
@@ -259,21 +279,21 @@ public:
         this->CurveEnds.push_back({ p, Sqrt3CurveNeighbour(parent, v, p) });
       }
     }
-    const Index numFaces = this->Topo.GetNumFaces();
+    const Index numFaces = points.AnyTrisected() ? this->Topo.GetNumFaces() : 0;
     for (Index f = 0; f < numFaces; ++f)
     {
-      const Index e = points.TrisectedEdge[f];
-      if (e != InvalidIndex && points.FirstEdgePoint[e] == this->FirstTrisectionPoint + 2 * this->NumTrisections())
+      const Index e = points.TrisectedEdge(f);
+      if (e != InvalidIndex && points.FirstEdgePoint(e) == this->FirstTrisectionPoint + 2 * this->NumTrisections())
       {
         const Index a = this->Topo.GetEdgeVertices(e)[0], b = this->Topo.GetEdgeVertices(e)[1];
         this->Trisections.push_back({ a, b, Sqrt3CurveNeighbour(parent, a, b), Sqrt3CurveNeighbour(parent, b, a) });
       }
     }
-    if (points.FirstVertexPoint != numFaces) // some faces trisect an edge instead of a centroid
+    if (points.FirstVertexPoint != this->Topo.GetNumFaces()) // some faces trisect an edge instead of a centroid
     {
       for (Index f = 0; f < numFaces; ++f)
       {
-        if (points.CentroidPoint[f] != InvalidIndex)
+        if (points.CentroidPoint(f) != InvalidIndex)
         {
           this->CentroidFace.push_back(f);
         }
@@ -461,11 +481,12 @@ private:
   // trisects another edge the trisection point next to the end the two edges share.
   Index Apex(Index f, Index e) const
   {
-    if (this->Points.CentroidPoint[f] != InvalidIndex)
+    const Index centroid = this->Points.CentroidPoint(f);
+    if (centroid != InvalidIndex)
     {
-      return this->Points.CentroidPoint[f];
+      return centroid;
     }
-    const Index t = this->Points.TrisectedEdge[f];
+    const Index t = this->Points.TrisectedEdge(f);
     const Index* ev = this->Topo.GetEdgeVertices(e);
     const Index* tv = this->Topo.GetEdgeVertices(t);
     const Index shared = (ev[0] == tv[0] || ev[0] == tv[1]) ? ev[0] : ev[1];
@@ -477,8 +498,8 @@ private:
   bool Flips(Index e) const { return !ActsAsBoundary(this->Parent, e); }
   // For an edge not flipped: whether face f keeps a triangle next to it (not when e is the
   // edge f trisects: its middle triangle comes with the face).
-  bool KeepsPartNextTo(Index e, Index f) const { return e != this->Points.TrisectedEdge[f]; }
-  bool Trisects(Index f) const { return this->Points.TrisectedEdge[f] != InvalidIndex; }
+  bool KeepsPartNextTo(Index e, Index f) const { return e != this->Points.TrisectedEdge(f); }
+  bool Trisects(Index f) const { return this->Points.TrisectedEdge(f) != InvalidIndex; }
 
   void WriteEdgeTriangles(Index e, TriangleCursor& out) const
   {
@@ -514,7 +535,7 @@ private:
     {
       return;
     }
-    const Index e = this->Points.TrisectedEdge[f];
+    const Index e = this->Points.TrisectedEdge(f);
     Index a, b;
     this->OrientedEnds(e, f, a, b);
     const Index m = this->Topo.GetTriangleOppositeVertex(f, e);
@@ -552,7 +573,7 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
   }
   if (depth == ChildTopology::Full)
   {
-    InheritSqrt3Sharpness(parent, points.FirstEdgePoint, points.FirstVertexPoint, child);
+    InheritSqrt3Sharpness(parent, points, child);
   }
   return child;
 }
@@ -579,7 +600,6 @@ std::shared_ptr<const RowSource> MakeSqrt3RowSource(std::shared_ptr<const Level>
 
 Index Sqrt3FirstVertexPoint(const Level& parent)
 {
-  const std::vector<Index> trisected = ChooseTrisectedEdges(parent, IsEvenStep(parent));
-  return static_cast<Index>(std::count(trisected.begin(), trisected.end(), InvalidIndex));
+  return Sqrt3Points(parent, IsEvenStep(parent)).FirstVertexPoint;
 }
 }
