@@ -307,9 +307,9 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
   return level;
 }
 
-void KeepOnly(Level& level, MeshTopology::Part part)
+void KeepOnly(Level& level, MeshTopology::Part part, const ParallelFor& parallelFor)
 {
-  level.Topology.KeepOnly(part);
+  level.Topology.KeepOnly(part, parallelFor);
   LevelArray<float>().swap(level.EdgeSharpness);
   LevelArray<float>().swap(level.VertexSharpness);
   LevelArray<std::uint8_t>().swap(level.FaceIsHole);

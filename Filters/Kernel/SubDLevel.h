@@ -333,7 +333,7 @@ SUBDKERNEL_EXPORT Level MakeBaseLevel(MeshTopology topology, const BaseTags& tag
 
 /// Frees all of a level but a part of its topology (MeshTopology::KeepOnly) and its vertex
 /// count: no tags, no sharpness.
-SUBDKERNEL_EXPORT void KeepOnly(Level& level, MeshTopology::Part part);
+SUBDKERNEL_EXPORT void KeepOnly(Level& level, MeshTopology::Part part, const ParallelFor& parallelFor = SerialFor);
 }
 
 #endif

@@ -67,7 +67,7 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
       const double rows = part == MeshTopology::Part::Faces
         ? FacesBytes(c) + 4.0 * c.Corners + 8.0 * c.Corners + c.Edges + 2.0 * c.Vertices
         : part == MeshTopology::Part::EdgeEnds ? 8.0 * c.Edges + 4.0 * c.Vertices
-                                               : FacesBytes(c) + 16.0 * c.Edges + 5.0 * c.Vertices + 4.0 * c.Faces;
+                                               : FacesBytes(c) + 8.0 * c.Edges + 5.0 * c.Vertices + 4.0 * c.Faces;
       const double child = l + 1 < levels ? TopologyBytes(counts[l + 1]) : output - finest.Vertices * request.OutputBytesPerPoint;
       splitPeak = std::max(splitPeak, kept + TopologyBytes(c) + rows + child);
       kept += rows;

@@ -146,8 +146,21 @@ void MeshTopology::ReleaseVertexFaceLists()
   IndexArray().swap(this->VertexFaceCorners);
 }
 
-void MeshTopology::KeepOnly(Part part)
+void MeshTopology::KeepOnly(Part part, const ParallelFor& parallelFor)
 {
+  if (part == Part::FacesAndRings && !this->RingsHoldVertices)
+  {
+    parallelFor(0, this->NumVertices, [this](Index begin, Index end) {
+      for (Index v = begin; v < end; ++v)
+      {
+        for (Index i = this->VertexEdgeOffsets[v]; i < this->VertexEdgeOffsets[v + 1]; ++i)
+        {
+          this->VertexEdges[i] = this->GetOtherEndpoint(this->VertexEdges[i], v);
+        }
+      }
+    });
+    this->RingsHoldVertices = true;
+  }
   std::vector<IndexArray*> lists{ &this->EdgeFaces, &this->VertexFaces, &this->VertexFaceCorners };
   std::vector<IndexArray*> offsets{ &this->EdgeFaceOffsets, &this->VertexFaceOffsets };
   if (part != Part::FacesAndRings)
@@ -155,11 +168,11 @@ void MeshTopology::KeepOnly(Part part)
     lists.push_back(&this->VertexEdges);
     offsets.push_back(&this->VertexEdgeOffsets);
   }
-  if (part == Part::Faces)
+  if (part != Part::EdgeEnds)
   {
     lists.push_back(&this->EdgeVertices);
   }
-  else
+  if (part != Part::Faces)
   {
     lists.push_back(&this->FaceEdges);
   }

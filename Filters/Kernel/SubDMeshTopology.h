@@ -79,13 +79,16 @@ public:
   {
     Faces,         ///< each face's corners and edge numbers (Doo-Sabin's rows)
     EdgeEnds,      ///< each edge's two vertices (the midpoint rows)
-    FacesAndRings, ///< each face's corners, vertex's edges and edge's ends (sqrt(3)'s rows)
+    FacesAndRings, ///< each face's corners and vertex's ring of neighbours (sqrt(3)'s rows)
   };
   /// Frees everything but `part` (and the vertex count): for a level kept only for rows that
   /// read nothing else. Only that part's accessors may be called then (GetNumFaces,
   /// GetFaceSize, GetFaceOffset, GetFaceVertices, GetFaceEdges; GetNumEdges,
-  /// GetEdgeVertices, GetOtherEndpoint; GetVertexEdges).
-  void KeepOnly(Part part);
+  /// GetEdgeVertices, GetOtherEndpoint; GetVertexEdges' sizes and ForEachRingVertex). For
+  /// FacesAndRings each vertex's list of edges is overwritten, in place and in the same
+  /// order, with the vertices at their other ends, and the edges' ends go: the rings cost
+  /// no more than the edge lists did and are read without the indirection.
+  void KeepOnly(Part part, const ParallelFor& parallelFor = SerialFor);
   /// False for a level between split with ChildTopology::FacesAndEdges (and a faces-only
   /// one): no list, count or tag around its vertices, no valence.
   bool HasVertexRelations() const { return VertexEdgeOffsets.size() == static_cast<size_t>(NumVertices) + 1; }
@@ -102,6 +105,17 @@ public:
   /// lists) for non-manifold or isolated vertices.
   bool GetOrderedVertexFaces(Index v, std::vector<Index>& faces, std::vector<Index>& corners) const;
   IndexSpan GetVertexEdges(Index v) const { return Span(VertexEdges, VertexEdgeOffsets, v); }
+  /// Calls visit(w) for the vertex w at the other end of each of v's edges, in
+  /// GetVertexEdges' order (also once KeepOnly(Part::FacesAndRings) kept the rings alone).
+  template <typename Visit>
+  void ForEachRingVertex(Index v, Visit&& visit) const
+  {
+    const IndexSpan list = this->GetVertexEdges(v);
+    for (Index i = 0; i < list.size(); ++i)
+    {
+      visit(this->RingsHoldVertices ? list[i] : this->GetOtherEndpoint(list[i], v));
+    }
+  }
 
   /// The vertex at the other end of edge `e` from `v`.
   Index GetOtherEndpoint(Index e, Index v) const
@@ -236,6 +250,7 @@ private:
   IndexArray VertexFaceCorners;
   IndexArray VertexEdgeOffsets{ 0 };
   IndexArray VertexEdges;
+  bool RingsHoldVertices = false; // VertexEdges holds each edge's other end (KeepOnly)
   LevelArray<EdgeTag> EdgeTags;
   LevelArray<VertexTag> VertexTags;
   Index NumNonManifoldEdges = 0;

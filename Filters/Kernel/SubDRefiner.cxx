@@ -67,7 +67,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         MeshTopology::Part part;
         if (scheme.WrittenRowsReadOnly(part))
         {
-          KeepOnly(*parent, part);
+          KeepOnly(*parent, part, scheme.GetParallelFor());
         }
         if (!scheme.GrandchildReadsVertexFaceLists())
         {

@@ -235,7 +235,7 @@ void InheritSqrt3Sharpness(const Level& parent, const Sqrt3Points& points, Level
 }
 
 // The rows of one step, numbered like Sqrt3Points, written one at a time (SubDRowWriting.h).
-// What the rows need beyond the parent's faces, vertices' edges and edges' ends is kept here
+// What the rows need beyond the parent's faces and vertices' rings is kept here
 // in compact form (each vertex's rule; the curve neighbours of the few curve vertices and
 // trisected edges), so that rows written as they are applied let the rest of the parent go
 // (MeshTopology::Part::FacesAndRings).
@@ -331,16 +331,16 @@ public:
       const Index v = row - this->FirstVertexPoint;
       if (this->Rules[v] == Sqrt3VertexRule::Relax)
       {
-        const IndexSpan edges = this->Topo.GetVertexEdges(v);
-        const double alpha = this->Alpha(edges.size());
+        const Index valence = this->Topo.GetVertexEdges(v).size();
+        const double alpha = this->Alpha(valence);
         src[0] = v;
         wts[0] = 1.0 - alpha;
-        for (Index i = 0; i < edges.size(); ++i)
-        {
-          src[1 + i] = this->Topo.GetOtherEndpoint(edges[i], v);
-          wts[1 + i] = alpha / edges.size();
-        }
-        return 1 + edges.size();
+        Index size = 1;
+        this->Topo.ForEachRingVertex(v, [&](Index w) {
+          src[size] = w;
+          wts[size++] = alpha / valence;
+        });
+        return size;
       }
       if (this->Rules[v] == Sqrt3VertexRule::Curve)
       {
@@ -377,14 +377,11 @@ public:
     {
       return false;
     }
-    const IndexSpan edges = this->Topo.GetVertexEdges(v);
-    const double alpha = this->Alpha(edges.size());
+    const Index valence = this->Topo.GetVertexEdges(v).size();
+    const double alpha = this->Alpha(valence);
     sum.Add(1.0 - alpha, point(v));
-    const double w = alpha / edges.size();
-    for (Index e : edges)
-    {
-      sum.Add(w, point(this->Topo.GetOtherEndpoint(e, v)));
-    }
+    const double w = alpha / valence;
+    this->Topo.ForEachRingVertex(v, [&](Index neighbour) { sum.Add(w, point(neighbour)); });
     sum.Store(dst);
     return true;
   }

@@ -83,8 +83,8 @@ SUBDKERNEL_EXPORT LevelRefinement RefineSqrt3(
 SUBDKERNEL_EXPORT Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
 /// RefineSqrt3's rows written as they are applied (SubDRowWriting.h). Besides what they keep
 /// of their own (each vertex's rule, the curve vertices' and trisected edges' neighbours),
-/// they read the parent's faces' corners, vertices' edges and edges' ends only: the rest of
-/// its topology may be freed (MeshTopology::KeepOnly) once its child is split.
+/// they read the parent's faces' corners and vertices' rings only: the rest of its topology
+/// may be freed (MeshTopology::KeepOnly, Part::FacesAndRings) once its child is split.
 SUBDKERNEL_EXPORT std::shared_ptr<const RowSource> MakeSqrt3RowSource(
   std::shared_ptr<const Level> parent, const ParallelFor& parallelFor = SerialFor);
 }

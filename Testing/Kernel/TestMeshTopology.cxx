@@ -352,6 +352,53 @@ TEST(MeshTopology, BuildOnThreadsEqualsSerialBuild)
   }
 }
 
+// Rows that keep a level's faces and rings alone (sqrt(3)'s) read each vertex's ring in the
+// order of its edges: KeepOnly overwrites the edge lists with the vertices across them, in
+// place and on threads, frees the edges, and leaves the faces as they were.
+TEST(MeshTopology, KeptRingsAreTheVerticesAcrossEachEdgeInOrder)
+{
+  int i = 0;
+  std::vector<subdtest::TestMesh> meshes = TagFixtures();
+  meshes.push_back(subdtest::Cube());
+  for (const subdtest::TestMesh& mesh : meshes)
+  {
+    const MeshTopology whole = Build(mesh);
+    for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor) })
+    {
+      SCOPED_TRACE("mesh " + std::to_string(i));
+      MeshTopology kept = whole;
+      kept.KeepOnly(MeshTopology::Part::FacesAndRings, parallelFor);
+      EXPECT_EQ(kept.GetNumEdges(), 0);
+      ASSERT_EQ(kept.GetNumFaces(), whole.GetNumFaces());
+      for (Index f = 0; f < whole.GetNumFaces(); ++f)
+      {
+        const subd::IndexSpan a = whole.GetFaceVertices(f), b = kept.GetFaceVertices(f);
+        EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end()));
+      }
+      for (Index v = 0; v < whole.GetNumVertices(); ++v)
+      {
+        std::vector<Index> expected, ring, again;
+        for (Index e : whole.GetVertexEdges(v))
+        {
+          const Index* ends = whole.GetEdgeVertices(e);
+          expected.push_back(ends[0] == v ? ends[1] : ends[0]);
+        }
+        whole.ForEachRingVertex(v, [&again](Index w) { again.push_back(w); });
+        kept.ForEachRingVertex(v, [&ring](Index w) { ring.push_back(w); });
+        EXPECT_EQ(ring, expected) << "vertex " << v;
+        EXPECT_EQ(again, expected) << "vertex " << v;
+        EXPECT_EQ(kept.GetVertexEdges(v).size(), whole.GetVertexEdges(v).size());
+      }
+      // Kept twice (a level's rows made again): the rings stay vertices.
+      kept.KeepOnly(MeshTopology::Part::FacesAndRings, parallelFor);
+      std::vector<Index> ring;
+      kept.ForEachRingVertex(0, [&ring](Index w) { ring.push_back(w); });
+      EXPECT_EQ(static_cast<Index>(ring.size()), whole.GetVertexEdges(0).size());
+    }
+    ++i;
+  }
+}
+
 TEST(MeshValidation, CollapsesDropsAndReports)
 {
   // face 0 ok, face 1 has a repeated consecutive corner (kept as a triangle), face 2 collapses
