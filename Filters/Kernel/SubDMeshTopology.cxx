@@ -146,6 +146,11 @@ void MeshTopology::ReleaseVertexFaceLists()
   IndexArray().swap(this->VertexFaceCorners);
 }
 
+void MeshTopology::ReleaseFaceEdges()
+{
+  IndexArray().swap(this->FaceEdges);
+}
+
 void MeshTopology::KeepOnly(Part part, const ParallelFor& parallelFor)
 {
   if (part == Part::FacesAndRings && !this->RingsHoldVertices)

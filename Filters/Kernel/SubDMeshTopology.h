@@ -74,6 +74,9 @@ public:
   /// RestoreVertexFaceLists, GetVertexFaces and GetVertexFaceCorners give spans of the right
   /// size and no data (a null pointer: reading them faults at once).
   void ReleaseVertexFaceLists();
+  /// Frees each face's edges (GetFaceEdges, GetTriangleEdges and what reads them may not be
+  /// called then): for a level whose last reader finds edges from their ends.
+  void ReleaseFaceEdges();
   /// A part of the topology that rows written from a level may read alone.
   enum class Part
   {

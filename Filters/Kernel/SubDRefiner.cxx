@@ -53,6 +53,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
       if (last && depth == ChildTopology::FacesOnly && !scheme.FinestSplitReadsVertexFaceLists())
       {
         parent->Topology.ReleaseVertexFaceLists(); // a large share of the split's peak
+        parent->Topology.ReleaseFaceEdges();
       }
       writtenRows = scheme.MakeRowSource(parent);
       if (writtenRows)

@@ -62,8 +62,9 @@ public:
     return nullptr;
   }
   /// Whether the split into a faces-only child and the rows MakeRowSource writes read the
-  /// lists of faces around the parent's vertices (not only their counts): where they do not
-  /// (sqrt(3)), Refine frees them before the finest level, faces only, is split from it.
+  /// lists of faces around the parent's vertices (not only their counts) or each face's
+  /// edges: where they read neither (sqrt(3)), Refine frees both before the finest level,
+  /// faces only, is split from it (the peak of a refinement).
   virtual bool FinestSplitReadsVertexFaceLists() const { return true; }
   /// True when the rows MakeRowSource writes read nothing of their parent level but `part`
   /// of its topology: Refine then frees the rest of each such level once it is split
@@ -336,7 +337,8 @@ public:
     part = MeshTopology::Part::FacesAndRings;
     return true;
   }
-  /// Its flips read each edge's faces, its rows each vertex's edges and face count.
+  /// Its flips read each edge's ends and faces and each face's corners, its rows each
+  /// vertex's edges and face count.
   bool FinestSplitReadsVertexFaceLists() const override { return false; }
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }

@@ -463,15 +463,16 @@ public:
 private:
   Index VertexPoint(Index v) const { return this->Points.FirstVertexPoint + v; }
 
-  // Edge e's ends (a, b) in the order triangle f runs them (every face is a triangle: its
-  // corners are found without the face offsets).
+  // Edge e's ends (a, b) in the order triangle f runs them, from the triangle's corners
+  // alone (found without the face offsets): the finest split runs without the faces' edges.
   void OrientedEnds(Index e, Index f, Index& a, Index& b) const
   {
-    const Index* fe = this->Topo.GetTriangleEdges(f);
-    const Index i = fe[0] == e ? 0 : (fe[1] == e ? 1 : 2);
+    const Index* ev = this->Topo.GetEdgeVertices(e);
     const Index* fv = this->Topo.GetTriangleVertices(f);
-    a = fv[i];
-    b = fv[i == 2 ? 0 : i + 1];
+    const Index i = fv[0] == ev[0] ? 0 : (fv[1] == ev[0] ? 1 : 2);
+    const bool forward = fv[i == 2 ? 0 : i + 1] == ev[1];
+    a = ev[forward ? 0 : 1];
+    b = ev[forward ? 1 : 0];
   }
 
   // The point an old edge e of face f is flipped to: the centroid, or in a triangle that
