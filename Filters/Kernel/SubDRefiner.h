@@ -20,7 +20,8 @@ using ProgressCallback = std::function<bool(double)>;
 
 /// Room for the values of the levels between the base and the finest. A caller that
 /// evaluates again and again (re-applied stencils when points move) keeps one: reused, its
-/// pages are not faulted in anew each time. Sized to the largest evaluation it served.
+/// pages are not faulted in anew each time. Sized to the largest evaluation it served, but
+/// for the level before the finest's parent, which a first evaluation frees (Evaluate).
 template <typename T>
 struct EvaluationScratch
 {
@@ -128,16 +129,29 @@ bool Hierarchy::Evaluate(const T* base, int components, T* finest, const Paralle
   }
   EvaluationScratch<T> ownScratch;
   LevelArray<T>* room = (scratch ? scratch : &ownScratch)->Levels; // written before read
+  // A scratch that starts empty serves a first evaluation (a refinement's, or one not
+  // reused): the level before the finest's parent is freed before the finest level is
+  // written, the peak of the evaluation. A reused scratch keeps both for the next one.
+  const bool firstUse = room[0].empty() && room[1].empty();
   const T* parents = base;
   for (int l = 0; l < levels; ++l)
   {
     const StencilTable& table = this->Stencils[l];
     T* children = finest;
+    LevelArray<T>& values = room[l % 2]; // level l - 1's values, if any: read no more
+    const size_t needed = static_cast<size_t>(table.GetNumRows()) * components;
     if (l + 1 < levels)
     {
-      LevelArray<T>& values = room[l % 2];
-      values.resize(std::max(values.size(), static_cast<size_t>(table.GetNumRows()) * components));
+      if (values.size() < needed)
+      {
+        LevelArray<T>().swap(values); // grown without copying values that are overwritten
+        values.resize(needed);
+      }
       children = values.data();
+    }
+    else if (firstUse)
+    {
+      LevelArray<T>().swap(values);
     }
     const Index blocks = table.GetNumBlocks();
     for (Index b = 0; b < blocks; ++b)
