@@ -755,7 +755,7 @@ int vtkSubDSurfaceFilter::Execute(
   // The faces depend on the topology only: re-applied stencils reuse them.
   if (!cache.OutputFaces)
   {
-    if (!updateScratch.Levels[0].empty())
+    if (!updateScratch.IsEmpty())
     {
       updateScratch = subd::EvaluationScratch<double>();
       subd::ReleaseFreeMemory(); // to the system, where the faces are not going

@@ -26,6 +26,7 @@ template <typename T>
 struct EvaluationScratch
 {
   LevelArray<T> Levels[2];
+  bool IsEmpty() const { return this->Levels[0].empty() && this->Levels[1].empty(); }
 };
 
 struct SUBDKERNEL_EXPORT Hierarchy
@@ -128,11 +129,12 @@ bool Hierarchy::Evaluate(const T* base, int components, T* finest, const Paralle
     return true;
   }
   EvaluationScratch<T> ownScratch;
-  LevelArray<T>* room = (scratch ? scratch : &ownScratch)->Levels; // written before read
+  EvaluationScratch<T>& use = scratch ? *scratch : ownScratch;
   // A scratch that starts empty serves a first evaluation (a refinement's, or one not
   // reused): the level before the finest's parent is freed before the finest level is
   // written, the peak of the evaluation. A reused scratch keeps both for the next one.
-  const bool firstUse = room[0].empty() && room[1].empty();
+  const bool firstUse = use.IsEmpty();
+  LevelArray<T>* room = use.Levels; // written before read
   const T* parents = base;
   for (int l = 0; l < levels; ++l)
   {
