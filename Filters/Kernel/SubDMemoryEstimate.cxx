@@ -68,8 +68,14 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
         ? FacesBytes(c) + 4.0 * c.Corners + 8.0 * c.Corners + c.Edges + 2.0 * c.Vertices
         : part == MeshTopology::Part::EdgeEnds ? 8.0 * c.Edges + 4.0 * c.Vertices
                                                : FacesBytes(c) + 8.0 * c.Edges + 5.0 * c.Vertices + 4.0 * c.Faces;
-      const double child = l + 1 < levels ? TopologyBytes(counts[l + 1]) : output - finest.Vertices * request.OutputBytesPerPoint;
-      splitPeak = std::max(splitPeak, kept + TopologyBytes(c) + rows + child);
+      const bool last = l + 1 == levels;
+      const double child = last ? output - finest.Vertices * request.OutputBytesPerPoint : TopologyBytes(counts[l + 1]);
+      // Refine frees the faces' edges and the lists of faces around the vertices before a
+      // faces-only finest level is split, where neither the split nor the rows read them.
+      const double released = last && request.Finest == ChildTopology::FacesOnly && !scheme.FinestSplitReadsVertexFaceLists()
+        ? 12.0 * c.Corners
+        : 0.0;
+      splitPeak = std::max(splitPeak, kept + TopologyBytes(c) - released + rows + child);
       kept += rows;
     }
     return std::max(splitPeak, kept + output + scratch);
