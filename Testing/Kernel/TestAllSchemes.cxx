@@ -177,6 +177,37 @@ INSTANTIATE_TEST_SUITE_P(Schemes, AllSchemes, ::testing::ValuesIn(SchemeCases())
     return name;
   });
 
+// A first evaluation into an empty scratch frees the level before the finest's parent before
+// the finest level is written (it is not read again: the peak of a refinement is lower by it);
+// a scratch reused keeps both levels, and gives the same values, bit for bit.
+TEST_P(AllSchemes, FirstEvaluationFreesTheLevelItNoLongerReads)
+{
+  const subdtest::TestMesh mesh = this->Fixtures().front();
+  for (int levels : { 1, 2, 3, 4 })
+  {
+    SCOPED_TRACE("levels " + std::to_string(levels));
+    const subd::Hierarchy h = this->Refine(mesh, levels);
+    const std::vector<double> expected = Evaluate(h, mesh.Points);
+    subd::EvaluationScratch<double> scratch;
+    std::vector<double> first(expected.size()), again(expected.size());
+    ASSERT_TRUE(h.Evaluate(mesh.Points.data(), 3, first.data(), subd::SerialFor, nullptr, -1, &scratch));
+    // Level l's values (l = 1 .. levels - 1) go to room (l - 1) % 2: the finest's parent's
+    // room holds its values, the other one nothing.
+    const size_t parentRoom = static_cast<size_t>(levels - 2) % 2;
+    for (size_t room = 0; room < 2; ++room)
+    {
+      const bool holds = levels >= 2 && room == parentRoom;
+      EXPECT_EQ(scratch.Levels[room].empty(), !holds) << "room " << room;
+    }
+    EXPECT_EQ(scratch.IsEmpty(), levels < 2);
+    ASSERT_TRUE(h.Evaluate(mesh.Points.data(), 3, again.data(), subd::SerialFor, nullptr, -1, &scratch));
+    EXPECT_EQ(scratch.Levels[0].empty(), levels < 2); // reused: both kept for the next one
+    EXPECT_EQ(scratch.Levels[1].empty(), levels < 3);
+    EXPECT_EQ(first, expected);
+    EXPECT_EQ(again, expected);
+  }
+}
+
 TEST(MidpointScheme, OpenBoundaryKeepsItsShape)
 {
   const subdtest::TestMesh mesh = subdtest::Grid(4, 3, false, false).Jitter(0.1);
