@@ -72,7 +72,7 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
       const double child = last ? output - finest.Vertices * request.OutputBytesPerPoint : TopologyBytes(counts[l + 1]);
       // Refine frees the faces' edges and the lists of faces around the vertices before a
       // faces-only finest level is split, where neither the split nor the rows read them.
-      const double released = last && request.Finest == ChildTopology::FacesOnly && !scheme.FinestSplitReadsVertexFaceLists()
+      const double released = last && request.Finest == ChildTopology::FacesOnly && !scheme.FinestSplitReadsVertexFacesOrFaceEdges()
         ? 12.0 * c.Corners
         : 0.0;
       splitPeak = std::max(splitPeak, kept + TopologyBytes(c) - released + rows + child);

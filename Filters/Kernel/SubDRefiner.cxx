@@ -50,7 +50,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
     if (levelRows != LevelRows::Stored && !refined)
     {
       auto parent = std::make_shared<Level>(std::move(current));
-      if (last && depth == ChildTopology::FacesOnly && !scheme.FinestSplitReadsVertexFaceLists())
+      if (last && depth == ChildTopology::FacesOnly && !scheme.FinestSplitReadsVertexFacesOrFaceEdges())
       {
         parent->Topology.ReleaseVertexFaceLists(); // a large share of the split's peak
         parent->Topology.ReleaseFaceEdges();

@@ -65,7 +65,7 @@ public:
   /// lists of faces around the parent's vertices (not only their counts) or each face's
   /// edges: where they read neither (sqrt(3)), Refine frees both before the finest level,
   /// faces only, is split from it (the peak of a refinement).
-  virtual bool FinestSplitReadsVertexFaceLists() const { return true; }
+  virtual bool FinestSplitReadsVertexFacesOrFaceEdges() const { return true; }
   /// True when the rows MakeRowSource writes read nothing of their parent level but `part`
   /// of its topology: Refine then frees the rest of each such level once it is split
   /// (KeepOnly), since it keeps it for those rows only. Only for schemes without
@@ -339,7 +339,7 @@ public:
   }
   /// Its flips read each edge's ends and faces and each face's corners, its rows each
   /// vertex's edges and face count.
-  bool FinestSplitReadsVertexFaceLists() const override { return false; }
+  bool FinestSplitReadsVertexFacesOrFaceEdges() const override { return false; }
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
 };
