@@ -46,13 +46,13 @@ namespace
 {
 // In even steps, the edge each triangle trisects: every curve edge whose triangles trisect
 // nothing else yet, in edge order. Empty when no triangle trisects one (every odd step, and
-// every step of a closed mesh without creases): a per-face array would be most of a large
-// step's scratch, and nearly all of it InvalidIndex.
-std::vector<Index> ChooseTrisectedEdges(const Level& level, bool evenStep)
+// every step of a mesh without boundary or crease, told without a serial pass over its
+// edges): a per-face array would be most of a large step's scratch, nearly all InvalidIndex.
+std::vector<Index> ChooseTrisectedEdges(const Level& level, bool evenStep, bool creasesInside)
 {
   const MeshTopology& topo = level.Topology;
   std::vector<Index> trisected;
-  if (!evenStep)
+  if (!evenStep || (topo.GetNumBoundaryEdges() == 0 && !creasesInside))
   {
     return trisected;
   }
@@ -143,9 +143,11 @@ class Sqrt3Points
 public:
   Index FirstVertexPoint = 0;
   Index NumPoints = 0;
+  bool CreasesInside = false; // HasSqrt3InteriorCurveEdge(parent), which the rows ask too
 
-  Sqrt3Points(const Level& parent, bool evenStep)
-    : TrisectedEdges(ChooseTrisectedEdges(parent, evenStep))
+  Sqrt3Points(const Level& parent, bool evenStep, const ParallelFor& parallelFor)
+    : CreasesInside(HasSqrt3InteriorCurveEdge(parent, parallelFor))
+    , TrisectedEdges(ChooseTrisectedEdges(parent, evenStep, this->CreasesInside))
   {
     const MeshTopology& topo = parent.Topology;
     const Index numFaces = topo.GetNumFaces();
@@ -243,7 +245,7 @@ class Sqrt3RowWriter
 {
 public:
   Sqrt3RowWriter(const Level& parent, const ParallelFor& parallelFor)
-    : Sqrt3RowWriter(parent, Sqrt3Points(parent, IsEvenStep(parent)), parallelFor)
+    : Sqrt3RowWriter(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), parallelFor)
   {
   }
   Sqrt3RowWriter(const Level& parent, const Sqrt3Points& points, const ParallelFor& parallelFor)
@@ -255,7 +257,7 @@ public:
     , Rules(static_cast<size_t>(this->NumVertices))
   {
     const bool evenStep = IsEvenStep(parent);
-    const bool creasesInside = HasSqrt3InteriorCurveEdge(parent, parallelFor);
+    const bool creasesInside = points.CreasesInside;
     parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
       for (Index v = begin; v < end; ++v)
       {
@@ -579,7 +581,7 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
 
 LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
-  const Sqrt3Points points(parent, IsEvenStep(parent));
+  const Sqrt3Points points(parent, IsEvenStep(parent), parallelFor);
   LevelRefinement result;
   result.Stencils = WriteStencilTable(Sqrt3RowWriter(parent, points, parallelFor), parallelFor);
   result.Child = SplitWithPoints(parent, points, depth, parallelFor);
@@ -588,7 +590,7 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const Para
 
 Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
-  return SplitWithPoints(parent, Sqrt3Points(parent, IsEvenStep(parent)), depth, parallelFor);
+  return SplitWithPoints(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), depth, parallelFor);
 }
 
 std::shared_ptr<const RowSource> MakeSqrt3RowSource(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
@@ -598,6 +600,6 @@ std::shared_ptr<const RowSource> MakeSqrt3RowSource(std::shared_ptr<const Level>
 
 Index Sqrt3FirstVertexPoint(const Level& parent)
 {
-  return Sqrt3Points(parent, IsEvenStep(parent)).FirstVertexPoint;
+  return Sqrt3Points(parent, IsEvenStep(parent), SerialFor).FirstVertexPoint;
 }
 }
