@@ -6,6 +6,7 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
+#include <mutex>
 #include <numeric>
 #include <utility>
 #include <vector>
@@ -132,8 +133,9 @@ MeshTopology MeshTopology::Build(
   const bool allTriangles = topology.FaceVertices.size() == 3 * static_cast<size_t>(topology.GetNumFaces());
   topology.BuildVertexFaces(parallelFor);
   IndexArray smallFans;
-  const HalfEdgePairing pairing = topology.PairHalfEdges(allTriangles, smallFans, parallelFor);
-  topology.NumberEdges(pairing, parallelFor);
+  EdgeCountsByBlock edgeCounts;
+  const HalfEdgePairing pairing = topology.PairHalfEdges(allTriangles, smallFans, edgeCounts, parallelFor);
+  topology.NumberEdges(pairing, edgeCounts, parallelFor);
   topology.BuildEdgeFaces(pairing, parallelFor);
   topology.BuildVertexEdges(parallelFor);
   topology.TagVertices(smallFans, parallelFor);
@@ -373,30 +375,39 @@ struct CornerChains
 // come from the vertex ids read here, not from the edges numbered later. Elsewhere the
 // half-edges, sorted by upper vertex and index, come out in their pairs: O(k log k) for a
 // vertex of valence k, so even a 100k-valent hub stays fast.
+// Each group is also counted in the block of faces its first half-edge lies in (edges, their
+// faces, boundary and non-manifold ones), for NumberEdges.
 MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
-  bool allTriangles, IndexArray& smallFans, const ParallelFor& parallelFor) const
+  bool allTriangles, IndexArray& smallFans, EdgeCountsByBlock& counts, const ParallelFor& parallelFor) const
 {
   HalfEdgePairing pairing(this->FaceVertices.size());
   smallFans.resize(static_cast<size_t>(this->NumVertices));
+  counts = EdgeCountsByBlock(this->FaceVertices.size());
+  std::mutex merging;
   parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
     constexpr Index smallValence = CornerNeighbours::MaxCorners;
     std::vector<std::uint64_t> keys;
+    std::vector<EdgeCounts> blockCounts(counts.Blocks.size());
     CornerNeighbours neighbours;
-    Index leavingEdge[smallValence], enteringEdge[smallValence];
+    Index leavingEdge[smallValence], enteringEdge[smallValence], faceStart[smallValence];
     // One vertex pair's group: its `count` half-edges in increasing order (halfEdgeAt(i)),
-    // `forward` of them running the way the first does.
-    auto writeGroup = [&pairing](Index count, Index forward, const auto& halfEdgeAt) {
+    // `forward` of them running the way the first does, which lies in the face starting at
+    // corner `firstFaceStart`.
+    auto writeGroup = [&](Index count, Index forward, Index firstFaceStart, const auto& halfEdgeAt) {
       const Index first = halfEdgeAt(0);
       for (Index i = 0; i < count; ++i)
       {
         pairing[halfEdgeAt(i)] = { first, i };
       }
       pairing[first].RankOrGroup = HalfEdgePair::Group(count, forward);
+      blockCounts[counts.BlockOf(firstFaceStart)].Add(count, forward == 1);
     };
-    // A group of one half-edge, or of two running opposite ways (b != InvalidIndex).
-    auto pairUp = [&writeGroup](Index a, Index b) {
-      const Index lower = b == InvalidIndex ? a : std::min(a, b), upper = std::max(a, b);
-      writeGroup(b == InvalidIndex ? 1 : 2, 1, [=](Index i) { return i == 0 ? lower : upper; });
+    // A group of one half-edge, or of two running opposite ways (b != InvalidIndex), each in
+    // the face starting at the corner given after it.
+    auto pairUp = [&writeGroup](Index a, Index aFace, Index b, Index bFace) {
+      const bool aFirst = b == InvalidIndex || a < b;
+      const Index lower = aFirst ? a : b, upper = aFirst ? b : a;
+      writeGroup(b == InvalidIndex ? 1 : 2, 1, aFirst ? aFace : bFace, [=](Index i) { return i == 0 ? lower : upper; });
     };
     for (Index v = begin; v < end; ++v)
     {
@@ -416,9 +427,9 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
       const IndexSpan corners = this->GetVertexFaceCorners(v);
       const Index n = faces.size();
       const Index kept = std::min(n, smallValence);
-      auto cornerAt = [&](Index k, Index& h, Index& previous, Index& to, Index& from) {
+      auto cornerAt = [&](Index k, Index& faceFirst, Index& h, Index& previous, Index& to, Index& from) {
         const Index f = faces[k], c = corners[k];
-        const Index faceFirst = allTriangles ? 3 * f : this->FaceOffsets[f];
+        faceFirst = allTriangles ? 3 * f : this->FaceOffsets[f];
         const Index size = allTriangles ? 3 : this->FaceOffsets[f + 1] - faceFirst;
         h = faceFirst + c;
         previous = faceFirst + (c == 0 ? size - 1 : c - 1);
@@ -427,7 +438,7 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
       };
       for (Index k = 0; k < kept; ++k)
       {
-        cornerAt(k, leavingEdge[k], enteringEdge[k], neighbours.Leaving[k], neighbours.Entering[k]);
+        cornerAt(k, faceStart[k], leavingEdge[k], enteringEdge[k], neighbours.Leaving[k], neighbours.Entering[k]);
       }
       neighbours.N = kept;
       neighbours.Pad();
@@ -440,11 +451,19 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
           if (neighbours.Entering[k] > v)
           {
             const Index follower = chains.Next[k];
-            pairUp(enteringEdge[k], follower == InvalidIndex ? InvalidIndex : leavingEdge[follower]);
+            if (follower == InvalidIndex)
+            {
+              pairUp(enteringEdge[k], faceStart[k], InvalidIndex, InvalidIndex);
+            }
+            else
+            {
+              pairUp(enteringEdge[k], faceStart[k], leavingEdge[follower], faceStart[follower]);
+            }
           }
           if (neighbours.Leaving[k] > v && !(chains.HasPredecessor >> k & 1u))
           {
-            pairUp(leavingEdge[k], InvalidIndex); // an edge without a way back: a boundary
+            // an edge without a way back: a boundary
+            pairUp(leavingEdge[k], faceStart[k], InvalidIndex, InvalidIndex);
           }
         }
         continue;
@@ -464,8 +483,8 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
       std::uint64_t* last = first;
       for (Index k = 0; k < n; ++k)
       {
-        Index h, previous, to, from;
-        cornerAt(k, h, previous, to, from);
+        Index faceFirst, h, previous, to, from;
+        cornerAt(k, faceFirst, h, previous, to, from);
         if (to >= v)
         {
           *last++ = key(to, h, to > v);
@@ -488,56 +507,58 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
         {
           forward += (*it & 1u) == (*run & 1u);
         }
-        writeGroup(static_cast<Index>(runEnd - run), forward,
+        const Index first = static_cast<Index>((*run & 0xffffffffu) >> 1);
+        writeGroup(static_cast<Index>(runEnd - run), forward, this->GetFaceStart(first, allTriangles),
           [run](Index i) { return static_cast<Index>((run[i] & 0xffffffffu) >> 1); });
         run = runEnd;
       }
+    }
+    const std::lock_guard<std::mutex> lock(merging);
+    for (size_t b = 0; b < blockCounts.size(); ++b)
+    {
+      counts.Blocks[b] += blockCounts[b];
     }
   });
   return pairing;
 }
 
-// Edges are numbered in the order their first half-edges come walking the faces. The faces
-// are cut into fixed blocks: each block counts its edges (and their faces, boundaries and
-// non-manifold ones), a prefix sum over the blocks gives each block its first edge and
-// first edge-face slot, and each block then numbers its own. Each edge's face offsets and
-// tags come from its pairing: one face is a boundary; more than two, or two running it the
-// same way, are non-manifold.
-void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const ParallelFor& parallelFor)
+Index MeshTopology::EdgeCountsByBlock::FirstFaceOf(Index b, const IndexArray& faceOffsets) const
 {
-  const Index numFaces = this->GetNumFaces();
-  constexpr Index blocks = 64;
-  auto blockBegin = [numFaces](Index b) {
-    return static_cast<Index>(static_cast<std::int64_t>(numFaces) * b / blocks);
-  };
-  struct BlockCounts
+  // faceOffsets ends with the number of corners, which starts no face.
+  const std::int64_t corner = static_cast<std::int64_t>(b) << this->Shift;
+  return static_cast<Index>(std::lower_bound(faceOffsets.begin(), faceOffsets.end() - 1, corner,
+                              [](Index offset, std::int64_t c) { return offset < c; }) -
+    faceOffsets.begin());
+}
+
+Index MeshTopology::GetFaceStart(Index h, bool allTriangles) const
+{
+  if (allTriangles)
   {
-    Index Edges = 0, EdgeFaces = 0, Boundary = 0, NonManifold = 0;
-  };
-  std::vector<BlockCounts> firsts(blocks + 1);
-  auto isNonManifold = [](const HalfEdgePair& group) {
-    return group.GroupSize() > 2 || (group.GroupSize() == 2 && !group.RunsOppositeWays());
-  };
-  ForEachBlock(blocks, parallelFor, [&](Index b) {
-    BlockCounts counts; // local: the pairing's reads could alias firsts' entries
-    for (Index h = this->FaceOffsets[blockBegin(b)]; h < this->FaceOffsets[blockBegin(b + 1)]; ++h)
-    {
-      const HalfEdgePair& group = pairing[h];
-      const Index isFirst = group.Representative == h;
-      counts.Edges += isFirst;
-      counts.EdgeFaces += isFirst * group.GroupSize();
-      counts.Boundary += isFirst & (group.GroupSize() == 1);
-      counts.NonManifold += isFirst & isNonManifold(group);
-    }
-    firsts[b + 1] = counts;
-  });
+    return h - h % 3;
+  }
+  return *(std::upper_bound(this->FaceOffsets.begin(), this->FaceOffsets.end(), h) - 1);
+}
+
+// Edges are numbered in the order their first half-edges come walking the faces. The faces
+// are cut into blocks (EdgeCountsByBlock: those starting in a fixed range of corners) whose
+// edges, and their faces, boundaries and non-manifold ones, PairHalfEdges counted: a prefix
+// sum over the blocks gives each block its first edge and first edge-face slot, and each block
+// then numbers its own first half-edges (BuildEdgeFaces gives the others their number). Each
+// edge's face offsets and tags come from its pairing: one face is a boundary; more than two,
+// or two running it the same way, are non-manifold.
+void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const EdgeCountsByBlock& counts, const ParallelFor& parallelFor)
+{
+  const Index blocks = static_cast<Index>(counts.Blocks.size());
+  std::vector<EdgeCounts> firsts(static_cast<size_t>(blocks) + 1);
+  std::vector<Index> firstFace(static_cast<size_t>(blocks) + 1);
   for (Index b = 0; b < blocks; ++b)
   {
-    firsts[b + 1].Edges += firsts[b].Edges;
-    firsts[b + 1].EdgeFaces += firsts[b].EdgeFaces;
-    firsts[b + 1].Boundary += firsts[b].Boundary;
-    firsts[b + 1].NonManifold += firsts[b].NonManifold;
+    firsts[b + 1] = firsts[b];
+    firsts[b + 1] += counts.Blocks[b];
+    firstFace[b] = counts.FirstFaceOf(b, this->FaceOffsets);
   }
+  firstFace[blocks] = this->GetNumFaces();
   const Index numEdges = firsts[blocks].Edges;
   this->NumBoundaryEdges = firsts[blocks].Boundary;
   this->NumNonManifoldEdges = firsts[blocks].NonManifold;
@@ -549,7 +570,7 @@ void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const ParallelFor
   ForEachBlock(blocks, parallelFor, [&](Index b) {
     Index e = firsts[b].Edges;
     Index slot = firsts[b].EdgeFaces;
-    for (Index f = blockBegin(b); f < blockBegin(b + 1); ++f)
+    for (Index f = firstFace[b]; f < firstFace[b + 1]; ++f)
     {
       const Index first = this->FaceOffsets[f], last = this->FaceOffsets[f + 1];
       for (Index h = first; h < last; ++h)
@@ -566,24 +587,16 @@ void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const ParallelFor
         slot += group.GroupSize();
         EdgeTag& tag = this->EdgeTags[e];
         tag.Boundary = group.GroupSize() == 1;
-        tag.NonManifold = isNonManifold(group);
+        tag.NonManifold = EdgeCounts::IsNonManifold(group.GroupSize(), group.RunsOppositeWays());
         ++e;
-      }
-    }
-  });
-  parallelFor(0, numFaces, [&](Index begin, Index end) {
-    for (Index h = this->FaceOffsets[begin]; h < this->FaceOffsets[end]; ++h)
-    {
-      const Index representative = pairing[h].Representative;
-      if (representative != h) // a representative's entry is read by other threads: not rewritten
-      {
-        this->FaceEdges[h] = this->FaceEdges[representative];
       }
     }
   });
 }
 
-// An edge's faces in increasing order: its half-edges' ranks in their pairing.
+// The other half-edges of each edge take its number from the first (NumberEdges wrote only
+// the first's), and each edge's faces come in increasing order: its half-edges' ranks in
+// their pairing. One pass over the corners for both.
 void MeshTopology::BuildEdgeFaces(const HalfEdgePairing& pairing, const ParallelFor& parallelFor)
 {
   this->EdgeFaces.resize(this->FaceEdges.size());
@@ -592,7 +605,13 @@ void MeshTopology::BuildEdgeFaces(const HalfEdgePairing& pairing, const Parallel
     {
       for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
       {
-        this->EdgeFaces[this->EdgeFaceOffsets[this->FaceEdges[h]] + pairing[h].Rank(h)] = f;
+        const HalfEdgePair& pair = pairing[h];
+        const Index e = this->FaceEdges[pair.Representative];
+        if (pair.Representative != h) // a group's first entry is read by other threads: not rewritten
+        {
+          this->FaceEdges[h] = e;
+        }
+        this->EdgeFaces[this->EdgeFaceOffsets[e] + pair.Rank(h)] = f;
       }
     }
   });

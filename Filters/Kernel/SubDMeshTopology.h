@@ -233,9 +233,60 @@ private:
     bool RunsOppositeWays() const { return (this->RankOrGroup & 1) != 0; }
   };
   using HalfEdgePairing = LevelArray<HalfEdgePair>; // one per half-edge: its writes share a line
+  /// Edges counted by PairHalfEdges as it makes them, for NumberEdges: how many, their faces,
+  /// and how many are boundaries and non-manifold.
+  struct EdgeCounts
+  {
+    Index Edges = 0, EdgeFaces = 0, Boundary = 0, NonManifold = 0;
+    /// An edge of `faces` half-edges is non-manifold with more than two, or two running the
+    /// same way.
+    static bool IsNonManifold(Index faces, bool runOppositeWays)
+    {
+      return faces > 2 || (faces == 2 && !runOppositeWays);
+    }
+    void Add(Index faces, bool runOppositeWays)
+    {
+      ++this->Edges;
+      this->EdgeFaces += faces;
+      this->Boundary += faces == 1;
+      this->NonManifold += IsNonManifold(faces, runOppositeWays);
+    }
+    EdgeCounts& operator+=(const EdgeCounts& other)
+    {
+      this->Edges += other.Edges;
+      this->EdgeFaces += other.EdgeFaces;
+      this->Boundary += other.Boundary;
+      this->NonManifold += other.NonManifold;
+      return *this;
+    }
+  };
+  /// The counts of the edges whose first half-edge lies in each block of faces: block b holds
+  /// the faces that start at corners [b << Shift, (b + 1) << Shift), about 64 blocks in all, so
+  /// that an edge's block is a shift of its face's first corner.
+  struct EdgeCountsByBlock
+  {
+    int Shift = 10;
+    std::vector<EdgeCounts> Blocks;
+
+    EdgeCountsByBlock() = default;
+    explicit EdgeCountsByBlock(size_t numCorners)
+    {
+      while ((numCorners >> this->Shift) >= 64)
+      {
+        ++this->Shift;
+      }
+      this->Blocks.resize((numCorners >> this->Shift) + 1);
+    }
+    size_t BlockOf(Index faceStart) const { return static_cast<size_t>(faceStart) >> this->Shift; }
+    /// The first face of block b (the number of faces if none starts in it or after).
+    Index FirstFaceOf(Index b, const IndexArray& faceOffsets) const;
+  };
+  /// The first corner of the face holding corner h.
+  Index GetFaceStart(Index h, bool allTriangles) const;
   void BuildVertexFaces(const ParallelFor& parallelFor);
-  HalfEdgePairing PairHalfEdges(bool allTriangles, IndexArray& smallFans, const ParallelFor& parallelFor) const;
-  void NumberEdges(const HalfEdgePairing& pairing, const ParallelFor& parallelFor);
+  HalfEdgePairing PairHalfEdges(
+    bool allTriangles, IndexArray& smallFans, EdgeCountsByBlock& counts, const ParallelFor& parallelFor) const;
+  void NumberEdges(const HalfEdgePairing& pairing, const EdgeCountsByBlock& counts, const ParallelFor& parallelFor);
   void BuildEdgeFaces(const HalfEdgePairing& pairing, const ParallelFor& parallelFor);
   void BuildVertexEdges(const ParallelFor& parallelFor);
   void TagVertices(const IndexArray& smallFans, const ParallelFor& parallelFor);

@@ -529,6 +529,8 @@ void ExpectBuildEqualsBruteForce(Index numVertices, const std::vector<Index>& of
     EXPECT_EQ(t.GetEdgeTag(static_cast<Index>(e)).Boundary, edgeBoundary[e]) << "edge " << e;
     EXPECT_EQ(t.GetEdgeTag(static_cast<Index>(e)).NonManifold, edgeNonManifold[e]) << "edge " << e;
   }
+  EXPECT_EQ(t.GetNumBoundaryEdges(), std::count(edgeBoundary.begin(), edgeBoundary.end(), true));
+  EXPECT_EQ(t.GetNumNonManifoldEdges(), std::count(edgeNonManifold.begin(), edgeNonManifold.end(), true));
   for (Index v = 0; v < numVertices; ++v)
   {
     std::sort(vertexEdges[v].begin(), vertexEdges[v].end());
@@ -602,6 +604,55 @@ TEST(MeshTopology, BuildEqualsBruteForceOnRandomPolygonSoups)
     }
     ExpectBuildEqualsBruteForce(numVertices, offsets, vertices, "round " + std::to_string(round));
   }
+}
+
+// Edges are counted while pairing, per block of faces starting in 1024 corners or more, and
+// numbered per block: polygons of mixed sizes straddle the blocks' bounds, a few edges are
+// repeated, flipped or open, and the first half-edge of an edge often lies in a later block
+// than its pair.
+TEST(MeshTopology, BuildEqualsBruteForceAcrossEdgeCountBlocks)
+{
+  std::uint32_t state = 777;
+  auto random = [&state](Index n) {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<Index>((state >> 8) % static_cast<std::uint32_t>(n));
+  };
+  // A band of quads (closed around), a third of them cut into triangles: most edges have two
+  // faces; then random triangles for more boundary and non-manifold edges.
+  const Index columns = 700;
+  std::vector<Index> offsets{ 0 }, vertices;
+  auto at = [columns](Index row, Index column) { return row * columns + column % columns; };
+  for (Index row = 0; row + 1 < 4; ++row)
+  {
+    for (Index column = 0; column < columns; ++column)
+    {
+      const Index a = at(row, column), b = at(row, column + 1), c = at(row + 1, column + 1), d = at(row + 1, column);
+      if (random(3) == 0)
+      {
+        vertices.insert(vertices.end(), { a, b, c, d });
+        offsets.push_back(static_cast<Index>(vertices.size()));
+      }
+      else
+      {
+        vertices.insert(vertices.end(), { a, b, c });
+        offsets.push_back(static_cast<Index>(vertices.size()));
+        vertices.insert(vertices.end(), { a, c, d });
+        offsets.push_back(static_cast<Index>(vertices.size()));
+      }
+    }
+  }
+  const Index numVertices = 4 * columns;
+  for (Index extra = 0; extra < 300; ++extra)
+  {
+    const Index a = random(numVertices), b = random(numVertices), c = random(numVertices);
+    if (a != b && b != c && a != c)
+    {
+      vertices.insert(vertices.end(), { a, b, c });
+      offsets.push_back(static_cast<Index>(vertices.size()));
+    }
+  }
+  ASSERT_GT(vertices.size(), 8u * 1024u); // several blocks
+  ExpectBuildEqualsBruteForce(numVertices, offsets, vertices, "strip");
 }
 
 // Closed and open fans of every size around one vertex, manifold: no vertex tagged.
