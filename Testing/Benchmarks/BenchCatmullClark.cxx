@@ -64,7 +64,7 @@ Work RunKernel(const Mesh& mesh, int level)
 
 Work RunFilter(const Mesh& mesh, int level, int threads, bool lowMemory = false)
 {
-  vtkSMPTools::Initialize(threads);
+  subdbench::StartThreads(threads);
   vtkNew<vtkSubDCatmullClarkFilter> filter;
   filter->SetInputData(mesh.PolyData);
   filter->SetNumberOfSubdivisions(level);
@@ -80,7 +80,7 @@ Work RunFilter(const Mesh& mesh, int level, int threads, bool lowMemory = false)
 // `frames` frames; "faces" are the output points here.
 Work RunReapply(const Mesh& mesh, int level, int threads, int frames = 5)
 {
-  vtkSMPTools::Initialize(threads);
+  subdbench::StartThreads(threads);
   vtkNew<vtkPolyData> input;
   input->DeepCopy(mesh.PolyData);
   vtkNew<vtkSubDCatmullClarkFilter> filter;

@@ -76,7 +76,7 @@ Work RunFilter(const Mesh& mesh, int level)
 template <typename Filter>
 Work RunSubD(const Mesh& mesh, int level, int threads)
 {
-  vtkSMPTools::Initialize(threads);
+  subdbench::StartThreads(threads);
   return RunFilter<Filter>(mesh, level);
 }
 
@@ -84,7 +84,7 @@ Work RunSubD(const Mesh& mesh, int level, int threads)
 template <typename Filter>
 Work RunSubDLowMemory(const Mesh& mesh, int level, int threads)
 {
-  vtkSMPTools::Initialize(threads);
+  subdbench::StartThreads(threads);
   return RunConfiguredFilter<Filter>(mesh, level, [](Filter* filter) { filter->LowMemoryOn(); });
 }
 
