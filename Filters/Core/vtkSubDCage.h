@@ -16,7 +16,7 @@ struct vtkSubDCage
 {
   subd::Level Level;
   std::vector<double> Points;
-  std::vector<vtkIdType> FaceCell;                  ///< input cell id of each face
+  subd::LevelArray<vtkIdType> FaceCell;             ///< input cell id of each face
   std::unordered_map<vtkIdType, subd::Index> FaceOfCell; ///< and back
   std::vector<std::uint8_t> FaceIsGhost;            ///< 1 for a ghost cell of a piece; empty if none is
 };

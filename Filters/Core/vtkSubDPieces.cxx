@@ -19,7 +19,7 @@
 #include <limits>
 #include <numeric>
 
-std::vector<std::uint8_t> vtkSubDGhostFaces(vtkPolyData* input, const std::vector<vtkIdType>& faceCells)
+std::vector<std::uint8_t> vtkSubDGhostFaces(vtkPolyData* input, const subd::LevelArray<vtkIdType>& faceCells)
 {
   std::vector<std::uint8_t> ghost;
   vtkUnsignedCharArray* marks = input->GetCellGhostArray();
@@ -189,7 +189,7 @@ namespace
 {
 // The kept faces in the order every piece agrees on.
 std::vector<subd::Index> OrderAlike(
-  vtkPolyData* input, const subd::FaceScreening& faces, const std::vector<vtkIdType>& faceCells)
+  vtkPolyData* input, const subd::FaceScreening& faces, const subd::LevelArray<vtkIdType>& faceCells)
 {
   const size_t numFaces = faceCells.size();
   std::vector<subd::Index> order(numFaces);
@@ -218,7 +218,7 @@ std::vector<subd::Index> OrderAlike(
 }
 
 std::vector<subd::Index> vtkSubDFaceRanksAlikeInEveryPiece(
-  vtkPolyData* input, const subd::FaceScreening& faces, const std::vector<vtkIdType>& faceCells)
+  vtkPolyData* input, const subd::FaceScreening& faces, const subd::LevelArray<vtkIdType>& faceCells)
 {
   const std::vector<subd::Index> order = OrderAlike(input, faces, faceCells);
   std::vector<subd::Index> rank(order.size());
@@ -259,12 +259,12 @@ std::vector<std::uint8_t> vtkSubDSeamLineCopies(
   return copy;
 }
 
-void vtkSubDOrderFacesAlikeInEveryPiece(vtkPolyData* input, subd::FaceScreening& faces, std::vector<vtkIdType>& faceCells)
+void vtkSubDOrderFacesAlikeInEveryPiece(vtkPolyData* input, subd::FaceScreening& faces, subd::LevelArray<vtkIdType>& faceCells)
 {
   const size_t numFaces = faceCells.size();
   const std::vector<subd::Index> order = OrderAlike(input, faces, faceCells);
   subd::IndexArray offsets{ 0 }, vertices, kept;
-  std::vector<vtkIdType> cells;
+  subd::LevelArray<vtkIdType> cells;
   vertices.reserve(faces.Vertices.size());
   kept.reserve(numFaces);
   cells.reserve(numFaces);

@@ -63,7 +63,7 @@ std::string vtkSubDMissingGhostsWarning(int piece, int requiredLevels);
 
 /// Per kept face (`faceCells` gives its input cell): 1 where that cell is a ghost cell. Empty
 /// when none is.
-std::vector<std::uint8_t> vtkSubDGhostFaces(vtkPolyData* input, const std::vector<vtkIdType>& faceCells);
+std::vector<std::uint8_t> vtkSubDGhostFaces(vtkPolyData* input, const subd::LevelArray<vtkIdType>& faceCells);
 
 /// Per face of `topology`: 0 for the piece's own faces, k for ghost faces k layers out (sharing a
 /// vertex with a face of layer k - 1), up to `maxLayer`; 255 beyond. `faceIsGhost` as above.
@@ -81,7 +81,7 @@ bool vtkSubDIsGhostCell(vtkPolyData* input, vtkIdType cell);
 /// vtkSubDOrderFacesAlikeInEveryPiece): of two faces several pieces hold, all find the same
 /// one first.
 std::vector<subd::Index> vtkSubDFaceRanksAlikeInEveryPiece(
-  vtkPolyData* input, const subd::FaceScreening& faces, const std::vector<vtkIdType>& faceCells);
+  vtkPolyData* input, const subd::FaceScreening& faces, const subd::LevelArray<vtkIdType>& faceCells);
 
 /// Per edge of `finest`: 1 where the crease line on it is a copy another piece outputs. A sharp
 /// edge on a seam, or at a corner where three pieces meet, is in several pieces; it goes with
@@ -94,6 +94,6 @@ std::vector<std::uint8_t> vtkSubDSeamLineCopies(
 /// agrees on: increasing global cell id, else increasing sorted corner coordinates. Faces of
 /// one cell (the triangles of a split polygon) keep their order.
 void vtkSubDOrderFacesAlikeInEveryPiece(
-  vtkPolyData* input, subd::FaceScreening& faces, std::vector<vtkIdType>& faceCells);
+  vtkPolyData* input, subd::FaceScreening& faces, subd::LevelArray<vtkIdType>& faceCells);
 
 #endif

@@ -49,7 +49,7 @@ vtkDataArray* vtkSubDNamedArray(vtkFieldData* data, const std::string& name)
   return name.empty() ? nullptr : data->GetArray(name.c_str());
 }
 
-bool vtkSubDSharpFeatures::Read(vtkPolyData* input, const std::vector<vtkIdType>& faceCells, std::string& error,
+bool vtkSubDSharpFeatures::Read(vtkPolyData* input, const subd::LevelArray<vtkIdType>& faceCells, std::string& error,
   const vtkSubDFeatureArrayNames& names)
 {
   *this = vtkSubDSharpFeatures();

@@ -66,7 +66,7 @@ struct vtkSubDSharpFeatures
   /// Reads the lines, "Sharpness", "CornerSharpness" and "Hole" (or the arrays `names`
   /// gives) of `input`. `faceCells` gives the input cell id of each kept face. Returns false
   /// with `error` set when a sharpness is negative or not a number (naming the cell or point).
-  bool Read(vtkPolyData* input, const std::vector<vtkIdType>& faceCells, std::string& error,
+  bool Read(vtkPolyData* input, const subd::LevelArray<vtkIdType>& faceCells, std::string& error,
     const vtkSubDFeatureArrayNames& names = vtkSubDFeatureArrayNames());
 
   /// True when anything is tagged (sharp segments, sharp vertices, holes).

@@ -90,6 +90,17 @@ subd::Index TriangulateFaces(subd::FaceScreening& faces, vtkPoints* points)
   return split;
 }
 
+// A copy made on threads: the first write to each page is most of the cost of copying a
+// large array, and the faults of a serial copy come one after another.
+subd::IndexArray CopyOnThreads(const subd::IndexArray& from)
+{
+  subd::IndexArray to(from.size());
+  vtkSubDPointDataInterpolation::SMPFor(0, static_cast<subd::Index>(from.size()), [&](subd::Index begin, subd::Index end) {
+    std::copy(from.begin() + begin, from.begin() + end, to.begin() + begin);
+  });
+  return to;
+}
+
 // The field data array recording how many steps of a depth-dependent scheme made a mesh.
 const char* const DepthArrayName = "SubDDepth";
 
@@ -402,11 +413,14 @@ int vtkSubDSurfaceFilter::Execute(
     return fail();
   }
 
-  std::vector<vtkIdType> faceCells(screened.KeptFaces.size());
-  for (size_t f = 0; f < faceCells.size(); ++f)
-  {
-    faceCells[f] = faces.CellIdOf(screened.KeptFaces[f], numPolys);
-  }
+  subd::LevelArray<vtkIdType> faceCells(screened.KeptFaces.size()); // every entry written below
+  vtkSubDPointDataInterpolation::SMPFor(
+    0, static_cast<subd::Index>(faceCells.size()), [&](subd::Index begin, subd::Index end) {
+      for (subd::Index f = begin; f < end; ++f)
+      {
+        faceCells[f] = faces.CellIdOf(screened.KeptFaces[f], numPolys);
+      }
+    });
   // A piece with ghost faces (vtkSubDPieces.h).
   std::vector<std::uint8_t> faceIsGhost = vtkSubDGhostFaces(input, faceCells);
   if (!faceIsGhost.empty() && this->MakesFacesFromSeveralFaces())
@@ -448,8 +462,8 @@ int vtkSubDSurfaceFilter::Execute(
     cache.Scheme->SetParallelFor(&vtkSubDPointDataInterpolation::SMPFor);
     const subd::Scheme* scheme = cache.Scheme.get();
     subd::MeshTopology topology =
-      subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), screened.Offsets, screened.Vertices,
-        &vtkSubDPointDataInterpolation::SMPFor);
+      subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), CopyOnThreads(screened.Offsets),
+        CopyOnThreads(screened.Vertices), &vtkSubDPointDataInterpolation::SMPFor);
     const std::string nonManifold = vtkSubDNonManifoldWarning(topology, faceIsGhost);
     cache.FaceGhostLayer =
       faceIsGhost.empty() ? std::vector<std::uint8_t>() : vtkSubDGhostLayers(topology, faceIsGhost, outputGhostLevels);

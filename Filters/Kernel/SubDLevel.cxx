@@ -246,6 +246,13 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
   level.FaceOrigin.resize(static_cast<size_t>(numFaces));
   std::iota(level.FaceOrigin.begin(), level.FaceOrigin.end(), 0);
 
+  // What follows marks boundaries, corners and non-manifold features: a closed manifold mesh
+  // (the usual input) has none, and skips the passes over all its vertices and edges.
+  if (topo.GetNumBoundaryEdges() == 0 && topo.GetNumNonManifoldEdges() == 0 && topo.GetNumNonManifoldVertices() == 0)
+  {
+    return level;
+  }
+
   // Holes first: they depend on the explicit sharpness, before boundaries are sharpened.
   if (rule == BoundaryRule::None)
   {
