@@ -126,12 +126,8 @@ EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallel
     return static_cast<Index>(static_cast<std::int64_t>(numElements) * r / numRanges);
   };
   std::vector<size_t> firstTriangle(static_cast<size_t>(numRanges) + 1, 0);
-  parallelFor(0, numRanges, [&](Index begin, Index end) {
-    for (Index r = begin; r < end; ++r)
-    {
-      firstTriangle[r + 1] = static_cast<size_t>(count(rangeBegin(r), rangeBegin(r + 1)));
-    }
-  });
+  ForEachBlock(numRanges, parallelFor,
+    [&](Index r) { firstTriangle[r + 1] = static_cast<size_t>(count(rangeBegin(r), rangeBegin(r + 1))); });
   std::partial_sum(firstTriangle.begin(), firstTriangle.end(), firstTriangle.begin());
   const size_t numTriangles = firstTriangle.back();
   EmittedFaces faces;
@@ -139,17 +135,14 @@ EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallel
   faces.Origins.resize(numTriangles);
   faces.Holes.resize(numTriangles);
   std::atomic<bool> miscounted{ false };
-  parallelFor(0, numRanges, [&](Index begin, Index end) {
-    for (Index r = begin; r < end; ++r)
+  ForEachBlock(numRanges, parallelFor, [&](Index r) {
+    const size_t first = firstTriangle[r], last = firstTriangle[r + 1];
+    TriangleCursor cursor{ faces.Vertices.data() + 3 * first, faces.Origins.data() + first, faces.Holes.data() + first,
+      faces.Vertices.data() + 3 * last };
+    write(rangeBegin(r), rangeBegin(r + 1), cursor);
+    if (cursor.Overflowed || cursor.Vertices != cursor.End)
     {
-      const size_t first = firstTriangle[r], last = firstTriangle[r + 1];
-      TriangleCursor cursor{ faces.Vertices.data() + 3 * first, faces.Origins.data() + first,
-        faces.Holes.data() + first, faces.Vertices.data() + 3 * last };
-      write(rangeBegin(r), rangeBegin(r + 1), cursor);
-      if (cursor.Overflowed || cursor.Vertices != cursor.End)
-      {
-        miscounted = true;
-      }
+      miscounted = true;
     }
   });
   if (miscounted)

@@ -24,21 +24,6 @@ void CountsToOffsets(IndexArray& offsets)
   }
 }
 
-// Runs task(block) for blocks 0..numBlocks-1 through `parallelFor`, block b standing for
-// the items [b, b + 1) * stride of a longer range: a ParallelFor that will not split a short
-// range (its grain) still hands the blocks to different threads.
-template <typename Task>
-void ForEachBlock(Index numBlocks, const ParallelFor& parallelFor, const Task& task)
-{
-  constexpr Index stride = 4096;
-  parallelFor(0, numBlocks * stride, [&](Index begin, Index end) {
-    for (Index b = (begin + stride - 1) / stride; b * stride < end; ++b)
-    {
-      task(b);
-    }
-  });
-}
-
 // Files items under integer keys (vertices) in item order: a counting sort, on threads
 // without atomics. The items are cut into a few fixed blocks; each block counts its items
 // per key, the file of a key takes the blocks' items in block order, and each block then

@@ -8,6 +8,7 @@
 
 #include "SubDTypes.h"
 #include <functional>
+#include <limits>
 
 namespace subd
 {
@@ -24,6 +25,32 @@ inline void FillStrided(IndexArray& offsets, Index count, Index stride, const Pa
     for (Index i = begin; i < end; ++i)
     {
       offsets[i] = stride * i;
+    }
+  });
+}
+
+/// Runs task(b) for the blocks b = 0..numBlocks-1 through `parallelFor`, each block standing
+/// for `stride` indices of a longer range: a ParallelFor that will not split a short range
+/// (vtkSMPTools' grain is 2048) still hands a few blocks (64 ranges of faces, 1024 ranges of
+/// elements) to different threads.
+template <typename Task>
+void ForEachBlock(Index numBlocks, const ParallelFor& parallelFor, const Task& task)
+{
+  constexpr Index stride = 4096;
+  if (numBlocks > std::numeric_limits<Index>::max() / stride)
+  {
+    parallelFor(0, numBlocks, [&](Index begin, Index end) {
+      for (Index b = begin; b < end; ++b)
+      {
+        task(b);
+      }
+    });
+    return;
+  }
+  parallelFor(0, numBlocks * stride, [&](Index begin, Index end) {
+    for (Index b = (begin + stride - 1) / stride; b * stride < end; ++b)
+    {
+      task(b);
     }
   });
 }

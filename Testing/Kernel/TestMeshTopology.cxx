@@ -674,6 +674,44 @@ TEST(MeshTopology, BuildEqualsBruteForceOnFansOfEverySize)
   }
 }
 
+// vtkSMPTools does not split a range shorter than its grain (2048 indices): a loop over a
+// few blocks (64 ranges of faces, 1024 ranges of elements) must still reach several of the
+// chunks a ParallelFor so made hands to its threads, or it runs on one thread.
+TEST(Parallel, FewBlocksReachSeveralChunksOfAGrainedFor)
+{
+  int chunks = 0;
+  const subd::ParallelFor grained = [&chunks](Index begin, Index end, const subd::RangeTask& task) {
+    for (Index b = begin; b < end; b += 2048, ++chunks)
+    {
+      task(b, std::min(end, b + 2048));
+    }
+  };
+  std::vector<int> chunkOf(64, -1);
+  subd::ForEachBlock(64, grained, [&](Index b) {
+    EXPECT_EQ(chunkOf[b], -1) << "block " << b << " run twice";
+    chunkOf[b] = chunks;
+  });
+  EXPECT_EQ(std::count(chunkOf.begin(), chunkOf.end(), -1), 0);
+  std::sort(chunkOf.begin(), chunkOf.end());
+  EXPECT_EQ(std::unique(chunkOf.begin(), chunkOf.end()) - chunkOf.begin(), 64); // one chunk each
+
+  // The triangles written in place go through it: their ranges reach many chunks.
+  std::vector<int> writers;
+  chunks = 0;
+  const subd::EmittedFaces faces = subd::EmitTrianglesInPlace(
+    5000, grained, [](Index begin, Index end) { return end - begin; },
+    [&](Index begin, Index end, subd::TriangleCursor& out) {
+      writers.push_back(chunks);
+      for (Index i = begin; i < end; ++i)
+      {
+        out.AddTriangle(i, i + 1, i + 2, i, 0);
+      }
+    });
+  EXPECT_EQ(faces.Origins.size(), 5000u);
+  std::sort(writers.begin(), writers.end());
+  EXPECT_GT(std::unique(writers.begin(), writers.end()) - writers.begin(), 100);
+}
+
 // Triangles written in place: element i gives i % 3 triangles (i, i + 1, i + 2), origin i,
 // hole i % 2. The same faces, in element order, whatever the threads; a range that writes
 // other than it counted is an error, not a corrupted output.
