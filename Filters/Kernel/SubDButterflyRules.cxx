@@ -97,14 +97,20 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
     }
   });
   // The vertex across each triangle edge, filled edge by edge: an edge's first face is
-  // mostly the face that numbered it, so only the second face is a scattered read.
-  this->Across.assign(topo.GetFaceVertexArray().size(), InvalidIndex);
+  // mostly the face that numbered it, so only the second face is a scattered read. Each
+  // triangle edge is one edge's: every entry is written here, none twice, on threads.
+  this->Across.resize(topo.GetFaceVertexArray().size());
   parallelFor(0, topo.GetNumEdges(), [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e)
     {
       const IndexSpan ef = topo.GetEdgeFaces(e);
       if (ef.size() != 2 || topo.GetEdgeTag(e).NonManifold)
       {
+        for (Index f : ef) // nothing across a boundary or non-manifold edge
+        {
+          this->Across[static_cast<Index>(MeshTopology::GetFirstTriangleCorner(f)) + this->TriangleCornerOfEdge(f, e)] =
+            InvalidIndex;
+        }
         continue;
       }
       Index third[2], corner[2];

@@ -753,15 +753,17 @@ bool MeshTopology::GetOrderedVertexFaces(
   {
     // The next face is the one whose edge leaving v is the edge entering v in this one
     // (the two faces of a manifold edge at a manifold vertex run it in opposite directions):
-    // match them among v's faces, whose edges are independent loads, instead of walking
-    // across edges, where each step waits on the one before.
+    // match them among v's faces, whose corners are independent loads, instead of walking
+    // across edges, where each step waits on the one before. An edge is a pair of vertices,
+    // so the edges match when the vertex one face leaves v toward is the one the other
+    // enters v from: the faces' own corners, which callers go on to read, and no edge list.
     Index leaving[chainValence], entering[chainValence];
     Index current = 0;
     for (Index k = 0; k < K; ++k)
     {
-      const IndexSpan fe = this->GetFaceEdges(vf[k]);
-      leaving[k] = fe[vc[k]];
-      entering[k] = fe[vc[k] == 0 ? fe.size() - 1 : vc[k] - 1];
+      const IndexSpan fv = this->GetFaceVertices(vf[k]);
+      leaving[k] = fv[vc[k] + 1 == fv.size() ? 0 : vc[k] + 1];
+      entering[k] = fv[vc[k] == 0 ? fv.size() - 1 : vc[k] - 1];
       current = vf[k] == face ? k : current;
     }
     for (Index step = 0; step < K && current != InvalidIndex; ++step)

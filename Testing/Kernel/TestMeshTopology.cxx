@@ -352,6 +352,70 @@ TEST(MeshTopology, BuildOnThreadsEqualsSerialBuild)
   }
 }
 
+// The faces around a manifold vertex in fan order: each one's edge entering the vertex is the
+// next one's edge leaving it (matched by the vertices across them up to 64 faces, walked
+// across edges beyond), a boundary vertex's fan from boundary edge to boundary edge; none
+// for a non-manifold vertex.
+TEST(MeshTopology, OrderedVertexFacesWalkEachFanAcrossItsEdges)
+{
+  std::vector<subdtest::TestMesh> meshes = TagFixtures();
+  for (Index sides : { 5, 64, 65, 90 })
+  {
+    for (bool closed : { true, false })
+    {
+      subdtest::TestMesh fan;
+      fan.Points.assign(3 * static_cast<size_t>(sides + 1), 0.0);
+      fan.Offsets = { 0 };
+      for (Index k = 0; k < (closed ? sides : sides - 1); ++k)
+      {
+        fan.Vertices.insert(fan.Vertices.end(), { 0, 1 + k, 1 + (k + 1) % sides });
+        fan.Offsets.push_back(static_cast<Index>(fan.Vertices.size()));
+      }
+      meshes.push_back(fan);
+    }
+  }
+  int i = 0;
+  for (const subdtest::TestMesh& mesh : meshes)
+  {
+    SCOPED_TRACE("mesh " + std::to_string(i++));
+    const MeshTopology t = Build(mesh);
+    std::vector<Index> faces, corners;
+    for (Index v = 0; v < t.GetNumVertices(); ++v)
+    {
+      const bool ordered = t.GetOrderedVertexFaces(v, faces, corners);
+      if (t.GetVertexTag(v).NonManifold || t.GetVertexFaces(v).empty())
+      {
+        EXPECT_FALSE(ordered) << "vertex " << v;
+        continue;
+      }
+      ASSERT_TRUE(ordered) << "vertex " << v;
+      const subd::IndexSpan vf = t.GetVertexFaces(v);
+      ASSERT_EQ(faces.size(), static_cast<size_t>(vf.size()));
+      std::vector<Index> sorted = faces;
+      std::sort(sorted.begin(), sorted.end());
+      EXPECT_TRUE(std::equal(sorted.begin(), sorted.end(), vf.begin())) << "vertex " << v;
+      auto edgeAt = [&](size_t k, bool leaving) {
+        const subd::IndexSpan fe = t.GetFaceEdges(faces[k]);
+        EXPECT_EQ(t.GetFaceVertices(faces[k])[corners[k]], v);
+        return fe[leaving ? corners[k] : (corners[k] == 0 ? fe.size() - 1 : corners[k] - 1)];
+      };
+      for (size_t k = 0; k + 1 < faces.size(); ++k)
+      {
+        EXPECT_EQ(edgeAt(k, false), edgeAt(k + 1, true)) << "vertex " << v << ", face " << k;
+      }
+      const Index first = edgeAt(0, true), last = edgeAt(faces.size() - 1, false);
+      if (t.GetVertexTag(v).Boundary)
+      {
+        EXPECT_TRUE(t.GetEdgeTag(first).Boundary && t.GetEdgeTag(last).Boundary) << "vertex " << v;
+      }
+      else
+      {
+        EXPECT_EQ(last, first) << "vertex " << v; // the fan closes
+      }
+    }
+  }
+}
+
 // Rows that keep a level's faces and rings alone (sqrt(3)'s) read each vertex's ring in the
 // order of its edges: KeepOnly overwrites the edge lists with the vertices across them, in
 // place and on threads, frees the edges, and leaves the faces as they were.
