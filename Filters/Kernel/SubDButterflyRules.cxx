@@ -302,6 +302,20 @@ void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
   }
 }
 
+Index ButterflyRowWriter::OneExtraordinaryEnd(Index e) const
+{
+  const MeshTopology& topo = this->Topology;
+  // WriteRow's smooth rule alone: two faces, no sharpness (crease 0).
+  if (topo.GetEdgeFaces(e).size() != 2 || topo.GetEdgeTag(e).NonManifold || this->Parent.EdgeSharpness[e] != 0.0f)
+  {
+    return InvalidIndex;
+  }
+  const Index* ev = topo.GetEdgeVertices(e);
+  auto extraordinary = [this](Index v) { return this->HasRing(v) && this->RingValence(v) != 6; };
+  const bool x0 = extraordinary(ev[0]), x1 = extraordinary(ev[1]);
+  return x0 == x1 ? InvalidIndex : ev[x0 ? 0 : 1]; // both: AddSmoothRule averages two rules
+}
+
 Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* weights) const
 {
   const MeshTopology& topo = this->Topology;

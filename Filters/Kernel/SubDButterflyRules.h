@@ -102,10 +102,15 @@ public:
   /// edge with two triangles and no sharpness whose ends both have a smooth ring, one at
   /// least of valence 6 (the 8-point butterfly, or Zorin's stencil of the other end).
   bool IsSmoothRow(Index row) const;
-  /// Vertex points (copies of the parent's vertices) and the edge points of the regular
-  /// butterfly (RegularButterflyRow); the other edge points are written.
+  /// Vertex points (copies of the parent's vertices), the edge points of the regular
+  /// butterfly (RegularButterflyRow) and those of Zorin's stencil at an edge's one
+  /// extraordinary end (OneExtraordinaryEnd); the other edge points are written.
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+  /// The end v of edge e whose ring alone makes e's row, as WriteRow writes it: e smooth
+  /// between two triangles, v's ring smooth and not of valence 6, the other end's not such a
+  /// ring (of valence 6, or none). InvalidIndex for any other edge.
+  Index OneExtraordinaryEnd(Index e) const;
   /// Asks for the topology RegularButterflyRow reads for `row` (SubDRowWriting.h): its ends'
   /// ring kinds and its two triangles' corners, edges and Across entries.
   template <typename T>
@@ -229,12 +234,30 @@ inline bool ButterflyRowWriter::ApplySmoothRow(Index row, const T* parents, cons
     Index sources[10];
     double weights[10];
     const Index size = this->RegularButterflyRow(row, sources, weights);
+    if (size == 0)
+    {
+      // Zorin's stencil of the one extraordinary end, summed in the order AddSmoothRule
+      // appends it: the same bits as the written row.
+      const Index v = this->OneExtraordinaryEnd(row);
+      if (v == InvalidIndex)
+      {
+        return false;
+      }
+      const Index* ev = this->Topology.GetEdgeVertices(row);
+      const Index K = this->RingValence(v);
+      const Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
+      PutButterflyExtraordinaryStencil(v, K, this->RingStart(v, ev[0] == v ? ev[1] : ev[0]),
+        this->ExtraordinaryWeights.Get(K), [ring](Index k) { return ring[k]; },
+        [&point, parents](Index source, double weight) { point.Add(weight, parents + 3 * static_cast<size_t>(source)); });
+      point.Store(dst);
+      return true;
+    }
     for (Index k = 0; k < size; ++k)
     {
       point.Add(weights[k], parents + 3 * static_cast<size_t>(sources[k]));
     }
     point.Store(dst);
-    return size > 0;
+    return true;
   }
   point.Add(1.0, parents + 3 * static_cast<size_t>(row - numEdges));
   point.Store(dst);
