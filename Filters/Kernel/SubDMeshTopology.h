@@ -261,8 +261,8 @@ private:
     }
   };
   /// The counts of the edges whose first half-edge lies in each block of faces: block b holds
-  /// the faces that start at corners [b << Shift, (b + 1) << Shift), about 64 blocks in all, so
-  /// that an edge's block is a shift of its face's first corner.
+  /// the faces that start at corners [b << Shift, (b + 1) << Shift), at most 64 blocks of at
+  /// least 1024 corners, so that an edge's block is a shift of its face's first corner.
   struct EdgeCountsByBlock
   {
     int Shift = 10;
