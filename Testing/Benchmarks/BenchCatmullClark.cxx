@@ -117,8 +117,9 @@ int main(int argc, char* argv[])
   const int maxLevel = args.MaxLevel;
   const int repeats = args.Repeats;
   const Mesh& mesh = args.Mesh;
-  std::printf("Catmull-Clark on %s: %d points, %zu faces; best of %d runs each\n", argv[1],
-    mesh.NumVertices(), mesh.Sizes.size(), repeats);
+  std::printf("Catmull-Clark on %s: %d points, %zu faces; best of %d runs each (%d for runs under %.1f s)\n", argv[1],
+    mesh.NumVertices(), mesh.Sizes.size(), repeats, std::max(repeats, subdbench::ShortRunRepeats),
+    subdbench::ShortRunSeconds);
   std::printf("%-5s %-28s %10s %12s %9s%s\n", "level", "implementation", "seconds", "faces/s", "OSD/this",
     subdbench::MemoryHeader);
   for (int level = 1; level <= maxLevel; ++level)

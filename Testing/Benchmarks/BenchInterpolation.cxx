@@ -79,6 +79,6 @@ int main(int argc, char* argv[])
   std::printf("interpolation, %s: %s after %d level(s) of refinement: %lld vertices, %lld faces\n", scheme.c_str(), argv[1],
     levels, static_cast<long long>(targets->GetNumberOfPoints()), static_cast<long long>(targets->GetNumberOfPolys()));
   std::printf("  solve %.2f s (best of %d), peak RSS %.0f MiB (input mesh %.0f MiB), residual %.2g, condition >= %.3g\n",
-    result.Seconds, repeats, result.PeakMiB, inputMiB, residual, condition);
+    result.Seconds, result.Runs, result.PeakMiB, inputMiB, residual, condition);
   return 0;
 }

@@ -190,8 +190,9 @@ int main(int argc, char* argv[])
     { "linear", RunSubD<vtkSubDLinearFilter>, { { "VTK", RunFilter<vtkLinearSubdivisionFilter> } } },
   };
 
-  std::printf("Surface schemes on %s: %d points, %zu faces; best of %d runs each\n", argv[1], mesh.NumVertices(),
-    mesh.Sizes.size(), repeats);
+  std::printf("Surface schemes on %s: %d points, %zu faces; best of %d runs each (%d for runs under %.1f s)\n", argv[1],
+    mesh.NumVertices(), mesh.Sizes.size(), repeats, std::max(repeats, subdbench::ShortRunRepeats),
+    subdbench::ShortRunSeconds);
   const std::string only = argc > 4 ? "," + std::string(argv[4]) + "," : "";
   std::printf("%-10s %-5s %-22s %10s %12s%s\n", "scheme", "level", "implementation", "seconds", "faces/s",
     subdbench::MemoryHeader);
