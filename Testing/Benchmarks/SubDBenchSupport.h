@@ -85,9 +85,10 @@ constexpr double ShortRunSeconds = 0.1;
 constexpr int ShortRunRepeats = 9;
 
 // Runs `work` in a child process `repeats` times (ShortRunRepeats when the first run is
-// short) and keeps the fastest; the peak RSS is the child's own. The growth subtracts the RSS the child starts with (the parent's pages it
-// shares: libraries, the mesh read): the memory the measured work needs. Library pages the
-// child touches again after the fork count as growth, so it errs high, never low.
+// short) and keeps the fastest; the peak RSS is the child's own. The growth subtracts the
+// RSS the child starts with (the parent's pages it shares: libraries, the mesh read): the
+// memory the measured work needs. Library pages the child touches again after the fork
+// count as growth, so it errs high, never low.
 inline Result Measure(const std::function<Work()>& work, int repeats)
 {
   Result best;
