@@ -90,17 +90,6 @@ subd::Index TriangulateFaces(subd::FaceScreening& faces, vtkPoints* points)
   return split;
 }
 
-// A copy made on threads: the first write to each page is most of the cost of copying a
-// large array, and the faults of a serial copy come one after another.
-subd::IndexArray CopyOnThreads(const subd::IndexArray& from)
-{
-  subd::IndexArray to(from.size());
-  vtkSubDPointDataInterpolation::SMPFor(0, static_cast<subd::Index>(from.size()), [&](subd::Index begin, subd::Index end) {
-    std::copy(from.begin() + begin, from.begin() + end, to.begin() + begin);
-  });
-  return to;
-}
-
 // The field data array recording how many steps of a depth-dependent scheme made a mesh.
 const char* const DepthArrayName = "SubDDepth";
 
@@ -462,8 +451,10 @@ int vtkSubDSurfaceFilter::Execute(
     cache.Scheme->SetParallelFor(&vtkSubDPointDataInterpolation::SMPFor);
     const subd::Scheme* scheme = cache.Scheme.get();
     subd::MeshTopology topology =
-      subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), CopyOnThreads(screened.Offsets),
-        CopyOnThreads(screened.Vertices), &vtkSubDPointDataInterpolation::SMPFor);
+      subd::MeshTopology::Build(static_cast<subd::Index>(numPoints),
+        subd::CopyOnThreads(screened.Offsets.begin(), screened.Offsets.end(), &vtkSubDPointDataInterpolation::SMPFor),
+        subd::CopyOnThreads(screened.Vertices.begin(), screened.Vertices.end(), &vtkSubDPointDataInterpolation::SMPFor),
+        &vtkSubDPointDataInterpolation::SMPFor);
     const std::string nonManifold = vtkSubDNonManifoldWarning(topology, faceIsGhost);
     cache.FaceGhostLayer =
       faceIsGhost.empty() ? std::vector<std::uint8_t>() : vtkSubDGhostLayers(topology, faceIsGhost, outputGhostLevels);

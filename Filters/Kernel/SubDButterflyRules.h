@@ -107,10 +107,6 @@ public:
   /// extraordinary end (OneExtraordinaryEnd); the other edge points are written.
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
-  /// The end v of edge e whose ring alone makes e's row, as WriteRow writes it: e smooth
-  /// between two triangles, v's ring smooth and not of valence 6, the other end's not such a
-  /// ring (of valence 6, or none). InvalidIndex for any other edge.
-  Index OneExtraordinaryEnd(Index e) const;
   /// Asks for the topology RegularButterflyRow reads for `row` (SubDRowWriting.h): its ends'
   /// ring kinds and its two triangles' corners, edges and Across entries.
   template <typename T>
@@ -149,6 +145,10 @@ public:
   };
 
 private:
+  /// The end v of edge e whose ring alone makes e's row, as WriteRow writes it: e smooth
+  /// between two triangles, v's ring smooth and not of valence 6, the other end's not such a
+  /// ring (of valence 6, or none). InvalidIndex for any other edge.
+  Index OneExtraordinaryEnd(Index e) const;
   bool HasRing(Index v) const { return this->RingValences[v] > 0; }
   Index RingValence(Index v) const { return this->RingValences[v]; }
   bool IsSmoothRegular(Index v) const { return this->RingKinds[v] == SmoothRegularRing; }

@@ -106,8 +106,8 @@ bool MeshTopology::ReleaseFaces(IndexArray& faceOffsets, IndexArray& faceVertice
 MeshTopology MeshTopology::Build(Index numVertices, const std::vector<Index>& faceOffsets,
   const std::vector<Index>& faceVertices, const ParallelFor& parallelFor)
 {
-  return Build(numVertices, IndexArray(faceOffsets.begin(), faceOffsets.end()),
-    IndexArray(faceVertices.begin(), faceVertices.end()), parallelFor);
+  return Build(numVertices, CopyOnThreads(faceOffsets.begin(), faceOffsets.end(), parallelFor),
+    CopyOnThreads(faceVertices.begin(), faceVertices.end(), parallelFor), parallelFor);
 }
 
 MeshTopology MeshTopology::Build(

@@ -45,7 +45,7 @@ public:
   /// `parallelFor` runs every pass on threads; the topology does not depend on their number.
   static MeshTopology Build(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
     const ParallelFor& parallelFor = SerialFor);
-  /// The same from std::vector (copied: for base meshes, which are small).
+  /// The same from std::vector (copied on `parallelFor`'s threads).
   static MeshTopology Build(Index numVertices, const std::vector<Index>& faceOffsets,
     const std::vector<Index>& faceVertices, const ParallelFor& parallelFor = SerialFor);
 

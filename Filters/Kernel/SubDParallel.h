@@ -7,6 +7,7 @@
 #define SubDParallel_h
 
 #include "SubDTypes.h"
+#include <algorithm>
 #include <functional>
 #include <limits>
 
@@ -27,6 +28,19 @@ inline void FillStrided(IndexArray& offsets, Index count, Index stride, const Pa
       offsets[i] = stride * i;
     }
   });
+}
+
+/// A copy of [first, last) as an IndexArray, made on `parallelFor`'s threads: the first write
+/// to each page is most of the cost of copying a large array, and a serial copy takes those
+/// faults one after another.
+template <typename Iterator>
+IndexArray CopyOnThreads(Iterator first, Iterator last, const ParallelFor& parallelFor)
+{
+  IndexArray to(static_cast<size_t>(last - first));
+  parallelFor(0, static_cast<Index>(to.size()), [&](Index begin, Index end) {
+    std::copy(first + begin, first + end, to.begin() + begin);
+  });
+  return to;
 }
 
 /// Runs task(b) for the blocks b = 0..numBlocks-1 through `parallelFor`, each block standing
