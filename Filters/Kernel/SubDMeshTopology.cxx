@@ -261,6 +261,28 @@ struct CornerNeighbours
     return mask;
   }
 
+  // Bit j set where lanes[j] > value, for j < N (the padding, InvalidIndex, is below any
+  // vertex).
+  std::uint32_t Above(const Index* lanes, Index value) const
+  {
+#if defined(__SSE2__)
+    if (this->N <= 8)
+    {
+      const __m128i bound = _mm_set1_epi32(value);
+      const __m128i low = _mm_cmpgt_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(lanes)), bound);
+      const __m128i high = _mm_cmpgt_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(lanes + 4)), bound);
+      return static_cast<std::uint32_t>(
+        _mm_movemask_ps(_mm_castsi128_ps(low)) | _mm_movemask_ps(_mm_castsi128_ps(high)) << 4);
+    }
+#endif
+    std::uint32_t mask = 0;
+    for (Index j = 0; j < this->N; ++j)
+    {
+      mask |= static_cast<std::uint32_t>(lanes[j] > value) << j;
+    }
+    return mask;
+  }
+
   // Pads the lanes the 8-wide comparison reads past N.
   void Pad()
   {
@@ -431,25 +453,27 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
       {
         const CornerChains chains(neighbours);
         smallFans[v] = chains.CountFans(n);
-        for (Index k = 0; k < n; ++k)
+        // The corners entering v from above, and (a boundary: no way back) leaving it
+        // upward, as bit masks: whether a neighbour is above v is a coin toss, which a
+        // branch per corner would mispredict half the time.
+        for (std::uint32_t above = neighbours.Above(neighbours.Entering, v); above; above &= above - 1)
         {
-          if (neighbours.Entering[k] > v)
+          const Index k = LowestBit(above);
+          const Index follower = chains.Next[k];
+          if (follower == InvalidIndex)
           {
-            const Index follower = chains.Next[k];
-            if (follower == InvalidIndex)
-            {
-              pairUp(enteringEdge[k], faceStart[k], InvalidIndex, InvalidIndex);
-            }
-            else
-            {
-              pairUp(enteringEdge[k], faceStart[k], leavingEdge[follower], faceStart[follower]);
-            }
+            pairUp(enteringEdge[k], faceStart[k], InvalidIndex, InvalidIndex);
           }
-          if (neighbours.Leaving[k] > v && !(chains.HasPredecessor >> k & 1u))
+          else
           {
-            // an edge without a way back: a boundary
-            pairUp(leavingEdge[k], faceStart[k], InvalidIndex, InvalidIndex);
+            pairUp(enteringEdge[k], faceStart[k], leavingEdge[follower], faceStart[follower]);
           }
+        }
+        for (std::uint32_t boundary = neighbours.Above(neighbours.Leaving, v) & ~chains.HasPredecessor; boundary;
+             boundary &= boundary - 1)
+        {
+          const Index k = LowestBit(boundary);
+          pairUp(leavingEdge[k], faceStart[k], InvalidIndex, InvalidIndex);
         }
         continue;
       }

@@ -67,14 +67,24 @@ FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offse
   const ParallelFor& parallelFor)
 {
   FaceScreening s;
-  // Most meshes need no repair: every face checked, then copied, on threads (the loop below
-  // appends one face at a time).
+  // Most meshes need no repair: every face checked and copied in one pass on threads (the
+  // loop below appends one face at a time); the copy is dropped if a face needs repair.
+  s.Offsets.resize(static_cast<size_t>(numFaces) + 1);
+  s.Vertices.resize(static_cast<size_t>(offsets[numFaces] - offsets[0]));
+  s.KeptFaces.resize(static_cast<size_t>(numFaces));
+  s.Offsets[0] = 0;
   std::atomic<bool> allClean{ true };
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     bool clean = true;
     for (Index f = begin; f < end && clean; ++f)
     {
       clean = IsCleanFace(numVertices, vertices, offsets[f], offsets[f + 1]);
+      s.Offsets[f + 1] = static_cast<Index>(offsets[f + 1] - offsets[0]);
+      for (IdType k = offsets[f]; k < offsets[f + 1]; ++k)
+      {
+        s.Vertices[static_cast<size_t>(k - offsets[0])] = static_cast<Index>(vertices[k]);
+      }
+      s.KeptFaces[f] = f;
     }
     if (!clean)
     {
@@ -83,22 +93,9 @@ FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offse
   });
   if (allClean)
   {
-    s.Offsets.resize(static_cast<size_t>(numFaces) + 1);
-    s.Vertices.resize(static_cast<size_t>(offsets[numFaces] - offsets[0]));
-    s.KeptFaces.resize(static_cast<size_t>(numFaces));
-    parallelFor(0, numFaces, [&](Index begin, Index end) {
-      for (Index f = begin; f < end; ++f)
-      {
-        s.Offsets[f + 1] = static_cast<Index>(offsets[f + 1] - offsets[0]);
-        for (IdType k = offsets[f]; k < offsets[f + 1]; ++k)
-        {
-          s.Vertices[static_cast<size_t>(k - offsets[0])] = static_cast<Index>(vertices[k]);
-        }
-        s.KeptFaces[f] = f;
-      }
-    });
     return s;
   }
+  s = FaceScreening();
   s.Offsets.reserve(static_cast<size_t>(numFaces) + 1);
   s.Vertices.reserve(static_cast<size_t>(offsets[numFaces] - offsets[0]));
   s.KeptFaces.reserve(static_cast<size_t>(numFaces));

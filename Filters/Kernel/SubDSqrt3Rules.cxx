@@ -469,12 +469,15 @@ private:
   // alone (found without the face offsets): the finest split runs without the faces' edges.
   void OrientedEnds(Index e, Index f, Index& a, Index& b) const
   {
+    // Without branches (which corner, which way: coin tosses from edge to edge): e runs
+    // forward in f when the corner after ev[0]'s is ev[1].
+    static constexpr Index nextCorner[3] = { 1, 2, 0 };
     const Index* ev = this->Topo.GetEdgeVertices(e);
     const Index* fv = this->Topo.GetTriangleVertices(f);
-    const Index i = fv[0] == ev[0] ? 0 : (fv[1] == ev[0] ? 1 : 2);
-    const bool forward = fv[i == 2 ? 0 : i + 1] == ev[1];
-    a = ev[forward ? 0 : 1];
-    b = ev[forward ? 1 : 0];
+    const Index i = Index(fv[1] == ev[0]) + 2 * Index(fv[2] == ev[0]);
+    const Index backward = fv[nextCorner[i]] != ev[1];
+    a = ev[backward];
+    b = ev[1 - backward];
   }
 
   // The point an old edge e of face f is flipped to: the centroid, or in a triangle that

@@ -35,15 +35,22 @@ constexpr std::size_t LargeBlockBytes = std::size_t(256) << 10;
 /// pages the hypervisor had not backed yet), where 4 KiB pages gave steady times. Throws
 /// std::bad_alloc when out of memory.
 SUBDKERNEL_EXPORT void* AllocateLargeBlock(std::size_t bytes);
-/// Frees a block of `bytes` bytes from AllocateLargeBlock.
+/// Frees a block of `bytes` bytes from AllocateLargeBlock. Where blocks are mapped, a few
+/// freed blocks (8 MiB at most) stay mapped for the next requests while the large blocks in
+/// use are under 32 MiB: each fresh page costs a page fault when first written, a third of
+/// a small refinement's time on the benchmark VM, and a reused block's pages are there
+/// already. The first request that takes the blocks in use past 32 MiB gives the kept ones
+/// back, so a large refinement's peak holds none.
 SUBDKERNEL_EXPORT void FreeLargeBlock(void* block, std::size_t bytes) noexcept;
+/// The bytes of the freed blocks kept mapped for reuse (see FreeLargeBlock).
+SUBDKERNEL_EXPORT std::size_t GetKeptLargeBlockBytes() noexcept;
 /// The bytes of the large blocks in use: the memory the C library's statistics (mallinfo2)
 /// do not see, since it comes from the system directly.
 SUBDKERNEL_EXPORT std::size_t GetLargeBlockBytesInUse() noexcept;
 /// Hands the memory the process has freed back to the system where the C library keeps it
 /// (glibc keeps freed blocks below its moving mmap threshold, up to 32 MiB each, for reuse):
 /// called between the phases of a low-memory refinement, so that freed topology does not
-/// count twice in the peak. Does nothing elsewhere.
+/// count twice in the peak. Also gives back the freed large blocks kept for reuse.
 SUBDKERNEL_EXPORT void ReleaseFreeMemory() noexcept;
 
 /// Inlines a function the compiler would call: the row writers' per-row evaluation
