@@ -1,7 +1,7 @@
 // Benchmark (a program, not a test): Catmull-Clark levels 1..4 on a real mesh, SubD against
 // OpenSubdiv's Far (TopologyRefinerFactory + RefineUniform + PrimvarRefinerReal<double>,
-// i.e. topology and interpolation) measured in the same run. Each measurement runs in a
-// forked child so its peak RSS is its own. Prints seconds, output faces per second, peak
+// i.e. topology and interpolation) measured in the same run, their runs interleaved. Each
+// measurement runs in a forked child so its peak RSS is its own. Prints seconds, output faces per second, peak
 // RSS, the ratio OpenSubdiv time / SubD time, and for the filter the peak RSS over the
 // output's bytes and the time over the bandwidth bound (writing the output once), also with
 // the filter's LowMemory option (the finest level's parent topology not kept). The last
@@ -36,7 +36,6 @@
 namespace
 {
 using subdbench::Clock;
-using subdbench::Measure;
 using subdbench::Result;
 using subdbench::Work;
 using namespace OpenSubdiv;
@@ -124,12 +123,13 @@ int main(int argc, char* argv[])
     subdbench::MemoryHeader);
   for (int level = 1; level <= maxLevel; ++level)
   {
-    const Result osd = Measure([&] { return subdbench::RunOpenSubdiv(mesh, level, Sdc::SCHEME_CATMARK); }, repeats);
-    const Result kernel = Measure([&] { return RunKernel(mesh, level); }, repeats);
-    const Result filter1 = Measure([&] { return RunFilter(mesh, level, 1); }, repeats);
-    const Result filter2 = Measure([&] { return RunFilter(mesh, level, 2); }, repeats);
-    const Result lean = Measure([&] { return RunFilter(mesh, level, 2, true); }, repeats);
-    const Result reapply = Measure([&] { return RunReapply(mesh, level, 2); }, repeats);
+    const std::vector<Result> results = subdbench::MeasureInterleaved(
+      { [&] { return subdbench::RunOpenSubdiv(mesh, level, Sdc::SCHEME_CATMARK); }, [&] { return RunKernel(mesh, level); },
+        [&] { return RunFilter(mesh, level, 1); }, [&] { return RunFilter(mesh, level, 2); },
+        [&] { return RunFilter(mesh, level, 2, true); }, [&] { return RunReapply(mesh, level, 2); } },
+      repeats);
+    const Result &osd = results[0], &kernel = results[1], &filter1 = results[2], &filter2 = results[3],
+                 &lean = results[4], &reapply = results[5];
     auto row = [&](const char* name, const Result& r) {
       std::printf("%-5d %-28s %10.4f %12.3g %9.2f", level, name, r.Seconds, r.Faces / r.Seconds, osd.Seconds / r.Seconds);
       subdbench::PrintMemory(r);

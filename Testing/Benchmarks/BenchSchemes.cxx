@@ -4,9 +4,10 @@
 //   butterfly, sqrt(3), midpoint) and VTK 9.1 (Loop, butterfly, linear).
 // Each timing starts from the mesh as flat arrays and includes building the implementation's
 // own mesh structure, refinement and point computation (what a user waits for); each runs in
-// a forked child (own peak RSS), best of `repeats`. Prints seconds, output faces per second,
-// peak RSS and, per scheme, the ratio fastest peer time / SubD time (2 threads); for Loop
-// from level 2 on, also with the filter's LowMemory option.
+// a forked child (own peak RSS), best of `repeats`, the implementations' runs interleaved
+// (subdbench::MeasureInterleaved). Prints seconds, output faces per second, peak RSS and, per
+// scheme, the ratio fastest peer time / SubD time (2 threads); for Loop from level 2 on,
+// also with the filter's LowMemory option.
 //
 //   usage: BenchSchemes mesh.off [maxLevel=3] [repeats=3] [scheme,scheme,...]
 #include "SubDBenchOpenSubdiv.h"
@@ -47,7 +48,6 @@
 namespace
 {
 using subdbench::Clock;
-using subdbench::Measure;
 using subdbench::Result;
 using subdbench::SecondsSince;
 using subdbench::Work;
@@ -210,27 +210,40 @@ int main(int argc, char* argv[])
         subdbench::PrintMemory(r);
         std::printf("\n");
       };
-      const Result one = Measure([&] { return scheme.SubD(mesh, level, 1); }, repeats);
-      const Result two = Measure([&] { return scheme.SubD(mesh, level, 2); }, repeats);
+      // SubD on 1 and 2 threads, each peer, and SubD LowMemory where it applies, interleaved.
+      std::vector<std::function<Work()>> works = { [&] { return scheme.SubD(mesh, level, 1); },
+        [&] { return scheme.SubD(mesh, level, 2); } };
+      for (const Peer& peer : scheme.Peers)
+      {
+        works.push_back([&] { return peer.Run(mesh, level); });
+      }
+      const bool measuresLean = scheme.SubDLowMemory && level >= 2;
+      if (measuresLean)
+      {
+        works.push_back([&] { return scheme.SubDLowMemory(mesh, level, 2); });
+      }
+      const std::vector<Result> results = subdbench::MeasureInterleaved(works, repeats);
+      const Result& one = results[0];
+      const Result& two = results[1];
       row("SubD (1 thread)", one);
       row("SubD (2 threads)", two);
       double fastestPeer = 1e300;
       std::string fastestName;
-      for (const Peer& peer : scheme.Peers)
+      for (size_t p = 0; p < scheme.Peers.size(); ++p)
       {
-        const Result r = Measure([&] { return peer.Run(mesh, level); }, repeats);
-        row(peer.Name, r);
+        const Result& r = results[2 + p];
+        row(scheme.Peers[p].Name, r);
         if (r.Seconds < fastestPeer)
         {
           fastestPeer = r.Seconds;
-          fastestName = peer.Name;
+          fastestName = scheme.Peers[p].Name;
         }
       }
       std::printf("%-10s %-5d ratio fastest peer (%s) / SubD 2 threads: %.2f, / SubD 1 thread: %.2f\n",
         scheme.Name.c_str(), level, fastestName.c_str(), fastestPeer / two.Seconds, fastestPeer / one.Seconds);
-      if (scheme.SubDLowMemory && level >= 2)
+      if (measuresLean)
       {
-        const Result lean = Measure([&] { return scheme.SubDLowMemory(mesh, level, 2); }, repeats);
+        const Result& lean = results.back();
         row("SubD LowMemory (2 thr.)", lean);
         std::printf("%-10s %-5d ratio fastest peer (%s) / SubD LowMemory 2 threads: %.2f\n", scheme.Name.c_str(),
           level, fastestName.c_str(), fastestPeer / lean.Seconds);

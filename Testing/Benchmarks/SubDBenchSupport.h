@@ -84,63 +84,88 @@ inline double OutputBytes(vtkPolyData* output)
 constexpr double ShortRunSeconds = 0.1;
 constexpr int ShortRunRepeats = 9;
 
-// Runs `work` in a child process `repeats` times (ShortRunRepeats when the first run is
-// short) and keeps the fastest; the peak RSS is the child's own. The growth subtracts the
-// RSS the child starts with (the parent's pages it shares: libraries, the mesh read): the
-// memory the measured work needs. Library pages the child touches again after the fork
-// count as growth, so it errs high, never low.
-inline Result Measure(const std::function<Work()>& work, int repeats)
+// One run of `work` in a child process: its report, with the child's own peak RSS and the
+// growth of its RSS over the run (what the child starts with is the parent's pages it
+// shares: libraries, the mesh read). Library pages the child touches again after the fork
+// count as growth, so that errs high, never low.
+inline Result RunInChild(const std::function<Work()>& work)
 {
-  Result best;
-  best.Seconds = 1e300;
-  int runs = repeats;
-  for (int r = 0; r < runs; ++r)
+  int pipeFd[2];
+  if (pipe(pipeFd) != 0)
+    std::abort();
+  const pid_t pid = fork();
+  if (pid == 0)
   {
-    int pipeFd[2];
-    if (pipe(pipeFd) != 0)
-      std::abort();
-    const pid_t pid = fork();
-    if (pid == 0)
-    {
-      close(pipeFd[0]);
-      const double startMiB = StatusMiB("VmRSS");
-      const Work w = work();
-      const double peakMiB = StatusMiB("VmHWM");
-      const double message[7] = { w.Seconds, w.Faces, w.OutputBytes, w.Extra[0], w.Extra[1], peakMiB,
-        peakMiB - startMiB };
-      if (write(pipeFd[1], message, sizeof(message)) != sizeof(message))
-        _exit(1);
-      _exit(0);
-    }
-    close(pipeFd[1]);
-    double message[7] = { 0, 0, 0, 0, 0, 0, 0 };
-    const bool ok = read(pipeFd[0], message, sizeof(message)) == sizeof(message);
     close(pipeFd[0]);
-    int status = 0;
-    struct rusage usage;
-    wait4(pid, &status, 0, &usage);
-    if (!ok || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+    const double startMiB = StatusMiB("VmRSS");
+    const Work w = work();
+    const double peakMiB = StatusMiB("VmHWM");
+    const double message[7] = { w.Seconds, w.Faces, w.OutputBytes, w.Extra[0], w.Extra[1], peakMiB,
+      peakMiB - startMiB };
+    if (write(pipeFd[1], message, sizeof(message)) != sizeof(message))
+      _exit(1);
+    _exit(0);
+  }
+  close(pipeFd[1]);
+  double message[7] = { 0, 0, 0, 0, 0, 0, 0 };
+  const bool ok = read(pipeFd[0], message, sizeof(message)) == sizeof(message);
+  close(pipeFd[0]);
+  int status = 0;
+  struct rusage usage;
+  wait4(pid, &status, 0, &usage);
+  if (!ok || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  {
+    std::fprintf(stderr, "bench: a measurement failed\n");
+    std::exit(1);
+  }
+  Result run;
+  run.Seconds = message[0];
+  run.Faces = message[1];
+  run.OutputBytes = message[2];
+  run.Extra[0] = message[3];
+  run.Extra[1] = message[4];
+  run.PeakMiB = message[5] > 0 ? message[5] : usage.ru_maxrss / 1024.0;
+  run.GrowthMiB = message[6];
+  run.Runs = 1;
+  return run;
+}
+
+// Runs each of `works` `repeats` times (ShortRunRepeats for one whose first run is short),
+// each in its own child process, and keeps each one's fastest run. The runs are interleaved
+// (one of each per round) so that the VM slowing down or speeding up for a while (its speed
+// drifts by up to 2x over minutes) weighs on all of them alike, not on whichever ran then:
+// the ratios between them are what the benchmarks report.
+inline std::vector<Result> MeasureInterleaved(const std::vector<std::function<Work()>>& works, int repeats)
+{
+  std::vector<Result> best(works.size());
+  std::vector<int> runs(works.size(), repeats);
+  for (int round = 0; round < *std::max_element(runs.begin(), runs.end()); ++round)
+  {
+    for (size_t i = 0; i < works.size(); ++i)
     {
-      std::fprintf(stderr, "bench: a measurement failed\n");
-      std::exit(1);
-    }
-    if (r == 0 && message[0] < ShortRunSeconds)
-    {
-      runs = std::max(repeats, ShortRunRepeats);
-    }
-    if (message[0] < best.Seconds)
-    {
-      best.Seconds = message[0];
-      best.Faces = message[1];
-      best.OutputBytes = message[2];
-      best.Extra[0] = message[3];
-      best.Extra[1] = message[4];
-      best.PeakMiB = message[5] > 0 ? message[5] : usage.ru_maxrss / 1024.0;
-      best.GrowthMiB = message[6];
+      if (round >= runs[i])
+      {
+        continue;
+      }
+      const Result run = RunInChild(works[i]);
+      if (round == 0 && run.Seconds < ShortRunSeconds)
+      {
+        runs[i] = std::max(repeats, ShortRunRepeats);
+      }
+      if (round == 0 || run.Seconds < best[i].Seconds)
+      {
+        best[i] = run;
+      }
+      best[i].Runs = runs[i];
     }
   }
-  best.Runs = runs;
   return best;
+}
+
+// One work measured alone (MeasureInterleaved).
+inline Result Measure(const std::function<Work()>& work, int repeats)
+{
+  return MeasureInterleaved({ work }, repeats)[0];
 }
 
 /// Sets vtkSMPTools' thread count and starts its threads. A forked child has no thread pool:
