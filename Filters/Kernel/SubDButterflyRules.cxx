@@ -135,7 +135,7 @@ Index ButterflyRowWriter::AcrossEdge(Index face, Index x, Index b) const
 {
   // Corner j's edge joins corners j and j + 1.
   const Index* fv = this->Topology.GetTriangleVertices(face);
-  const Index ix = fv[0] == x ? 0 : (fv[1] == x ? 1 : 2);
+  const Index ix = PlaceInTriangle(fv, x);
   const Index corner = fv[(ix + 1) % 3] == b ? ix : (ix + 2) % 3;
   return this->Across[MeshTopology::GetFirstTriangleCorner(face) + corner];
 }
@@ -194,12 +194,12 @@ void ButterflyRowWriter::AddWing(Index x, Index b, Index y, Index face, double w
   const MeshTopology& topo = this->Topology;
   // Edge i of a face joins its corners i and i + 1.
   const IndexSpan fv = topo.GetFaceVertices(face);
-  const Index ix = fv[0] == x ? 0 : (fv[1] == x ? 1 : 2);
+  const Index ix = PlaceInTriangle(fv.begin(), x);
   const Index e = topo.GetFaceEdges(face)[fv[(ix + 1) % 3] == b ? ix : (ix + 2) % 3];
   const IndexSpan ef = topo.GetEdgeFaces(e);
   if (ef.size() == 2 && !topo.GetEdgeTag(e).NonManifold && !IsSharp(this->Parent.EdgeSharpness[e]))
   {
-    const Index other = ef[0] == face ? ef[1] : ef[0];
+    const Index other = OtherOfTwo(ef, face);
     const Index opposite = topo.GetTriangleThirdVertex(other, x, b);
     if (opposite != y)
     {

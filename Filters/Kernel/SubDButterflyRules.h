@@ -155,7 +155,7 @@ private:
   Index TriangleCornerOfEdge(Index f, Index e) const
   {
     const Index* fe = this->Topology.GetTriangleEdges(f);
-    return fe[0] == e ? 0 : (fe[1] == e ? 1 : 2);
+    return PlaceInTriangle(fe, e);
   }
   Index RingStart(Index v, Index first) const;
   Index RingFrom(Index v, Index first, Index j) const;

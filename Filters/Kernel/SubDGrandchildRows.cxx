@@ -324,7 +324,7 @@ ButterflyGrandparentTables MakeButterflyGrandparentTables(const MeshTopology& to
         e = topo.GetTriangleEdges(g)[p == 0 ? 2 : p - 1];
         const IndexSpan ef = topo.GetEdgeFaces(e);
         closed = ef.size() == 2;
-        g = ef[0] == g ? ef[1] : ef[0];
+        g = closed ? OtherOfTwo(ef, g) : g;
       }
       if (!closed || e != start) // not expected of a closed manifold fan
       {
@@ -344,7 +344,7 @@ ButterflyGrandparentTables MakeButterflyGrandparentTables(const MeshTopology& to
         const IndexSpan ef = topo.GetEdgeFaces(e);
         if (ef.size() == 2 && ef[0] != ef[1])
         {
-          const Index h = ef[0] == g ? ef[1] : ef[0];
+          const Index h = OtherOfTwo(ef, g);
           tables.FaceAcross[MeshTopology::GetFirstTriangleCorner(g) + i] = 4 * h + topo.GetEdgePosition(h, e);
         }
       }

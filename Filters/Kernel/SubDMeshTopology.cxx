@@ -810,7 +810,7 @@ bool MeshTopology::GetOrderedVertexFaces(
     {
       break; // reached the boundary
     }
-    face = ef[0] == face ? ef[1] : ef[0];
+    face = OtherOfTwo(ef, face);
     corner = this->FindCorner(v, face);
   }
   return static_cast<Index>(faces.size()) == K;

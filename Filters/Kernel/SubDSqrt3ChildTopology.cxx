@@ -52,7 +52,7 @@ struct Spoke
   {
     const IndexSpan fv = topo.GetFaceVertices(f);
     const IndexSpan fe = topo.GetFaceEdges(f);
-    const Index j = fv[0] == v ? 0 : (fv[1] == v ? 1 : 2);
+    const Index j = PlaceInTriangle(fv.begin(), v);
     this->Corner = topo.GetFaceOffset(f) + j;
     this->OtherEdge = fe[j] == e ? fe[(j + 2) % 3] : fe[j];
   }

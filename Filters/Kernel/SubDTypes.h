@@ -144,6 +144,21 @@ struct IndexSpan
   bool empty() const { return Size == 0; }
 };
 
+/// The entry of a two-entry span that is not `one` (one of them): the other face of a
+/// two-faced edge, the other end of an edge. Without a branch, since which of the two `one`
+/// is changes from item to item at random: a branch on it mispredicts every other time.
+inline Index OtherOfTwo(IndexSpan two, Index one)
+{
+  return two[0] ^ two[1] ^ one;
+}
+
+/// The place (0, 1 or 2) of `x` among a triangle's three entries (x must be one of them),
+/// without a branch (see OtherOfTwo).
+inline Index PlaceInTriangle(const Index* three, Index x)
+{
+  return static_cast<Index>(three[1] == x) + 2 * static_cast<Index>(three[2] == x);
+}
+
 /// How the vertices of an open mesh's boundary are treated. The meanings are OpenSubdiv's
 /// `Sdc::Options::VtxBoundaryInterpolation`, so results can be compared with it exactly:
 /// - None: boundary edges still follow the boundary curve rule, but every face touching a

@@ -835,3 +835,16 @@ TEST(FaceBlocks, TrianglesInPlaceInElementOrderAndCountsChecked)
   }
   EXPECT_EQ(subd::EmitTrianglesInPlace(0, subd::SerialFor, count, write).Offsets.size(), 1u);
 }
+
+// The branch-free lookups the rules use on edges' ends and faces and triangles' corners.
+TEST(MeshTopology, BranchFreeLookupsFindTheOtherEntryAndThePlace)
+{
+  const subd::Index pair[2] = { 7, 123456 };
+  EXPECT_EQ(subd::OtherOfTwo(subd::IndexSpan{ pair, 2 }, 7), 123456);
+  EXPECT_EQ(subd::OtherOfTwo(subd::IndexSpan{ pair, 2 }, 123456), 7);
+  const subd::Index triangle[3] = { 40, 0, 2147483647 };
+  for (subd::Index place = 0; place < 3; ++place)
+  {
+    EXPECT_EQ(subd::PlaceInTriangle(triangle, triangle[place]), place);
+  }
+}
