@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <mutex>
 #include <numeric>
 #include <stdexcept>
 #include <utility>
@@ -68,18 +67,18 @@ void ForEachBlockPart(const ParallelFor& parallelFor, const std::vector<size_t>&
 EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelFor,
   const std::function<void(Index begin, Index end, FaceBlock& block)>& write)
 {
-  // Each range's block, keyed by its first element: sorted afterwards, so the ranges the
-  // ParallelFor chose do not matter.
-  std::vector<std::pair<Index, FaceBlock>> written;
-  std::mutex writtenMutex;
-  parallelFor(0, numElements, [&](Index begin, Index end) {
-    FaceBlock block;
-    write(begin, end, block);
-    std::lock_guard<std::mutex> lock(writtenMutex);
-    written.emplace_back(begin, std::move(block));
+  // A fixed number of ranges, not the ParallelFor's: its ranges are many small ones (its
+  // grain), whose growing blocks churned through the C library's per-thread arenas, which
+  // kept the freed pieces (Doo-Sabin, bunny level 3, 2 threads: 34 MB more peak than on one
+  // thread). A few large blocks come from the system and go back to it (AllocateLargeBlock).
+  const Index numRanges = std::max<Index>(1, std::min<Index>(numElements, 64));
+  std::vector<std::pair<Index, FaceBlock>> written(static_cast<size_t>(numRanges));
+  ForEachBlock(numRanges, parallelFor, [&](Index r) {
+    const Index begin = static_cast<Index>(static_cast<std::int64_t>(numElements) * r / numRanges);
+    const Index end = static_cast<Index>(static_cast<std::int64_t>(numElements) * (r + 1) / numRanges);
+    written[static_cast<size_t>(r)].first = begin;
+    write(begin, end, written[static_cast<size_t>(r)].second);
   });
-  std::sort(written.begin(), written.end(),
-    [](const std::pair<Index, FaceBlock>& a, const std::pair<Index, FaceBlock>& b) { return a.first < b.first; });
 
   std::vector<size_t> firstFace(written.size() + 1, 0), firstCorner(written.size() + 1, 0);
   for (size_t b = 0; b < written.size(); ++b)

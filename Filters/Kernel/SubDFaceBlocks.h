@@ -3,10 +3,10 @@
 // split (welded corners, one V-face per sector, vanishing faces). (Splits that can, and
 // write triangles only, write them in place: EmitTrianglesInPlace, for sqrt(3).)
 //
-// The parent's elements (numbered in the order their faces must come) are cut into ranges,
-// each range writes its faces into a block of its own, and the blocks are then concatenated
-// in element order, again in parallel. How the ranges are cut (the number of threads) does
-// not change the result. Writing into blocks costs a copy of the faces, which is small next
+// The parent's elements (numbered in the order their faces must come) are cut into at most
+// 64 fixed ranges, each range writes its faces into a block of its own, and the blocks are
+// then concatenated in element order, again in parallel. The number of threads does not
+// change the result. Writing into blocks costs a copy of the faces, which is small next
 // to working out what they are, and spares a counting pass that would do that work twice.
 #ifndef SubDFaceBlocks_h
 #define SubDFaceBlocks_h
@@ -52,8 +52,8 @@ struct EmittedFaces
   LevelArray<std::uint8_t> Holes;
 };
 
-/// Runs write(begin, end, block) over ranges covering [0, numElements), each writing the
-/// faces of its elements in order, and concatenates the blocks in element order.
+/// Runs write(begin, end, block) over at most 64 ranges covering [0, numElements), each
+/// writing the faces of its elements in order, and concatenates the blocks in element order.
 SUBDKERNEL_EXPORT EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelFor,
   const std::function<void(Index begin, Index end, FaceBlock& block)>& write);
 

@@ -14,6 +14,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 #include <stdexcept>
 
@@ -846,5 +847,63 @@ TEST(MeshTopology, BranchFreeLookupsFindTheOtherEntryAndThePlace)
   for (subd::Index place = 0; place < 3; ++place)
   {
     EXPECT_EQ(subd::PlaceInTriangle(triangle, triangle[place]), place);
+  }
+}
+
+// Faces written in blocks (the dual split's): element i gives a face of 3 + i % 4 corners, or
+// none when i % 5 == 0. The faces come in element order whatever the threads, and the
+// elements are cut into at most 64 ranges however finely the ParallelFor cuts its range: its
+// many small blocks churned through the C library's per-thread arenas, which kept the pieces.
+TEST(FaceBlocks, FacesInElementOrderFromFewRanges)
+{
+  const Index numElements = 20000;
+  std::vector<Index> expectedVertices, expectedOffsets{ 0 }, expectedOrigins;
+  for (Index i = 0; i < numElements; ++i)
+  {
+    if (i % 5 == 0)
+    {
+      continue;
+    }
+    for (Index k = 0; k < 3 + i % 4; ++k)
+    {
+      expectedVertices.push_back(i + k);
+    }
+    expectedOffsets.push_back(static_cast<Index>(expectedVertices.size()));
+    expectedOrigins.push_back(i);
+  }
+  const subd::ParallelFor fine = [](Index begin, Index end, const subd::RangeTask& task) {
+    for (Index b = begin; b < end; b += 10)
+    {
+      task(b, std::min(end, b + 10));
+    }
+  };
+  for (const subd::ParallelFor& parallelFor :
+    { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor), fine })
+  {
+    std::atomic<int> ranges{ 0 };
+    const subd::EmittedFaces faces =
+      subd::EmitFacesInParallel(numElements, parallelFor, [&](Index begin, Index end, subd::FaceBlock& block) {
+        ++ranges;
+        for (Index i = begin; i < end; ++i)
+        {
+          if (i % 5 == 0)
+          {
+            continue;
+          }
+          for (Index k = 0; k < 3 + i % 4; ++k)
+          {
+            block.Vertices.push_back(i + k);
+          }
+          block.EndFace(i, static_cast<std::uint8_t>(i % 2));
+        }
+      });
+    EXPECT_LE(ranges.load(), 64);
+    ASSERT_EQ(std::vector<Index>(faces.Vertices.begin(), faces.Vertices.end()), expectedVertices);
+    ASSERT_EQ(std::vector<Index>(faces.Offsets.begin(), faces.Offsets.end()), expectedOffsets);
+    ASSERT_EQ(std::vector<Index>(faces.Origins.begin(), faces.Origins.end()), expectedOrigins);
+    for (size_t f = 0; f < expectedOrigins.size(); ++f)
+    {
+      ASSERT_EQ(faces.Holes[f], expectedOrigins[f] % 2);
+    }
   }
 }
