@@ -240,45 +240,35 @@ struct CornerNeighbours
   alignas(16) Index Entering[MaxCorners];
   Index N = 0;
 
-  // Bit j set where lanes[j] == value, for j < N.
-  std::uint32_t Matching(const Index* lanes, Index value) const
+  // Bit j set where lanes[j] == value (Matching) or lanes[j] > value (Above), for j < N (the
+  // padding, InvalidIndex, matches no vertex and is below any).
+  std::uint32_t Matching(const Index* lanes, Index value) const { return this->Mask<true>(lanes, value); }
+  std::uint32_t Above(const Index* lanes, Index value) const { return this->Mask<false>(lanes, value); }
+  template <bool equal>
+  std::uint32_t Mask(const Index* lanes, Index value) const
   {
 #if defined(__SSE2__)
     if (this->N <= 8)
     {
       const __m128i wanted = _mm_set1_epi32(value);
-      const __m128i low = _mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(lanes)), wanted);
-      const __m128i high = _mm_cmpeq_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(lanes + 4)), wanted);
-      return static_cast<std::uint32_t>(
-        _mm_movemask_ps(_mm_castsi128_ps(low)) | _mm_movemask_ps(_mm_castsi128_ps(high)) << 4);
+      auto fourBits = [&wanted](const Index* four) {
+        const __m128i x = _mm_load_si128(reinterpret_cast<const __m128i*>(four));
+        if constexpr (equal)
+        {
+          return _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(x, wanted)));
+        }
+        else
+        {
+          return _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpgt_epi32(x, wanted)));
+        }
+      };
+      return static_cast<std::uint32_t>(fourBits(lanes) | fourBits(lanes + 4) << 4);
     }
 #endif
     std::uint32_t mask = 0;
     for (Index j = 0; j < this->N; ++j)
     {
-      mask |= static_cast<std::uint32_t>(lanes[j] == value) << j;
-    }
-    return mask;
-  }
-
-  // Bit j set where lanes[j] > value, for j < N (the padding, InvalidIndex, is below any
-  // vertex).
-  std::uint32_t Above(const Index* lanes, Index value) const
-  {
-#if defined(__SSE2__)
-    if (this->N <= 8)
-    {
-      const __m128i bound = _mm_set1_epi32(value);
-      const __m128i low = _mm_cmpgt_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(lanes)), bound);
-      const __m128i high = _mm_cmpgt_epi32(_mm_load_si128(reinterpret_cast<const __m128i*>(lanes + 4)), bound);
-      return static_cast<std::uint32_t>(
-        _mm_movemask_ps(_mm_castsi128_ps(low)) | _mm_movemask_ps(_mm_castsi128_ps(high)) << 4);
-    }
-#endif
-    std::uint32_t mask = 0;
-    for (Index j = 0; j < this->N; ++j)
-    {
-      mask |= static_cast<std::uint32_t>(lanes[j] > value) << j;
+      mask |= static_cast<std::uint32_t>(equal ? lanes[j] == value : lanes[j] > value) << j;
     }
     return mask;
   }
