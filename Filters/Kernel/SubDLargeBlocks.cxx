@@ -59,9 +59,9 @@ bool UsesHugePages(std::size_t bytes)
 
 #if SUBD_MAP_LARGE_BLOCKS
 // A few freed blocks, still mapped, for the next requests: a fresh mapping costs a page
-// fault per 4 KiB page written (on the benchmark VM a third of a small refinement's time,
-// the base mesh's topology and scratch freed as the output is allocated), a kept one none
-// for the pages it already has. Blocks are kept only while the large blocks in use stay
+// fault per 4 KiB page written (about a third of a small refinement's time on the benchmark
+// VM), a kept one none for the pages it already has, so that the scratch a small refinement
+// frees holds its next arrays. Blocks are kept only while the large blocks in use stay
 // under KeepWhileInUseBelow, and the first request beyond that gives them all back: a large
 // refinement's peak never holds a kept block, and a process holds at most KeptBytesAtMost
 // it does not use.

@@ -11,6 +11,7 @@
 #include "SubDParallel.h"
 #include "SubDTypes.h"
 
+#include <algorithm>
 #include <atomic>
 #include <vector>
 
@@ -67,10 +68,16 @@ FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offse
   const ParallelFor& parallelFor)
 {
   FaceScreening s;
+  // A face whose corners are not within [offsets[0], offsets[numFaces]) (offsets that go
+  // down: a corrupt cell array) is dropped unread.
+  const IdType first = offsets[0], last = std::max(offsets[0], offsets[numFaces]);
+  auto withinCorners = [first, last](IdType begin, IdType end) {
+    return first <= begin && begin <= end && end <= last;
+  };
   // Most meshes need no repair: every face checked and copied in one pass on threads (the
   // loop below appends one face at a time); the copy is dropped if a face needs repair.
   s.Offsets.resize(static_cast<size_t>(numFaces) + 1);
-  s.Vertices.resize(static_cast<size_t>(offsets[numFaces] - offsets[0]));
+  s.Vertices.resize(static_cast<size_t>(last - first));
   s.KeptFaces.resize(static_cast<size_t>(numFaces));
   s.Offsets[0] = 0;
   std::atomic<bool> allClean{ true };
@@ -78,7 +85,11 @@ FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offse
     bool clean = true;
     for (Index f = begin; f < end && clean; ++f)
     {
-      clean = IsCleanFace(numVertices, vertices, offsets[f], offsets[f + 1]);
+      clean = withinCorners(offsets[f], offsets[f + 1]) && IsCleanFace(numVertices, vertices, offsets[f], offsets[f + 1]);
+      if (!clean)
+      {
+        break;
+      }
       s.Offsets[f + 1] = static_cast<Index>(offsets[f + 1] - offsets[0]);
       for (IdType k = offsets[f]; k < offsets[f + 1]; ++k)
       {
@@ -97,12 +108,21 @@ FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offse
   }
   s = FaceScreening();
   s.Offsets.reserve(static_cast<size_t>(numFaces) + 1);
-  s.Vertices.reserve(static_cast<size_t>(offsets[numFaces] - offsets[0]));
+  s.Vertices.reserve(static_cast<size_t>(last - first));
   s.KeptFaces.reserve(static_cast<size_t>(numFaces));
   std::vector<Index> scratch;
   for (Index f = 0; f < numFaces; ++f)
   {
     const IdType begin = offsets[f], end = offsets[f + 1];
+    if (!withinCorners(begin, end))
+    {
+      if (s.NumDropped == 0)
+      {
+        s.FirstDroppedFace = f;
+      }
+      ++s.NumDropped;
+      continue;
+    }
     if (end - begin == 3)
     {
       // Most faces: a triangle of three distinct vertices in range, kept as it is.

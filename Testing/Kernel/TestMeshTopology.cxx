@@ -485,6 +485,19 @@ TEST(MeshValidation, CollapsesDropsAndReports)
   EXPECT_EQ(r.FirstOutOfRangeFace, 0);
   EXPECT_EQ(r.FirstOutOfRangeId, 7);
   EXPECT_TRUE(r.KeptFaces.empty());
+
+  // Offsets that go down (a corrupt cell array): the faces whose corners leave the array's
+  // range are dropped unread, on threads or not.
+  const std::vector<long long> corrupt{ 0, 3, 100, 6, 9 };
+  const std::vector<long long> corners{ 0, 1, 2, 1, 2, 3, 2, 3, 0 };
+  for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor) })
+  {
+    const subd::FaceScreening c = subd::ScreenFaces(4, 4, corrupt.data(), corners.data(), parallelFor);
+    EXPECT_EQ(c.KeptFaces, (subd::IndexArray{ 0, 3 }));
+    EXPECT_EQ(c.NumDropped, 2);
+    EXPECT_EQ(c.FirstDroppedFace, 1);
+    EXPECT_EQ(c.Vertices, (subd::IndexArray{ 0, 1, 2, 2, 3, 0 }));
+  }
 }
 
 // A mesh needing no repair is copied as it is (on threads); one bad face among clean ones, or
