@@ -1,12 +1,12 @@
 // Benchmark (a program, not a test): Catmull-Clark levels 1..4 on a real mesh, SubD against
 // OpenSubdiv's Far (TopologyRefinerFactory + RefineUniform + PrimvarRefinerReal<double>,
 // i.e. topology and interpolation) measured in the same run, their runs interleaved. Each
-// measurement runs in a forked child so its peak RSS is its own. Prints seconds, output faces per second, peak
-// RSS, the ratio OpenSubdiv time / SubD time, and for the filter the peak RSS over the
-// output's bytes and the time over the bandwidth bound (writing the output once), also with
-// the filter's LowMemory option (the finest level's parent topology not kept). The last
-// row of a level re-applies the cached stencils after the points moved (the explorer's and
-// an animation's case: the fastest of 5 frames), in output points per second.
+// measurement runs in a forked child so its peak RSS is its own. Prints seconds, output
+// faces per second, peak RSS, the ratio OpenSubdiv time / SubD time, and for the filter the
+// peak RSS over the output's bytes and the time over the bandwidth bound (writing the output
+// once), also with the filter's LowMemory option (the finest level's parent topology not
+// kept). The last row of a level re-applies the cached stencils after the points moved (the
+// explorer's and an animation's case: the fastest of 5 frames), in output points per second.
 //
 //   usage: BenchCatmullClark mesh.off [maxLevel=4] [repeats=3]
 #include "SubDRefiner.h"
