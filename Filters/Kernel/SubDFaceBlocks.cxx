@@ -26,6 +26,23 @@ void FaceBlock::EndFaceWithoutRepeats(size_t first, Index origin, std::uint8_t h
 
 namespace
 {
+// [0, numElements) cut into at most maxRanges fixed ranges (not a ParallelFor's, which may
+// cut differently each call and, under its grain, into many small ones).
+struct FixedRanges
+{
+  FixedRanges(Index numElements, Index maxRanges)
+    : NumElements(numElements)
+    , NumRanges(std::max<Index>(1, std::min<Index>(numElements, maxRanges)))
+  {
+  }
+  Index Begin(Index r) const
+  {
+    return static_cast<Index>(static_cast<std::int64_t>(this->NumElements) * r / this->NumRanges);
+  }
+  Index NumElements;
+  Index NumRanges;
+};
+
 std::ptrdiff_t Offset(size_t i)
 {
   return static_cast<std::ptrdiff_t>(i);
@@ -67,24 +84,20 @@ void ForEachBlockPart(const ParallelFor& parallelFor, const std::vector<size_t>&
 EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelFor,
   const std::function<void(Index begin, Index end, FaceBlock& block)>& write)
 {
-  // A fixed number of ranges, not the ParallelFor's: its ranges are many small ones (its
-  // grain), whose growing blocks churned through the C library's per-thread arenas, which
-  // kept the freed pieces (Doo-Sabin, bunny level 3, 2 threads: 34 MB more peak than on one
-  // thread). A few large blocks come from the system and go back to it (AllocateLargeBlock).
-  const Index numRanges = std::max<Index>(1, std::min<Index>(numElements, 64));
-  std::vector<std::pair<Index, FaceBlock>> written(static_cast<size_t>(numRanges));
-  ForEachBlock(numRanges, parallelFor, [&](Index r) {
-    const Index begin = static_cast<Index>(static_cast<std::int64_t>(numElements) * r / numRanges);
-    const Index end = static_cast<Index>(static_cast<std::int64_t>(numElements) * (r + 1) / numRanges);
-    written[static_cast<size_t>(r)].first = begin;
-    write(begin, end, written[static_cast<size_t>(r)].second);
-  });
+  // Fixed ranges, not the ParallelFor's: its ranges are many small ones (its grain), whose
+  // growing blocks churned through the C library's per-thread arenas, which kept the freed
+  // pieces (Doo-Sabin, bunny level 3, 2 threads: 34 MB more peak than on one thread). A few
+  // large blocks come from the system and go back to it (AllocateLargeBlock).
+  const FixedRanges ranges(numElements, 64);
+  std::vector<FaceBlock> written(static_cast<size_t>(ranges.NumRanges));
+  ForEachBlock(ranges.NumRanges, parallelFor,
+    [&](Index r) { write(ranges.Begin(r), ranges.Begin(r + 1), written[static_cast<size_t>(r)]); });
 
   std::vector<size_t> firstFace(written.size() + 1, 0), firstCorner(written.size() + 1, 0);
   for (size_t b = 0; b < written.size(); ++b)
   {
-    firstFace[b + 1] = firstFace[b] + written[b].second.Ends.size();
-    firstCorner[b + 1] = firstCorner[b] + written[b].second.Vertices.size();
+    firstFace[b + 1] = firstFace[b] + written[b].Ends.size();
+    firstCorner[b + 1] = firstCorner[b] + written[b].Vertices.size();
   }
   EmittedFaces faces;
   faces.Offsets.resize(firstFace.back() + 1);
@@ -93,7 +106,7 @@ EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelF
   faces.Origins.resize(firstFace.back());
   faces.Holes.resize(firstFace.back());
   ForEachBlockPart(parallelFor, firstFace, [&](size_t b, size_t from, size_t to, size_t at) {
-    const FaceBlock& block = written[b].second;
+    const FaceBlock& block = written[b];
     const Index base = static_cast<Index>(firstCorner[b]);
     for (size_t i = from; i < to; ++i)
     {
@@ -102,15 +115,15 @@ EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelF
     std::copy(block.Origins.begin() + Offset(from), block.Origins.begin() + Offset(to), faces.Origins.begin() + Offset(at));
     std::copy(block.Holes.begin() + Offset(from), block.Holes.begin() + Offset(to), faces.Holes.begin() + Offset(at));
   }, [&written](size_t b) {
-    FaceBlock& block = written[b].second;
+    FaceBlock& block = written[b];
     IndexArray().swap(block.Ends);
     IndexArray().swap(block.Origins);
     LevelArray<std::uint8_t>().swap(block.Holes);
   });
   ForEachBlockPart(parallelFor, firstCorner, [&](size_t b, size_t from, size_t to, size_t at) {
-    const IndexArray& vertices = written[b].second.Vertices;
+    const IndexArray& vertices = written[b].Vertices;
     std::copy(vertices.begin() + Offset(from), vertices.begin() + Offset(to), faces.Vertices.begin() + Offset(at));
-  }, [&written](size_t b) { IndexArray().swap(written[b].second.Vertices); });
+  }, [&written](size_t b) { IndexArray().swap(written[b].Vertices); });
   return faces;
 }
 
@@ -118,15 +131,11 @@ EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallel
   const std::function<Index(Index begin, Index end)>& count,
   const std::function<void(Index begin, Index end, TriangleCursor& cursor)>& write)
 {
-  // Fixed ranges, not the ParallelFor's (which may cut differently each call): the counts
-  // and the writes must cover the same elements.
-  const Index numRanges = std::max<Index>(1, std::min<Index>(numElements, 1024));
-  auto rangeBegin = [numElements, numRanges](Index r) {
-    return static_cast<Index>(static_cast<std::int64_t>(numElements) * r / numRanges);
-  };
-  std::vector<size_t> firstTriangle(static_cast<size_t>(numRanges) + 1, 0);
-  ForEachBlock(numRanges, parallelFor,
-    [&](Index r) { firstTriangle[r + 1] = static_cast<size_t>(count(rangeBegin(r), rangeBegin(r + 1))); });
+  // Fixed ranges: the counts and the writes must cover the same elements.
+  const FixedRanges ranges(numElements, 1024);
+  std::vector<size_t> firstTriangle(static_cast<size_t>(ranges.NumRanges) + 1, 0);
+  ForEachBlock(ranges.NumRanges, parallelFor,
+    [&](Index r) { firstTriangle[r + 1] = static_cast<size_t>(count(ranges.Begin(r), ranges.Begin(r + 1))); });
   std::partial_sum(firstTriangle.begin(), firstTriangle.end(), firstTriangle.begin());
   const size_t numTriangles = firstTriangle.back();
   EmittedFaces faces;
@@ -134,11 +143,11 @@ EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallel
   faces.Origins.resize(numTriangles);
   faces.Holes.resize(numTriangles);
   std::atomic<bool> miscounted{ false };
-  ForEachBlock(numRanges, parallelFor, [&](Index r) {
+  ForEachBlock(ranges.NumRanges, parallelFor, [&](Index r) {
     const size_t first = firstTriangle[r], last = firstTriangle[r + 1];
     TriangleCursor cursor{ faces.Vertices.data() + 3 * first, faces.Origins.data() + first, faces.Holes.data() + first,
       faces.Vertices.data() + 3 * last };
-    write(rangeBegin(r), rangeBegin(r + 1), cursor);
+    write(ranges.Begin(r), ranges.Begin(r + 1), cursor);
     if (cursor.Overflowed || cursor.Vertices != cursor.End)
     {
       miscounted = true;

@@ -85,16 +85,20 @@ public:
     {
       return nullptr;
     }
+    // A block that holds the bytes beats one that does not; among those that do, the
+    // smallest; among those that do not, the largest.
+    auto better = [bytes](std::size_t a, std::size_t b) {
+      const bool aHolds = a >= bytes, bHolds = b >= bytes;
+      if (aHolds != bHolds)
+      {
+        return aHolds;
+      }
+      return aHolds ? a < b : a > b;
+    };
     int best = 0;
     for (int i = 1; i < this->Count; ++i)
     {
-      const bool holds = this->Blocks[i].Bytes >= bytes, bestHolds = this->Blocks[best].Bytes >= bytes;
-      if (holds != bestHolds ? holds
-                             : (holds ? this->Blocks[i].Bytes < this->Blocks[best].Bytes
-                                      : this->Blocks[i].Bytes > this->Blocks[best].Bytes))
-      {
-        best = i;
-      }
+      best = better(this->Blocks[i].Bytes, this->Blocks[best].Bytes) ? i : best;
     }
     const Block block = this->Blocks[best];
     this->Blocks[best] = this->Blocks[--this->Count];

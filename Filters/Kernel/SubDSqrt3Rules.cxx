@@ -469,12 +469,12 @@ private:
   // alone (found without the face offsets): the finest split runs without the faces' edges.
   void OrientedEnds(Index e, Index f, Index& a, Index& b) const
   {
-    // Without branches (which corner, which way: coin tosses from edge to edge): e runs
-    // forward in f when the corner after ev[0]'s is ev[1].
+    // Without branches (which corner, which way: coin tosses from edge to edge, see
+    // OtherOfTwo): e runs forward in f when the corner after ev[0]'s is ev[1].
     static constexpr Index nextCorner[3] = { 1, 2, 0 };
     const Index* ev = this->Topo.GetEdgeVertices(e);
     const Index* fv = this->Topo.GetTriangleVertices(f);
-    const Index i = Index(fv[1] == ev[0]) + 2 * Index(fv[2] == ev[0]);
+    const Index i = PlaceInTriangle(fv, ev[0]);
     const Index backward = fv[nextCorner[i]] != ev[1];
     a = ev[backward];
     b = ev[1 - backward];
