@@ -4,7 +4,6 @@
 #include <atomic>
 #include <numeric>
 #include <stdexcept>
-#include <utility>
 
 namespace subd
 {
