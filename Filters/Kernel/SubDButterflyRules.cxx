@@ -35,6 +35,41 @@ ButterflyWeightTable::ButterflyWeightTable()
   }
 }
 
+std::shared_ptr<const IndexArray> MakeTriangleFaceAcross(const MeshTopology& topo, const ParallelFor& parallelFor)
+{
+  // Filled edge by edge: an edge's first face is mostly the face that numbered it, so only
+  // the second face is a scattered read. Each triangle corner's edge is one edge's: every
+  // entry is written here, none twice, on threads.
+  auto faceAcross = std::make_shared<IndexArray>(topo.GetFaceVertexArray().size());
+  Index* across = faceAcross->data();
+  parallelFor(0, topo.GetNumEdges(), [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e)
+    {
+      const IndexSpan ef = topo.GetEdgeFaces(e);
+      if (ef.size() != 2 || ef[0] == ef[1])
+      {
+        for (Index f : ef) // nothing across a boundary or non-manifold edge
+        {
+          const Index* fe = topo.GetTriangleEdges(f);
+          for (Index i = 0; i < 3; ++i)
+          {
+            if (fe[i] == e)
+            {
+              across[MeshTopology::GetFirstTriangleCorner(f) + i] = InvalidIndex;
+            }
+          }
+        }
+        continue;
+      }
+      const Index position[2] = { PlaceInTriangle(topo.GetTriangleEdges(ef[0]), e),
+        PlaceInTriangle(topo.GetTriangleEdges(ef[1]), e) };
+      across[MeshTopology::GetFirstTriangleCorner(ef[0]) + position[0]] = 4 * ef[1] + position[1];
+      across[MeshTopology::GetFirstTriangleCorner(ef[1]) + position[1]] = 4 * ef[0] + position[0];
+    }
+  });
+  return faceAcross;
+}
+
 StencilTable BuildButterflyStencils(const Level& parent, double tension, const ParallelFor& parallelFor)
 {
   const MeshTopology& topo = parent.Topology;
@@ -96,34 +131,7 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
       }
     }
   });
-  // The vertex across each triangle edge, filled edge by edge: an edge's first face is
-  // mostly the face that numbered it, so only the second face is a scattered read. Each
-  // triangle edge is one edge's: every entry is written here, none twice, on threads.
-  this->Across.resize(topo.GetFaceVertexArray().size());
-  parallelFor(0, topo.GetNumEdges(), [&](Index begin, Index end) {
-    for (Index e = begin; e < end; ++e)
-    {
-      const IndexSpan ef = topo.GetEdgeFaces(e);
-      if (ef.size() != 2 || topo.GetEdgeTag(e).NonManifold)
-      {
-        for (Index f : ef) // nothing across a boundary or non-manifold edge
-        {
-          this->Across[static_cast<Index>(MeshTopology::GetFirstTriangleCorner(f)) + this->TriangleCornerOfEdge(f, e)] =
-            InvalidIndex;
-        }
-        continue;
-      }
-      Index third[2], corner[2];
-      for (int side = 0; side < 2; ++side)
-      {
-        const Index position = this->TriangleCornerOfEdge(ef[side], e);
-        corner[side] = static_cast<Index>(MeshTopology::GetFirstTriangleCorner(ef[side])) + position;
-        third[side] = this->Topology.GetTriangleVertices(ef[side])[position == 0 ? 2 : position - 1];
-      }
-      this->Across[corner[0]] = third[1];
-      this->Across[corner[1]] = third[0];
-    }
-  });
+  this->FaceAcross = MakeTriangleFaceAcross(topo, parallelFor);
   // A row holds at most the crease rule's 4 sources and the smooth rule's: 10 for the
   // butterfly, K + 1 for each extraordinary end.
   this->RowBound = std::max<Index>(16, 6 + 2 * this->Topology.GetMaxValence());
@@ -137,7 +145,7 @@ Index ButterflyRowWriter::AcrossEdge(Index face, Index x, Index b) const
   const Index* fv = this->Topology.GetTriangleVertices(face);
   const Index ix = PlaceInTriangle(fv, x);
   const Index corner = fv[(ix + 1) % 3] == b ? ix : (ix + 2) % 3;
-  return this->Across[MeshTopology::GetFirstTriangleCorner(face) + corner];
+  return this->VertexAcross(MeshTopology::GetFirstTriangleCorner(face) + corner);
 }
 
 // Where `first` is in v's ring (K, the valence, when it is not there).
@@ -330,7 +338,7 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
     return 0;
   }
   // AddSmoothRule's butterfly, entry by entry: with nothing sharp, every wing is across an
-  // edge of one of the two triangles (Across) and every tip in its end's ring.
+  // edge of one of the two triangles (FaceAcross) and every tip in its end's ring.
   const double w = this->Tension;
   Index b[2], wings[2][2];
   for (int side = 0; side < 2; ++side)
@@ -341,11 +349,11 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
     // Corner `corner` starts e; the triangle's other edges start at `next` (from the end of
     // e) and `previous` (to its start).
     const Index* fv = this->Topology.GetTriangleVertices(f);
-    const Index* across = this->Across.data() + MeshTopology::GetFirstTriangleCorner(f);
+    const Index first = MeshTopology::GetFirstTriangleCorner(f);
     const bool startsAtA0 = fv[corner] == a0;
     b[side] = fv[previous];
-    wings[side][0] = across[startsAtA0 ? previous : next]; // across (a0, b)
-    wings[side][1] = across[startsAtA0 ? next : previous]; // across (a1, b)
+    wings[side][0] = this->VertexAcross(first + (startsAtA0 ? previous : next)); // across (a0, b)
+    wings[side][1] = this->VertexAcross(first + (startsAtA0 ? next : previous)); // across (a1, b)
   }
   Index size = 0;
   auto add = [&](Index source, double weight) {

@@ -35,6 +35,7 @@
 #include "SubDParallel.h"
 #include "SubDStencilTable.h"
 
+#include <memory>
 #include <vector>
 
 namespace subd
@@ -77,15 +78,32 @@ void PutButterflyExtraordinaryStencil(Index vertex, Index K, Index start, const 
   put(vertex, 1.0 - sum);
 }
 
+/// Per corner i of each triangle of `topo`: 4 h + p for the triangle h across the triangle's
+/// edge i (from corner i to i + 1), that edge being h's edge p; InvalidIndex where the edge
+/// has not two distinct faces. The vertex across (the butterfly's wing) is h's corner p + 2
+/// (TriangleVertexAcross). Shared by ButterflyRowWriter and the rows written from its level
+/// two levels down (SubDGrandchildRows.h). Requires every face to be a triangle.
+SUBDKERNEL_EXPORT std::shared_ptr<const IndexArray> MakeTriangleFaceAcross(
+  const MeshTopology& topo, const ParallelFor& parallelFor);
+
+/// The vertex of `topo` across an edge, from its MakeTriangleFaceAcross entry `packed`
+/// (which must not be InvalidIndex): the corner of h not on h's edge p.
+inline Index TriangleVertexAcross(const MeshTopology& topo, Index packed)
+{
+  const Index p = packed % 4;
+  return topo.GetTriangleVertices(packed / 4)[p == 0 ? 2 : p - 1];
+}
+
 /// Requires every face of `parent` to be a triangle.
 SUBDKERNEL_EXPORT StencilTable BuildButterflyStencils(
   const Level& parent, double tension, const ParallelFor& parallelFor = SerialFor);
 
 /// The same rows written one at a time (SubDRowWriting.h), rows numbered like the triangle
 /// split's child points: edge points, then the vertex points (copies). Made once, in
-/// parallel, with the writer: the vertex across each triangle edge (the butterfly's wings),
-/// and the ordered rings of the vertices whose rules walk them (the extraordinary ones; all
-/// with tension, for the tips). Requires every face of `parent` to be a triangle.
+/// parallel, with the writer: the triangle across each triangle edge (MakeTriangleFaceAcross,
+/// for the butterfly's wings; GetFaceAcross shares it), and the ordered rings of the vertices
+/// whose rules walk them (the extraordinary ones; all with tension, for the tips). Requires
+/// every face of `parent` to be a triangle.
 class SUBDKERNEL_EXPORT ButterflyRowWriter
 {
 public:
@@ -102,13 +120,16 @@ public:
   /// edge with two triangles and no sharpness whose ends both have a smooth ring, one at
   /// least of valence 6 (the 8-point butterfly, or Zorin's stencil of the other end).
   bool IsSmoothRow(Index row) const;
+  /// The triangle across each corner's edge (MakeTriangleFaceAcross), for the rows written
+  /// two levels down from the same level.
+  const std::shared_ptr<const IndexArray>& GetFaceAcross() const { return this->FaceAcross; }
   /// Vertex points (copies of the parent's vertices), the edge points of the regular
   /// butterfly (RegularButterflyRow) and those of Zorin's stencil at an edge's one
   /// extraordinary end (OneExtraordinaryEnd); the other edge points are written.
   template <typename T>
   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
   /// Asks for the topology RegularButterflyRow reads for `row` (SubDRowWriting.h): its ends'
-  /// ring kinds and its two triangles' corners, edges and Across entries.
+  /// ring kinds and its two triangles' corners, edges and FaceAcross entries.
   template <typename T>
   void PrefetchRow(Index row, const T* parents, const T* children) const;
   /// The row of edge e when it is the regular butterfly, as WriteRow writes it (same sources,
@@ -160,6 +181,9 @@ private:
   Index RingStart(Index v, Index first) const;
   Index RingFrom(Index v, Index first, Index j) const;
   Index AcrossEdge(Index face, Index x, Index b) const;
+  /// The vertex across the edge of `corner` (a corner of a triangle whose edge there has two
+  /// faces).
+  Index VertexAcross(Index corner) const { return TriangleVertexAcross(this->Topology, (*this->FaceAcross)[corner]); }
   Index OtherCreaseNeighbour(Index v, Index other) const;
   void AddCreaseRule(Index e, double scale, Row& row) const;
   void AddSmoothRule(Index e, Row& row) const;
@@ -182,12 +206,12 @@ private:
   LevelArray<std::uint8_t> RingKinds;
   // The counter-clockwise neighbours of the vertices whose rules walk their ring (RingFrom:
   // the extraordinary vertices, and every vertex with a ring when the tips have weight);
-  // the butterfly's wings come from Across instead, so regular vertices store none.
+  // the butterfly's wings come from FaceAcross instead, so regular vertices store none.
   IndexArray RingOffsets;
   IndexArray RingNeighbours;
-  // Per corner of each triangle: the third vertex of the other triangle on the edge that
-  // starts at the corner, when that edge is manifold with two faces; else InvalidIndex.
-  IndexArray Across;
+  // Per corner of each triangle: the triangle across the edge that starts at the corner
+  // (MakeTriangleFaceAcross). Read only where that edge is manifold with two faces.
+  std::shared_ptr<const IndexArray> FaceAcross;
   ButterflyWeightTable ExtraordinaryWeights;
 };
 
@@ -210,7 +234,7 @@ inline void ButterflyRowWriter::PrefetchRow(Index row, const T*, const T*) const
   {
     PrefetchForRead(topo.GetTriangleVertices(f));
     PrefetchForRead(topo.GetTriangleEdges(f));
-    PrefetchForRead(this->Across.data() + MeshTopology::GetFirstTriangleCorner(f));
+    PrefetchForRead(this->FaceAcross->data() + MeshTopology::GetFirstTriangleCorner(f));
   }
   // The stored rings of a row half as far ahead, whose offsets were asked for above by then:
   // the extraordinary rows (most rows of a scanned mesh) walk them.

@@ -250,7 +250,7 @@ struct ButterflySmoothRows : ParentFromGrandparent<TriangleSplitShape>
     // A half of edge j (s = 0) or j - 1 (s = 2) at v_j: in the child at v_j of the face h
     // across, where the edge is h's edge p, run the other way: v_j is h's corner p + 1
     // (s = 0), or p (s = 2).
-    const Index packed = this->Tables->FaceAcross[MeshTopology::GetFirstTriangleCorner(g) + (s == 0 ? j : Previous(j))];
+    const Index packed = (*this->Tables->FaceAcross)[MeshTopology::GetFirstTriangleCorner(g) + (s == 0 ? j : Previous(j))];
     const Index h = packed / 4, p = packed % 4;
     this->GetChild(h, s == 0 ? Next(p) : p, across);
     slot = s == 0 ? 2 : 0;
@@ -269,7 +269,7 @@ struct ButterflySmoothRows : ParentFromGrandparent<TriangleSplitShape>
     {
       return topo.GetTriangleEdges(g)[Next(j)]; // m_{j+1}
     }
-    const Index packed = this->Tables->FaceAcross[MeshTopology::GetFirstTriangleCorner(g) + (s == 0 ? j : Previous(j))];
+    const Index packed = (*this->Tables->FaceAcross)[MeshTopology::GetFirstTriangleCorner(g) + (s == 0 ? j : Previous(j))];
     const Index* he = topo.GetTriangleEdges(packed / 4);
     const Index p = packed % 4;
     return he[s == 0 ? Next(p) : Previous(p)]; // h's other edge at v_j
@@ -278,7 +278,8 @@ struct ButterflySmoothRows : ParentFromGrandparent<TriangleSplitShape>
 
 // The rings of P's extraordinary interior vertices and the faces across its triangles'
 // edges (see ButterflyGrandparentTables).
-ButterflyGrandparentTables MakeButterflyGrandparentTables(const MeshTopology& topo, const ParallelFor& parallelFor)
+ButterflyGrandparentTables MakeButterflyGrandparentTables(
+  const MeshTopology& topo, const ParallelFor& parallelFor, const RowSource* grandparentRows)
 {
   ButterflyGrandparentTables tables;
   const Index numVertices = topo.GetNumVertices();
@@ -332,24 +333,11 @@ ButterflyGrandparentTables MakeButterflyGrandparentTables(const MeshTopology& to
       }
     }
   });
-  // Per corner i of each triangle g: the face h across g's edge i (from corner i), and that
-  // edge's place p in h, as 4 h + p.
-  tables.FaceAcross.assign(topo.GetFaceVertexArray().size(), InvalidIndex);
-  parallelFor(0, topo.GetNumFaces(), [&](Index begin, Index end) {
-    for (Index g = begin; g < end; ++g)
-    {
-      for (Index i = 0; i < 3; ++i)
-      {
-        const Index e = topo.GetTriangleEdges(g)[i];
-        const IndexSpan ef = topo.GetEdgeFaces(e);
-        if (ef.size() == 2 && ef[0] != ef[1])
-        {
-          const Index h = OtherOfTwo(ef, g);
-          tables.FaceAcross[MeshTopology::GetFirstTriangleCorner(g) + i] = 4 * h + topo.GetEdgePosition(h, e);
-        }
-      }
-    }
-  });
+  // P's own rows, when they are the butterfly's, have the triangles across P's edges.
+  const auto* writtenRows = dynamic_cast<const WrittenRows<ButterflyRowWriter>*>(grandparentRows);
+  tables.FaceAcross = writtenRows && &writtenRows->GetParent().Topology == &topo
+    ? writtenRows->GetWriter().GetFaceAcross()
+    : MakeTriangleFaceAcross(topo, parallelFor);
   return tables;
 }
 
@@ -450,8 +438,8 @@ void StoreRowsWithoutSmoothForm(const Writer& writer, Index first, std::vector<I
 }
 }
 
-GrandchildRows::GrandchildRows(
-  GrandchildScheme scheme, std::shared_ptr<const Level> grandparent, const ParallelFor& parallelFor)
+GrandchildRows::GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent,
+  const ParallelFor& parallelFor, const RowSource* grandparentRows)
   : Scheme(scheme)
   , Grandparent(std::move(grandparent))
 {
@@ -478,7 +466,7 @@ GrandchildRows::GrandchildRows(
   }
   if (scheme == GrandchildScheme::Butterfly)
   {
-    this->ButterflyTables = MakeButterflyGrandparentTables(topo, parallelFor);
+    this->ButterflyTables = MakeButterflyGrandparentTables(topo, parallelFor, grandparentRows);
     this->MaxRowSize = std::max<Index>(8, 1 + topo.GetMaxValence()); // the butterfly, or Zorin's stencil
   }
 }
@@ -513,8 +501,8 @@ bool EveryGrandchildRowIsSmooth(GrandchildScheme scheme, const Level& grandparen
 }
 
 GrandchildRows::GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent,
-  const Level& parent, const ParallelFor& parallelFor)
-  : GrandchildRows(scheme, std::move(grandparent), parallelFor)
+  const Level& parent, const ParallelFor& parallelFor, const RowSource* grandparentRows)
+  : GrandchildRows(scheme, std::move(grandparent), parallelFor, grandparentRows)
 {
   // The rows without a smooth form (creases, boundaries, corners, non-manifold points), from
   // the parent's own writer, in row order.

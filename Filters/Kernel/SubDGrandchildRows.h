@@ -80,21 +80,23 @@ struct ButterflyGrandparentTables
   IndexArray RingEdges;
   ButterflyWeightTable Weights;
   // Per corner i of each triangle of P: 4 h + p for the face h across its edge i, that edge
-  // being h's edge p (InvalidIndex where the edge has not two faces).
-  IndexArray FaceAcross;
+  // being h's edge p (MakeTriangleFaceAcross): P's own row writer's when it has one.
+  std::shared_ptr<const IndexArray> FaceAcross;
 };
 
 class SUBDKERNEL_EXPORT GrandchildRows final : public RowSource
 {
 public:
   /// `parent` must be the scheme's split of *grandparent (SplitQuads or SplitTriangles) with
-  /// its full topology; it is read here and not kept.
+  /// its full topology; it is read here and not kept. `grandparentRows`, when given, are the
+  /// rows written from the grandparent to the parent: tables they hold are shared, not made
+  /// again (the butterfly's triangles across P's edges).
   GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent, const Level& parent,
-    const ParallelFor& parallelFor = SerialFor);
+    const ParallelFor& parallelFor = SerialFor, const RowSource* grandparentRows = nullptr);
   /// Without the parent: for the schemes that WritesEveryRowFromGrandparent, and for the others
   /// when EveryGrandchildRowIsSmooth(scheme, *grandparent) (no row to store).
   GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Level> grandparent,
-    const ParallelFor& parallelFor = SerialFor);
+    const ParallelFor& parallelFor = SerialFor, const RowSource* grandparentRows = nullptr);
 
   Index GetNumParents() const override { return this->NumParents; }
   Index GetNumRows() const override { return this->NumRows; }

@@ -38,7 +38,9 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
     {
       StencilTable rows;
       Level child;
-      refined = scheme.RefineFromGrandparent(grandparent, current, depth, rows, child, out.FinestFaces);
+      // The last rows pushed are the grandparent's (it is kept for them).
+      refined = scheme.RefineFromGrandparent(
+        grandparent, current, depth, rows, child, out.FinestFaces, out.Stencils.back().GetSource());
       if (refined)
       {
         out.Stencils.push_back(std::move(rows));

@@ -114,6 +114,8 @@ public:
   Index GetNumParents() const override { return this->RowWriter.GetNumParents(); }
   Index GetNumRows() const override { return this->RowWriter.GetNumRows(); }
   std::vector<Index> GetBlockEnds() const override { return this->RowWriter.GetBlockEnds(); }
+  const Writer& GetWriter() const { return this->RowWriter; }
+  const Level& GetParent() const { return *this->Parent; }
 
 private:
   template <typename T>

@@ -33,7 +33,7 @@ std::shared_ptr<const RowSource> CatmullClarkScheme::MakeRowSource(std::shared_p
 }
 
 bool Scheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
-  StencilTable& rows, Level& child, LaterFaces& childFaces) const
+  StencilTable& rows, Level& child, LaterFaces& childFaces, const RowSource* grandparentRows) const
 {
   GrandchildScheme which;
   if (!this->GetGrandchildScheme(which))
@@ -42,8 +42,8 @@ bool Scheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Lev
   }
   const ParallelFor& parallelFor = this->GetParallelFor();
   auto grandchildRows = EveryGrandchildRowIsSmooth(which, *grandparent)
-    ? std::make_shared<GrandchildRows>(which, grandparent, parallelFor)
-    : std::make_shared<GrandchildRows>(which, grandparent, parent, parallelFor);
+    ? std::make_shared<GrandchildRows>(which, grandparent, parallelFor, grandparentRows)
+    : std::make_shared<GrandchildRows>(which, grandparent, parent, parallelFor, grandparentRows);
   if (depth == ChildTopology::FacesOnly)
   {
     parent = Level(); // the rows and the faces below come from the grandparent

@@ -80,10 +80,11 @@ public:
   /// `parent` is (full topology), so that `parent`'s topology need not be kept: it is
   /// released here. A faces-only child gets its tags but not its faces: `childFaces` makes
   /// them (from the grandparent, which the rows keep), so that a caller can first evaluate
-  /// the points and free its scratch. Returns false, changing nothing, for schemes that
-  /// cannot (those without GetGrandchildScheme).
+  /// the points and free its scratch. `grandparentRows`, if given, are the rows from
+  /// `grandparent` to `parent` (tables of theirs may be shared: GrandchildRows). Returns
+  /// false, changing nothing, for schemes that cannot (those without GetGrandchildScheme).
   bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
-    StencilTable& rows, Level& child, LaterFaces& childFaces) const;
+    StencilTable& rows, Level& child, LaterFaces& childFaces, const RowSource* grandparentRows = nullptr) const;
   /// True for the schemes whose RefineFromGrandparent can return true.
   bool RefinesFromGrandparent() const
   {

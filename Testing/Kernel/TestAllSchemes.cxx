@@ -5,6 +5,7 @@
 #include "SubDGrandchildRows.h"
 #include "SubDMemoryEstimate.h"
 #include "SubDRefiner.h"
+#include "SubDRowWriting.h"
 #include "SubDScheme.h"
 #include "SubDOracleSupport.h"
 #include "SubDTestMeshes.h"
@@ -287,6 +288,48 @@ TEST(ButterflyScheme, ExtraordinaryWeightsAndInterpolation)
         ASSERT_EQ(out[first + i], mesh.Points[i]) << mesh.Name;
     }
   }
+}
+
+// Each triangle corner's entry names the other triangle on the corner's edge and the edge's
+// place in it (the wing is that triangle's third corner), or nothing where the edge has not
+// two distinct faces.
+TEST(ButterflyScheme, FaceAcrossNamesTheOtherTriangleOfEachEdge)
+{
+  Index acrossCount = 0, invalidCount = 0;
+  for (const subdtest::TestMesh& mesh : subdtest::TriangleMeshes())
+  {
+    const subd::MeshTopology topo = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+    const auto across = subd::MakeTriangleFaceAcross(topo, subdtest::ThreeThreadFor);
+    ASSERT_EQ(across->size(), topo.GetFaceVertexArray().size()) << mesh.Name;
+    for (Index f = 0; f < topo.GetNumFaces(); ++f)
+    {
+      for (Index i = 0; i < 3; ++i)
+      {
+        const Index e = topo.GetTriangleEdges(f)[i];
+        const subd::IndexSpan ef = topo.GetEdgeFaces(e);
+        const Index packed = (*across)[3 * f + i];
+        if (ef.size() != 2 || ef[0] == ef[1])
+        {
+          EXPECT_EQ(packed, subd::InvalidIndex) << mesh.Name << " face " << f;
+          ++invalidCount;
+          continue;
+        }
+        ASSERT_NE(packed, subd::InvalidIndex) << mesh.Name << " face " << f;
+        const Index h = packed / 4, p = packed % 4;
+        EXPECT_EQ(h, ef[0] == f ? ef[1] : ef[0]) << mesh.Name << " face " << f;
+        ASSERT_LT(p, 3);
+        EXPECT_EQ(topo.GetTriangleEdges(h)[p], e) << mesh.Name << " face " << f;
+        const Index* ends = topo.GetEdgeVertices(e);
+        const Index wing = subd::TriangleVertexAcross(topo, packed);
+        EXPECT_TRUE(wing != ends[0] && wing != ends[1]) << mesh.Name << " face " << f;
+        EXPECT_NE(std::find(topo.GetTriangleVertices(h), topo.GetTriangleVertices(h) + 3, wing),
+          topo.GetTriangleVertices(h) + 3);
+        ++acrossCount;
+      }
+    }
+  }
+  EXPECT_GT(acrossCount, 0);
+  EXPECT_GT(invalidCount, 0); // the fixtures have boundaries
 }
 
 TEST(ButterflyScheme, RegularTenPointStencilWithTension)
@@ -781,6 +824,7 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
 {
   subd::Index storedRows = 0, writtenRows = 0;
   subd::Index withoutParent = 0; // grandparents whose rows were also written without the parent
+  subd::Index sharedTables = 0; // grandparents whose butterfly rows shared their tables
   int tagShifts = 0; // the FaceTagShifts SplitTwice gave, as bits
   for (int creases = 0; creases < 3; ++creases) // two crease methods, then no sharp feature
   {
@@ -800,6 +844,18 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
           EXPECT_EQ(rows.GetNumParents(), parent.Topology.GetNumVertices()) << what; // counted from the grandparent
           const subd::StencilTable expected = scheme.BuildStencils(parent);
           ExpectSameRows(rows, expected, 5, what);
+          // Given the grandparent's own rows, the same rows; the butterfly's share the
+          // triangles across the grandparent's edges with them.
+          const std::shared_ptr<const subd::RowSource> grandparentRows = scheme.MakeRowSource(grandparent);
+          ASSERT_TRUE(grandparentRows) << what;
+          const subd::GrandchildRows sharing(which, grandparent, parent, subdtest::ThreeThreadFor, grandparentRows.get());
+          ExpectSameRows(sharing, expected, 3, what + " sharing");
+          if (const auto* butterfly =
+                dynamic_cast<const subd::WrittenRows<subd::ButterflyRowWriter>*>(grandparentRows.get()))
+          {
+            EXPECT_EQ(butterfly->GetWriter().GetFaceAcross().use_count(), 2) << what;
+            ++sharedTables;
+          }
           storedRows += rows.GetNumStoredRows();
           writtenRows += rows.GetNumRows() - rows.GetNumStoredRows();
           // Where no row needs the parent, the rows made without it are the same rows.
@@ -847,6 +903,7 @@ void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const
   EXPECT_GT(storedRows, 0);
   EXPECT_GT(writtenRows, 2 * storedRows);
   EXPECT_GT(withoutParent, 0);
+  EXPECT_EQ(sharedTables > 0, which == subd::GrandchildScheme::Butterfly);
 }
 }
 
