@@ -95,11 +95,16 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
   this->RingOffsets[0] = 0;
   const bool hasSharpEdges = std::any_of(
     this->Parent.EdgeSharpness.begin(), this->Parent.EdgeSharpness.end(), [](float s) { return IsSharp(s); });
+  std::vector<std::uint8_t> onCrease(hasSharpEdges ? static_cast<size_t>(numVertices) : 0);
   parallelFor(0, numVertices, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v)
     {
       const VertexTag tag = topo.GetVertexTag(v);
       const Index sharpEdges = hasSharpEdges ? this->Parent.GetNumSharpEdges(v) : 0;
+      if (hasSharpEdges)
+      {
+        onCrease[v] = sharpEdges == 2;
+      }
       const Index valence =
         !tag.Boundary && !tag.NonManifold && sharpEdges < 2 ? topo.GetVertexFaces(v).size() : 0;
       this->RingValences[v] = valence;
@@ -109,6 +114,22 @@ ButterflyRowWriter::ButterflyRowWriter(const Level& parent, double tension, cons
     }
   });
   std::partial_sum(this->RingOffsets.begin(), this->RingOffsets.end(), this->RingOffsets.begin());
+  for (Index v = 0; v < static_cast<Index>(onCrease.size()); ++v)
+  {
+    if (onCrease[v])
+    {
+      CreaseVertex crease{ v, { InvalidIndex, InvalidIndex } };
+      Index k = 0;
+      for (Index e : topo.GetVertexEdges(v))
+      {
+        if (IsSharp(this->Parent.EdgeSharpness[e]))
+        {
+          crease.Neighbours[k++] = topo.GetOtherEndpoint(e, v);
+        }
+      }
+      this->CreaseVertices.push_back(crease);
+    }
+  }
   // Each stored ring counter-clockwise: the vertex after v in each face of its ordered fan.
   this->RingNeighbours.resize(static_cast<size_t>(this->RingOffsets.back()));
   parallelFor(0, numVertices, [&](Index begin, Index end) {
@@ -167,24 +188,18 @@ Index ButterflyRowWriter::RingFrom(Index v, Index first, Index j) const
 }
 
 // The neighbour of v along its crease other than `other`, when v has exactly two sharp
-// edges (boundary edges are sharp), or InvalidIndex.
+// edges (boundary edges are sharp), or InvalidIndex. Of two such neighbours, the later one
+// in v's list of edges.
 Index ButterflyRowWriter::OtherCreaseNeighbour(Index v, Index other) const
 {
-  Index found = InvalidIndex;
-  Index count = 0;
-  for (Index e : this->Topology.GetVertexEdges(v))
+  const auto found = std::lower_bound(this->CreaseVertices.begin(), this->CreaseVertices.end(), v,
+    [](const CreaseVertex& c, Index vertex) { return c.Vertex < vertex; });
+  if (found == this->CreaseVertices.end() || found->Vertex != v)
   {
-    if (IsSharp(this->Parent.EdgeSharpness[e]))
-    {
-      ++count;
-      const Index w = this->Topology.GetOtherEndpoint(e, v);
-      if (w != other)
-      {
-        found = w;
-      }
-    }
+    return InvalidIndex;
   }
-  return count == 2 ? found : InvalidIndex;
+  const Index* w = found->Neighbours;
+  return w[1] != other ? w[1] : (w[0] != other ? w[0] : InvalidIndex);
 }
 
 // The vertex across edge (x, b) of triangle `face` = (x, b, y), or its parallelogram

@@ -213,6 +213,16 @@ private:
   // (MakeTriangleFaceAcross). Read only where that edge is manifold with two faces.
   std::shared_ptr<const IndexArray> FaceAcross;
   ButterflyWeightTable ExtraordinaryWeights;
+  // The vertices with exactly two sharp edges (boundary edges are sharp), in increasing
+  // order, each with the other ends of those edges in the order of its edges: what the
+  // crease rule reads, kept so that the lists of edges around the vertices need not be
+  // (Scheme::GrandchildReadsVertexEdgeLists).
+  struct CreaseVertex
+  {
+    Index Vertex;
+    Index Neighbours[2];
+  };
+  std::vector<CreaseVertex> CreaseVertices;
 };
 
 template <typename T>

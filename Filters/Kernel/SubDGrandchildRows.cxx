@@ -71,7 +71,7 @@ struct ParentFromGrandparent
   {
     faces = scratch;
     edges = scratch + 2 * listSize;
-    WriteChildPointRelations(this->Split, this->ParentEdges.EdgeOfKey.data(), p, faces, scratch + listSize, edges, numFaces, numEdges);
+    WriteChildPointRelations(this->Split, this->ParentEdges, p, faces, scratch + listSize, edges, numFaces, numEdges);
   }
   // C's point p: its edges only (for rules that read no faces; P's lists of faces around its
   // vertices may then be freed: Scheme::GrandchildReadsVertexFaceLists).
@@ -79,7 +79,7 @@ struct ParentFromGrandparent
   {
     Index numFaces;
     edges = scratch;
-    WriteChildPointRelations(this->Split, this->ParentEdges.EdgeOfKey.data(), p, nullptr, nullptr, edges, numFaces, numEdges);
+    WriteChildPointRelations(this->Split, this->ParentEdges, p, nullptr, nullptr, edges, numFaces, numEdges);
   }
 };
 
@@ -447,8 +447,10 @@ GrandchildRows::GrandchildRows(GrandchildScheme scheme, std::shared_ptr<const Le
   // triangle; its points stand for P's faces (quads), edges and vertices.
   const MeshTopology& topo = this->Grandparent->Topology;
   const bool quads = IsQuadSplit(scheme);
+  // The triangle split's edges inside faces are numbered in closed form (kept with the
+  // rows: 3 indices per triangle of P less).
   this->ParentEdges = quads ? NumberChildEdges(QuadSplitShape{ topo }, parallelFor)
-                            : NumberChildEdges(TriangleSplitShape{ topo }, parallelFor);
+                            : NumberChildEdges(TriangleSplitShape{ topo }, parallelFor, false);
   this->NumFaceRows = quads ? topo.GetNumFaceCorners() : 0;
   this->NumParents = (quads ? topo.GetNumFaces() : 0) + topo.GetNumEdges() + topo.GetNumVertices();
   this->NumRows = this->NumFaceRows + this->ParentEdges.FirstEdgeOfFace.back() + this->NumParents;
@@ -918,7 +920,7 @@ MeshTopology SplitTwiceFacesWith(const Shape& shape, const MeshTopology& topo, c
         shape.GetChildEdgeKeys(f, j, keys);
         for (Index s = 0; s < size; ++s)
         {
-          edges[s] = parentEdges.EdgeOfKey[keys[s]];
+          edges[s] = parentEdges.GetEdge(keys[s]);
         }
         for (Index s = 0; s < 4; ++s)
         {

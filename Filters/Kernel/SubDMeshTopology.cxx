@@ -138,6 +138,20 @@ void MeshTopology::ReleaseFaceEdges()
   IndexArray().swap(this->FaceEdges);
 }
 
+void MeshTopology::ReleaseVertexEdgeLists()
+{
+  IndexArray().swap(this->VertexEdges);
+  IndexArray().swap(this->VertexEdgeOffsets);
+}
+
+void MeshTopology::RestoreVertexEdgeLists(const ParallelFor& parallelFor)
+{
+  if (!this->HasVertexRelations())
+  {
+    this->BuildVertexEdges(parallelFor);
+  }
+}
+
 void MeshTopology::KeepOnly(Part part, const ParallelFor& parallelFor)
 {
   if (part == Part::FacesAndRings && !this->RingsHoldVertices)

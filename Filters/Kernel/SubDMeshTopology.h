@@ -77,6 +77,13 @@ public:
   /// Frees each face's edges (GetFaceEdges, GetTriangleEdges and what reads them may not be
   /// called then): for a level whose last reader finds edges from their ends.
   void ReleaseFaceEdges();
+  /// Frees the lists of edges around each vertex and their offsets (GetVertexEdges,
+  /// ForEachRingVertex and what reads them may not be called then; HasVertexRelations is
+  /// false): for a level kept only for rows that never read them (the butterfly's, once its
+  /// grandchild's rows are made). RestoreVertexEdgeLists builds them again.
+  void ReleaseVertexEdgeLists();
+  /// Builds the lists again, as Build made them (each vertex's edges in increasing order).
+  void RestoreVertexEdgeLists(const ParallelFor& parallelFor = SerialFor);
   /// A part of the topology that rows written from a level may read alone.
   enum class Part
   {

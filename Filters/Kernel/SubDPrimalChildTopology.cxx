@@ -41,7 +41,7 @@ MeshTopology PrimalChildAssembly::Assemble(
   // the child face that meets it first.
   const ChildEdgeNumbering numbering = NumberChildEdges(shape, parallelFor);
   const IndexArray& firstEdgeOfFace = numbering.FirstEdgeOfFace;
-  const IndexArray& edgeOfKey = numbering.EdgeOfKey;
+  const IndexArray& edgeOfKey = numbering.EdgeOfKey; // every key's (stored)
   child.EdgeVertices.resize(2 * static_cast<size_t>(numChildEdges));
   child.EdgeTags.resize(static_cast<size_t>(numChildEdges));
   child.EdgeFaceOffsets.resize(static_cast<size_t>(numChildEdges) + 1); // counts of every edge below
@@ -158,7 +158,7 @@ MeshTopology PrimalChildAssembly::Assemble(
     for (Index point = begin; point < end; ++point)
     {
       Index numFaces, numEdges;
-      WriteChildPointRelations(shape, edgeOfKey.data(), point, child.VertexFaces.data() + child.VertexFaceOffsets[point],
+      WriteChildPointRelations(shape, numbering, point, child.VertexFaces.data() + child.VertexFaceOffsets[point],
         child.VertexFaceCorners.data() + child.VertexFaceOffsets[point],
         child.VertexEdges.data() + child.VertexEdgeOffsets[point], numFaces, numEdges);
     }

@@ -21,9 +21,45 @@
 
 #include <algorithm>
 #include <numeric>
+#include <type_traits>
 
 namespace subd
 {
+/// The child edges' numbers: FirstEdgeOfFace[f] is the first number of the edges first met
+/// among face f's children (F + 1 entries, the last the number of child edges); GetEdge(key)
+/// the number of the edge of each key. EdgeOfKey holds every key's, or for the triangle
+/// split (NumberChildEdges without the edges inside faces) the halves' only: the edges
+/// inside a triangle are numbered in closed form from the face's first number and which of
+/// its edges' halves it meets first (FirstMetHalves), which keeps a rows source written two
+/// levels down (SubDGrandchildRows.h) 3 indices per triangle smaller.
+struct ChildEdgeNumbering
+{
+  IndexArray FirstEdgeOfFace;
+  IndexArray EdgeOfKey;
+  LevelArray<std::uint8_t> FirstMetHalves; // per triangle, bit i: its edge i is first met in it
+
+  Index GetEdge(Index key) const
+  {
+    const Index stored = static_cast<Index>(this->EdgeOfKey.size());
+    if (key < stored)
+    {
+      return this->EdgeOfKey[key];
+    }
+    const Index inside = key - stored, f = inside / 3;
+    return this->FirstEdgeOfFace[f] + TriangleInteriorEdgeOffset(this->FirstMetHalves[f], inside - 3 * f);
+  }
+  /// Where the edge inside a triangle opposite its child j's corner comes among the edges
+  /// first met in the triangle (TriangleSplitShape::VisitCorners's order): after the halves
+  /// and inside edges met before it, `met` telling which edges' halves are met there.
+  static Index TriangleInteriorEdgeOffset(std::uint8_t met, Index j)
+  {
+    const Index m0 = met & 1, m1 = (met >> 1) & 1, m2 = (met >> 2) & 1;
+    // Child 0: half of edge 0 at v0, inside 0, half of edge 2 at v0; child 1: half of edge 1,
+    // inside 1, half of edge 0; child 2: half of edge 2, inside 2, half of edge 1.
+    return j == 0 ? m0 : (j == 1 ? m0 + m2 + m1 + 1 : 2 * m0 + m1 + 2 * m2 + 2);
+  }
+};
+
 // Walking the faces in order, an edge is first met in the first of its faces (they are
 // listed in increasing order). Where no edge is non-manifold, an edge has one face or two
 // that run it opposite ways, and the first is the one whose half-edge along it starts where
@@ -131,20 +167,20 @@ struct QuadSplitShape
     corners[0] = wraps ? 3 : 1;
     corners[1] = wraps ? 1 : 3;
   }
-  void WriteEdgePointEdges(Index g, Index i, const Index* edgeOfKey, Index* edges) const
+  void WriteEdgePointEdges(Index g, Index i, const ChildEdgeNumbering& numbering, Index* edges) const
   {
-    edges[0] = edgeOfKey[2 * this->NumEdges + this->Parent.GetFaceOffset(g) + i];
+    edges[0] = numbering.GetEdge(2 * this->NumEdges + this->Parent.GetFaceOffset(g) + i);
   }
   Index GetFacePointSize(Index f) const { return this->Parent.GetFaceSize(f); }
   // The face point of f: corner 2 of each child of f, at the end of every edge inside f.
-  void WriteFacePoint(Index f, const Index* edgeOfKey, Index* faces, Index* corners, Index* edges) const
+  void WriteFacePoint(Index f, const ChildEdgeNumbering& numbering, Index* faces, Index* corners, Index* edges) const
   {
     const Index first = this->Parent.GetFaceOffset(f), n = this->Parent.GetFaceSize(f);
     for (Index j = 0; j < n; ++j)
     {
       faces[j] = first + j;
       corners[j] = 2;
-      edges[j] = edgeOfKey[2 * this->NumEdges + first + j];
+      edges[j] = numbering.GetEdge(2 * this->NumEdges + first + j);
     }
     std::sort(edges, edges + n);
   }
@@ -237,14 +273,14 @@ struct TriangleSplitShape
     faces[2] = 4 * g + 3;
     corners[2] = i;
   }
-  void WriteEdgePointEdges(Index g, Index i, const Index* edgeOfKey, Index* edges) const
+  void WriteEdgePointEdges(Index g, Index i, const ChildEdgeNumbering& numbering, Index* edges) const
   {
     const Index inside = 2 * this->NumEdges + 3 * g;
-    edges[0] = edgeOfKey[inside + i];
-    edges[1] = edgeOfKey[inside + (i == 2 ? 0 : i + 1)];
+    edges[0] = numbering.GetEdge(inside + i);
+    edges[1] = numbering.GetEdge(inside + (i == 2 ? 0 : i + 1));
   }
   Index GetFacePointSize(Index) const { return 0; }
-  void WriteFacePoint(Index, const Index*, Index*, Index*, Index*) const {}
+  void WriteFacePoint(Index, const ChildEdgeNumbering&, Index*, Index*, Index*) const {}
 };
 
 /// The faces around child point `point` in increasing order, with the point's corner in each,
@@ -252,7 +288,7 @@ struct TriangleSplitShape
 /// edge or vertex point, `faces` and `corners` may be null: the edges alone, read without the
 /// parent's lists of faces around its vertices.
 template <typename Shape>
-void WriteChildPointRelations(const Shape& shape, const Index* edgeOfKey, Index point, Index* faces,
+void WriteChildPointRelations(const Shape& shape, const ChildEdgeNumbering& numbering, Index point, Index* faces,
   Index* corners, Index* edges, Index& numFaces, Index& numEdges)
 {
   const MeshTopology& parent = shape.Parent;
@@ -260,7 +296,7 @@ void WriteChildPointRelations(const Shape& shape, const Index* edgeOfKey, Index 
   const Index firstVertexPoint = firstEdgePoint + shape.NumEdges;
   if (point < firstEdgePoint)
   {
-    shape.WriteFacePoint(point, edgeOfKey, faces, corners, edges);
+    shape.WriteFacePoint(point, numbering, faces, corners, edges);
     numFaces = numEdges = shape.GetFacePointSize(point);
     return;
   }
@@ -269,8 +305,8 @@ void WriteChildPointRelations(const Shape& shape, const Index* edgeOfKey, Index 
     // The children of the faces of an edge come in the faces' (increasing) order, so the
     // edge point's faces are sorted face by face; its few edges are sorted at the end.
     const Index e = point - firstEdgePoint;
-    edges[0] = edgeOfKey[2 * e];
-    edges[1] = edgeOfKey[2 * e + 1];
+    edges[0] = numbering.EdgeOfKey[2 * e]; // halves are always stored
+    edges[1] = numbering.EdgeOfKey[2 * e + 1];
     const IndexSpan parentFaces = parent.GetEdgeFaces(e);
     for (Index k = 0; k < parentFaces.size(); ++k)
     {
@@ -280,7 +316,7 @@ void WriteChildPointRelations(const Shape& shape, const Index* edgeOfKey, Index 
       {
         shape.WriteEdgePointFaces(g, i, faces + Shape::EdgePointFacesPerFace * k, corners + Shape::EdgePointFacesPerFace * k);
       }
-      shape.WriteEdgePointEdges(g, i, edgeOfKey, edges + 2 + Shape::EdgePointEdgesPerFace * k);
+      shape.WriteEdgePointEdges(g, i, numbering, edges + 2 + Shape::EdgePointEdgesPerFace * k);
     }
     numFaces = Shape::EdgePointFacesPerFace * parentFaces.size();
     numEdges = 2 + Shape::EdgePointEdgesPerFace * parentFaces.size();
@@ -303,25 +339,20 @@ void WriteChildPointRelations(const Shape& shape, const Index* edgeOfKey, Index 
   const IndexSpan parentEdges = parent.GetVertexEdges(v);
   for (Index k = 0; k < parentEdges.size(); ++k)
   {
-    edges[k] = edgeOfKey[HalfEdgeKey(parent, parentEdges[k], v)];
+    edges[k] = numbering.EdgeOfKey[HalfEdgeKey(parent, parentEdges[k], v)];
   }
   numFaces = parent.GetNumVertexFaces(v);
   numEdges = parentEdges.size();
   SortShortList(edges, edges + numEdges);
 }
 
-/// The child edges' numbers: FirstEdgeOfFace[f] is the first number of the edges first met
-/// among face f's children (F + 1 entries, the last the number of child edges), EdgeOfKey
-/// the number of the edge of each key.
-struct ChildEdgeNumbering
-{
-  IndexArray FirstEdgeOfFace;
-  IndexArray EdgeOfKey;
-};
-
+/// Numbers the child edges of `shape`'s split. Without `storeInteriorEdges` (the triangle
+/// split only), EdgeOfKey keeps the halves' numbers and FirstMetHalves the rest.
 template <typename Shape>
-ChildEdgeNumbering NumberChildEdges(const Shape& shape, const ParallelFor& parallelFor)
+ChildEdgeNumbering NumberChildEdges(const Shape& shape, const ParallelFor& parallelFor, bool storeInteriorEdges = true)
 {
+  constexpr bool triangles = std::is_same_v<Shape, TriangleSplitShape>;
+  const bool compact = triangles && !storeInteriorEdges;
   const Index numFaces = shape.Parent.GetNumFaces();
   ChildEdgeNumbering numbering;
   IndexArray& firstEdgeOfFace = numbering.FirstEdgeOfFace;
@@ -336,17 +367,36 @@ ChildEdgeNumbering NumberChildEdges(const Shape& shape, const ParallelFor& paral
     }
   });
   std::partial_sum(firstEdgeOfFace.begin(), firstEdgeOfFace.end(), firstEdgeOfFace.begin());
-  numbering.EdgeOfKey.resize(static_cast<size_t>(2 * shape.NumEdges + shape.GetNumInteriorEdges()));
+  const Index halves = 2 * shape.NumEdges;
+  numbering.EdgeOfKey.resize(static_cast<size_t>(compact ? halves : halves + shape.GetNumInteriorEdges()));
+  numbering.FirstMetHalves.resize(compact ? static_cast<size_t>(numFaces) : 0);
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {
       Index next = firstEdgeOfFace[f];
-      shape.VisitCorners(f, [&](Index, Index key, bool isNew) {
-        if (isNew)
+      std::uint8_t met = 0;
+      shape.VisitCorners(f, [&](Index corner, Index key, bool isNew) {
+        if (!isNew)
+        {
+          return;
+        }
+        if (!compact)
         {
           numbering.EdgeOfKey[key] = next++;
+          return;
         }
+        if (key < halves)
+        {
+          numbering.EdgeOfKey[key] = next;
+          // Child j's corner 0 starts the half of edge j: edge j is first met in f.
+          met |= static_cast<std::uint8_t>(corner % 3 == 0 ? 1 << ((corner / 3) % 4) : 0);
+        }
+        ++next;
       });
+      if (compact)
+      {
+        numbering.FirstMetHalves[f] = met;
+      }
     }
   });
   return numbering;

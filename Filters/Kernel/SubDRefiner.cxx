@@ -11,7 +11,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   out.Stencils.reserve(static_cast<size_t>(levels > 0 ? levels : 0));
   out.FinestFaces = LaterFaces();
   Level current = std::move(base);
-  std::shared_ptr<const Level> grandparent; // current's parent, kept by the rows written from it
+  std::shared_ptr<Level> grandparent; // current's parent, kept by the rows written from it
   // A faces-only finest level of a scheme that writes it from its grandparent alone (linear
   // rules) comes from its grandparent whenever rows are written, and its parent, the largest
   // level with a topology, is never built.
@@ -43,6 +43,12 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         grandparent, current, depth, rows, child, out.FinestFaces, out.Stencils.back().GetSource());
       if (refined)
       {
+        if (!scheme.GrandchildReadsVertexEdgeLists())
+        {
+          // Read by the rows' construction only: neither the grandparent's own rows nor its
+          // grandchild's read them again (PromoteFinestRows builds them for a split again).
+          grandparent->Topology.ReleaseVertexEdgeLists();
+        }
         out.Stencils.push_back(std::move(rows));
         current = std::move(child);
         grandparent = nullptr;
@@ -135,16 +141,17 @@ bool PromoteFinestRows(const Scheme& scheme, Hierarchy& hierarchy)
   }
   const Level& grandparent = rows->GetGrandparent();
   std::shared_ptr<Level> parent;
-  if (grandparent.Topology.HasVertexFaceLists())
+  if (grandparent.Topology.HasVertexFaceLists() && grandparent.Topology.HasVertexRelations())
   {
     parent = std::make_shared<Level>(scheme.Split(grandparent, ChildTopology::Full));
   }
   else
   {
-    // The split reads the faces around each vertex, freed after refining: a copy has them
-    // again for as long as the split takes (the rows keep the grandparent as it is).
+    // The split reads the faces and edges around each vertex, freed after refining: a copy
+    // has them again for as long as the split takes (the rows keep the grandparent as it is).
     Level whole = grandparent;
     whole.Topology.RestoreVertexFaceLists(scheme.GetParallelFor());
+    whole.Topology.RestoreVertexEdgeLists(scheme.GetParallelFor());
     parent = std::make_shared<Level>(scheme.Split(whole, ChildTopology::Full));
   }
   hierarchy.Stencils.back() = StencilTable::FromSource(scheme.MakeRowSource(parent));

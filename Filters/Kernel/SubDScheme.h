@@ -128,6 +128,16 @@ public:
     return !this->GetGrandchildScheme(which) ||
       (which != GrandchildScheme::Loop && which != GrandchildScheme::Butterfly);
   }
+  /// Whether a level whose grandchild's rows were written from it (RefineFromGrandparent) is
+  /// read again for the lists of edges around its vertices: by Catmull-Clark's and Loop's
+  /// vertex rows. The butterfly's vertex points are copies, its rings are stored
+  /// (ButterflyGrandparentTables) and its own rows keep the crease neighbours they read, so
+  /// Refine frees those lists once the grandchild's rows are made.
+  bool GrandchildReadsVertexEdgeLists() const
+  {
+    GrandchildScheme which;
+    return !this->GetGrandchildScheme(which) || which != GrandchildScheme::Butterfly;
+  }
   /// The counts of the next level of a mesh with the given counts (for size guards).
   virtual MeshCounts PredictChildCounts(const MeshCounts& parent) const = 0;
   /// False for schemes whose points only interpolate within a face (linear, bilinear): the
