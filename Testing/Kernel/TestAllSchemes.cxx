@@ -626,7 +626,7 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
   // The creases' methods, and no sharp feature at all (where Catmull-Clark and Loop, with
   // WrittenFromGrandparent or WrittenLean, skip the finest level's parent on closed meshes:
   // EveryGrandchildRowIsSmooth).
-  int leanHierarchies = 0, releasedVertexFaceLists = 0;
+  int leanHierarchies = 0, releasedVertexFaceLists = 0, releasedVertexEdgeLists = 0;
   for (int creases = 0; creases < 3; ++creases)
   {
     const subd::CreaseMethod method = creases == 1 ? subd::CreaseMethod::Chaikin : subd::CreaseMethod::Uniform;
@@ -678,6 +678,16 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
           stored.Evaluate(values.data(), 3, c.data());
           written.Evaluate(values.data(), 3, d.data());
           EXPECT_EQ(c, d) << mesh.Name << " L" << levels;
+          const auto* rowsTwoDown = dynamic_cast<const subd::GrandchildRows*>(written.Stencils.back().GetSource());
+          if (rowsTwoDown && !linear) // the linear rules' levels between never have them
+          {
+            // The butterfly's grandparent level has no lists of edges around its vertices
+            // once its grandchild's rows are made: its own rows (evaluated above, crease rows
+            // included) and its grandchild's read none.
+            const bool released = !rowsTwoDown->GetGrandparent().Topology.HasVertexRelations();
+            EXPECT_EQ(released, name == "butterfly") << mesh.Name << " L" << levels;
+            releasedVertexEdgeLists += released;
+          }
           if (lean)
           {
             // Loop's rows read the grandparent's vertex rings through its edges, the butterfly's
@@ -718,6 +728,7 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
   // WrittenLean wrote the finest rows of some closed meshes without their parent.
   const std::string name = GetParam().Name;
   EXPECT_EQ(leanHierarchies > 0, WritesRowsTwoLevelsDown(name)) << leanHierarchies;
+  EXPECT_EQ(releasedVertexEdgeLists > 0, name == "butterfly") << releasedVertexEdgeLists;
   EXPECT_EQ(releasedVertexFaceLists > 0, name == "loop" || name == "butterfly") << releasedVertexFaceLists;
 }
 
