@@ -376,10 +376,12 @@ void InheritDualSharpness(const Level& parent, const DualPoints& points, Level& 
 }
 }
 
-Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology depth, const ParallelFor& parallelFor)
+Level SplitDual(
+  const Level& parent, const DualPoints& points, ChildTopology depth, const ParallelFor& parallelFor, FaceTagsKept kept)
 {
   EmittedFaces faces = EmitFacesInParallel(DualFaceWriter(parent, points).GetNumElements(), parallelFor,
-    [&](Index begin, Index end, FaceBlock& block) { DualFaceWriter(parent, points).WriteBlock(begin, end, block); });
+    [&](Index begin, Index end, FaceBlock& block) { DualFaceWriter(parent, points).WriteBlock(begin, end, block); },
+    kept);
   Level child;
   child.FaceOrigin = std::move(faces.Origins);
   child.FaceIsHole = std::move(faces.Holes);

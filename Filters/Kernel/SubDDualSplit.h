@@ -22,6 +22,7 @@
 #ifndef SubDDualSplit_h
 #define SubDDualSplit_h
 
+#include "SubDFaceBlocks.h"
 #include "SubDLevel.h"
 
 namespace subd
@@ -58,9 +59,10 @@ struct DualPoints
 SUBDKERNEL_EXPORT DualPoints NumberDualPoints(const Level& level, const ParallelFor& parallelFor = SerialFor);
 
 /// Writes the child faces in parallel (in blocks of parent elements, copied to their place
-/// in order), so that the result does not depend on the number of threads.
-SUBDKERNEL_EXPORT Level SplitDual(
-  const Level& parent, const DualPoints& points, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
+/// in order), so that the result does not depend on the number of threads. The child keeps
+/// the face tags `kept` asks for (else its FaceOrigin or FaceIsHole is empty).
+SUBDKERNEL_EXPORT Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology depth,
+  const ParallelFor& parallelFor = SerialFor, FaceTagsKept kept = {});
 }
 
 #endif

@@ -17,8 +17,9 @@ struct SUBDKERNEL_EXPORT Level
   MeshTopology Topology;
   LevelArray<float> EdgeSharpness;        ///< one per edge, OpenSubdiv's scale
   LevelArray<float> VertexSharpness;      ///< one per vertex
-  LevelArray<std::uint8_t> FaceIsHole;    ///< per face; holes shape neighbours, aren't emitted
-  LevelArray<Index> FaceOrigin;           ///< per face: the base-level face it comes from
+  LevelArray<std::uint8_t> FaceIsHole;    ///< per face (or none: no hole); holes shape neighbours, aren't emitted
+  LevelArray<Index> FaceOrigin;           ///< per face: the base-level face it comes from (a
+                                          ///< finest level's may be freed by a caller that reads none)
   /// Face f's hole flag and origin are at f >> FaceTagShift: 0, one per face, except for a
   /// finest level written from its grandparent (SplitTwice), whose faces come four from each
   /// face of the level between and keep that face's tags (2: a quarter of the memory), or
@@ -28,7 +29,10 @@ struct SUBDKERNEL_EXPORT Level
   int FaceTagShift = 0;
   int Depth = 0;                         ///< 0 for the base level, then 1, 2, ...
 
-  bool IsFaceHole(Index f) const { return this->FaceIsHole[static_cast<size_t>(f) >> this->FaceTagShift] != 0; }
+  bool IsFaceHole(Index f) const
+  {
+    return !this->FaceIsHole.empty() && this->FaceIsHole[static_cast<size_t>(f) >> this->FaceTagShift] != 0;
+  }
   Index GetFaceOrigin(Index f) const { return this->FaceOrigin[static_cast<size_t>(f) >> this->FaceTagShift]; }
   CreaseMethod Creasing = CreaseMethod::Uniform; ///< how semi-sharp edges decay
 

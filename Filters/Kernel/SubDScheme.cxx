@@ -129,7 +129,8 @@ StencilTable LinearTriangleScheme::BuildStencils(const Level& parent) const
 
 Level DooSabinScheme::Split(const Level& parent, ChildTopology depth) const
 {
-  return SplitDual(parent, NumberDualPoints(parent, this->GetParallelFor()), depth, this->GetParallelFor());
+  return SplitDual(parent, NumberDualPoints(parent, this->GetParallelFor()), depth, this->GetParallelFor(),
+    this->GetFaceTagsKept(parent, depth));
 }
 
 StencilTable DooSabinScheme::BuildStencils(const Level& parent) const
@@ -143,7 +144,7 @@ LevelRefinement DooSabinScheme::RefineLevel(const Level& parent, ChildTopology d
   const DualPoints points = NumberDualPoints(parent, this->GetParallelFor());
   LevelRefinement r;
   r.Stencils = BuildDooSabinStencils(parent, points, this->GetParallelFor());
-  r.Child = SplitDual(parent, points, depth, this->GetParallelFor());
+  r.Child = SplitDual(parent, points, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth));
   return r;
 }
 
@@ -201,12 +202,12 @@ StencilTable ButterflyScheme::BuildStencils(const Level& parent) const
 
 LevelRefinement Sqrt3Scheme::RefineLevel(const Level& parent, ChildTopology depth) const
 {
-  return RefineSqrt3(parent, depth, this->GetParallelFor());
+  return RefineSqrt3(parent, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth));
 }
 
 Level Sqrt3Scheme::Split(const Level& parent, ChildTopology depth) const
 {
-  return SplitSqrt3(parent, depth, this->GetParallelFor());
+  return SplitSqrt3(parent, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth));
 }
 
 std::shared_ptr<const RowSource> Sqrt3Scheme::MakeRowSource(std::shared_ptr<const Level> parent) const

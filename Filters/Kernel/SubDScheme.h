@@ -8,6 +8,7 @@
 
 #include "SubDGrandchildRows.h"
 #include "SubDLevel.h"
+#include "SubDFaceBlocks.h"
 #include "SubDParallel.h"
 #include "SubDStencilTable.h"
 
@@ -43,6 +44,19 @@ public:
   /// it; results are the same for any number of threads.
   void SetParallelFor(ParallelFor parallelFor) { this->Parallel = std::move(parallelFor); }
   const ParallelFor& GetParallelFor() const { return this->Parallel; }
+  /// Whether a faces-only split (a finest level) records each face's origin, the base face it
+  /// comes from (Level::FaceOrigin): on by default. A caller that reads none (no cell data
+  /// to carry, no parent ids, no ghosts) turns it off; the splits that write their faces in
+  /// parallel (sqrt(3), Doo-Sabin) then spare 4 bytes a finest face at their peak, and keep
+  /// a faces-only child's hole flags only where its parent has a hole (Level::IsFaceHole).
+  void SetFacesOnlyOrigins(bool keep) { this->FacesOnlyOrigins = keep; }
+  bool GetFacesOnlyOrigins() const { return this->FacesOnlyOrigins; }
+  /// The tags a split with `depth` of `parent` keeps (FaceTagsKept; see SetFacesOnlyOrigins).
+  FaceTagsKept GetFaceTagsKept(const Level& parent, ChildTopology depth) const
+  {
+    const bool facesOnly = depth == ChildTopology::FacesOnly;
+    return FaceTagsKept{ !facesOnly || this->FacesOnlyOrigins, !facesOnly || parent.HasHoles() };
+  }
   /// The stencils of the next level's points, rows numbered like Split's child points.
   virtual StencilTable BuildStencils(const Level& parent) const = 0;
   /// Both at once (schemes whose split and stencils share work override it).
@@ -173,6 +187,7 @@ protected:
 
 private:
   ParallelFor Parallel = SerialFor;
+  bool FacesOnlyOrigins = true;
 };
 
 /// Schemes on the quad split (SubDQuadSplit.h): any polygons in, quads out.

@@ -552,12 +552,13 @@ private:
 };
 
 // The child level of one step (without its rows).
-Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopology depth, const ParallelFor& parallelFor)
+Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopology depth,
+  const ParallelFor& parallelFor, FaceTagsKept kept)
 {
   const Sqrt3FaceWriter writer(parent, points);
   EmittedFaces faces = EmitTrianglesInPlace(
     writer.GetNumElements(), parallelFor, [&writer](Index begin, Index end) { return writer.CountBlock(begin, end); },
-    [&writer](Index begin, Index end, TriangleCursor& cursor) { writer.WriteBlock(begin, end, cursor); });
+    [&writer](Index begin, Index end, TriangleCursor& cursor) { writer.WriteBlock(begin, end, cursor); }, kept);
   Level child;
   child.FaceOrigin = std::move(faces.Origins);
   child.FaceIsHole = std::move(faces.Holes);
@@ -582,18 +583,18 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
 }
 }
 
-LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
+LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor, FaceTagsKept kept)
 {
   const Sqrt3Points points(parent, IsEvenStep(parent), parallelFor);
   LevelRefinement result;
   result.Stencils = WriteStencilTable(Sqrt3RowWriter(parent, points, parallelFor), parallelFor);
-  result.Child = SplitWithPoints(parent, points, depth, parallelFor);
+  result.Child = SplitWithPoints(parent, points, depth, parallelFor, kept);
   return result;
 }
 
-Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
+Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor, FaceTagsKept kept)
 {
-  return SplitWithPoints(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), depth, parallelFor);
+  return SplitWithPoints(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), depth, parallelFor, kept);
 }
 
 std::shared_ptr<const RowSource> MakeSqrt3RowSource(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)

@@ -40,6 +40,7 @@
 #ifndef SubDSqrt3Rules_h
 #define SubDSqrt3Rules_h
 
+#include "SubDFaceBlocks.h"
 #include "SubDLevel.h"
 #include "SubDStencilTable.h"
 
@@ -77,10 +78,12 @@ SUBDKERNEL_EXPORT Index Sqrt3FirstVertexPoint(const Level& parent);
 
 /// One step (split and stencils share the point numbering); every face of `parent` must be a
 /// triangle.
+/// The child keeps the face tags `kept` asks for (else its FaceOrigin or FaceIsHole is empty).
 SUBDKERNEL_EXPORT LevelRefinement RefineSqrt3(
-  const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
+  const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor, FaceTagsKept kept = {});
 /// The split alone (RefineSqrt3's child).
-SUBDKERNEL_EXPORT Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
+SUBDKERNEL_EXPORT Level SplitSqrt3(
+  const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor, FaceTagsKept kept = {});
 /// RefineSqrt3's rows written as they are applied (SubDRowWriting.h). Besides what they keep
 /// of their own (each vertex's rule, the curve vertices' and trisected edges' neighbours),
 /// they read the parent's faces' corners and vertices' rings only: the rest of its topology

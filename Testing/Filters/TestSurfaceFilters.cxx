@@ -276,6 +276,48 @@ TYPED_TEST(AnySurfaceFilter, CellDataInheritedAndParentIds)
   }
 }
 
+// Without cell data, parent ids or ghosts, the finest faces' origins are not kept (the
+// splits that can do without them spare them at their peak): the same faces and points, and
+// cell data added to the same topology later refines again to carry it.
+TYPED_TEST(AnySurfaceFilter, CellDataAddedLaterRefinesAgainForTheFaceOrigins)
+{
+  vtkSmartPointer<vtkPolyData> cube = Cube();
+  vtkNew<TypeParam> filter;
+  filter->SetInputData(cube);
+  filter->SetNumberOfSubdivisions(2);
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 1);
+  const std::vector<double> points = subdtest::Coordinates(filter->GetOutput());
+  const auto faces = subdtest::Faces(filter->GetOutput());
+
+  vtkNew<vtkIntArray> faceId;
+  faceId->SetName("FaceId");
+  for (int f = 0; f < 6; ++f)
+    faceId->InsertNextValue(100 + f);
+  cube->GetCellData()->AddArray(faceId);
+  cube->Modified();
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 2);
+  vtkSmartPointer<vtkPolyData> fresh = Subdivide<TypeParam>(cube, 2);
+  vtkPolyData* out = filter->GetOutput();
+  EXPECT_EQ(subdtest::Coordinates(out), points);
+  EXPECT_EQ(subdtest::Faces(out), faces);
+  auto* ids = vtkIntArray::SafeDownCast(out->GetCellData()->GetArray("FaceId"));
+  auto* expected = vtkIntArray::SafeDownCast(fresh->GetCellData()->GetArray("FaceId"));
+  ASSERT_NE(ids, nullptr);
+  ASSERT_NE(expected, nullptr);
+  ASSERT_EQ(ids->GetNumberOfTuples(), expected->GetNumberOfTuples());
+  for (vtkIdType c = 0; c < ids->GetNumberOfTuples(); ++c)
+    ASSERT_EQ(ids->GetValue(c), expected->GetValue(c)) << c;
+  // Kept now: a points-only change reuses the stencils.
+  cube->GetPoints()->SetPoint(6, 2.0, 1.5, 1.2);
+  cube->GetPoints()->Modified();
+  cube->Modified();
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 2);
+  EXPECT_NE(filter->GetOutput()->GetCellData()->GetArray("FaceId"), nullptr);
+}
+
 TYPED_TEST(AnySurfaceFilter, CachedStencilsReusedWhenOnlyPointsChange)
 {
   vtkSmartPointer<vtkPolyData> cube = Cube();

@@ -178,6 +178,49 @@ INSTANTIATE_TEST_SUITE_P(Schemes, AllSchemes, ::testing::ValuesIn(SchemeCases())
     return name;
   });
 
+// Without faces-only origins (Scheme::SetFacesOnlyOrigins), the same finest faces and hole
+// flags: sqrt(3) and Doo-Sabin keep no origin then, and no hole flag where the parent has no
+// hole; the other schemes keep theirs (the option is a hint).
+TEST_P(AllSchemes, FacesOnlyWithoutOriginsGivesTheSameFacesAndHoles)
+{
+  const std::string name = GetParam().Name;
+  const bool spares = name == "sqrt3" || name == "doo-sabin";
+  int withHoles = 0;
+  for (const subdtest::TestMesh& mesh : Fixtures())
+  {
+    for (bool hole : { false, true })
+    {
+      const auto scheme = GetParam().Make();
+      const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+      subd::BaseTags tags;
+      if (hole)
+        tags.FaceIsHole.assign(static_cast<size_t>(topology.GetNumFaces()), 0), tags.FaceIsHole[0] = 1;
+      const subd::Level base =
+        subd::MakeBaseLevel(topology, tags, scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly));
+      subd::Hierarchy kept, spared;
+      subd::Refine(*scheme, base, 2, kept);
+      scheme->SetFacesOnlyOrigins(false);
+      subd::Refine(*scheme, base, 2, spared);
+      kept.MakeFinestFaces();
+      spared.MakeFinestFaces();
+      const subd::MeshTopology &a = kept.Finest.Topology, &b = spared.Finest.Topology;
+      ASSERT_EQ(a.GetFaceOffsetArray(), b.GetFaceOffsetArray()) << mesh.Name;
+      ASSERT_EQ(a.GetFaceVertexArray(), b.GetFaceVertexArray()) << mesh.Name;
+      bool anyHole = false;
+      for (Index f = 0; f < a.GetNumFaces(); ++f)
+      {
+        ASSERT_EQ(kept.Finest.IsFaceHole(f), spared.Finest.IsFaceHole(f)) << mesh.Name << " face " << f;
+        anyHole |= kept.Finest.IsFaceHole(f);
+      }
+      EXPECT_EQ(spared.Finest.FaceOrigin.empty(), spares) << mesh.Name;
+      EXPECT_EQ(spared.Finest.FaceIsHole.empty(), spares && !anyHole) << mesh.Name;
+      EXPECT_FALSE(kept.Finest.FaceOrigin.empty()) << mesh.Name;
+      withHoles += anyHole;
+    }
+  }
+  EXPECT_GT(withHoles, 0);
+}
+
 // A first evaluation into an empty scratch frees the level before the finest's parent before
 // the finest level is written (it is not read again: the peak of a refinement is lower by it);
 // a scratch reused keeps both levels, and gives the same values, bit for bit.
