@@ -20,7 +20,7 @@
 namespace subd
 {
 /// Which tags a split records with each face. A faces-only finest level whose caller reads
-/// no origin (Scheme::SetFacesOnlyOrigins), or whose parent has no hole, needs not hold them:
+/// no origin (Scheme::SetFacesOnlyOrigins), or whose parent has no hole, need not hold them:
 /// 5 bytes a face at the peak of the split.
 struct FaceTagsKept
 {
