@@ -72,17 +72,32 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         // for the others written from their grandparent when none of their rows needs it.
         parentSkipped = l + 2 == levels &&
           (finestFromGrandparentAlone || (finestFromGrandparentIfSmooth && scheme.RefinesFromGrandparentAlone(*parent)));
-        current = parentSkipped ? Level() : scheme.Split(*parent, depth);
-        MeshTopology::Part part;
-        if (scheme.WrittenRowsReadOnly(part))
+        // Once split, the level is kept for its rows (and its grandchild's): what they never
+        // read goes, when the split allows before the child's topology is built.
+        auto trim = [&scheme](Level& split) {
+          MeshTopology::Part part;
+          if (scheme.WrittenRowsReadOnly(part))
+          {
+            KeepOnly(split, part, scheme.GetParallelFor());
+          }
+          if (!scheme.GrandchildReadsVertexFaceLists())
+          {
+            // A fifth of a level's topology, all of it in the peak of the levels after.
+            split.Topology.ReleaseVertexFaceLists();
+          }
+        };
+        if (parentSkipped)
         {
-          KeepOnly(*parent, part, scheme.GetParallelFor());
+          current = Level();
+          trim(*parent);
         }
-        if (!scheme.GrandchildReadsVertexFaceLists())
+        else
         {
-          // Split, the level is kept for its rows and its grandchild's, which never read them
-          // (a fifth of a level's topology, all of it in the peak of the levels after).
-          parent->Topology.ReleaseVertexFaceLists();
+          // The finest level's parent: its lists of faces around vertices and its faces'
+          // edges are freed below, before the finest split, if that reads neither.
+          const bool leanChild = l + 2 == levels && finest == ChildTopology::FacesOnly &&
+            !scheme.FinestSplitReadsVertexFacesOrFaceEdges();
+          current = scheme.SplitAndTrim(*parent, depth, leanChild, trim);
         }
         grandparent = parent;
       }

@@ -210,6 +210,22 @@ Level Sqrt3Scheme::Split(const Level& parent, ChildTopology depth) const
   return SplitSqrt3(parent, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth));
 }
 
+Level Sqrt3Scheme::SplitAndTrim(
+  Level& parent, ChildTopology depth, bool leanChild, const std::function<void(Level&)>& trimParent) const
+{
+  bool trimmed = false;
+  auto trim = [&] {
+    trimParent(parent);
+    trimmed = true;
+  };
+  Level child = SplitSqrt3(parent, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth), trim, leanChild);
+  if (!trimmed)
+  {
+    trimParent(parent);
+  }
+  return child;
+}
+
 std::shared_ptr<const RowSource> Sqrt3Scheme::MakeRowSource(std::shared_ptr<const Level> parent) const
 {
   return MakeSqrt3RowSource(std::move(parent), this->GetParallelFor());

@@ -6,9 +6,9 @@
 #ifndef SubDScheme_h
 #define SubDScheme_h
 
+#include "SubDFaceBlocks.h"
 #include "SubDGrandchildRows.h"
 #include "SubDLevel.h"
-#include "SubDFaceBlocks.h"
 #include "SubDParallel.h"
 #include "SubDStencilTable.h"
 
@@ -39,6 +39,26 @@ public:
   virtual const char* GetName() const = 0;
   /// The next level's topology and tags (with FacesOnly: faces, holes and origins only).
   virtual Level Split(const Level& parent, ChildTopology depth) const = 0;
+  /// Split, calling trimParent(parent) once the split reads no more of `parent` than the
+  /// trim keeps (Refine's: what the parent's written rows read). By default after the split;
+  /// sqrt(3) calls it before it builds a general child's topology, so that the parent's
+  /// whole topology and the child's are not held at once. With `leanChild` the child comes
+  /// without its lists of faces around vertices and its faces' edges (Refine asks so for the
+  /// finest level's parent where the finest split reads neither:
+  /// FinestSplitReadsVertexFacesOrFaceEdges): freed after the split by default, never made
+  /// by sqrt(3)'s closed form.
+  virtual Level SplitAndTrim(
+    Level& parent, ChildTopology depth, bool leanChild, const std::function<void(Level&)>& trimParent) const
+  {
+    Level child = this->Split(parent, depth);
+    trimParent(parent);
+    if (leanChild)
+    {
+      child.Topology.ReleaseVertexFaceLists();
+      child.Topology.ReleaseFaceEdges();
+    }
+    return child;
+  }
   /// How the splits run their loops: SerialFor unless a caller with threads sets its own.
   /// Splits that derive the child topology in closed form (the quad and triangle splits) use
   /// it; results are the same for any number of threads.
@@ -356,6 +376,10 @@ public:
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   /// SplitSqrt3: the split without the rows, for rows written as applied.
   Level Split(const Level& parent, ChildTopology depth) const override;
+  /// Trims the parent once the child's faces and inherited sharpness are made, before the
+  /// child's topology, where it is built in general (a mesh with a boundary or sharp edges).
+  Level SplitAndTrim(Level& parent, ChildTopology depth, bool leanChild,
+    const std::function<void(Level&)>& trimParent) const override;
   /// MakeSqrt3RowSource: the rows read the parent's faces and vertex rings only.
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   bool WrittenRowsReadOnly(MeshTopology::Part& part) const override

@@ -59,8 +59,8 @@ struct Spoke
 };
 }
 
-MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
-  const MeshTopology& parent, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
+MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexArray offsets, IndexArray vertices,
+  const ParallelFor& parallelFor, bool vertexFaceListsAndFaceEdges)
 {
   const Index numFaces = parent.GetNumFaces();
   const Index numEdges = parent.GetNumEdges();
@@ -140,8 +140,8 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
   FillStrided(child.EdgeFaceOffsets, numChildEdges, 2, parallelFor);
 
   // Face edges: triangle 2e (spoke, flipped, spoke), triangle 2e + 1 (spoke, flipped, spoke).
-  child.FaceEdges.resize(child.FaceVertices.size());
-  parallelFor(0, numEdges, [&](Index begin, Index end) {
+  child.FaceEdges.resize(vertexFaceListsAndFaceEdges ? child.FaceVertices.size() : 0);
+  parallelFor(0, vertexFaceListsAndFaceEdges ? numEdges : 0, [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e)
     {
       Index* edges = child.FaceEdges.data() + 6 * static_cast<size_t>(e);
@@ -155,25 +155,30 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
   // Centroids: six triangles (two per edge of their face) and six edges (three flipped,
   // three spokes). Old vertices: one triangle per edge, one spoke per face.
   const size_t centroidSlots = 6 * static_cast<size_t>(numFaces);
-  child.VertexFaces.resize(centroidSlots + parent.VertexFaces.size());
-  child.VertexFaceCorners.resize(child.VertexFaces.size());
+  // As many faces around a point as edges: the parent's vertex-edge lists size them.
+  const size_t faceSlots = vertexFaceListsAndFaceEdges ? centroidSlots + parent.VertexEdges.size() : 0;
+  child.VertexFaces.resize(faceSlots);
+  child.VertexFaceCorners.resize(faceSlots);
   child.VertexEdges.resize(centroidSlots + parent.VertexEdges.size());
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {
       Index faceEdges[3] = { parent.GetFaceEdges(f)[0], parent.GetFaceEdges(f)[1], parent.GetFaceEdges(f)[2] };
       std::sort(faceEdges, faceEdges + 3);
-      Index* faces = child.VertexFaces.data() + 6 * static_cast<size_t>(f);
-      Index* corners = child.VertexFaceCorners.data() + 6 * static_cast<size_t>(f);
       Index* edges = child.VertexEdges.data() + 6 * static_cast<size_t>(f);
       for (int i = 0; i < 3; ++i)
       {
         const Index e = faceEdges[i];
-        const bool first = parent.GetEdgeFaces(e)[0] == f; // m1 of (a, m2, m1), (b, m1, m2)
-        faces[2 * i] = 2 * e;
-        faces[2 * i + 1] = 2 * e + 1;
-        corners[2 * i] = first ? 2 : 1;
-        corners[2 * i + 1] = first ? 1 : 2;
+        if (vertexFaceListsAndFaceEdges)
+        {
+          Index* faces = child.VertexFaces.data() + 6 * static_cast<size_t>(f);
+          Index* corners = child.VertexFaceCorners.data() + 6 * static_cast<size_t>(f);
+          const bool first = parent.GetEdgeFaces(e)[0] == f; // m1 of (a, m2, m1), (b, m1, m2)
+          faces[2 * i] = 2 * e;
+          faces[2 * i + 1] = 2 * e + 1;
+          corners[2 * i] = first ? 2 : 1;
+          corners[2 * i + 1] = first ? 1 : 2;
+        }
         edges[i] = flippedEdge[e];
         edges[3 + i] = spokeEdge[parent.GetFaceOffset(f) + i];
       }
@@ -185,10 +190,13 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(
     {
       const size_t first = centroidSlots + static_cast<size_t>(parent.VertexEdgeOffsets[v]);
       const IndexSpan vertexEdges = parent.GetVertexEdges(v);
-      for (Index i = 0; i < vertexEdges.size(); ++i) // edges sorted: so are their triangles
+      if (vertexFaceListsAndFaceEdges)
       {
-        child.VertexFaces[first + i] = triangleAt(vertexEdges[i], v);
-        child.VertexFaceCorners[first + i] = 0;
+        for (Index i = 0; i < vertexEdges.size(); ++i) // edges sorted: so are their triangles
+        {
+          child.VertexFaces[first + i] = triangleAt(vertexEdges[i], v);
+          child.VertexFaceCorners[first + i] = 0;
+        }
       }
       const IndexSpan faces = parent.GetVertexFaces(v), corners = parent.GetVertexFaceCorners(v);
       Index* edges = child.VertexEdges.data() + centroidSlots + parent.VertexFaceOffsets[v];

@@ -200,41 +200,62 @@ private:
 
 // Sets the sharpness of the child pieces of each sharp edge (the unflipped edge, or the
 // three pieces of a trisected one) and of each vertex, one unit down.
-void InheritSqrt3Sharpness(const Level& parent, const Sqrt3Points& points, Level& child)
+// The sharpness a child inherits: each sharp edge's, decayed, on the child edges along it
+// (from one end to the other, through its two trisection points where it has them), and each
+// vertex's, decayed, on its vertex point. Gathered from the parent before the child's
+// topology is built (the parent may go meanwhile: SplitSqrt3), set on it after.
+struct Sqrt3InheritedSharpness
 {
-  const MeshTopology& topo = parent.Topology;
-  const MeshTopology& childTopo = child.Topology;
-  auto setSharpness = [&](Index a, Index b, float sharpness) {
-    const Index edge = childTopo.FindEdge(a, b);
-    if (edge != InvalidIndex)
-    {
-      child.EdgeSharpness[edge] = sharpness;
-    }
+  struct Path
+  {
+    Index Points[4]; // a, x, x + 1, b; or a, b (Size 2)
+    int Size;
+    float Sharpness;
   };
-  for (Index e = 0; e < topo.GetNumEdges(); ++e)
+  std::vector<Path> SharpEdges;
+  LevelArray<float> VertexSharpness; // per parent vertex, decayed (a level array: its memory goes back when freed)
+  Index FirstVertexPoint = 0;
+
+  Sqrt3InheritedSharpness(const Level& parent, const Sqrt3Points& points)
+    : FirstVertexPoint(points.FirstVertexPoint)
   {
-    if (!IsSharp(parent.EdgeSharpness[e]))
+    const MeshTopology& topo = parent.Topology;
+    for (Index e = 0; e < topo.GetNumEdges(); ++e)
     {
-      continue;
+      if (!IsSharp(parent.EdgeSharpness[e]))
+      {
+        continue;
+      }
+      const Index a = points.FirstVertexPoint + topo.GetEdgeVertices(e)[0];
+      const Index b = points.FirstVertexPoint + topo.GetEdgeVertices(e)[1];
+      const Index x = points.FirstEdgePoint(e);
+      const float sharpness = DecaySharpness(parent.EdgeSharpness[e]);
+      this->SharpEdges.push_back(x == InvalidIndex ? Path{ { a, b, 0, 0 }, 2, sharpness }
+                                                   : Path{ { a, x, x + 1, b }, 4, sharpness });
     }
-    const float sharpness = DecaySharpness(parent.EdgeSharpness[e]);
-    const Index a = points.FirstVertexPoint + topo.GetEdgeVertices(e)[0];
-    const Index b = points.FirstVertexPoint + topo.GetEdgeVertices(e)[1];
-    const Index x = points.FirstEdgePoint(e);
-    if (x == InvalidIndex)
-    {
-      setSharpness(a, b, sharpness);
-      continue;
-    }
-    setSharpness(a, x, sharpness);
-    setSharpness(x, x + 1, sharpness);
-    setSharpness(x + 1, b, sharpness);
+    this->VertexSharpness.resize(parent.VertexSharpness.size());
+    std::transform(parent.VertexSharpness.begin(), parent.VertexSharpness.end(), this->VertexSharpness.begin(),
+      [](float s) { return DecaySharpness(s); });
   }
-  for (Index v = 0; v < topo.GetNumVertices(); ++v)
+
+  void SetOn(Level& child) const
   {
-    child.VertexSharpness[points.FirstVertexPoint + v] = DecaySharpness(parent.VertexSharpness[v]);
+    const MeshTopology& childTopo = child.Topology;
+    for (const Path& path : this->SharpEdges)
+    {
+      for (int k = 0; k + 1 < path.Size; ++k)
+      {
+        const Index edge = childTopo.FindEdge(path.Points[k], path.Points[k + 1]);
+        if (edge != InvalidIndex)
+        {
+          child.EdgeSharpness[edge] = path.Sharpness;
+        }
+      }
+    }
+    std::copy(this->VertexSharpness.begin(), this->VertexSharpness.end(),
+      child.VertexSharpness.begin() + this->FirstVertexPoint);
   }
-}
+};
 
 // The rows of one step, numbered like Sqrt3Points, written one at a time (SubDRowWriting.h).
 // What the rows need beyond the parent's faces and vertices' rings is kept here
@@ -553,7 +574,8 @@ private:
 
 // The child level of one step (without its rows).
 Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopology depth,
-  const ParallelFor& parallelFor, FaceTagsKept kept)
+  const ParallelFor& parallelFor, FaceTagsKept kept, const std::function<void()>& beforeChildTopology = nullptr,
+  bool leanChild = false)
 {
   const Sqrt3FaceWriter writer(parent, points);
   EmittedFaces faces = EmitTrianglesInPlace(
@@ -567,17 +589,38 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
     child.Depth = parent.Depth + 1;
     child.Creasing = parent.Creasing;
     child.Topology = Sqrt3ChildTopology::OfSqrt3Step(
-      parent.Topology, std::move(faces.Offsets), std::move(faces.Vertices), parallelFor);
+      parent.Topology, std::move(faces.Offsets), std::move(faces.Vertices), parallelFor, !leanChild);
     child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), SharpnessSmooth);
     child.VertexSharpness.assign(static_cast<size_t>(points.NumPoints), SharpnessSmooth);
+    Sqrt3InheritedSharpness(parent, points).SetOn(child);
+    return child;
   }
-  else
-  {
-    SetChildTopology(parent, child, points.NumPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
-  }
+  // The general builder reads the child's faces alone: what the child inherits is gathered
+  // first, and the parent may go before the child's topology takes its memory.
+  std::unique_ptr<Sqrt3InheritedSharpness> inherited;
   if (depth == ChildTopology::Full)
   {
-    InheritSqrt3Sharpness(parent, points, child);
+    inherited = std::make_unique<Sqrt3InheritedSharpness>(parent, points);
+  }
+  child.Depth = parent.Depth + 1;
+  child.Creasing = parent.Creasing;
+  const Index numPoints = points.NumPoints;
+  if (beforeChildTopology)
+  {
+    beforeChildTopology();
+  }
+  Level depthOnly;
+  depthOnly.Depth = child.Depth - 1;
+  depthOnly.Creasing = child.Creasing;
+  SetChildTopology(depthOnly, child, numPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
+  if (inherited)
+  {
+    inherited->SetOn(child);
+  }
+  if (leanChild)
+  {
+    child.Topology.ReleaseVertexFaceLists();
+    child.Topology.ReleaseFaceEdges();
   }
   return child;
 }
@@ -592,9 +635,11 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const Para
   return result;
 }
 
-Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor, FaceTagsKept kept)
+Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor, FaceTagsKept kept,
+  const std::function<void()>& beforeChildTopology, bool leanChild)
 {
-  return SplitWithPoints(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), depth, parallelFor, kept);
+  return SplitWithPoints(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), depth, parallelFor, kept,
+    beforeChildTopology, leanChild);
 }
 
 std::shared_ptr<const RowSource> MakeSqrt3RowSource(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
