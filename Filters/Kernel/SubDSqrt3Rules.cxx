@@ -198,8 +198,6 @@ private:
   std::vector<Index> FirstEdgePoints; // per edge, InvalidIndex unless trisected; empty: none
 };
 
-// Sets the sharpness of the child pieces of each sharp edge (the unflipped edge, or the
-// three pieces of a trisected one) and of each vertex, one unit down.
 // The sharpness a child inherits: each sharp edge's, decayed, on the child edges along it
 // (from one end to the other, through its two trisection points where it has them), and each
 // vertex's, decayed, on its vertex point. Gathered from the parent before the child's
@@ -602,17 +600,15 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
   {
     inherited = std::make_unique<Sqrt3InheritedSharpness>(parent, points);
   }
-  child.Depth = parent.Depth + 1;
-  child.Creasing = parent.Creasing;
-  const Index numPoints = points.NumPoints;
+  Level depthOnly; // what SetChildTopology reads of the parent
+  depthOnly.Depth = parent.Depth;
+  depthOnly.Creasing = parent.Creasing;
   if (beforeChildTopology)
   {
     beforeChildTopology();
   }
-  Level depthOnly;
-  depthOnly.Depth = child.Depth - 1;
-  depthOnly.Creasing = child.Creasing;
-  SetChildTopology(depthOnly, child, numPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
+  SetChildTopology(
+    depthOnly, child, points.NumPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
   if (inherited)
   {
     inherited->SetOn(child);
