@@ -66,6 +66,16 @@ vtkSmartPointer<vtkPolyData> Cube()
     { { 0, 3, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 }, { 3, 0, 4, 7 } });
 }
 
+// A cell-data array "FaceId" of 100 + each of the cube's six faces' index.
+void AddFaceIds(vtkPolyData* cube)
+{
+  vtkNew<vtkIntArray> faceId;
+  faceId->SetName("FaceId");
+  for (int f = 0; f < 6; ++f)
+    faceId->InsertNextValue(100 + f);
+  cube->GetCellData()->AddArray(faceId);
+}
+
 template <typename Filter = vtkSubDCatmullClarkFilter>
 vtkSmartPointer<vtkPolyData> Subdivide(vtkPolyData* input, int levels, Messages* messages = nullptr,
   int boundaryRule = vtkSubDSurfaceFilter::BOUNDARY_EDGE_ONLY)
@@ -244,11 +254,7 @@ TEST(CatmullClarkFilter, UnsignedCharClampsNegativeWeights)
 TYPED_TEST(AnySurfaceFilter, CellDataInheritedAndParentIds)
 {
   vtkSmartPointer<vtkPolyData> cube = Cube();
-  vtkNew<vtkIntArray> faceId;
-  faceId->SetName("FaceId");
-  for (int f = 0; f < 6; ++f)
-    faceId->InsertNextValue(100 + f);
-  cube->GetCellData()->AddArray(faceId);
+  AddFaceIds(cube);
   vtkNew<TypeParam> filter;
   filter->SetInputData(cube);
   filter->SetNumberOfSubdivisions(2);
@@ -290,11 +296,7 @@ TYPED_TEST(AnySurfaceFilter, CellDataAddedLaterRefinesAgainForTheFaceOrigins)
   const std::vector<double> points = subdtest::Coordinates(filter->GetOutput());
   const auto faces = subdtest::Faces(filter->GetOutput());
 
-  vtkNew<vtkIntArray> faceId;
-  faceId->SetName("FaceId");
-  for (int f = 0; f < 6; ++f)
-    faceId->InsertNextValue(100 + f);
-  cube->GetCellData()->AddArray(faceId);
+  AddFaceIds(cube);
   cube->Modified();
   filter->Update();
   EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 2);
