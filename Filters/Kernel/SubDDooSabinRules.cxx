@@ -19,20 +19,61 @@ double DooSabinWeight(Index n, Index d)
 
 namespace
 {
+// The corners whose outgoing edge (corner j's edge runs to corner j + 1) acts as a boundary
+// (DualPoints::EdgeActsAsBoundary), sorted: what the boundary rows read of the faces' edges.
+// A smooth closed level has none; a level with boundaries or creases, a few per crease
+// line. Kept instead of the faces' edges (4 bytes per corner of the level), which the
+// written rows would otherwise keep for as long as their level.
+class CornersBeforeSharpEdges
+{
+public:
+  CornersBeforeSharpEdges() = default;
+  CornersBeforeSharpEdges(const MeshTopology& topo, const std::vector<std::uint8_t>& actsAsBoundary)
+  {
+    if (std::none_of(actsAsBoundary.begin(), actsAsBoundary.end(), [](std::uint8_t a) { return a != 0; }))
+    {
+      return; // nothing to look at: a smooth closed level
+    }
+    for (Index f = 0; f < topo.GetNumFaces(); ++f)
+    {
+      const IndexSpan fe = topo.GetFaceEdges(f);
+      for (Index j = 0; j < fe.size(); ++j)
+      {
+        if (actsAsBoundary[fe[j]])
+        {
+          this->Corners.push_back(topo.GetFaceOffset(f) + j);
+        }
+      }
+    }
+    this->Corners.shrink_to_fit();
+  }
+  bool Contains(Index corner) const { return std::binary_search(this->Corners.begin(), this->Corners.end(), corner); }
+  /// Whether a corner in [first, end) is one.
+  bool AnyIn(Index first, Index end) const
+  {
+    const auto it = std::lower_bound(this->Corners.begin(), this->Corners.end(), first);
+    return it != this->Corners.end() && *it < end;
+  }
+
+private:
+  std::vector<Index> Corners;
+};
+
 // The boundary row of corner `j` of face f at vertex v, if one of the face's two edges at v
 // is a crease (or boundary) edge or v pins every corner: the vertex itself at a corner
 // vertex, else Chaikin's 3/4, 1/4 (or 1/2, 1/2 next to a corner vertex). Returns the number
 // of entries written (0: interior).
-Index BoundaryCornerRow(const Level& level, const DualPoints& points, Index f, Index j, Index* src, double* wts)
+Index BoundaryCornerRow(const Level& level, const DualPoints& points, const CornersBeforeSharpEdges& sharp, Index f,
+  Index j, Index* src, double* wts)
 {
   const MeshTopology& topo = level.Topology;
   const std::vector<std::uint8_t>& isCorner = points.IsCornerVertex;
   const IndexSpan fv = topo.GetFaceVertices(f);
-  const IndexSpan fe = topo.GetFaceEdges(f);
+  const Index first = topo.GetFaceOffset(f);
   const Index n = fv.size();
   const Index v = fv[j];
-  const bool outgoing = points.EdgeActsAsBoundary[fe[j]];
-  const bool incoming = points.EdgeActsAsBoundary[fe[(j + n - 1) % n]];
+  const bool outgoing = sharp.Contains(first + j);
+  const bool incoming = sharp.Contains(first + (j + n - 1) % n);
   if (!outgoing && !incoming && !points.PinsEveryCorner[v])
   {
     return 0;
@@ -83,10 +124,10 @@ private:
 
 // Writes the row of corner i of face f: its boundary row, else the face's vertices with
 // alpha_n. Returns the row's size (at most the face's size, and 2 on a boundary).
-Index WriteCornerRow(const Level& parent, const DualPoints& points, const DooSabinWeightTable& weights, Index f,
-  Index i, Index* src, double* wts)
+Index WriteCornerRow(const Level& parent, const DualPoints& points, const CornersBeforeSharpEdges& sharp,
+  const DooSabinWeightTable& weights, Index f, Index i, Index* src, double* wts)
 {
-  const Index boundary = BoundaryCornerRow(parent, points, f, i, src, wts);
+  const Index boundary = BoundaryCornerRow(parent, points, sharp, f, i, src, wts);
   if (boundary > 0)
   {
     return boundary;
@@ -104,8 +145,8 @@ Index FaceOfCorner(const MeshTopology& topo, Index corner)
   return static_cast<Index>(std::upper_bound(offsets.begin(), offsets.end(), corner) - offsets.begin()) - 1;
 }
 
-// BuildDooSabinStencils' rows written as they are applied: from the parent's faces (their
-// corners and edge numbers) and the dual numbering only.
+// BuildDooSabinStencils' rows written as they are applied: from the parent's faces' corners,
+// the dual numbering and the corners before sharp edges only.
 class DooSabinWrittenRows final : public RowSourceWithApply<DooSabinWrittenRows>
 {
   friend class RowSourceWithApply<DooSabinWrittenRows>;
@@ -114,7 +155,9 @@ public:
   DooSabinWrittenRows(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
     : Parent(std::move(parent))
     , Points(NumberDualPoints(*this->Parent, parallelFor))
+    , Sharp(this->Parent->Topology, this->Points.EdgeActsAsBoundary)
   {
+    std::vector<std::uint8_t>().swap(this->Points.EdgeActsAsBoundary); // read through Sharp
     const MeshTopology& topo = this->Parent->Topology;
     for (Index f = 0; f < topo.GetNumFaces(); ++f)
     {
@@ -139,7 +182,8 @@ private:
     std::vector<double> wts(src.size()), sum(static_cast<size_t>(components));
     auto applyCorner = [&](Index f, Index corner, Index row) {
       const Index size =
-        WriteCornerRow(*this->Parent, this->Points, this->Weights, f, corner - topo.GetFaceOffset(f), src.data(), wts.data());
+        WriteCornerRow(*this->Parent, this->Points, this->Sharp, this->Weights, f, corner - topo.GetFaceOffset(f),
+          src.data(), wts.data());
       ApplyRow(src.data(), wts.data(), size, numParents, parents, children, components, sum.data(),
         children + static_cast<size_t>(row) * components);
     };
@@ -185,20 +229,18 @@ private:
   // boundary, no vertex of it pins its corners.
   bool HasInteriorCorners(Index f) const
   {
-    const IndexSpan fv = this->Parent->Topology.GetFaceVertices(f);
-    const IndexSpan fe = this->Parent->Topology.GetFaceEdges(f);
-    for (Index j = 0; j < fv.size(); ++j)
+    const MeshTopology& topo = this->Parent->Topology;
+    if (this->Sharp.AnyIn(topo.GetFaceOffset(f), topo.GetFaceOffset(f + 1)))
     {
-      if (this->Points.EdgeActsAsBoundary[fe[j]] || this->Points.PinsEveryCorner[fv[j]])
-      {
-        return false;
-      }
+      return false;
     }
-    return true;
+    const IndexSpan fv = topo.GetFaceVertices(f);
+    return std::none_of(fv.begin(), fv.end(), [this](Index v) { return this->Points.PinsEveryCorner[v] != 0; });
   }
 
   std::shared_ptr<const Level> Parent;
-  DualPoints Points;
+  DualPoints Points; // without EdgeActsAsBoundary: Sharp has what the rows read of it
+  CornersBeforeSharpEdges Sharp;
   DooSabinWeightTable Weights;
   Index MaxRowSize = 2; // a boundary row's size, at least
 };
@@ -210,6 +252,7 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
   const Index numFaces = topo.GetNumFaces();
   // Welded corners have equal rows; each point takes its first corner's.
   auto ownsRow = [&points](Index corner) { return points.CornerOf(points.PointOf(corner)) == corner; };
+  const CornersBeforeSharpEdges sharp(topo, points.EdgeActsAsBoundary);
   StencilTable table(topo.GetNumVertices());
   table.ReserveRows(points.NumPoints);
   parallelFor(0, numFaces, [&](Index begin, Index end) {
@@ -223,7 +266,7 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
         {
           Index scratchSource[2];
           double scratchWeight[2];
-          const Index boundary = BoundaryCornerRow(parent, points, f, j, scratchSource, scratchWeight);
+          const Index boundary = BoundaryCornerRow(parent, points, sharp, f, j, scratchSource, scratchWeight);
           table.SetRowSize(points.PointOf(corner), boundary > 0 ? boundary : n);
         }
       }
@@ -240,7 +283,8 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
         if (ownsRow(corner))
         {
           const Index point = points.PointOf(corner);
-          WriteCornerRow(parent, points, weights, f, i, table.GetMutableSources(point), table.GetMutableWeights(point));
+          WriteCornerRow(
+            parent, points, sharp, weights, f, i, table.GetMutableSources(point), table.GetMutableWeights(point));
         }
       }
     }

@@ -54,7 +54,8 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
 
   // Rows that read a part of their parent's topology keep that part of each level, and what
   // they number their rows with (Doo-Sabin's dual numbering: 8 bytes per corner where
-  // corners are welded, a byte per edge, two per vertex; the midpoint's kept vertices;
+  // corners are welded, two per vertex, and the corners before sharp edges, few; the
+  // midpoint's kept vertices;
   // sqrt(3)'s vertex rules and the faces of its centroids); each level is whole while it is
   // split.
   MeshTopology::Part part;
@@ -65,7 +66,7 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
     {
       const MeshCounts& c = counts[l];
       const double rows = part == MeshTopology::Part::Faces
-        ? FacesBytes(c) + 4.0 * c.Corners + 8.0 * c.Corners + c.Edges + 2.0 * c.Vertices
+        ? FacesBytes(c) + 8.0 * c.Corners + 2.0 * c.Vertices
         : part == MeshTopology::Part::EdgeEnds ? 8.0 * c.Edges + 4.0 * c.Vertices
                                                : FacesBytes(c) + 8.0 * c.Edges + 5.0 * c.Vertices + 4.0 * c.Faces;
       const bool last = l + 1 == levels;

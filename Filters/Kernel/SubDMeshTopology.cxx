@@ -178,10 +178,7 @@ void MeshTopology::KeepOnly(Part part, const ParallelFor& parallelFor)
   {
     lists.push_back(&this->EdgeVertices);
   }
-  if (part != Part::Faces)
-  {
-    lists.push_back(&this->FaceEdges);
-  }
+  lists.push_back(&this->FaceEdges); // no part keeps them
   if (part == Part::EdgeEnds)
   {
     lists.push_back(&this->FaceVertices);

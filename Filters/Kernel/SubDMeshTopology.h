@@ -87,13 +87,13 @@ public:
   /// A part of the topology that rows written from a level may read alone.
   enum class Part
   {
-    Faces,         ///< each face's corners and edge numbers (Doo-Sabin's rows)
+    Faces,         ///< each face's corners (Doo-Sabin's rows)
     EdgeEnds,      ///< each edge's two vertices (the midpoint rows)
     FacesAndRings, ///< each face's corners and vertex's ring of neighbours (sqrt(3)'s rows)
   };
   /// Frees everything but `part` (and the vertex count): for a level kept only for rows that
   /// read nothing else. Only that part's accessors may be called then (GetNumFaces,
-  /// GetFaceSize, GetFaceOffset, GetFaceVertices, GetFaceEdges; GetNumEdges,
+  /// GetFaceSize, GetFaceOffset, GetFaceVertices; GetNumEdges,
   /// GetEdgeVertices, GetOtherEndpoint; GetVertexEdges' sizes and ForEachRingVertex). For
   /// FacesAndRings each vertex's list of edges is overwritten, in place and in the same
   /// order, with the vertices at their other ends, and the edges' ends go: the rings cost

@@ -133,6 +133,16 @@ Level DooSabinScheme::Split(const Level& parent, ChildTopology depth) const
     this->GetFaceTagsKept(parent, depth));
 }
 
+Level DooSabinScheme::SplitBeforeTrim(Level& parent, ChildTopology depth) const
+{
+  const DualPoints points = NumberDualPoints(parent, this->GetParallelFor());
+  if (depth == ChildTopology::FacesOnly)
+  {
+    parent.Topology.ReleaseVertexEdgeLists();
+  }
+  return SplitDual(parent, points, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth));
+}
+
 StencilTable DooSabinScheme::BuildStencils(const Level& parent) const
 {
   return BuildDooSabinStencils(parent, NumberDualPoints(parent, this->GetParallelFor()), this->GetParallelFor());

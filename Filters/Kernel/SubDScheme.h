@@ -50,7 +50,7 @@ public:
   virtual Level SplitAndTrim(
     Level& parent, ChildTopology depth, bool leanChild, const std::function<void(Level&)>& trimParent) const
   {
-    Level child = this->Split(parent, depth);
+    Level child = this->SplitBeforeTrim(parent, depth);
     trimParent(parent);
     if (leanChild)
     {
@@ -59,6 +59,11 @@ public:
     }
     return child;
   }
+  /// SplitAndTrim's split: Split by default. `parent` is kept for its written rows only
+  /// (WrittenRowsReadOnly), so a split may free, once it no longer reads them, parts of it
+  /// that neither the rest of the split nor those rows read (Doo-Sabin: the lists of edges
+  /// around the vertices, read to number the points only).
+  virtual Level SplitBeforeTrim(Level& parent, ChildTopology depth) const { return this->Split(parent, depth); }
   /// How the splits run their loops: SerialFor unless a caller with threads sets its own.
   /// Splits that derive the child topology in closed form (the quad and triangle splits) use
   /// it; results are the same for any number of threads.
@@ -308,6 +313,11 @@ public:
   bool BuildLimitTangentStencils(const Level& level, StencilTable& tangents, std::string& error) const override;
   bool UsesBoundaryRule() const override { return false; }
   Level Split(const Level& parent, ChildTopology depth) const override;
+  /// A faces-only split frees the parent's lists of edges around its vertices once the
+  /// points are numbered: the faces are written from the faces around them (with the rows'
+  /// list of corners before sharp edges instead of the faces' edges, MakeDooSabinRowSource:
+  /// bunny, level 3, 2 threads, peak 249 to 225 MB).
+  Level SplitBeforeTrim(Level& parent, ChildTopology depth) const override;
   StencilTable BuildStencils(const Level& parent) const override;
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   /// MakeDooSabinRowSource: the rows read the parent's faces and the dual numbering only.
