@@ -20,10 +20,9 @@ double DooSabinWeight(Index n, Index d)
 namespace
 {
 // The corners whose outgoing edge (corner j's edge runs to corner j + 1) acts as a boundary
-// (DualPoints::EdgeActsAsBoundary), sorted: what the boundary rows read of the faces' edges.
-// A smooth closed level has none; a level with boundaries or creases, a few per crease
-// line. Kept instead of the faces' edges (4 bytes per corner of the level), which the
-// written rows would otherwise keep for as long as their level.
+// (DualPoints::EdgeActsAsBoundary), a bit per corner: what the boundary rows read of the
+// faces' edges, kept instead of them (4 bytes per corner of the level), which the written
+// rows would otherwise keep for as long as their level. Empty on a smooth closed level.
 class CornersBeforeSharpEdges
 {
 public:
@@ -32,31 +31,36 @@ public:
   {
     if (std::none_of(actsAsBoundary.begin(), actsAsBoundary.end(), [](std::uint8_t a) { return a != 0; }))
     {
-      return; // nothing to look at: a smooth closed level
+      return;
     }
+    this->Bits.assign((static_cast<size_t>(topo.GetNumFaceCorners()) + 63) / 64, 0);
     for (Index f = 0; f < topo.GetNumFaces(); ++f)
     {
       const IndexSpan fe = topo.GetFaceEdges(f);
       for (Index j = 0; j < fe.size(); ++j)
       {
-        if (actsAsBoundary[fe[j]])
-        {
-          this->Corners.push_back(topo.GetFaceOffset(f) + j);
-        }
+        const size_t corner = static_cast<size_t>(topo.GetFaceOffset(f) + j);
+        this->Bits[corner / 64] |= static_cast<std::uint64_t>(actsAsBoundary[fe[j]] != 0) << (corner % 64);
       }
     }
-    this->Corners.shrink_to_fit();
   }
-  bool Contains(Index corner) const { return std::binary_search(this->Corners.begin(), this->Corners.end(), corner); }
+  bool Contains(Index corner) const
+  {
+    return !this->Bits.empty() && (this->Bits[static_cast<size_t>(corner) / 64] >> (corner % 64) & 1u) != 0;
+  }
   /// Whether a corner in [first, end) is one.
   bool AnyIn(Index first, Index end) const
   {
-    const auto it = std::lower_bound(this->Corners.begin(), this->Corners.end(), first);
-    return it != this->Corners.end() && *it < end;
+    bool any = false;
+    for (Index c = first; c < end && !this->Bits.empty(); ++c)
+    {
+      any |= this->Contains(c);
+    }
+    return any;
   }
 
 private:
-  std::vector<Index> Corners;
+  std::vector<std::uint64_t> Bits;
 };
 
 // The boundary row of corner `j` of face f at vertex v, if one of the face's two edges at v
