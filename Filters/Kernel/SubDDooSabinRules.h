@@ -40,7 +40,7 @@ SUBDKERNEL_EXPORT StencilTable BuildDooSabinStencils(
   const Level& parent, const DualPoints& points, const ParallelFor& parallelFor = SerialFor);
 /// The same rows written as they are applied (SubDRowWriting.h), with the numbering of
 /// `parent` made here by `parallelFor`. They read the parent's faces' corners and that
-/// numbering only (with a list of the corners before sharp edges, made here from the faces'
+/// numbering only (with a bit per corner before a sharp edge, made here from the faces'
 /// edges): the rest of its topology may be freed (MeshTopology::KeepOnly) once its child is
 /// split.
 SUBDKERNEL_EXPORT std::shared_ptr<const RowSource> MakeDooSabinRowSource(

@@ -315,7 +315,7 @@ public:
   Level Split(const Level& parent, ChildTopology depth) const override;
   /// A faces-only split frees the parent's lists of edges around its vertices once the
   /// points are numbered: the faces are written from the faces around them (with the rows'
-  /// list of corners before sharp edges instead of the faces' edges, MakeDooSabinRowSource:
+  /// bit per corner before a sharp edge instead of the faces' edges, MakeDooSabinRowSource:
   /// bunny, level 3, 2 threads, peak 249 to 225 MB).
   Level SplitBeforeTrim(Level& parent, ChildTopology depth) const override;
   StencilTable BuildStencils(const Level& parent) const override;
