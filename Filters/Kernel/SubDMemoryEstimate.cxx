@@ -72,10 +72,11 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
       const bool last = l + 1 == levels;
       const double child = last ? output - finest.Vertices * request.OutputBytesPerPoint : TopologyBytes(counts[l + 1]);
       // Refine frees the faces' edges and the lists of faces around the vertices before a
-      // faces-only finest level is split, where neither the split nor the rows read them.
-      const double released = last && request.Finest == ChildTopology::FacesOnly && !scheme.FinestSplitReadsVertexFacesOrFaceEdges()
-        ? 12.0 * c.Corners
-        : 0.0;
+      // faces-only finest level is split, where neither the split nor the rows read them;
+      // some splits free the lists of edges around the vertices.
+      const bool facesOnlyLast = last && request.Finest == ChildTopology::FacesOnly;
+      const double released = (facesOnlyLast && !scheme.FinestSplitReadsVertexFacesOrFaceEdges() ? 12.0 * c.Corners : 0.0) +
+        (facesOnlyLast && scheme.FacesOnlySplitFreesVertexEdgeLists() ? 8.0 * c.Edges + 4.0 * c.Vertices : 0.0);
       splitPeak = std::max(splitPeak, kept + TopologyBytes(c) - released + rows + child);
       kept += rows;
     }

@@ -64,6 +64,9 @@ public:
   /// that neither the rest of the split nor those rows read (Doo-Sabin: the lists of edges
   /// around the vertices, read to number the points only).
   virtual Level SplitBeforeTrim(Level& parent, ChildTopology depth) const { return this->Split(parent, depth); }
+  /// Whether SplitBeforeTrim frees the lists of edges around the parent's vertices before it
+  /// writes a faces-only child (EstimatePeakBytes counts them out of that split's peak).
+  virtual bool FacesOnlySplitFreesVertexEdgeLists() const { return false; }
   /// How the splits run their loops: SerialFor unless a caller with threads sets its own.
   /// Splits that derive the child topology in closed form (the quad and triangle splits) use
   /// it; results are the same for any number of threads.
@@ -318,6 +321,7 @@ public:
   /// bit per corner before a sharp edge instead of the faces' edges, MakeDooSabinRowSource:
   /// bunny, level 3, 2 threads, peak 249 to 225 MB).
   Level SplitBeforeTrim(Level& parent, ChildTopology depth) const override;
+  bool FacesOnlySplitFreesVertexEdgeLists() const override { return true; }
   StencilTable BuildStencils(const Level& parent) const override;
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   /// MakeDooSabinRowSource: the rows read the parent's faces and the dual numbering only.

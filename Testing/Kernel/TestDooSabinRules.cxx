@@ -117,6 +117,7 @@ TEST(DualSplit, ThreadsGiveTheSerialPointsFacesAndRows)
 TEST(DualSplit, FacesOnlySplitForTheRowsFreesTheVertexEdgeListsFirst)
 {
   const subd::DooSabinScheme scheme;
+  EXPECT_TRUE(scheme.FacesOnlySplitFreesVertexEdgeLists()); // what the memory estimate counts
   for (const subdtest::TestMesh& mesh : subdtest::StandardMeshes())
   {
     for (bool creased : { false, true })
