@@ -16,6 +16,7 @@
 
 #include "SubDParallel.h"
 #include "SubDTypes.h"
+#include <algorithm>
 #include <vector>
 
 namespace subd
@@ -95,9 +96,9 @@ public:
   /// read nothing else. Only that part's accessors may be called then (GetNumFaces,
   /// GetFaceSize, GetFaceOffset, GetFaceVertices; GetNumEdges,
   /// GetEdgeVertices, GetOtherEndpoint; GetVertexEdges' sizes and ForEachRingVertex). For
-  /// FacesAndRings each vertex's list of edges is overwritten, in place and in the same
-  /// order, with the vertices at their other ends, and the edges' ends go: the rings cost
-  /// no more than the edge lists did and are read without the indirection.
+  /// FacesAndRings each vertex's list of edges is overwritten, in place, with the vertices
+  /// at their other ends in increasing order (ForEachRingVertex's), and the edges' ends go:
+  /// the rings cost no more than the edge lists did and are read without the indirection.
   void KeepOnly(Part part, const ParallelFor& parallelFor = SerialFor);
   /// False for a level between split with ChildTopology::FacesAndEdges (and a faces-only
   /// one): no list, count or tag around its vertices, no valence.
@@ -115,15 +116,39 @@ public:
   /// lists) for non-manifold or isolated vertices.
   bool GetOrderedVertexFaces(Index v, std::vector<Index>& faces, std::vector<Index>& corners) const;
   IndexSpan GetVertexEdges(Index v) const { return Span(VertexEdges, VertexEdgeOffsets, v); }
-  /// Calls visit(w) for the vertex w at the other end of each of v's edges, in
-  /// GetVertexEdges' order (also once KeepOnly(Part::FacesAndRings) kept the rings alone).
+  /// Calls visit(w) for the vertex w at the other end of each of v's edges, in increasing
+  /// order of w: an order that does not depend on how the edges are numbered, so that rows
+  /// written from another level can follow it (sqrt(3)'s from the grandparent). Also once
+  /// KeepOnly(Part::FacesAndRings) kept the rings alone, sorted.
   template <typename Visit>
   void ForEachRingVertex(Index v, Visit&& visit) const
   {
     const IndexSpan list = this->GetVertexEdges(v);
+    if (this->RingsHoldVertices)
+    {
+      for (Index w : list)
+      {
+        visit(w);
+      }
+      return;
+    }
+    constexpr Index onStack = 64;
+    Index stack[onStack];
+    std::vector<Index> heap;
+    Index* ring = stack;
+    if (list.size() > onStack)
+    {
+      heap.resize(static_cast<size_t>(list.size()));
+      ring = heap.data();
+    }
     for (Index i = 0; i < list.size(); ++i)
     {
-      visit(this->RingsHoldVertices ? list[i] : this->GetOtherEndpoint(list[i], v));
+      ring[i] = this->GetOtherEndpoint(list[i], v);
+    }
+    std::sort(ring, ring + list.size());
+    for (Index i = 0; i < list.size(); ++i)
+    {
+      visit(ring[i]);
     }
   }
 

@@ -55,6 +55,18 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
       }
     }
     std::shared_ptr<const RowSource> writtenRows;
+    // A faces-only finest level's rows written from its grandparent where the scheme can
+    // (sqrt(3) on closed smooth levels), asked for by the leaner modes: its parent, the
+    // largest topology, is then split and freed, not kept for them.
+    if (!refined && last && depth == ChildTopology::FacesOnly && grandparent &&
+      (levelRows == LevelRows::WrittenLean || levelRows == LevelRows::WrittenFromGrandparent) &&
+      scheme.WritesFinestRowsFromGrandparent(*grandparent, current))
+    {
+      current = scheme.SplitFinestAlone(current); // the parent, freed here
+      writtenRows = scheme.MakeFinestRowSourceFromGrandparent(std::move(grandparent));
+      out.Stencils.push_back(StencilTable::FromSource(writtenRows));
+      refined = true;
+    }
     if (levelRows != LevelRows::Stored && !refined)
     {
       auto parent = std::make_shared<Level>(std::move(current));

@@ -99,7 +99,10 @@ enum class LevelRows
                ///< features) is written from its grandparent, its parent never built:
                ///< WrittenFromGrandparent's memory at Written's speed, for a single
                ///< evaluation. Re-evaluations are slower until PromoteFinestRows builds the
-               ///< parent (what the filters do when they re-apply their rows).
+               ///< parent (what the filters do when they re-apply their rows). With both
+               ///< modes, a scheme that can write the finest rows from the grandparent once
+               ///< the parent is built (Scheme::WritesFinestRowsFromGrandparent: sqrt(3) on
+               ///< closed smooth levels) splits the parent and frees it instead of keeping it.
 };
 
 /// If the finest level's rows are written from its grandparent, its parent not kept

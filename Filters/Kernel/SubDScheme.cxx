@@ -12,6 +12,7 @@
 #include "SubDQuadSplit.h"
 #include "SubDRowWriting.h"
 #include "SubDSqrt3Limit.h"
+#include "SubDSqrt3GrandparentRows.h"
 #include "SubDSqrt3Rules.h"
 #include "SubDTriangleSplit.h"
 
@@ -234,6 +235,31 @@ Level Sqrt3Scheme::SplitAndTrim(
     trimParent(parent);
   }
   return child;
+}
+
+bool Sqrt3Scheme::WritesFinestRowsFromGrandparent(const Level& grandparent, const Level& parent) const
+{
+  return Sqrt3RowsFromGrandparentApply(grandparent, parent, this->GetParallelFor());
+}
+
+std::shared_ptr<const RowSource> Sqrt3Scheme::MakeFinestRowSourceFromGrandparent(std::shared_ptr<const Level> grandparent) const
+{
+  return MakeSqrt3RowSourceFromGrandparent(std::move(grandparent), this->GetParallelFor());
+}
+
+Level Sqrt3Scheme::SplitFinestAlone(Level& parent) const
+{
+  const FaceTagsKept kept = this->GetFaceTagsKept(parent, ChildTopology::FacesOnly);
+  parent.Topology.ReleaseVertexEdgeLists();
+  if (!kept.Origins)
+  {
+    LevelArray<Index>().swap(parent.FaceOrigin);
+  }
+  if (!kept.Holes)
+  {
+    LevelArray<std::uint8_t>().swap(parent.FaceIsHole); // none is a hole
+  }
+  return SplitSqrt3(parent, ChildTopology::FacesOnly, this->GetParallelFor(), kept);
 }
 
 std::shared_ptr<const RowSource> Sqrt3Scheme::MakeRowSource(std::shared_ptr<const Level> parent) const

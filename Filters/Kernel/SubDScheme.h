@@ -108,6 +108,28 @@ public:
   /// edges: where they read neither (sqrt(3)), Refine frees both before the finest level,
   /// faces only, is split from it (the peak of a refinement).
   virtual bool FinestSplitReadsVertexFacesOrFaceEdges() const { return true; }
+  /// For a faces-only finest level whose rows are written as applied: whether they can be
+  /// written from `grandparent`, the level two above (kept by its own rows, and maybe
+  /// trimmed to what those read), instead of from `parent`, its child (whole), which is then
+  /// split by SplitFinestAlone and freed instead of kept. False by default; sqrt(3) where
+  /// both levels are closed and smooth (SubDSqrt3GrandparentRows.h).
+  virtual bool WritesFinestRowsFromGrandparent(const Level& grandparent, const Level& parent) const
+  {
+    (void)grandparent;
+    (void)parent;
+    return false;
+  }
+  /// Those rows (where WritesFinestRowsFromGrandparent): made after the finest split, so
+  /// that their tables and the parent's topology are not held at once.
+  virtual std::shared_ptr<const RowSource> MakeFinestRowSourceFromGrandparent(std::shared_ptr<const Level> grandparent) const
+  {
+    (void)grandparent;
+    return nullptr;
+  }
+  /// The faces-only finest level of a parent that nothing reads afterwards (its rows come
+  /// from the grandparent): the split may first free what of `parent` it does not read.
+  /// Split by default.
+  virtual Level SplitFinestAlone(Level& parent) const { return this->Split(parent, ChildTopology::FacesOnly); }
   /// True when the rows MakeRowSource writes read nothing of their parent level but `part`
   /// of its topology: Refine then frees the rest of each such level once it is split
   /// (KeepOnly), since it keeps it for those rows only. Only for schemes without
@@ -404,6 +426,12 @@ public:
   /// Its flips read each edge's ends and faces and each face's corners, its rows each
   /// vertex's edges and face count.
   bool FinestSplitReadsVertexFacesOrFaceEdges() const override { return false; }
+  /// Sqrt3RowsFromGrandparentApply (closed, smooth levels): MakeSqrt3RowSourceFromGrandparent.
+  bool WritesFinestRowsFromGrandparent(const Level& grandparent, const Level& parent) const override;
+  std::shared_ptr<const RowSource> MakeFinestRowSourceFromGrandparent(std::shared_ptr<const Level> grandparent) const override;
+  /// Frees the parent's lists of edges around its vertices, and its faces' origins and hole
+  /// flags where the child keeps none, before the flips (which read none of them).
+  Level SplitFinestAlone(Level& parent) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
 };

@@ -483,6 +483,10 @@ public:
 
 private:
   Index VertexPoint(Index v) const { return this->Points.FirstVertexPoint + v; }
+  // A face's tags, where the parent still has them: a finest split from a parent kept for
+  // nothing else may have freed those its child does not keep (SplitFinestAlone).
+  Index Origin(Index f) const { return this->Parent.FaceOrigin.empty() ? 0 : this->Parent.FaceOrigin[f]; }
+  std::uint8_t Hole(Index f) const { return this->Parent.IsFaceHole(f); }
 
   // Edge e's ends (a, b) in the order triangle f runs them, from the triangle's corners
   // alone (found without the face offsets): the finest split runs without the faces' edges.
@@ -526,14 +530,13 @@ private:
   void WriteEdgeTriangles(Index e, TriangleCursor& out) const
   {
     const IndexSpan ef = this->Topo.GetEdgeFaces(e);
-    const LevelArray<std::uint8_t>& isHole = this->Parent.FaceIsHole;
     if (this->Flips(e))
     {
       Index f1 = ef[0], f2 = ef[1], a, b;
       this->OrientedEnds(e, f1, a, b);
-      const std::uint8_t hole = isHole[f1] && isHole[f2];
-      out.AddTriangle(this->VertexPoint(a), this->Apex(f2, e), this->Apex(f1, e), this->Parent.FaceOrigin[f1], hole);
-      out.AddTriangle(this->VertexPoint(b), this->Apex(f1, e), this->Apex(f2, e), this->Parent.FaceOrigin[f2], hole);
+      const std::uint8_t hole = this->Hole(f1) && this->Hole(f2);
+      out.AddTriangle(this->VertexPoint(a), this->Apex(f2, e), this->Apex(f1, e), this->Origin(f1), hole);
+      out.AddTriangle(this->VertexPoint(b), this->Apex(f1, e), this->Apex(f2, e), this->Origin(f2), hole);
       return;
     }
     // Not flipped (boundary, crease, non-manifold): each face keeps its part next to e,
@@ -544,7 +547,7 @@ private:
       {
         Index a, b;
         this->OrientedEnds(e, f, a, b);
-        out.AddTriangle(this->VertexPoint(a), this->VertexPoint(b), this->Apex(f, e), this->Parent.FaceOrigin[f], isHole[f]);
+        out.AddTriangle(this->VertexPoint(a), this->VertexPoint(b), this->Apex(f, e), this->Origin(f), this->Hole(f));
       }
     }
   }
@@ -562,7 +565,7 @@ private:
     this->OrientedEnds(e, f, a, b);
     const Index m = this->Topo.GetTriangleOppositeVertex(f, e);
     out.AddTriangle(this->Points.TrisectionPoint(this->Topo, e, a), this->Points.TrisectionPoint(this->Topo, e, b),
-      this->VertexPoint(m), this->Parent.FaceOrigin[f], this->Parent.FaceIsHole[f]);
+      this->VertexPoint(m), this->Origin(f), this->Hole(f));
   }
 
   const Level& Parent;

@@ -1,0 +1,132 @@
+// The sqrt(3) rows of a level written from the level two above (SubDSqrt3GrandparentRows.h).
+#include "SubDRefiner.h"
+#include "SubDScheme.h"
+#include "SubDSqrt3GrandparentRows.h"
+#include "SubDTestMeshes.h"
+#include "SubDTestParallel.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <memory>
+#include <vector>
+
+using subd::Index;
+
+namespace
+{
+// The closed triangle meshes of the fixtures (every one smooth: no tags).
+std::vector<subdtest::TestMesh> ClosedTriangleMeshes()
+{
+  std::vector<subdtest::TestMesh> meshes;
+  for (const subdtest::TestMesh& mesh : subdtest::TriangleMeshes())
+  {
+    if (subdtest::BaseLevel(mesh).Topology.GetNumBoundaryEdges() == 0 &&
+      subdtest::BaseLevel(mesh).Topology.GetNumNonManifoldEdges() == 0 &&
+      subdtest::BaseLevel(mesh).Topology.GetNumNonManifoldVertices() == 0)
+    {
+      meshes.push_back(mesh);
+    }
+  }
+  meshes.push_back(subdtest::Bipyramid(70)); // apices of valence 70: fans past the stack
+  return meshes;
+}
+
+// `rows` applied to `components` values per point of the level they read.
+std::vector<double> Apply(const subd::StencilTable& rows, int components)
+{
+  std::vector<double> parents(static_cast<size_t>(rows.GetNumParents()) * components);
+  for (size_t i = 0; i < parents.size(); ++i)
+  {
+    parents[i] = std::sin(0.37 * static_cast<double>(i)) + 0.01 * static_cast<double>(i % 7);
+  }
+  std::vector<double> children(static_cast<size_t>(rows.GetNumRows()) * components);
+  rows.Apply(parents.data(), children.data(), components);
+  return children;
+}
+}
+
+// On closed smooth levels the rows written from the grandparent, which keeps its triangles
+// alone, are the parent's own rows: the same values to the bit through the rows' closed form
+// (3 components) and their written entries (5), serially and on threads.
+TEST(Sqrt3GrandparentRows, EqualTheParentsRowsOnClosedSmoothLevels)
+{
+  const subd::Sqrt3Scheme scheme;
+  int checked = 0;
+  for (const subdtest::TestMesh& mesh : ClosedTriangleMeshes())
+  {
+    subd::Level grandparent = subdtest::BaseLevel(mesh);
+    for (int depth = 0; depth < 2; ++depth)
+    {
+      SCOPED_TRACE(mesh.Name + " depth " + std::to_string(depth));
+      subd::Level parent = scheme.Split(grandparent, subd::ChildTopology::Full);
+      ASSERT_TRUE(subd::Sqrt3RowsFromGrandparentApply(grandparent, parent));
+      ASSERT_TRUE(subd::Sqrt3RowsFromGrandparentApply(grandparent, parent, subdtest::ThreeThreadFor));
+      const subd::StencilTable expected = scheme.BuildStencils(parent);
+      auto trimmed = std::make_shared<subd::Level>(grandparent);
+      subd::KeepOnly(*trimmed, subd::MeshTopology::Part::FacesAndRings); // what Refine keeps of it
+      for (const subd::ParallelFor& parallelFor :
+        { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor) })
+      {
+        const subd::StencilTable rows =
+          subd::StencilTable::FromSource(subd::MakeSqrt3RowSourceFromGrandparent(trimmed, parallelFor));
+        EXPECT_TRUE(subd::IsSqrt3RowSourceFromGrandparent(rows.GetSource()));
+        ASSERT_EQ(rows.GetNumParents(), expected.GetNumParents());
+        ASSERT_EQ(rows.GetNumRows(), expected.GetNumRows());
+        EXPECT_EQ(Apply(rows, 3), Apply(expected, 3));
+        EXPECT_EQ(Apply(rows, 5), Apply(expected, 5));
+      }
+      ++checked;
+      grandparent = std::move(parent);
+    }
+  }
+  EXPECT_GE(checked, 10);
+}
+
+// Anything sharp, open or not flipped keeps the parent's own rows.
+TEST(Sqrt3GrandparentRows, ApplyToClosedSmoothLevelsOnly)
+{
+  const subd::Sqrt3Scheme scheme;
+  const subd::Level open = subdtest::BaseLevel(subdtest::House(true).Triangulated());
+  EXPECT_FALSE(subd::Sqrt3RowsFromGrandparentApply(open, scheme.Split(open, subd::ChildTopology::Full)));
+  const subdtest::TestMesh closed = subdtest::Bipyramid(5);
+  subd::Level creased = subdtest::BaseLevel(closed);
+  creased.EdgeSharpness[0] = 2.0f; // a crease: its edge is not flipped
+  EXPECT_FALSE(subd::Sqrt3RowsFromGrandparentApply(creased, scheme.Split(creased, subd::ChildTopology::Full)));
+  subd::Level pinned = subdtest::BaseLevel(closed);
+  pinned.VertexSharpness[0] = subd::SharpnessInfinite; // a sharp vertex stays put in the child
+  EXPECT_FALSE(subd::Sqrt3RowsFromGrandparentApply(pinned, scheme.Split(pinned, subd::ChildTopology::Full)));
+  // A parent that is not the grandparent's split.
+  const subd::Level smooth = subdtest::BaseLevel(closed);
+  subd::Level other = scheme.Split(smooth, subd::ChildTopology::Full);
+  EXPECT_TRUE(subd::Sqrt3RowsFromGrandparentApply(smooth, other));
+  EXPECT_FALSE(subd::Sqrt3RowsFromGrandparentApply(other, other));
+}
+
+// Refine takes them for a faces-only finest level with the lean row modes, and frees the
+// finest level's parent: the hierarchy evaluates as the stored one does.
+TEST(Sqrt3GrandparentRows, RefineWritesTheFinestRowsFromTheGrandparent)
+{
+  const subd::Sqrt3Scheme scheme;
+  for (const subdtest::TestMesh& mesh : ClosedTriangleMeshes())
+  {
+    for (subd::LevelRows mode : { subd::LevelRows::WrittenLean, subd::LevelRows::WrittenFromGrandparent,
+           subd::LevelRows::Written })
+    {
+      for (int levels = 1; levels <= 3; ++levels)
+      {
+        SCOPED_TRACE(mesh.Name + " L" + std::to_string(levels));
+        subd::Hierarchy stored, written;
+        subd::Refine(scheme, subdtest::BaseLevel(mesh), levels, stored);
+        subd::Refine(scheme, subdtest::BaseLevel(mesh), levels, written, nullptr, subd::ChildTopology::FacesOnly, mode);
+        const bool fromGrandparent = subd::IsSqrt3RowSourceFromGrandparent(written.Stencils.back().GetSource());
+        EXPECT_EQ(fromGrandparent, levels >= 2 && mode != subd::LevelRows::Written);
+        EXPECT_EQ(written.Finest.Topology.GetFaceVertexArray(), stored.Finest.Topology.GetFaceVertexArray());
+        std::vector<double> a(static_cast<size_t>(stored.GetNumFinestPoints()) * 3), b(a.size());
+        stored.Evaluate(mesh.Points.data(), 3, a.data());
+        written.Evaluate(mesh.Points.data(), 3, b.data());
+        EXPECT_EQ(a, b);
+      }
+    }
+  }
+}
