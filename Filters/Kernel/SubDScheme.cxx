@@ -251,6 +251,7 @@ Level Sqrt3Scheme::SplitFinestAlone(Level& parent) const
 {
   const FaceTagsKept kept = this->GetFaceTagsKept(parent, ChildTopology::FacesOnly);
   parent.Topology.ReleaseVertexEdgeLists();
+  LevelArray<float>().swap(parent.VertexSharpness); // a faces-only child inherits none
   if (!kept.Origins)
   {
     LevelArray<Index>().swap(parent.FaceOrigin);

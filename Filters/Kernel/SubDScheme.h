@@ -412,8 +412,9 @@ public:
   LevelRefinement RefineLevel(const Level& parent, ChildTopology depth) const override;
   /// SplitSqrt3: the split without the rows, for rows written as applied.
   Level Split(const Level& parent, ChildTopology depth) const override;
-  /// Trims the parent once the child's faces and inherited sharpness are made, before the
-  /// child's topology, where it is built in general (a mesh with a boundary or sharp edges).
+  /// Trims the parent once the split reads no more of it (SplitSqrt3's `parentRead`): before
+  /// the child's topology where that is built in general (a mesh with a boundary or sharp
+  /// edges), after it in the closed form, before the child's sharpness.
   Level SplitAndTrim(Level& parent, ChildTopology depth, bool leanChild,
     const std::function<void(Level&)>& trimParent) const override;
   /// MakeSqrt3RowSource: the rows read the parent's faces and vertex rings only.
@@ -429,8 +430,9 @@ public:
   /// Sqrt3RowsFromGrandparentApply (closed, smooth levels): MakeSqrt3RowSourceFromGrandparent.
   bool WritesFinestRowsFromGrandparent(const Level& grandparent, const Level& parent) const override;
   std::shared_ptr<const RowSource> MakeFinestRowSourceFromGrandparent(std::shared_ptr<const Level> grandparent) const override;
-  /// Frees the parent's lists of edges around its vertices, and its faces' origins and hole
-  /// flags where the child keeps none, before the flips (which read none of them).
+  /// Frees the parent's lists of edges around its vertices and its vertices' sharpness, and
+  /// its faces' origins and hole flags where the child keeps none, before the flips (which
+  /// read none of them).
   Level SplitFinestAlone(Level& parent) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }

@@ -138,6 +138,13 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexAr
     }
   });
   FillStrided(child.EdgeFaceOffsets, numChildEdges, 2, parallelFor);
+  // Numbered: what only the numbering read goes before the lists around the points take
+  // their memory (the edges' first ends stay for the faces around the points, if made).
+  IndexArray().swap(firstNewEdge);
+  if (!vertexFaceListsAndFaceEdges)
+  {
+    IndexArray().swap(edgeStart);
+  }
 
   // Face edges: triangle 2e (spoke, flipped, spoke), triangle 2e + 1 (spoke, flipped, spoke).
   child.FaceEdges.resize(vertexFaceListsAndFaceEdges ? child.FaceVertices.size() : 0);

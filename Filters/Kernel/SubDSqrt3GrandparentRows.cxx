@@ -74,7 +74,7 @@ public:
       },
       [&around](Index slot, const Corner& corner) { around[slot] = corner; }, offsets, parallelFor);
     this->Twin.resize(numCorners);
-    this->VertexFaces.resize(numCorners);
+    this->FanStart.resize(static_cast<size_t>(this->NumVertices));
     parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
       std::vector<std::pair<Index, Index>> byFrom; // a long list's corners by the vertex before
       for (Index v = begin; v < end; ++v)
@@ -104,8 +104,8 @@ public:
         for (Index k = first; k < last; ++k)
         {
           this->Twin[around[k].At] = PreviousCorner(enteringFrom(around[k].To));
-          this->VertexFaces[k] = around[k].At / 3; // in increasing order: filed so
         }
+        this->FanStart[v] = around[first].At;
       }
     });
     for (Index v = 0; v < this->NumVertices; ++v)
@@ -120,7 +120,6 @@ public:
         this->FirstHalf.push_back(static_cast<Index>(h));
       }
     }
-    this->VertexFaceOffsets = std::move(offsets);
     for (Index n = 1; n < MaxTabulatedValence; ++n)
     {
       this->Alphas[n] = Sqrt3Alpha(n);
@@ -196,14 +195,32 @@ private:
       }
       return;
     }
-    // An old vertex: the centroids of its faces, in increasing order.
+    // An old vertex: the centroids of its faces, walked around it (each next one across
+    // the edge leaving it in the last) and sorted. Walking costs the memory of no list.
     const Index v = point - this->NumFaces;
-    const Index first = this->VertexFaceOffsets[v], n = this->VertexFaceOffsets[v + 1] - first;
+    constexpr Index onStack = 64;
+    Index stack[onStack];
+    std::vector<Index> heap;
+    Index* faces = stack;
+    if (this->MaxValence > onStack)
+    {
+      heap.resize(static_cast<size_t>(this->MaxValence));
+      faces = heap.data();
+    }
+    Index n = 0;
+    const Index start = this->FanStart[v];
+    Index corner = start;
+    do
+    {
+      faces[n++] = corner / 3;
+      corner = NextCorner(this->Twin[corner]);
+    } while (corner != start && n < this->MaxValence);
+    std::sort(faces, faces + n);
     const double alpha = this->Alpha(n);
     visit(point, 1.0 - alpha);
     for (Index k = 0; k < n; ++k)
     {
-      visit(this->VertexFaces[first + k], alpha / n);
+      visit(faces[k], alpha / n);
     }
   }
 
@@ -213,10 +230,9 @@ private:
   const Index* Corners; // the grandparent's triangles (kept by WrittenRows)
   Index NumFaces, NumVertices;
   Index MaxValence = 0;
-  IndexArray Twin;              // per corner h: the corner of the half-edge running back along h's edge
-  IndexArray FirstHalf;         // per edge of P: its first half-edge
-  IndexArray VertexFaceOffsets; // per vertex (+ 1) of P: where its faces start in VertexFaces
-  IndexArray VertexFaces;       // the faces around each vertex, in increasing order
+  IndexArray Twin;      // per corner h: the corner of the half-edge running back along h's edge
+  IndexArray FirstHalf; // per edge of P: its first half-edge
+  IndexArray FanStart;  // per vertex of P: a corner at it
   double Alphas[MaxTabulatedValence] = {};
 };
 

@@ -575,7 +575,7 @@ private:
 
 // The child level of one step (without its rows).
 Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopology depth,
-  const ParallelFor& parallelFor, FaceTagsKept kept, const std::function<void()>& beforeChildTopology = nullptr,
+  const ParallelFor& parallelFor, FaceTagsKept kept, const std::function<void()>& parentRead = nullptr,
   bool leanChild = false)
 {
   const Sqrt3FaceWriter writer(parent, points);
@@ -589,11 +589,16 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
   {
     child.Depth = parent.Depth + 1;
     child.Creasing = parent.Creasing;
+    const Sqrt3InheritedSharpness inherited(parent, points);
     child.Topology = Sqrt3ChildTopology::OfSqrt3Step(
       parent.Topology, std::move(faces.Offsets), std::move(faces.Vertices), parallelFor, !leanChild);
+    if (parentRead)
+    {
+      parentRead(); // before the child's sharpness: the peak of a step
+    }
     child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), SharpnessSmooth);
     child.VertexSharpness.assign(static_cast<size_t>(points.NumPoints), SharpnessSmooth);
-    Sqrt3InheritedSharpness(parent, points).SetOn(child);
+    inherited.SetOn(child);
     return child;
   }
   // The general builder reads the child's faces alone: what the child inherits is gathered
@@ -606,9 +611,9 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
   Level depthOnly; // what SetChildTopology reads of the parent
   depthOnly.Depth = parent.Depth;
   depthOnly.Creasing = parent.Creasing;
-  if (beforeChildTopology)
+  if (parentRead)
   {
-    beforeChildTopology();
+    parentRead();
   }
   SetChildTopology(
     depthOnly, child, points.NumPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
@@ -635,10 +640,10 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const Para
 }
 
 Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor, FaceTagsKept kept,
-  const std::function<void()>& beforeChildTopology, bool leanChild)
+  const std::function<void()>& parentRead, bool leanChild)
 {
   return SplitWithPoints(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), depth, parallelFor, kept,
-    beforeChildTopology, leanChild);
+    parentRead, leanChild);
 }
 
 std::shared_ptr<const RowSource> MakeSqrt3RowSource(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)

@@ -82,13 +82,14 @@ SUBDKERNEL_EXPORT Index Sqrt3FirstVertexPoint(const Level& parent);
 /// The child keeps the face tags `kept` asks for (else its FaceOrigin or FaceIsHole is empty).
 SUBDKERNEL_EXPORT LevelRefinement RefineSqrt3(
   const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor, FaceTagsKept kept = {});
-/// The split alone (RefineSqrt3's child). Where the child's topology is built in general
-/// (not Sqrt3ChildTopology's closed form), `beforeChildTopology`, if given, is called once the
-/// split reads nothing more of `parent` but its depth and crease method (and may free it).
+/// The split alone (RefineSqrt3's child). `parentRead`, if given, is called once the split
+/// reads nothing more of `parent` (which it may free): where the child's topology is built in
+/// general, before it is; in Sqrt3ChildTopology's closed form, which reads the parent's
+/// topology, after it, before the child's sharpness takes its memory.
 /// With `leanChild`, the child has no lists of faces around its vertices (their counts only)
 /// and no face edges.
 SUBDKERNEL_EXPORT Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor,
-  FaceTagsKept kept = {}, const std::function<void()>& beforeChildTopology = nullptr, bool leanChild = false);
+  FaceTagsKept kept = {}, const std::function<void()>& parentRead = nullptr, bool leanChild = false);
 /// RefineSqrt3's rows written as they are applied (SubDRowWriting.h). Besides what they keep
 /// of their own (each vertex's rule, the curve vertices' and trisected edges' neighbours),
 /// they read the parent's faces' corners and vertices' rings only: the rest of its topology
