@@ -61,6 +61,12 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
   MeshTopology::Part part;
   if (scheme.WrittenRowsReadOnly(part))
   {
+    // On a closed mesh the finest rows may come from the grandparent (sqrt(3)): the finest
+    // level's parent is then freed after its split, its rings and vertex tags before it,
+    // and the rows' tables (about 20 bytes per face of the grandparent) come after it.
+    const bool finestFromGrandparent = levels >= 2 && request.Finest == ChildTopology::FacesOnly &&
+      (request.Rows == LevelRows::WrittenLean || request.Rows == LevelRows::WrittenFromGrandparent) &&
+      request.Base.BoundaryEdges == 0 && scheme.MayWriteFinestRowsFromGrandparent();
     double kept = 0.0, splitPeak = 0.0;
     for (int l = 0; l < levels; ++l)
     {
@@ -70,15 +76,28 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
         : part == MeshTopology::Part::EdgeEnds ? 8.0 * c.Edges + 4.0 * c.Vertices
                                                : FacesBytes(c) + 8.0 * c.Edges + 5.0 * c.Vertices + 4.0 * c.Faces;
       const bool last = l + 1 == levels;
-      const double child = last ? output - finest.Vertices * request.OutputBytesPerPoint : TopologyBytes(counts[l + 1]);
+      // The finest level's parent comes without its lists of faces around vertices and its
+      // faces' edges where the finest split reads neither (Scheme::SplitAndTrim's leanChild).
+      const bool leanChild = l + 2 == levels && request.Finest == ChildTopology::FacesOnly &&
+        !scheme.FinestSplitReadsVertexFacesOrFaceEdges();
+      const double child = last ? output - finest.Vertices * request.OutputBytesPerPoint
+                                : TopologyBytes(counts[l + 1]) - (leanChild ? 12.0 * counts[l + 1].Corners : 0.0);
       // Refine frees the faces' edges and the lists of faces around the vertices before a
       // faces-only finest level is split, where neither the split nor the rows read them;
       // some splits free the lists of edges around the vertices.
       const bool facesOnlyLast = last && request.Finest == ChildTopology::FacesOnly;
+      const bool splitAlone = last && finestFromGrandparent;
       const double released = (facesOnlyLast && !scheme.FinestSplitReadsVertexFacesOrFaceEdges() ? 12.0 * c.Corners : 0.0) +
-        (facesOnlyLast && scheme.FacesOnlySplitFreesVertexEdgeLists() ? 8.0 * c.Edges + 4.0 * c.Vertices : 0.0);
-      splitPeak = std::max(splitPeak, kept + TopologyBytes(c) - released + rows + child);
-      kept += rows;
+        (facesOnlyLast && (splitAlone || scheme.FacesOnlySplitFreesVertexEdgeLists()) ? 8.0 * c.Edges + 4.0 * c.Vertices
+                                                                                   : 0.0) +
+        (splitAlone ? 4.0 * c.Vertices : 0.0);
+      const double keptRows = splitAlone ? 0.0 : rows;
+      splitPeak = std::max(splitPeak, kept + TopologyBytes(c) - released + keptRows + child);
+      kept += keptRows;
+    }
+    if (finestFromGrandparent)
+    {
+      kept += 20.0 * counts[levels - 2].Faces;
     }
     return std::max(splitPeak, kept + output + scratch);
   }

@@ -119,6 +119,9 @@ public:
     (void)parent;
     return false;
   }
+  /// Whether WritesFinestRowsFromGrandparent may be true (on a closed mesh without sharp
+  /// features): what EstimatePeakBytes counts.
+  virtual bool MayWriteFinestRowsFromGrandparent() const { return false; }
   /// Those rows (where WritesFinestRowsFromGrandparent): made after the finest split, so
   /// that their tables and the parent's topology are not held at once.
   virtual std::shared_ptr<const RowSource> MakeFinestRowSourceFromGrandparent(std::shared_ptr<const Level> grandparent) const
@@ -429,6 +432,7 @@ public:
   bool FinestSplitReadsVertexFacesOrFaceEdges() const override { return false; }
   /// Sqrt3RowsFromGrandparentApply (closed, smooth levels): MakeSqrt3RowSourceFromGrandparent.
   bool WritesFinestRowsFromGrandparent(const Level& grandparent, const Level& parent) const override;
+  bool MayWriteFinestRowsFromGrandparent() const override { return true; }
   std::shared_ptr<const RowSource> MakeFinestRowSourceFromGrandparent(std::shared_ptr<const Level> grandparent) const override;
   /// Frees the parent's lists of edges around its vertices and its vertices' sharpness, and
   /// its faces' origins and hole flags where the child keeps none, before the flips (which
