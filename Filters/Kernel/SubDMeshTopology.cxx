@@ -99,8 +99,8 @@ void MeshTopology::KeepOnly(Part part, const ParallelFor& parallelFor)
         {
           this->VertexEdges[i] = this->GetOtherEndpoint(this->VertexEdges[i], v);
         }
-        std::sort(this->VertexEdges.begin() + this->VertexEdgeOffsets[v],
-          this->VertexEdges.begin() + this->VertexEdgeOffsets[v + 1]);
+        SortShortList(this->VertexEdges.data() + this->VertexEdgeOffsets[v],
+          this->VertexEdges.data() + this->VertexEdgeOffsets[v + 1]);
       }
     });
     this->RingsHoldVertices = true;

@@ -15,6 +15,7 @@
 #define SubDMeshTopology_h
 
 #include "SubDParallel.h"
+#include "SubDShortLists.h"
 #include "SubDTypes.h"
 #include <algorithm>
 #include <vector>
@@ -145,7 +146,7 @@ public:
     {
       ring[i] = this->GetOtherEndpoint(list[i], v);
     }
-    std::sort(ring, ring + list.size());
+    SortShortList(ring, ring + list.size());
     for (Index i = 0; i < list.size(); ++i)
     {
       visit(ring[i]);

@@ -1,6 +1,7 @@
 #include "SubDSqrt3GrandparentRows.h"
 #include "SubDFileByKey.h"
 #include "SubDRowWriting.h"
+#include "SubDShortLists.h"
 #include "SubDSqrt3Rules.h"
 
 #include <algorithm>
@@ -181,8 +182,8 @@ private:
       const size_t first = 3 * static_cast<size_t>(point);
       Index across[3] = { this->Twin[first] / 3, this->Twin[first + 1] / 3, this->Twin[first + 2] / 3 };
       Index ends[3] = { this->Corners[first], this->Corners[first + 1], this->Corners[first + 2] };
-      std::sort(across, across + 3);
-      std::sort(ends, ends + 3);
+      SortShortList(across, across + 3);
+      SortShortList(ends, ends + 3);
       const double alpha = this->Alpha(6);
       visit(point, 1.0 - alpha);
       for (Index f : across)
@@ -215,7 +216,7 @@ private:
       faces[n++] = corner / 3;
       corner = NextCorner(this->Twin[corner]);
     } while (corner != start && n < this->MaxValence);
-    std::sort(faces, faces + n);
+    SortShortList(faces, faces + n);
     const double alpha = this->Alpha(n);
     visit(point, 1.0 - alpha);
     for (Index k = 0; k < n; ++k)
