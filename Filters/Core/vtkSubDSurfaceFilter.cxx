@@ -485,6 +485,12 @@ int vtkSubDSurfaceFilter::Execute(
       vtkWarningMacro(<< nonManifold << ".");
     }
 
+    bool someBaseVertexUnused = false;
+    for (subd::Index v = 0; v < topology.GetNumVertices() && !someBaseVertexUnused; ++v)
+    {
+      someBaseVertexUnused = topology.GetVertexFaces(v).empty();
+    }
+
     // Size guard: predict the finest level and the peak memory before allocating anything.
     const subd::MeshCounts baseCounts{ static_cast<double>(topology.GetNumFaces()),
       static_cast<double>(topology.GetNumEdges()), static_cast<double>(numPoints),
@@ -499,6 +505,8 @@ int vtkSubDSurfaceFilter::Execute(
     const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
     subd::RefinementRequest request;
     request.Base = baseCounts;
+    request.ClosedManifoldBase = topology.GetNumBoundaryEdges() == 0 && topology.GetNumNonManifoldEdges() == 0 &&
+      topology.GetNumNonManifoldVertices() == 0 && !someBaseVertexUnused;
     request.Levels = this->NumberOfSubdivisions;
     request.Finest = sharpFeatures || this->ProjectToLimit || limitGeometry ? subd::ChildTopology::Full
                                                                            : subd::ChildTopology::FacesOnly;
@@ -552,11 +560,6 @@ int vtkSubDSurfaceFilter::Execute(
                                 << (this->LowMemory ? " even with LowMemory" : "") << ", more than MaximumMemory ("
                                 << this->MaximumMemory << " MiB).");
       return fail();
-    }
-    bool someBaseVertexUnused = false;
-    for (subd::Index v = 0; v < topology.GetNumVertices() && !someBaseVertexUnused; ++v)
-    {
-      someBaseVertexUnused = topology.GetVertexFaces(v).empty();
     }
     const subd::BaseTags tags = features.ToBaseTags(topology, input->GetPoints(),
       this->AutomaticCreases ? this->FeatureAngle : 0.0,

@@ -61,12 +61,12 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
   MeshTopology::Part part;
   if (scheme.WrittenRowsReadOnly(part))
   {
-    // On a closed mesh the finest rows may come from the grandparent (sqrt(3)): the finest
+    // On a closed manifold the finest rows may come from the grandparent (sqrt(3)): the finest
     // level's parent is then freed after its split, its rings and vertex tags before it,
     // and the rows' tables (about 20 bytes per face of the grandparent) come after it.
     const bool finestFromGrandparent = levels >= 2 && request.Finest == ChildTopology::FacesOnly &&
       (request.Rows == LevelRows::WrittenLean || request.Rows == LevelRows::WrittenFromGrandparent) &&
-      request.Base.BoundaryEdges == 0 && scheme.MayWriteFinestRowsFromGrandparent();
+      request.ClosedManifoldBase && scheme.MayWriteFinestRowsFromGrandparent();
     double kept = 0.0, splitPeak = 0.0;
     for (int l = 0; l < levels; ++l)
     {

@@ -33,6 +33,10 @@ struct RefinementRequest
   LevelRows Rows = LevelRows::Written;
   double OutputBytesPerPoint = 24.0;  ///< the finest values kept (points, point data)
   double ScratchBytesPerPoint = 24.0; ///< the values of the levels between (in double)
+  /// The base has no boundary, no non-manifold edge or vertex and no vertex without faces:
+  /// then sqrt(3)'s finest rows may come from the grandparent
+  /// (Scheme::MayWriteFinestRowsFromGrandparent); false counts the general path.
+  bool ClosedManifoldBase = false;
 };
 
 /// The model's margin, and the process's own code and small data it adds.

@@ -1,4 +1,5 @@
 // The sqrt(3) rows of a level written from the level two above (SubDSqrt3GrandparentRows.h).
+#include "SubDMemoryEstimate.h"
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
 #include "SubDSqrt3GrandparentRows.h"
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <malloc.h>
 #include <memory>
 #include <vector>
 
@@ -130,3 +132,43 @@ TEST(Sqrt3GrandparentRows, RefineWritesTheFinestRowsFromTheGrandparent)
     }
   }
 }
+
+// The memory estimate counts the finest rows from the grandparent only for a closed manifold
+// base (RefinementRequest::ClosedManifoldBase): it still covers what the refinement and its
+// evaluation hold (the heap in use), and stays below the general path's.
+#if defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define SUBD_HEAP_NOT_MEASURABLE
+#endif
+#endif
+#if defined(__GLIBC__) && !defined(SUBD_HEAP_NOT_MEASURABLE) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 33)
+TEST(Sqrt3GrandparentRows, MemoryEstimateCoversTheHeldMemory)
+{
+  const subd::Sqrt3Scheme scheme;
+  const subdtest::TestMesh mesh = subdtest::Grid(40, 40, true, true).Triangulated(); // a torus
+  const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+  subd::RefinementRequest request;
+  request.Base = { double(topology.GetNumFaces()), double(topology.GetNumEdges()), double(topology.GetNumVertices()),
+    double(topology.GetNumFaceCorners()), double(topology.GetNumBoundaryEdges()) };
+  request.Levels = 4;
+  request.Rows = subd::LevelRows::WrittenLean;
+  const double general = subd::EstimatePeakBytes(scheme, request);
+  request.ClosedManifoldBase = true;
+  const double predicted = subd::EstimatePeakBytes(scheme, request) - subd::EstimateLibraryBytes;
+  EXPECT_LT(predicted + subd::EstimateLibraryBytes, general);
+  auto heapInUse = [] { return mallinfo2().uordblks + mallinfo2().hblkhd + subd::GetLargeBlockBytesInUse(); };
+  const size_t before = heapInUse();
+  double held = 0.0;
+  {
+    subd::Hierarchy hierarchy;
+    subd::Refine(scheme, subd::MakeBaseLevel(topology, {}, subd::BoundaryRule::EdgeOnly), request.Levels, hierarchy,
+      nullptr, request.Finest, request.Rows);
+    EXPECT_TRUE(subd::IsSqrt3RowSourceFromGrandparent(hierarchy.Stencils.back().GetSource()));
+    std::vector<double> finest(static_cast<size_t>(hierarchy.GetNumFinestPoints()) * 3);
+    hierarchy.Evaluate(mesh.Points.data(), 3, finest.data());
+    held = static_cast<double>(heapInUse() - before);
+  }
+  EXPECT_GT(held, 1.0e6); // a measurement, not noise
+  EXPECT_LE(held, predicted);
+}
+#endif
