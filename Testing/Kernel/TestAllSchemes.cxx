@@ -8,13 +8,13 @@
 #include "SubDRowWriting.h"
 #include "SubDScheme.h"
 #include "SubDOracleSupport.h"
+#include "SubDTestHeap.h"
 #include "SubDTestMeshes.h"
 #include "SubDTestParallel.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <malloc.h>
 #include <array>
 #include <cmath>
 #include <functional>
@@ -780,12 +780,7 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
 // levels: the default path's peak), measured as the heap in use, and is not far above it for
 // the schemes that write their rows; LowMemory's is lower from level 2 on, where it applies.
 // (Not in the AddressSanitizer build, whose allocator mallinfo2 does not see.)
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define SUBD_HEAP_NOT_MEASURABLE
-#endif
-#endif
-#if defined(__GLIBC__) && !defined(SUBD_HEAP_NOT_MEASURABLE) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 33)
+#if defined(SUBD_HEAP_MEASURABLE)
 TEST_P(AllSchemes, PeakMemoryEstimateCoversTheHeldMemory)
 {
   const auto scheme = GetParam().Make();
@@ -797,9 +792,7 @@ TEST_P(AllSchemes, PeakMemoryEstimateCoversTheHeldMemory)
     double(topology.GetNumFaceCorners()), double(topology.GetNumBoundaryEdges()) };
   request.Levels = 3;
   const double predicted = (subd::EstimatePeakBytes(*scheme, request) - subd::EstimateLibraryBytes);
-  // The heap in use: the C library's, and the large blocks mapped beside it.
-  auto heapInUse = [] { return mallinfo2().uordblks + mallinfo2().hblkhd + subd::GetLargeBlockBytesInUse(); };
-  const size_t before = heapInUse();
+  const size_t before = subdtest::HeapInUse();
   double held = 0.0;
   {
     subd::Hierarchy hierarchy;
@@ -809,7 +802,7 @@ TEST_P(AllSchemes, PeakMemoryEstimateCoversTheHeldMemory)
     std::vector<double> finest(static_cast<size_t>(hierarchy.GetNumFinestPoints()) * 3);
     subd::EvaluationScratch<double> scratch;
     hierarchy.Evaluate(mesh.Points.data(), 3, finest.data(), subd::SerialFor, nullptr, -1, &scratch);
-    held = static_cast<double>(heapInUse() - before);
+    held = static_cast<double>(subdtest::HeapInUse() - before);
   }
   EXPECT_GT(held, 1.0e6); // a measurement, not noise
   EXPECT_LE(held, predicted) << GetParam().Name;

@@ -3,13 +3,13 @@
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
 #include "SubDSqrt3GrandparentRows.h"
+#include "SubDTestHeap.h"
 #include "SubDTestMeshes.h"
 #include "SubDTestParallel.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <malloc.h>
 #include <memory>
 #include <vector>
 
@@ -136,12 +136,7 @@ TEST(Sqrt3GrandparentRows, RefineWritesTheFinestRowsFromTheGrandparent)
 // The memory estimate counts the finest rows from the grandparent only for a closed manifold
 // base (RefinementRequest::ClosedManifoldBase): it still covers what the refinement and its
 // evaluation hold (the heap in use), and stays below the general path's.
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define SUBD_HEAP_NOT_MEASURABLE
-#endif
-#endif
-#if defined(__GLIBC__) && !defined(SUBD_HEAP_NOT_MEASURABLE) && (__GLIBC__ > 2 || __GLIBC_MINOR__ >= 33)
+#if defined(SUBD_HEAP_MEASURABLE)
 TEST(Sqrt3GrandparentRows, MemoryEstimateCoversTheHeldMemory)
 {
   const subd::Sqrt3Scheme scheme;
@@ -156,8 +151,7 @@ TEST(Sqrt3GrandparentRows, MemoryEstimateCoversTheHeldMemory)
   request.ClosedManifoldBase = true;
   const double predicted = subd::EstimatePeakBytes(scheme, request) - subd::EstimateLibraryBytes;
   EXPECT_LT(predicted + subd::EstimateLibraryBytes, general);
-  auto heapInUse = [] { return mallinfo2().uordblks + mallinfo2().hblkhd + subd::GetLargeBlockBytesInUse(); };
-  const size_t before = heapInUse();
+  const size_t before = subdtest::HeapInUse();
   double held = 0.0;
   {
     subd::Hierarchy hierarchy;
@@ -166,7 +160,7 @@ TEST(Sqrt3GrandparentRows, MemoryEstimateCoversTheHeldMemory)
     EXPECT_TRUE(subd::IsSqrt3RowSourceFromGrandparent(hierarchy.Stencils.back().GetSource()));
     std::vector<double> finest(static_cast<size_t>(hierarchy.GetNumFinestPoints()) * 3);
     hierarchy.Evaluate(mesh.Points.data(), 3, finest.data());
-    held = static_cast<double>(heapInUse() - before);
+    held = static_cast<double>(subdtest::HeapInUse() - before);
   }
   EXPECT_GT(held, 1.0e6); // a measurement, not noise
   EXPECT_LE(held, predicted);
