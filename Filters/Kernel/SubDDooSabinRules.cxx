@@ -26,7 +26,6 @@ namespace
 class CornersBeforeSharpEdges
 {
 public:
-  CornersBeforeSharpEdges() = default;
   CornersBeforeSharpEdges(const MeshTopology& topo, const std::vector<std::uint8_t>& actsAsBoundary)
   {
     if (std::none_of(actsAsBoundary.begin(), actsAsBoundary.end(), [](std::uint8_t a) { return a != 0; }))
@@ -51,8 +50,12 @@ public:
   /// Whether a corner in [first, end) is one.
   bool AnyIn(Index first, Index end) const
   {
+    if (this->Bits.empty())
+    {
+      return false;
+    }
     bool any = false;
-    for (Index c = first; c < end && !this->Bits.empty(); ++c)
+    for (Index c = first; c < end; ++c)
     {
       any |= this->Contains(c);
     }
