@@ -19,7 +19,40 @@ Index Level::GetNumSharpEdges(Index v) const
 bool ActsAsBoundary(const Level& level, Index e)
 {
   const MeshTopology& topo = level.Topology;
-  return IsSharp(level.EdgeSharpness[e]) || topo.GetEdgeFaces(e).size() != 2 || topo.GetEdgeTag(e).NonManifold;
+  return (!level.EdgeSharpness.empty() && IsSharp(level.EdgeSharpness[e])) || topo.GetEdgeFaces(e).size() != 2 ||
+    topo.GetEdgeTag(e).NonManifold;
+}
+
+void TrimToLeanChild(Level& child, LeanChild lean)
+{
+  if (lean == LeanChild::No)
+  {
+    return;
+  }
+  child.Topology.ReleaseVertexFaceLists();
+  child.Topology.ReleaseFaceEdges();
+  if (lean == LeanChild::SplitAlone)
+  {
+    child.Topology.ReleaseVertexEdgeLists();
+    if (!child.HasSharpFeatures())
+    {
+      LevelArray<float>().swap(child.EdgeSharpness);
+      LevelArray<float>().swap(child.VertexSharpness);
+    }
+  }
+}
+
+void RestoreSplitAloneTrim(Level& level, const ParallelFor& parallelFor)
+{
+  level.Topology.RestoreVertexEdgeLists(parallelFor);
+  if (level.EdgeSharpness.empty())
+  {
+    level.EdgeSharpness.assign(static_cast<size_t>(level.Topology.GetNumEdges()), SharpnessSmooth);
+  }
+  if (level.VertexSharpness.empty())
+  {
+    level.VertexSharpness.assign(static_cast<size_t>(level.Topology.GetNumVertices()), SharpnessSmooth);
+  }
 }
 
 bool Level::HasHoles() const

@@ -44,8 +44,14 @@ struct SUBDKERNEL_EXPORT Level
 
 /// True for an edge that schemes without a crease rule of their own (Doo-Sabin, midpoint,
 /// sqrt(3)) treat like a boundary: sharp at this level, or without exactly two faces, or
-/// non-manifold.
+/// non-manifold. A level without edge sharpness (LeanChild::SplitAlone) has no sharp edge.
 SUBDKERNEL_EXPORT bool ActsAsBoundary(const Level& level, Index e);
+
+/// Frees what `lean` says a split's child may come without (LeanChild).
+SUBDKERNEL_EXPORT void TrimToLeanChild(Level& child, LeanChild lean);
+/// Gives a level trimmed to LeanChild::SplitAlone its lists of edges around vertices and its
+/// (smooth) sharpness arrays again, where it is refined in general after all.
+SUBDKERNEL_EXPORT void RestoreSplitAloneTrim(Level& level, const ParallelFor& parallelFor);
 
 /// The number of edges at vertex v for which isCounted(level, e) holds.
 template <typename Predicate>

@@ -61,9 +61,11 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
   MeshTopology::Part part;
   if (scheme.WrittenRowsReadOnly(part))
   {
-    // On a closed manifold the finest rows may come from the grandparent (sqrt(3)): the finest
-    // level's parent is then freed after its split, its rings and vertex tags before it,
-    // and the rows' tables (about 20 bytes per face of the grandparent) come after it.
+    // On a closed manifold the finest rows may come from the grandparent (sqrt(3)): the
+    // grandparent's own rows then read the fans of its triangles (4 bytes per corner and per
+    // vertex) instead of its rings; the finest level's parent comes without its rings and
+    // sharpness, is freed after its split, and the rows' own table (each grandparent edge's
+    // first half-edge) comes after it.
     const bool finestFromGrandparent = levels >= 2 && request.Finest == ChildTopology::FacesOnly &&
       (request.Rows == LevelRows::WrittenLean || request.Rows == LevelRows::WrittenFromGrandparent) &&
       request.ClosedManifoldBase && scheme.MayWriteFinestRowsFromGrandparent();
@@ -80,8 +82,11 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
       // faces' edges where the finest split reads neither (Scheme::SplitAndTrim's leanChild).
       const bool leanChild = l + 2 == levels && request.Finest == ChildTopology::FacesOnly &&
         !scheme.FinestSplitReadsVertexFacesOrFaceEdges();
+      const bool finestGrandparent = finestFromGrandparent && l + 2 == levels;
+      const MeshCounts& next = counts[l + 1];
       const double child = last ? output - finest.Vertices * request.OutputBytesPerPoint
-                                : TopologyBytes(counts[l + 1]) - (leanChild ? 12.0 * counts[l + 1].Corners : 0.0);
+                                : TopologyBytes(next) - (leanChild ? 12.0 * next.Corners : 0.0) -
+          (finestGrandparent ? 12.0 * next.Edges + 8.0 * next.Vertices : 0.0);
       // Refine frees the faces' edges and the lists of faces around the vertices before a
       // faces-only finest level is split, where neither the split nor the rows read them;
       // some splits free the lists of edges around the vertices.
@@ -90,14 +95,16 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
       const double released = (facesOnlyLast && !scheme.FinestSplitReadsVertexFacesOrFaceEdges() ? 12.0 * c.Corners : 0.0) +
         (facesOnlyLast && (splitAlone || scheme.FacesOnlySplitFreesVertexEdgeLists()) ? 8.0 * c.Edges + 4.0 * c.Vertices
                                                                                    : 0.0) +
-        (splitAlone ? 4.0 * c.Vertices : 0.0);
-      const double keptRows = splitAlone ? 0.0 : rows;
+        (splitAlone ? 4.0 * c.Vertices + 4.0 * c.Edges : 0.0);
+      const double keptRows = splitAlone ? 0.0
+        : finestGrandparent             ? FacesBytes(c) + 4.0 * c.Corners + 9.0 * c.Vertices
+                                        : rows;
       splitPeak = std::max(splitPeak, kept + TopologyBytes(c) - released + keptRows + child);
       kept += keptRows;
     }
     if (finestFromGrandparent)
     {
-      kept += 20.0 * counts[levels - 2].Faces;
+      kept += 4.0 * counts[levels - 2].Edges;
     }
     return std::max(splitPeak, kept + output + scratch);
   }

@@ -105,6 +105,9 @@ public:
   /// one): no list, count or tag around its vertices, no valence.
   bool HasVertexRelations() const { return VertexEdgeOffsets.size() == static_cast<size_t>(NumVertices) + 1; }
   bool HasVertexFaceLists() const { return !VertexFaces.empty() || FaceVertices.empty(); }
+  /// Whether each vertex's face count is known (GetNumVertexFaces): kept by
+  /// ReleaseVertexFaceLists and ReleaseVertexEdgeLists, not by KeepOnly.
+  bool HasVertexFaceCounts() const { return VertexFaceOffsets.size() == static_cast<size_t>(NumVertices) + 1; }
   /// Builds the lists again, as Build made them (each vertex's faces in increasing order).
   void RestoreVertexFaceLists(const ParallelFor& parallelFor = SerialFor);
   /// The corner of face f at vertex v, or InvalidIndex (faces of v are sorted: binary search).

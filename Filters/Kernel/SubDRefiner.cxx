@@ -21,6 +21,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   const bool finestFromGrandparentIfSmooth = finest == ChildTopology::FacesOnly &&
     (levelRows == LevelRows::WrittenFromGrandparent || levelRows == LevelRows::WrittenLean);
   bool parentSkipped = false; // the finest level's parent was not built
+  bool splitAloneTrim = false; // current was trimmed to be split alone (LeanChild::SplitAlone)
   // A full finest level is split from a full parent; else the levels between have what the
   // scheme reads of them.
   const ChildTopology between = finest == ChildTopology::FacesOnly ? scheme.GetTopologyBetween() : ChildTopology::Full;
@@ -63,9 +64,13 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
       scheme.WritesFinestRowsFromGrandparent(*grandparent, current))
     {
       current = scheme.SplitFinestAlone(current); // the parent, freed here
-      writtenRows = scheme.MakeFinestRowSourceFromGrandparent(std::move(grandparent));
+      writtenRows = scheme.MakeFinestRowSourceFromGrandparent(std::move(grandparent), out.Stencils.back().GetSource());
       out.Stencils.push_back(StencilTable::FromSource(writtenRows));
       refined = true;
+    }
+    if (!refined && splitAloneTrim)
+    {
+      RestoreSplitAloneTrim(current, scheme.GetParallelFor()); // refined in general after all
     }
     if (levelRows != LevelRows::Stored && !refined)
     {
@@ -75,7 +80,15 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         parent->Topology.ReleaseVertexFaceLists(); // a large share of the split's peak
         parent->Topology.ReleaseFaceEdges();
       }
-      writtenRows = scheme.MakeRowSource(parent);
+      // The level two above a faces-only finest one whose rows may be written from it: rows
+      // reading its faces alone where the scheme has them, so that it keeps nothing else.
+      const bool finestGrandparent = l + 2 == levels && finestFromGrandparentIfSmooth;
+      writtenRows = finestGrandparent ? scheme.MakeRowSourceWithoutVertexLists(parent) : nullptr;
+      const bool rowsReadFacesOnly = writtenRows != nullptr;
+      if (!writtenRows)
+      {
+        writtenRows = scheme.MakeRowSource(parent);
+      }
       if (writtenRows)
       {
         out.Stencils.push_back(StencilTable::FromSource(writtenRows));
@@ -86,9 +99,13 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
           (finestFromGrandparentAlone || (finestFromGrandparentIfSmooth && scheme.RefinesFromGrandparentAlone(*parent)));
         // Once split, the level is kept for its rows (and its grandchild's): what they never
         // read goes, when the split allows before the child's topology is built.
-        auto trim = [&scheme](Level& split) {
+        auto trim = [&scheme, rowsReadFacesOnly](Level& split) {
           MeshTopology::Part part;
-          if (scheme.WrittenRowsReadOnly(part))
+          if (rowsReadFacesOnly)
+          {
+            KeepOnly(split, MeshTopology::Part::Faces, scheme.GetParallelFor());
+          }
+          else if (scheme.WrittenRowsReadOnly(part))
           {
             KeepOnly(split, part, scheme.GetParallelFor());
           }
@@ -105,11 +122,15 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         }
         else
         {
-          // The finest level's parent: its lists of faces around vertices and its faces'
-          // edges are freed below, before the finest split, if that reads neither.
+          // The finest level's parent comes without its lists of faces around vertices and
+          // its faces' edges, if the finest split reads neither; and without what only its
+          // own rows would read where those may come from its parent (split alone).
           const bool leanChild = l + 2 == levels && finest == ChildTopology::FacesOnly &&
             !scheme.FinestSplitReadsVertexFacesOrFaceEdges();
-          current = scheme.SplitAndTrim(*parent, depth, leanChild, trim);
+          const LeanChild lean =
+            !leanChild ? LeanChild::No : rowsReadFacesOnly ? LeanChild::SplitAlone : LeanChild::WithoutFaceLists;
+          current = scheme.SplitAndTrim(*parent, depth, lean, trim);
+          splitAloneTrim = lean == LeanChild::SplitAlone;
         }
         grandparent = parent;
       }

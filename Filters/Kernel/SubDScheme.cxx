@@ -8,6 +8,7 @@
 #include "SubDDualSplit.h"
 #include "SubDLinearRules.h"
 #include "SubDLoopRules.h"
+#include "SubDSqrt3ChildTopology.h"
 #include "SubDMidpointSplit.h"
 #include "SubDQuadSplit.h"
 #include "SubDRowWriting.h"
@@ -222,14 +223,14 @@ Level Sqrt3Scheme::Split(const Level& parent, ChildTopology depth) const
 }
 
 Level Sqrt3Scheme::SplitAndTrim(
-  Level& parent, ChildTopology depth, bool leanChild, const std::function<void(Level&)>& trimParent) const
+  Level& parent, ChildTopology depth, LeanChild lean, const std::function<void(Level&)>& trimParent) const
 {
   bool trimmed = false;
   auto trim = [&] {
     trimParent(parent);
     trimmed = true;
   };
-  Level child = SplitSqrt3(parent, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth), trim, leanChild);
+  Level child = SplitSqrt3(parent, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth), trim, lean);
   if (!trimmed)
   {
     trimParent(parent);
@@ -242,9 +243,20 @@ bool Sqrt3Scheme::WritesFinestRowsFromGrandparent(const Level& grandparent, cons
   return Sqrt3RowsFromGrandparentApply(grandparent, parent, this->GetParallelFor());
 }
 
-std::shared_ptr<const RowSource> Sqrt3Scheme::MakeFinestRowSourceFromGrandparent(std::shared_ptr<const Level> grandparent) const
+std::shared_ptr<const RowSource> Sqrt3Scheme::MakeFinestRowSourceFromGrandparent(
+  std::shared_ptr<const Level> grandparent, const RowSource* grandparentRows) const
 {
-  return MakeSqrt3RowSourceFromGrandparent(std::move(grandparent), this->GetParallelFor());
+  return MakeSqrt3RowSourceFromGrandparent(std::move(grandparent), this->GetParallelFor(), Sqrt3RowFans(grandparentRows));
+}
+
+std::shared_ptr<const RowSource> Sqrt3Scheme::MakeRowSourceWithoutVertexLists(std::shared_ptr<const Level> parent) const
+{
+  const Index numPoints = parent->Topology.GetNumFaces() + parent->Topology.GetNumVertices();
+  if (parent->HasSharpFeatures() || !Sqrt3ChildTopology::Applies(*parent, numPoints))
+  {
+    return nullptr;
+  }
+  return MakeSqrt3RowSourceReadingFans(std::move(parent), this->GetParallelFor());
 }
 
 Level Sqrt3Scheme::SplitFinestAlone(Level& parent) const

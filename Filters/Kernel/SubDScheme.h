@@ -42,21 +42,18 @@ public:
   /// Split, calling trimParent(parent) once the split reads no more of `parent` than the
   /// trim keeps (Refine's: what the parent's written rows read). By default after the split;
   /// sqrt(3) calls it before it builds a general child's topology, so that the parent's
-  /// whole topology and the child's are not held at once. With `leanChild` the child comes
-  /// without its lists of faces around vertices and its faces' edges (Refine asks so for the
-  /// finest level's parent where the finest split reads neither:
-  /// FinestSplitReadsVertexFacesOrFaceEdges): freed after the split by default, never made
-  /// by sqrt(3)'s closed form.
+  /// whole topology and the child's are not held at once. `lean` says what the child may come
+  /// without (Refine asks so for the finest level's parent where the finest split reads
+  /// neither the lists of faces around vertices nor the faces' edges:
+  /// FinestSplitReadsVertexFacesOrFaceEdges; and also without the lists of edges around
+  /// vertices nor the sharpness of a smooth level where it may be split alone): freed after
+  /// the split by default, never made by sqrt(3)'s closed form.
   virtual Level SplitAndTrim(
-    Level& parent, ChildTopology depth, bool leanChild, const std::function<void(Level&)>& trimParent) const
+    Level& parent, ChildTopology depth, LeanChild lean, const std::function<void(Level&)>& trimParent) const
   {
     Level child = this->SplitBeforeTrim(parent, depth);
     trimParent(parent);
-    if (leanChild)
-    {
-      child.Topology.ReleaseVertexFaceLists();
-      child.Topology.ReleaseFaceEdges();
-    }
+    TrimToLeanChild(child, lean);
     return child;
   }
   /// SplitAndTrim's split: Split by default. `parent` is kept for its written rows only
@@ -123,10 +120,24 @@ public:
   /// features): what EstimatePeakBytes counts.
   virtual bool MayWriteFinestRowsFromGrandparent() const { return false; }
   /// Those rows (where WritesFinestRowsFromGrandparent): made after the finest split, so
-  /// that their tables and the parent's topology are not held at once.
-  virtual std::shared_ptr<const RowSource> MakeFinestRowSourceFromGrandparent(std::shared_ptr<const Level> grandparent) const
+  /// that their tables and the parent's topology are not held at once. `grandparentRows`
+  /// are the grandparent's own rows, whose tables they may share.
+  virtual std::shared_ptr<const RowSource> MakeFinestRowSourceFromGrandparent(
+    std::shared_ptr<const Level> grandparent, const RowSource* grandparentRows) const
   {
     (void)grandparent;
+    (void)grandparentRows;
+    return nullptr;
+  }
+  /// MakeRowSource's rows of a level that may become the finest level's grandparent, where
+  /// they can be written without the lists around the level's vertices, so that it keeps its
+  /// faces alone once its child is split; nullptr (the default) where the scheme or the level
+  /// has no such rows. sqrt(3): on a closed smooth level whose child has the closed form (the
+  /// case of WritesFinestRowsFromGrandparent), each vertex's ring read from the fans of its
+  /// triangles, which the finest level's rows then share.
+  virtual std::shared_ptr<const RowSource> MakeRowSourceWithoutVertexLists(std::shared_ptr<const Level> parent) const
+  {
+    (void)parent;
     return nullptr;
   }
   /// The faces-only finest level of a parent that nothing reads afterwards (its rows come
@@ -418,7 +429,7 @@ public:
   /// Trims the parent once the split reads no more of it (SplitSqrt3's `parentRead`): before
   /// the child's topology where that is built in general (a mesh with a boundary or sharp
   /// edges), after it in the closed form, before the child's sharpness.
-  Level SplitAndTrim(Level& parent, ChildTopology depth, bool leanChild,
+  Level SplitAndTrim(Level& parent, ChildTopology depth, LeanChild lean,
     const std::function<void(Level&)>& trimParent) const override;
   /// MakeSqrt3RowSource: the rows read the parent's faces and vertex rings only.
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
@@ -433,7 +444,12 @@ public:
   /// Sqrt3RowsFromGrandparentApply (closed, smooth levels): MakeSqrt3RowSourceFromGrandparent.
   bool WritesFinestRowsFromGrandparent(const Level& grandparent, const Level& parent) const override;
   bool MayWriteFinestRowsFromGrandparent() const override { return true; }
-  std::shared_ptr<const RowSource> MakeFinestRowSourceFromGrandparent(std::shared_ptr<const Level> grandparent) const override;
+  /// Shares the fans of the grandparent's rows where those read them.
+  std::shared_ptr<const RowSource> MakeFinestRowSourceFromGrandparent(
+    std::shared_ptr<const Level> grandparent, const RowSource* grandparentRows) const override;
+  /// MakeSqrt3RowSourceReadingFans on a level without sharp features whose child has the
+  /// closed form (Sqrt3ChildTopology::Applies).
+  std::shared_ptr<const RowSource> MakeRowSourceWithoutVertexLists(std::shared_ptr<const Level> parent) const override;
   /// Frees the parent's lists of edges around its vertices and its vertices' sharpness, and
   /// its faces' origins and hole flags where the child keeps none, before the flips (which
   /// read none of them).

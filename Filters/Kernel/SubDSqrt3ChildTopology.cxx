@@ -60,8 +60,10 @@ struct Spoke
 }
 
 MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexArray offsets, IndexArray vertices,
-  const ParallelFor& parallelFor, bool vertexFaceListsAndFaceEdges)
+  const ParallelFor& parallelFor, LeanChild lean)
 {
+  const bool vertexFaceListsAndFaceEdges = lean == LeanChild::No;
+  const bool vertexEdgeLists = lean != LeanChild::SplitAlone;
   const Index numFaces = parent.GetNumFaces();
   const Index numEdges = parent.GetNumEdges();
   const Index numVertices = parent.GetNumVertices();
@@ -108,8 +110,11 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexAr
   }
   const Index numChildEdges = firstNewEdge[numEdges];
 
-  // Number them: each edge's ends (as first met) and two triangles.
-  IndexArray flippedEdge(static_cast<size_t>(numEdges)), spokeEdge(static_cast<size_t>(parent.GetNumFaceCorners()));
+  // Number them: each edge's ends (as first met) and two triangles; and, for the lists that
+  // name the child edges, each old edge's flipped edge and each corner's spoke.
+  const bool namesEdges = vertexEdgeLists; // lists of faces come with them (LeanChild)
+  IndexArray flippedEdge(namesEdges ? static_cast<size_t>(numEdges) : 0);
+  IndexArray spokeEdge(namesEdges ? static_cast<size_t>(parent.GetNumFaceCorners()) : 0);
   child.EdgeVertices.resize(2 * static_cast<size_t>(numChildEdges));
   child.EdgeFaces.resize(2 * static_cast<size_t>(numChildEdges));
   parallelFor(0, numEdges, [&](Index begin, Index end) {
@@ -128,11 +133,19 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexAr
         const Index v = from < numFaces ? to - numFaces : from - numFaces;
         if (slot == 2)
         {
-          flippedEdge[e] = add(edge.F2, edge.F1, 2 * e, 2 * e + 1); // triangle 2e, corner 1
+          const Index flipped = add(edge.F2, edge.F1, 2 * e, 2 * e + 1); // triangle 2e, corner 1
+          if (namesEdges)
+          {
+            flippedEdge[e] = flipped;
+          }
         }
         if (spoke.OtherEdge > e)
         {
-          spokeEdge[spoke.Corner] = add(from, to, triangleAt(e, v), triangleAt(spoke.OtherEdge, v));
+          const Index added = add(from, to, triangleAt(e, v), triangleAt(spoke.OtherEdge, v));
+          if (namesEdges)
+          {
+            spokeEdge[spoke.Corner] = added;
+          }
         }
       });
     }
@@ -166,8 +179,8 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexAr
   const size_t faceSlots = vertexFaceListsAndFaceEdges ? centroidSlots + parent.VertexEdges.size() : 0;
   child.VertexFaces.resize(faceSlots);
   child.VertexFaceCorners.resize(faceSlots);
-  child.VertexEdges.resize(centroidSlots + parent.VertexEdges.size());
-  parallelFor(0, numFaces, [&](Index begin, Index end) {
+  child.VertexEdges.resize(vertexEdgeLists ? centroidSlots + parent.VertexEdges.size() : 0);
+  parallelFor(0, namesEdges ? numFaces : 0, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {
       Index faceEdges[3] = { parent.GetFaceEdges(f)[0], parent.GetFaceEdges(f)[1], parent.GetFaceEdges(f)[2] };
@@ -192,7 +205,7 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexAr
       std::sort(edges, edges + 6);
     }
   });
-  parallelFor(0, numVertices, [&](Index begin, Index end) {
+  parallelFor(0, vertexEdgeLists ? numVertices : 0, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v)
     {
       const size_t first = centroidSlots + static_cast<size_t>(parent.VertexEdgeOffsets[v]);
@@ -226,7 +239,10 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexAr
     });
   };
   offsetsOf(parent.VertexEdgeOffsets, child.VertexFaceOffsets); // a closed manifold vertex:
-  offsetsOf(parent.VertexEdgeOffsets, child.VertexEdgeOffsets); // as many faces as edges
+  if (vertexEdgeLists)
+  {
+    offsetsOf(parent.VertexEdgeOffsets, child.VertexEdgeOffsets); // as many faces as edges
+  }
 
   child.EdgeTags.assign(static_cast<size_t>(numChildEdges), EdgeTag{ 0, 0 });
   child.VertexTags.assign(static_cast<size_t>(numFaces + numVertices), VertexTag{ 0, 0 });

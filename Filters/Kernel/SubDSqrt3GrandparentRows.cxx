@@ -1,26 +1,19 @@
 #include "SubDSqrt3GrandparentRows.h"
-#include "SubDFileByKey.h"
 #include "SubDRowWriting.h"
 #include "SubDShortLists.h"
 #include "SubDSqrt3Rules.h"
+#include "SubDTriangleFans.h"
 
 #include <algorithm>
 #include <atomic>
+#include <stdexcept>
 #include <vector>
 
 namespace subd
 {
 namespace
 {
-// The corners after and before corner h in its triangle.
-inline Index NextCorner(Index h)
-{
-  return h % 3 == 2 ? h - 2 : h + 1;
-}
-inline Index PreviousCorner(Index h)
-{
-  return h % 3 == 0 ? h + 2 : h - 1;
-}
+constexpr auto NextCorner = TriangleFans::NextCorner;
 
 // The half-edges of the grandparent P's pair of triangles 2e, 2e + 1 of the parent C, if
 // they have the closed form (F + a, f2, f1), (F + b, f1, f2): a->b in f1 (first), b->a in f2.
@@ -50,73 +43,22 @@ bool FlippedPair(const Index* pv, Index numFaces, const Index* t0, const Index* 
 class Sqrt3GrandparentRowWriter
 {
 public:
-  Sqrt3GrandparentRowWriter(const Level& grandparent, const ParallelFor& parallelFor)
+  Sqrt3GrandparentRowWriter(
+    const Level& grandparent, const ParallelFor& parallelFor, std::shared_ptr<const TriangleFans> fans)
     : Corners(grandparent.Topology.GetFaceVertexArray().data())
     , NumFaces(grandparent.Topology.GetNumFaces())
     , NumVertices(grandparent.Topology.GetNumVertices())
+    , Fans(fans ? std::move(fans) : TriangleFans::Build(this->Corners, this->NumFaces, this->NumVertices, parallelFor))
   {
-    const size_t numCorners = 3 * static_cast<size_t>(this->NumFaces);
-    // Each vertex's corners, filed by vertex with the vertices before and after them: the
-    // twin of the edge leaving a corner at v toward w is the edge entering v from w in
-    // another corner at v, so every twin is found in v's own short list, read in one piece.
-    struct Corner
+    if (!this->Fans)
     {
-      Index At, To, From;
-    };
-    IndexArray offsets;
-    LevelArray<Corner> around(numCorners); // large blocks: huge pages where the system has them
-    FileByKey(
-      this->NumVertices, this->NumFaces,
-      [this](Index begin, Index end, const auto& visit) {
-        for (Index h = 3 * begin; h < 3 * end; ++h)
-        {
-          visit(this->Corners[h], Corner{ h, this->Corners[NextCorner(h)], this->Corners[PreviousCorner(h)] });
-        }
-      },
-      [&around](Index slot, const Corner& corner) { around[slot] = corner; }, offsets, parallelFor);
-    this->Twin.resize(numCorners);
-    this->FanStart.resize(static_cast<size_t>(this->NumVertices));
-    parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
-      std::vector<std::pair<Index, Index>> byFrom; // a long list's corners by the vertex before
-      for (Index v = begin; v < end; ++v)
-      {
-        const Index first = offsets[v], last = offsets[v + 1];
-        auto enteringFrom = [&](Index w) { // the corner at v entered from w (one: P is manifold)
-          if (last - first <= 16)
-          {
-            Index found = first;
-            for (Index j = first; j < last; ++j)
-            {
-              found = around[j].From == w ? j : found;
-            }
-            return around[found].At;
-          }
-          return std::lower_bound(byFrom.begin(), byFrom.end(), std::make_pair(w, Index(0)))->second;
-        };
-        if (last - first > 16)
-        {
-          byFrom.clear();
-          for (Index j = first; j < last; ++j)
-          {
-            byFrom.emplace_back(around[j].From, around[j].At);
-          }
-          std::sort(byFrom.begin(), byFrom.end());
-        }
-        for (Index k = first; k < last; ++k)
-        {
-          this->Twin[around[k].At] = PreviousCorner(enteringFrom(around[k].To));
-        }
-        this->FanStart[v] = around[first].At;
-      }
-    });
-    for (Index v = 0; v < this->NumVertices; ++v)
-    {
-      this->MaxValence = std::max(this->MaxValence, offsets[v + 1] - offsets[v]);
+      throw std::logic_error("sqrt(3) rows from the grandparent: the grandparent is not a closed manifold");
     }
+    const size_t numCorners = 3 * static_cast<size_t>(this->NumFaces);
     this->FirstHalf.reserve(numCorners / 2); // closed: two half-edges per edge
     for (size_t h = 0; h < numCorners; ++h)
     {
-      if (static_cast<Index>(h) < this->Twin[h])
+      if (static_cast<Index>(h) < this->Fans->GetTwin(static_cast<Index>(h)))
       {
         this->FirstHalf.push_back(static_cast<Index>(h));
       }
@@ -130,7 +72,7 @@ public:
   Index GetNumParents() const { return this->NumFaces + this->NumVertices; }
   Index GetNumRows() const { return 4 * this->NumFaces + this->NumVertices; }
   std::vector<Index> GetBlockEnds() const { return { this->GetNumRows() }; }
-  Index GetMaxRowSize() const { return 1 + std::max<Index>(6, this->MaxValence); }
+  Index GetMaxRowSize() const { return 1 + std::max<Index>(6, this->Fans->GetMaxValence()); }
 
   Index WriteRow(Index row, Index* src, double* wts) const
   {
@@ -168,7 +110,7 @@ private:
     if (row < numTriangles)
     {
       const Index h = this->FirstHalf[row / 2];
-      const Index f1 = h / 3, f2 = this->Twin[h] / 3;
+      const Index f1 = h / 3, f2 = this->Fans->GetTwin(h) / 3;
       const Index end = this->NumFaces + this->Corners[row % 2 == 0 ? h : NextCorner(h)];
       visit(end, 1.0 / 3.0);
       visit(row % 2 == 0 ? f2 : f1, 1.0 / 3.0);
@@ -180,7 +122,8 @@ private:
     {
       // A centroid: the three across its edges, then its corners (all above the centroids).
       const size_t first = 3 * static_cast<size_t>(point);
-      Index across[3] = { this->Twin[first] / 3, this->Twin[first + 1] / 3, this->Twin[first + 2] / 3 };
+      const TriangleFans& fans = *this->Fans;
+      Index across[3] = { fans.GetTwin(first) / 3, fans.GetTwin(first + 1) / 3, fans.GetTwin(first + 2) / 3 };
       Index ends[3] = { this->Corners[first], this->Corners[first + 1], this->Corners[first + 2] };
       SortShortList(across, across + 3);
       SortShortList(ends, ends + 3);
@@ -196,32 +139,15 @@ private:
       }
       return;
     }
-    // An old vertex: the centroids of its faces, walked around it (each next one across
-    // the edge leaving it in the last) and sorted. Walking costs the memory of no list.
-    const Index v = point - this->NumFaces;
-    constexpr Index onStack = 64;
-    Index stack[onStack];
-    std::vector<Index> heap;
-    Index* faces = stack;
-    if (this->MaxValence > onStack)
-    {
-      heap.resize(static_cast<size_t>(this->MaxValence));
-      faces = heap.data();
-    }
-    Index n = 0;
-    const Index start = this->FanStart[v];
-    Index corner = start;
-    do
-    {
-      faces[n++] = corner / 3;
-      corner = NextCorner(this->Twin[corner]);
-    } while (corner != start && n < this->MaxValence);
-    SortShortList(faces, faces + n);
+    // An old vertex: the centroids of its faces, walked around it and sorted. Walking costs
+    // the memory of no list.
+    FanScratch faces(this->Fans->GetMaxValence());
+    const Index n = this->Fans->SortedFaces(point - this->NumFaces, faces.data());
     const double alpha = this->Alpha(n);
     visit(point, 1.0 - alpha);
     for (Index k = 0; k < n; ++k)
     {
-      visit(faces[k], alpha / n);
+      visit(faces.data()[k], alpha / n);
     }
   }
 
@@ -230,10 +156,8 @@ private:
   static constexpr Index MaxTabulatedValence = 16;
   const Index* Corners; // the grandparent's triangles (kept by WrittenRows)
   Index NumFaces, NumVertices;
-  Index MaxValence = 0;
-  IndexArray Twin;      // per corner h: the corner of the half-edge running back along h's edge
-  IndexArray FirstHalf; // per edge of P: its first half-edge
-  IndexArray FanStart;  // per vertex of P: a corner at it
+  std::shared_ptr<const TriangleFans> Fans; // P's, maybe shared with P's own rows
+  IndexArray FirstHalf;                     // per edge of P: its first half-edge
   double Alphas[MaxTabulatedValence] = {};
 };
 
@@ -247,7 +171,7 @@ bool Sqrt3RowsFromGrandparentApply(const Level& grandparent, const Level& parent
   const Index numFaces = p.GetNumFaces();
   if (numFaces == 0 || p.GetNumFaceCorners() != 3 * numFaces || c.GetNumFaces() != 3 * numFaces ||
     c.GetNumFaceCorners() != 3 * c.GetNumFaces() || c.GetNumVertices() != numFaces + p.GetNumVertices() ||
-    !c.HasVertexRelations() || c.GetNumBoundaryEdges() > 0 || c.GetNumNonManifoldEdges() > 0 ||
+    !c.HasVertexFaceCounts() || c.GetNumBoundaryEdges() > 0 || c.GetNumNonManifoldEdges() > 0 ||
     c.GetNumNonManifoldVertices() > 0 || parent.HasSharpFeatures())
   {
     return false;
@@ -257,7 +181,7 @@ bool Sqrt3RowsFromGrandparentApply(const Level& grandparent, const Level& parent
     bool here = true;
     for (Index x = begin; x < end && here; ++x)
     {
-      here = !c.GetVertexFaces(x).empty(); // no vertex without faces (it would stay put)
+      here = c.GetNumVertexFaces(x) > 0; // no vertex without faces (it would stay put)
     }
     fits = fits && here;
   });
@@ -299,9 +223,9 @@ bool Sqrt3RowsFromGrandparentApply(const Level& grandparent, const Level& parent
 }
 
 std::shared_ptr<const RowSource> MakeSqrt3RowSourceFromGrandparent(
-  std::shared_ptr<const Level> grandparent, const ParallelFor& parallelFor)
+  std::shared_ptr<const Level> grandparent, const ParallelFor& parallelFor, std::shared_ptr<const TriangleFans> fans)
 {
-  return std::make_shared<Sqrt3GrandparentRows>(std::move(grandparent), parallelFor);
+  return std::make_shared<Sqrt3GrandparentRows>(std::move(grandparent), parallelFor, std::move(fans));
 }
 
 bool IsSqrt3RowSourceFromGrandparent(const RowSource* rows)

@@ -2,6 +2,7 @@
 #include "SubDFaceBlocks.h"
 #include "SubDRowWriting.h"
 #include "SubDSqrt3ChildTopology.h"
+#include "SubDTriangleFans.h"
 
 #include <algorithm>
 #include <array>
@@ -112,6 +113,10 @@ bool HasSqrt3InteriorCurveEdge(const Level& level, const ParallelFor& parallelFo
 {
   const MeshTopology& topo = level.Topology;
   std::atomic<bool> found{ false };
+  if (level.EdgeSharpness.empty())
+  {
+    return false; // no sharp edge (LeanChild::SplitAlone)
+  }
   parallelFor(0, topo.GetNumEdges(), [&](Index begin, Index end) {
     bool here = false;
     for (Index e = begin; e < end && !here; ++e)
@@ -236,6 +241,13 @@ struct Sqrt3InheritedSharpness
       [](float s) { return DecaySharpness(s); });
   }
 
+  // Whether the child inherits no sharpness at all.
+  bool Smooth() const
+  {
+    return this->SharpEdges.empty() &&
+      std::none_of(this->VertexSharpness.begin(), this->VertexSharpness.end(), [](float s) { return IsSharp(s); });
+  }
+
   void SetOn(Level& child) const
   {
     const MeshTopology& childTopo = child.Topology;
@@ -263,9 +275,10 @@ struct Sqrt3InheritedSharpness
 class Sqrt3RowWriter
 {
 public:
-  Sqrt3RowWriter(const Level& parent, const ParallelFor& parallelFor)
+  Sqrt3RowWriter(const Level& parent, const ParallelFor& parallelFor, std::shared_ptr<const TriangleFans> fans = nullptr)
     : Sqrt3RowWriter(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), parallelFor)
   {
+    this->Fans = std::move(fans);
   }
   Sqrt3RowWriter(const Level& parent, const Sqrt3Points& points, const ParallelFor& parallelFor)
     : Topo(parent.Topology)
@@ -352,14 +365,10 @@ public:
       const Index v = row - this->FirstVertexPoint;
       if (this->Rules[v] == Sqrt3VertexRule::Relax)
       {
-        const Index valence = this->Topo.GetVertexEdges(v).size();
-        const double alpha = this->Alpha(valence);
-        src[0] = v;
-        wts[0] = 1.0 - alpha;
-        Index size = 1;
-        this->Topo.ForEachRingVertex(v, [&](Index w) {
+        Index size = 0;
+        this->VisitRelaxedRow(v, [&](Index w, double weight) {
           src[size] = w;
-          wts[size++] = alpha / valence;
+          wts[size++] = weight;
         });
         return size;
       }
@@ -398,16 +407,37 @@ public:
     {
       return false;
     }
-    const Index valence = this->Topo.GetVertexEdges(v).size();
-    const double alpha = this->Alpha(valence);
-    sum.Add(1.0 - alpha, point(v));
-    const double w = alpha / valence;
-    this->Topo.ForEachRingVertex(v, [&](Index neighbour) { sum.Add(w, point(neighbour)); });
+    this->VisitRelaxedRow(v, [&](Index w, double weight) { sum.Add(weight, point(w)); });
     sum.Store(dst);
     return true;
   }
 
+  const std::shared_ptr<const TriangleFans>& GetFans() const { return this->Fans; }
+
 private:
+  // Calls visit(source, weight) for a relaxed vertex's row: itself, then its ring in
+  // increasing order, from the parent's rings or, where the rows were given them, its fans.
+  template <typename Visit>
+  void VisitRelaxedRow(Index v, Visit&& visit) const
+  {
+    if (this->Fans)
+    {
+      FanScratch ring(this->Fans->GetMaxValence());
+      const Index valence = this->Fans->SortedNeighbours(this->Topo.GetFaceVertexArray().data(), v, ring.data());
+      const double alpha = this->Alpha(valence);
+      visit(v, 1.0 - alpha);
+      for (Index k = 0; k < valence; ++k)
+      {
+        visit(ring.data()[k], alpha / valence);
+      }
+      return;
+    }
+    const Index valence = this->Topo.GetVertexEdges(v).size();
+    const double alpha = this->Alpha(valence);
+    visit(v, 1.0 - alpha);
+    this->Topo.ForEachRingVertex(v, [&](Index w) { visit(w, alpha / valence); });
+  }
+
   Index NumTrisections() const { return static_cast<Index>(this->Trisections.size()); }
   // Kobbelt's alpha_n for the valences most meshes have, tabulated: the cosine would be most
   // of the cost of a row.
@@ -422,6 +452,7 @@ private:
   std::vector<Index> CurveSlot;                  // per vertex: its CurveEnds (empty: no curve vertex)
   std::vector<std::array<Index, 2>> CurveEnds;   // the curve neighbours p, q of a curve vertex
   std::vector<std::array<Index, 4>> Trisections; // a, b, p, q per trisected edge, in point order
+  std::shared_ptr<const TriangleFans> Fans;      // the parent's, when its rings are not kept
   double Alphas[MaxTabulatedValence] = {};
 };
 
@@ -576,7 +607,7 @@ private:
 // The child level of one step (without its rows).
 Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopology depth,
   const ParallelFor& parallelFor, FaceTagsKept kept, const std::function<void()>& parentRead = nullptr,
-  bool leanChild = false)
+  LeanChild lean = LeanChild::No)
 {
   const Sqrt3FaceWriter writer(parent, points);
   EmittedFaces faces = EmitTrianglesInPlace(
@@ -591,10 +622,14 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
     child.Creasing = parent.Creasing;
     const Sqrt3InheritedSharpness inherited(parent, points);
     child.Topology = Sqrt3ChildTopology::OfSqrt3Step(
-      parent.Topology, std::move(faces.Offsets), std::move(faces.Vertices), parallelFor, !leanChild);
+      parent.Topology, std::move(faces.Offsets), std::move(faces.Vertices), parallelFor, lean);
     if (parentRead)
     {
       parentRead(); // before the child's sharpness: the peak of a step
+    }
+    if (lean == LeanChild::SplitAlone && inherited.Smooth())
+    {
+      return child; // without sharpness arrays: nothing is sharp
     }
     child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), SharpnessSmooth);
     child.VertexSharpness.assign(static_cast<size_t>(points.NumPoints), SharpnessSmooth);
@@ -621,11 +656,7 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
   {
     inherited->SetOn(child);
   }
-  if (leanChild)
-  {
-    child.Topology.ReleaseVertexFaceLists();
-    child.Topology.ReleaseFaceEdges();
-  }
+  TrimToLeanChild(child, lean);
   return child;
 }
 }
@@ -640,15 +671,39 @@ LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const Para
 }
 
 Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor, FaceTagsKept kept,
-  const std::function<void()>& parentRead, bool leanChild)
+  const std::function<void()>& parentRead, LeanChild lean)
 {
   return SplitWithPoints(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), depth, parallelFor, kept,
-    parentRead, leanChild);
+    parentRead, lean);
 }
 
 std::shared_ptr<const RowSource> MakeSqrt3RowSource(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
 {
   return std::make_shared<WrittenRows<Sqrt3RowWriter>>(std::move(parent), parallelFor);
+}
+
+std::shared_ptr<const RowSource> MakeSqrt3RowSourceReadingFans(
+  std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
+{
+  const MeshTopology& topo = parent->Topology;
+  if (topo.GetNumFaceCorners() != 3 * topo.GetNumFaces() || topo.GetNumBoundaryEdges() > 0 ||
+    topo.GetNumNonManifoldEdges() > 0 || topo.GetNumNonManifoldVertices() > 0)
+  {
+    return nullptr;
+  }
+  std::shared_ptr<const TriangleFans> fans =
+    TriangleFans::Build(topo.GetFaceVertexArray().data(), topo.GetNumFaces(), topo.GetNumVertices(), parallelFor);
+  if (!fans)
+  {
+    return nullptr;
+  }
+  return std::make_shared<WrittenRows<Sqrt3RowWriter>>(std::move(parent), parallelFor, std::move(fans));
+}
+
+std::shared_ptr<const TriangleFans> Sqrt3RowFans(const RowSource* rows)
+{
+  const auto* written = dynamic_cast<const WrittenRows<Sqrt3RowWriter>*>(rows);
+  return written ? written->GetWriter().GetFans() : nullptr;
 }
 
 Index Sqrt3FirstVertexPoint(const Level& parent)

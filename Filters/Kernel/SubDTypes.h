@@ -188,6 +188,18 @@ enum class ChildTopology : int
   FacesOnly = 1,
   FacesAndEdges = 2
 };
+
+/// What a split's child may come without, where nothing reads it (Scheme::SplitAndTrim).
+enum class LeanChild : int
+{
+  No = 0,
+  /// Without the lists of faces around its vertices (their counts stay) and its faces' edges.
+  WithoutFaceLists = 1,
+  /// Also without the lists of edges around its vertices and, where nothing is sharp, its
+  /// sharpness arrays (empty: every edge and vertex smooth): the finest level's parent when
+  /// it is split alone (Scheme::SplitFinestAlone), its rows written from its own parent.
+  SplitAlone = 2
+};
 }
 
 #endif

@@ -3,6 +3,7 @@
 #include "SubDRefiner.h"
 #include "SubDScheme.h"
 #include "SubDSqrt3GrandparentRows.h"
+#include "SubDSqrt3Rules.h"
 #include "SubDTestHeap.h"
 #include "SubDTestMeshes.h"
 #include "SubDTestParallel.h"
@@ -85,6 +86,100 @@ TEST(Sqrt3GrandparentRows, EqualTheParentsRowsOnClosedSmoothLevels)
   EXPECT_GE(checked, 10);
 }
 
+// A closed level's rows reading each ring from the fans of its triangles are its rows reading
+// the rings, to the bit, with nothing of the level kept but its faces; the next level's rows
+// written from it share those fans. Other levels have no such rows.
+TEST(Sqrt3GrandparentRows, RowsReadingFansEqualTheRowsReadingRings)
+{
+  const subd::Sqrt3Scheme scheme;
+  int checked = 0;
+  for (const subdtest::TestMesh& mesh : ClosedTriangleMeshes())
+  {
+    subd::Level level = subdtest::BaseLevel(mesh);
+    for (int depth = 0; depth < 2; ++depth, level = scheme.Split(level, subd::ChildTopology::Full))
+    {
+      SCOPED_TRACE(mesh.Name + " depth " + std::to_string(depth));
+      const subd::StencilTable expected = scheme.BuildStencils(level);
+      const subd::StencilTable expectedNext = scheme.BuildStencils(scheme.Split(level, subd::ChildTopology::Full));
+      for (const subd::ParallelFor& parallelFor :
+        { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor) })
+      {
+        auto kept = std::make_shared<subd::Level>(level);
+        const auto source = subd::MakeSqrt3RowSourceReadingFans(kept, parallelFor);
+        ASSERT_NE(source, nullptr);
+        subd::KeepOnly(*kept, subd::MeshTopology::Part::Faces); // what Refine keeps of it then
+        const std::shared_ptr<const subd::TriangleFans> fans = subd::Sqrt3RowFans(source.get());
+        ASSERT_NE(fans, nullptr);
+        const subd::StencilTable rows = subd::StencilTable::FromSource(source);
+        ASSERT_EQ(rows.GetNumRows(), expected.GetNumRows());
+        EXPECT_EQ(Apply(rows, 3), Apply(expected, 3));
+        EXPECT_EQ(Apply(rows, 5), Apply(expected, 5));
+        const subd::StencilTable next =
+          subd::StencilTable::FromSource(subd::MakeSqrt3RowSourceFromGrandparent(kept, parallelFor, fans));
+        EXPECT_EQ(fans.use_count(), 3); // here, in the level's rows and in the next level's
+        ASSERT_EQ(next.GetNumRows(), expectedNext.GetNumRows());
+        EXPECT_EQ(Apply(next, 3), Apply(expectedNext, 3));
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 10);
+  const auto open = std::make_shared<subd::Level>(subdtest::BaseLevel(subdtest::House(true).Triangulated()));
+  EXPECT_EQ(subd::MakeSqrt3RowSourceReadingFans(open), nullptr);
+  EXPECT_EQ(scheme.MakeRowSourceWithoutVertexLists(open), nullptr);
+  const auto closed = std::make_shared<subd::Level>(subdtest::BaseLevel(subdtest::Bipyramid(5)));
+  EXPECT_EQ(subd::Sqrt3RowFans(subd::MakeSqrt3RowSource(closed).get()), nullptr);
+  EXPECT_NE(subd::Sqrt3RowFans(scheme.MakeRowSourceWithoutVertexLists(closed).get()), nullptr);
+  auto creased = std::make_shared<subd::Level>(*closed);
+  creased->EdgeSharpness[0] = 2.0f; // its child is not in the closed form
+  EXPECT_EQ(scheme.MakeRowSourceWithoutVertexLists(creased), nullptr);
+}
+
+// A child split to be split alone (LeanChild::SplitAlone) keeps its faces, edges and face
+// counts, but no list around its vertices and, where nothing is sharp, no sharpness: what
+// its own split and the check for the rows from its parent read. Split alone, it gives the
+// whole child's children; RestoreSplitAloneTrim gives back the whole child's lists and
+// sharpness. A sharp child keeps its sharpness.
+TEST(Sqrt3GrandparentRows, ChildSplitAloneKeepsWhatItsSplitReads)
+{
+  const subd::Sqrt3Scheme scheme;
+  for (const subdtest::TestMesh& mesh : ClosedTriangleMeshes())
+  {
+    SCOPED_TRACE(mesh.Name);
+    const subd::Level base = subdtest::BaseLevel(mesh);
+    const subd::Level whole = scheme.Split(base, subd::ChildTopology::Full);
+    subd::Level lean =
+      subd::SplitSqrt3(base, subd::ChildTopology::Full, subd::SerialFor, {}, nullptr, subd::LeanChild::SplitAlone);
+    EXPECT_FALSE(lean.Topology.HasVertexRelations());
+    EXPECT_FALSE(lean.Topology.HasVertexFaceLists());
+    EXPECT_TRUE(lean.Topology.HasVertexFaceCounts());
+    EXPECT_TRUE(lean.EdgeSharpness.empty());
+    EXPECT_TRUE(lean.VertexSharpness.empty());
+    EXPECT_EQ(lean.Topology.GetFaceVertexArray(), whole.Topology.GetFaceVertexArray());
+    ASSERT_EQ(lean.Topology.GetNumEdges(), whole.Topology.GetNumEdges());
+    EXPECT_TRUE(subd::Sqrt3RowsFromGrandparentApply(base, lean));
+    subd::Level restored = lean;
+    const subd::Level grandchild = scheme.SplitFinestAlone(lean);
+    EXPECT_EQ(grandchild.Topology.GetFaceVertexArray(),
+      scheme.Split(whole, subd::ChildTopology::FacesOnly).Topology.GetFaceVertexArray());
+    subd::RestoreSplitAloneTrim(restored, subdtest::ThreeThreadFor);
+    ASSERT_TRUE(restored.Topology.HasVertexRelations());
+    for (Index v = 0; v < whole.Topology.GetNumVertices(); ++v)
+    {
+      const subd::IndexSpan a = restored.Topology.GetVertexEdges(v), b = whole.Topology.GetVertexEdges(v);
+      EXPECT_EQ(std::vector<Index>(a.begin(), a.end()), std::vector<Index>(b.begin(), b.end()));
+    }
+    EXPECT_EQ(restored.EdgeSharpness, whole.EdgeSharpness);
+    EXPECT_EQ(restored.VertexSharpness, whole.VertexSharpness);
+  }
+  subd::Level creased = subdtest::BaseLevel(subdtest::Bipyramid(5));
+  creased.EdgeSharpness[0] = 2.0f;
+  const subd::Level lean =
+    subd::SplitSqrt3(creased, subd::ChildTopology::Full, subd::SerialFor, {}, nullptr, subd::LeanChild::SplitAlone);
+  EXPECT_FALSE(lean.Topology.HasVertexRelations());
+  EXPECT_TRUE(lean.HasSharpFeatures());
+}
+
 // Anything sharp, open or not flipped keeps the parent's own rows.
 TEST(Sqrt3GrandparentRows, ApplyToClosedSmoothLevelsOnly)
 {
@@ -106,7 +201,8 @@ TEST(Sqrt3GrandparentRows, ApplyToClosedSmoothLevelsOnly)
 }
 
 // Refine takes them for a faces-only finest level with the lean row modes, and frees the
-// finest level's parent: the hierarchy evaluates as the stored one does.
+// finest level's parent; the grandparent's own rows then read its fans, shared with its
+// grandchild's: the hierarchy evaluates as the stored one does.
 TEST(Sqrt3GrandparentRows, RefineWritesTheFinestRowsFromTheGrandparent)
 {
   const subd::Sqrt3Scheme scheme;
@@ -123,6 +219,12 @@ TEST(Sqrt3GrandparentRows, RefineWritesTheFinestRowsFromTheGrandparent)
         subd::Refine(scheme, subdtest::BaseLevel(mesh), levels, written, nullptr, subd::ChildTopology::FacesOnly, mode);
         const bool fromGrandparent = subd::IsSqrt3RowSourceFromGrandparent(written.Stencils.back().GetSource());
         EXPECT_EQ(fromGrandparent, levels >= 2 && mode != subd::LevelRows::Written);
+        if (levels >= 2) // the grandparent's own rows read its fans, which its grandchild's share
+        {
+          const auto fans = subd::Sqrt3RowFans(written.Stencils[levels - 2].GetSource());
+          EXPECT_EQ(fans != nullptr, fromGrandparent);
+          EXPECT_EQ(fans.use_count(), fromGrandparent ? 3 : 0);
+        }
         EXPECT_EQ(written.Finest.Topology.GetFaceVertexArray(), stored.Finest.Topology.GetFaceVertexArray());
         std::vector<double> a(static_cast<size_t>(stored.GetNumFinestPoints()) * 3), b(a.size());
         stored.Evaluate(mesh.Points.data(), 3, a.data());
