@@ -111,12 +111,12 @@ Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep, 
 
 bool HasSqrt3InteriorCurveEdge(const Level& level, const ParallelFor& parallelFor)
 {
-  const MeshTopology& topo = level.Topology;
-  std::atomic<bool> found{ false };
   if (level.EdgeSharpness.empty())
   {
     return false; // no sharp edge (LeanChild::SplitAlone)
   }
+  const MeshTopology& topo = level.Topology;
+  std::atomic<bool> found{ false };
   parallelFor(0, topo.GetNumEdges(), [&](Index begin, Index end) {
     bool here = false;
     for (Index e = begin; e < end && !here; ++e)

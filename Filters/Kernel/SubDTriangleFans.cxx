@@ -87,25 +87,23 @@ std::shared_ptr<const TriangleFans> TriangleFans::Build(
   {
     fans->MaxValence = std::max(fans->MaxValence, offsets[v + 1] - offsets[v]);
   }
-  // Twins in pairs, and one closed fan around each vertex, holding all its corners.
+  // Twins in pairs, and one closed fan around each vertex, holding all its corners: the
+  // walk from its start comes back to it after exactly as many corners as the vertex has.
   parallelFor(0, numVertices, [&](Index begin, Index end) {
     bool here = true;
     for (Index v = begin; v < end && here; ++v)
     {
-      Index n = 0;
-      bool paired = true;
-      fans->ForEachCorner(v, [&](Index h) {
-        const Index t = fans->Twin[h];
-        paired = paired && corners[h] == v && fans->Twin[t] == h;
-        ++n;
-      });
+      const Index count = offsets[v + 1] - offsets[v];
       const Index start = fans->FanStart[v];
-      Index corner = start;
-      for (Index k = 0; k < n; ++k)
+      Index corner = start, n = 0;
+      bool paired = true;
+      do
       {
-        corner = NextCorner(fans->Twin[corner]);
-      }
-      here = paired && n == offsets[v + 1] - offsets[v] && corner == start;
+        const Index twin = fans->Twin[corner];
+        paired = paired && fans->Twin[twin] == corner;
+        corner = NextCorner(twin);
+      } while (++n < count && corner != start);
+      here = paired && n == count && corner == start;
     }
     if (!here)
     {
