@@ -347,12 +347,15 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
   return level;
 }
 
-void KeepOnly(Level& level, MeshTopology::Part part, const ParallelFor& parallelFor)
+void KeepOnly(Level& level, MeshTopology::Part part, const ParallelFor& parallelFor, bool keepFaceOrigins)
 {
   level.Topology.KeepOnly(part, parallelFor);
   LevelArray<float>().swap(level.EdgeSharpness);
   LevelArray<float>().swap(level.VertexSharpness);
   LevelArray<std::uint8_t>().swap(level.FaceIsHole);
-  LevelArray<Index>().swap(level.FaceOrigin);
+  if (!keepFaceOrigins)
+  {
+    LevelArray<Index>().swap(level.FaceOrigin);
+  }
 }
 }

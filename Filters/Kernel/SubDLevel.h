@@ -342,8 +342,10 @@ struct BaseTags
 SUBDKERNEL_EXPORT Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule rule);
 
 /// Frees all of a level but a part of its topology (MeshTopology::KeepOnly) and its vertex
-/// count: no tags, no sharpness.
-SUBDKERNEL_EXPORT void KeepOnly(Level& level, MeshTopology::Part part, const ParallelFor& parallelFor = SerialFor);
+/// count: no sharpness, no hole flags, and no face origins unless `keepFaceOrigins` (for a
+/// grandchild written from the level that keeps them).
+SUBDKERNEL_EXPORT void KeepOnly(
+  Level& level, MeshTopology::Part part, const ParallelFor& parallelFor = SerialFor, bool keepFaceOrigins = false);
 }
 
 #endif

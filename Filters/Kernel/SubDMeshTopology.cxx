@@ -112,11 +112,14 @@ void MeshTopology::KeepOnly(Part part, const ParallelFor& parallelFor)
     lists.push_back(&this->VertexEdges);
     offsets.push_back(&this->VertexEdgeOffsets);
   }
-  if (part != Part::EdgeEnds)
+  if (part != Part::EdgeEnds && part != Part::FacesWithEdges)
   {
     lists.push_back(&this->EdgeVertices);
   }
-  lists.push_back(&this->FaceEdges); // no part keeps them
+  if (part != Part::FacesWithEdges)
+  {
+    lists.push_back(&this->FaceEdges);
+  }
   if (part == Part::EdgeEnds)
   {
     lists.push_back(&this->FaceVertices);

@@ -92,11 +92,14 @@ public:
     Faces,         ///< each face's corners (Doo-Sabin's rows)
     EdgeEnds,      ///< each edge's two vertices (the midpoint rows)
     FacesAndRings, ///< each face's corners and vertex's ring of neighbours (sqrt(3)'s rows)
+    FacesWithEdges, ///< each face's corners and edges, and each edge's ends (the midpoint's
+                    ///< rows and its grandchild written from the level, SubDMidpointGrandchild.h)
   };
   /// Frees everything but `part` (and the vertex count): for a level kept only for rows that
   /// read nothing else. Only that part's accessors may be called then (GetNumFaces,
   /// GetFaceSize, GetFaceOffset, GetFaceVertices; GetNumEdges,
-  /// GetEdgeVertices, GetOtherEndpoint; GetVertexEdges' sizes and ForEachRingVertex). For
+  /// GetEdgeVertices, GetOtherEndpoint; GetVertexEdges' sizes and ForEachRingVertex;
+  /// GetFaceEdges and the raw face arrays for FacesWithEdges). For
   /// FacesAndRings each vertex's list of edges is overwritten, in place, with the vertices
   /// at their other ends in increasing order (ForEachRingVertex's), and the edges' ends go:
   /// the rings cost no more than the edge lists did and are read without the indirection.

@@ -115,7 +115,14 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
             split.Topology.ReleaseVertexFaceLists();
           }
         };
-        if (parentSkipped)
+        MeshTopology::Part grandchildPart;
+        bool grandchildOrigins = false;
+        if (parentSkipped && scheme.GrandchildAloneReadsOnly(grandchildPart, grandchildOrigins))
+        {
+          current = Level();
+          KeepOnly(*parent, grandchildPart, scheme.GetParallelFor(), grandchildOrigins);
+        }
+        else if (parentSkipped)
         {
           current = Level();
           trim(*parent);

@@ -9,6 +9,7 @@
 #include "SubDLinearRules.h"
 #include "SubDLoopRules.h"
 #include "SubDSqrt3ChildTopology.h"
+#include "SubDMidpointGrandchild.h"
 #include "SubDMidpointSplit.h"
 #include "SubDQuadSplit.h"
 #include "SubDRowWriting.h"
@@ -191,6 +192,27 @@ Level MidpointScheme::Split(const Level& parent, ChildTopology depth) const
 std::shared_ptr<const RowSource> MidpointScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
 {
   return MakeMidpointRowSource(std::move(parent));
+}
+
+bool MidpointScheme::RefinesFromGrandparentAlone(const Level& grandparent) const
+{
+  return MidpointGrandchildHasClosedForm(grandparent);
+}
+
+bool MidpointScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
+  ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces, const RowSource*) const
+{
+  const bool parentBuilt = parent.Topology.GetNumVertices() > 0 || parent.Topology.GetNumFaces() > 0;
+  if (depth != ChildTopology::FacesOnly || parentBuilt)
+  {
+    return false; // split from the parent (the closed form holds where Refine skipped it)
+  }
+  const ParallelFor& parallelFor = this->GetParallelFor();
+  child = MidpointGrandchildTags(*grandparent, this->GetFacesOnlyOrigins(), parallelFor);
+  childFaces.NumFaces = CountMidpointGrandchildFaces(grandparent->Topology);
+  childFaces.Make = [grandparent, parallelFor] { return MidpointGrandchildFaces(grandparent->Topology, parallelFor); };
+  rows = StencilTable::FromSource(MakeMidpointGrandchildRowSource(std::move(grandparent)));
+  return true;
 }
 
 MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const

@@ -161,7 +161,10 @@ public:
   /// the points and free its scratch. `grandparentRows`, if given, are the rows from
   /// `grandparent` to `parent` (tables of theirs may be shared: GrandchildRows). Returns
   /// false, changing nothing, for schemes that cannot (those without GetGrandchildScheme).
-  bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
+  /// `parent` is empty where Refine did not build it (RefinesFromGrandparentAlone(grandparent)).
+  /// The midpoint scheme writes a faces-only child so, in closed form (SubDMidpointGrandchild.h),
+  /// where its parent was not built, and returns false otherwise.
+  virtual bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
     StencilTable& rows, Level& child, LaterFaces& childFaces, const RowSource* grandparentRows = nullptr) const;
   /// True for the schemes whose RefineFromGrandparent can return true.
   bool RefinesFromGrandparent() const
@@ -181,10 +184,23 @@ public:
   /// when RefinesFromGrandparentAlone(), else when no row needs the parent
   /// (EveryGrandchildRowIsSmooth; with LevelRows::WrittenFromGrandparent or WrittenLean,
   /// Refine then does not build the level above a faces-only finest level).
-  bool RefinesFromGrandparentAlone(const Level& grandparent) const
+  /// The midpoint scheme: where its grandchild has a closed form (MidpointGrandchildHasClosedForm).
+  virtual bool RefinesFromGrandparentAlone(const Level& grandparent) const
   {
     GrandchildScheme which;
     return this->GetGrandchildScheme(which) && EveryGrandchildRowIsSmooth(which, grandparent);
+  }
+  /// Where a level's child is not built (RefinesFromGrandparentAlone(level)), whether the
+  /// level's own rows and its grandchild, written from it, read nothing of it but `part` of its
+  /// topology and, if `faceOrigins`, its faces' origins: Refine then frees the rest once the
+  /// rows are made. False by default (the schemes whose grandchild rows are GrandchildRows
+  /// keep what those read); the midpoint scheme: its faces with their edges, and its edges'
+  /// ends.
+  virtual bool GrandchildAloneReadsOnly(MeshTopology::Part& part, bool& faceOrigins) const
+  {
+    (void)part;
+    (void)faceOrigins;
+    return false;
   }
   /// How much of the levels between the base and a faces-only finest level Refine builds: the
   /// full topology, except for the linear rules, whose rows, splits and grandchild rows read
@@ -476,6 +492,17 @@ public:
     part = MeshTopology::Part::EdgeEnds;
     return true;
   }
+  /// On a closed smooth level (MidpointGrandchildHasClosedForm) the faces-only finest level
+  /// two splits down is written from it alone, its parent never built.
+  bool RefinesFromGrandparentAlone(const Level& grandparent) const override;
+  bool GrandchildAloneReadsOnly(MeshTopology::Part& part, bool& faceOrigins) const override
+  {
+    part = MeshTopology::Part::FacesWithEdges;
+    faceOrigins = this->GetFacesOnlyOrigins();
+    return true;
+  }
+  bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
+    StencilTable& rows, Level& child, LaterFaces& childFaces, const RowSource* grandparentRows = nullptr) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
 };

@@ -4,6 +4,7 @@
 #include "SubDButterflyRules.h"
 #include "SubDGrandchildRows.h"
 #include "SubDMemoryEstimate.h"
+#include "SubDMidpointGrandchild.h"
 #include "SubDRefiner.h"
 #include "SubDRowWriting.h"
 #include "SubDScheme.h"
@@ -669,7 +670,7 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
   // The creases' methods, and no sharp feature at all (where Catmull-Clark and Loop, with
   // WrittenFromGrandparent or WrittenLean, skip the finest level's parent on closed meshes:
   // EveryGrandchildRowIsSmooth).
-  int leanHierarchies = 0, releasedVertexFaceLists = 0, releasedVertexEdgeLists = 0;
+  int leanHierarchies = 0, releasedVertexFaceLists = 0, releasedVertexEdgeLists = 0, midpointClosedForms = 0;
   for (int creases = 0; creases < 3; ++creases)
   {
     const subd::CreaseMethod method = creases == 1 ? subd::CreaseMethod::Chaikin : subd::CreaseMethod::Uniform;
@@ -705,8 +706,19 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
           const std::string name = GetParam().Name;
           const bool linear = name == "linear-triangles" || name == "bilinear";
           const bool lean = subd::HasFinestRowsToPromote(*scheme, written);
+          // The midpoint scheme's finest level comes from a closed smooth grandparent in
+          // closed form with the leaner modes (SubDMidpointGrandchild.h).
+          bool midpointClosedForm = false;
+          if (name == "midpoint" && levels >= 2 && variant != 0 && variant != 2)
+          {
+            subd::Hierarchy above;
+            subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels - 2, above, nullptr,
+              subd::ChildTopology::Full);
+            midpointClosedForm = subd::MidpointGrandchildHasClosedForm(above.Finest);
+            midpointClosedForms += midpointClosedForm;
+          }
           const bool fromGrandparent = levels >= 2 && variant != 2 &&
-            (linear || (variant == 1 && WritesRowsTwoLevelsDown(name)) || lean);
+            (linear || (variant == 1 && WritesRowsTwoLevelsDown(name)) || lean || midpointClosedForm);
           EXPECT_TRUE(!lean || variant != 0) << mesh.Name << " L" << levels;
           leanHierarchies += lean && variant == 3;
           EXPECT_EQ(written.HasFinestFaces(), !fromGrandparent) << mesh.Name << " L" << levels;
@@ -773,6 +785,7 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
   EXPECT_EQ(leanHierarchies > 0, WritesRowsTwoLevelsDown(name)) << leanHierarchies;
   EXPECT_EQ(releasedVertexEdgeLists > 0, name == "butterfly") << releasedVertexEdgeLists;
   EXPECT_EQ(releasedVertexFaceLists > 0, name == "loop" || name == "butterfly") << releasedVertexFaceLists;
+  EXPECT_EQ(midpointClosedForms > 0, name == "midpoint") << midpointClosedForms;
 }
 
 // The size guard's prediction (SubDMemoryEstimate.h) covers what a refinement holds once its

@@ -1,0 +1,228 @@
+#include "SubDMidpointGrandchild.h"
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace subd
+{
+namespace
+{
+// The raw arrays the closed form reads (MeshTopology::Part::FacesWithEdges).
+struct GrandparentFaces
+{
+  explicit GrandparentFaces(const MeshTopology& topology)
+    : Offsets(topology.GetFaceOffsetArray().data())
+    , Corners(topology.GetFaceVertexArray().data())
+    , Edges(topology.GetFaceEdgeArray().data())
+    , Topology(topology)
+  {
+  }
+  // Whether corner h holds its edge's first half-edge: the one that starts at the edge's
+  // first end (the two half-edges of a manifold edge start at its two ends).
+  bool IsFirstHalfEdge(Index h) const { return this->Corners[h] == this->Topology.GetEdgeVertices(this->Edges[h])[0]; }
+  // Calls visit(f, h, previous corner) for the corners of the faces [begin, end).
+  template <typename Visit>
+  void ForEachCorner(Index begin, Index end, Visit&& visit) const
+  {
+    for (Index f = begin; f < end; ++f)
+    {
+      const Index first = this->Offsets[f], last = this->Offsets[f + 1];
+      for (Index h = first, previous = last - 1; h < last; previous = h++)
+      {
+        visit(f, h, previous);
+      }
+    }
+  }
+
+  const Index* Offsets;
+  const Index* Corners;
+  const Index* Edges;
+  const MeshTopology& Topology;
+};
+
+class MidpointGrandchildRows final : public RowSourceWithApply<MidpointGrandchildRows>
+{
+  friend class RowSourceWithApply<MidpointGrandchildRows>;
+
+public:
+  explicit MidpointGrandchildRows(std::shared_ptr<const Level> grandparent)
+    : Grandparent(std::move(grandparent))
+  {
+  }
+  Index GetNumParents() const override { return this->Grandparent->Topology.GetNumEdges(); }
+  Index GetNumRows() const override { return this->Grandparent->Topology.GetNumFaceCorners(); }
+  std::vector<Index> GetBlockEnds() const override { return { this->GetNumRows() }; }
+
+private:
+  template <typename T>
+  void Apply(const T* parents, T* children, int components, Index begin, Index end) const
+  {
+    if (begin >= end)
+    {
+      return;
+    }
+    const MeshTopology& topology = this->Grandparent->Topology;
+    const IndexArray& offsets = topology.GetFaceOffsetArray();
+    const Index* edges = topology.GetFaceEdgeArray().data();
+    const Index numParents = this->GetNumParents();
+    const double halves[2] = { 0.5, 0.5 };
+    std::vector<double> sum(static_cast<size_t>(components));
+    // The face holding row `begin`, then face after face.
+    Index f = static_cast<Index>(std::upper_bound(offsets.begin(), offsets.end(), begin) - offsets.begin()) - 1;
+    for (Index row = begin; row < end; ++f)
+    {
+      const Index first = offsets[f], last = offsets[f + 1];
+      for (; row < last && row < end; ++row)
+      {
+        const Index ends[2] = { edges[row], edges[row + 1 < last ? row + 1 : first] };
+        ApplyRow(ends, halves, 2, numParents, parents, children, components, sum.data(),
+          children + static_cast<size_t>(row) * components);
+      }
+    }
+  }
+
+  std::shared_ptr<const Level> Grandparent;
+};
+}
+
+bool MidpointGrandchildHasClosedForm(const Level& grandparent)
+{
+  const MeshTopology& topology = grandparent.Topology;
+  if (!topology.HasVertexRelations() || !topology.HasEdges() || topology.GetNumFaces() == 0 ||
+    topology.GetNumBoundaryEdges() != 0 || topology.GetNumNonManifoldEdges() != 0 ||
+    topology.GetNumNonManifoldVertices() != 0 || grandparent.FaceTagShift != 0 || grandparent.HasHoles() ||
+    grandparent.HasSharpFeatures())
+  {
+    return false;
+  }
+  for (Index v = 0; v < topology.GetNumVertices(); ++v)
+  {
+    if (topology.GetNumVertexFaces(v) < 3) // a vertex of two faces gets no V-face
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::shared_ptr<const RowSource> MakeMidpointGrandchildRowSource(std::shared_ptr<const Level> grandparent)
+{
+  return std::make_shared<MidpointGrandchildRows>(std::move(grandparent));
+}
+
+Level MidpointGrandchildTags(const Level& grandparent, bool keepOrigins, const ParallelFor& parallelFor)
+{
+  Level fine;
+  fine.Depth = grandparent.Depth + 2;
+  fine.Creasing = grandparent.Creasing;
+  if (!keepOrigins)
+  {
+    return fine;
+  }
+  const MeshTopology& topology = grandparent.Topology;
+  const GrandparentFaces faces(topology);
+  const Index numFaces = topology.GetNumFaces(), numVertices = topology.GetNumVertices();
+  const Index* origin = grandparent.FaceOrigin.data();
+  fine.FaceOrigin.resize(static_cast<size_t>(numFaces) + numVertices + topology.GetNumEdges());
+  Index* faceFaces = fine.FaceOrigin.data();
+  Index* vertexFaces = faceFaces + numFaces; // the lowest origin around each vertex
+  Index* edgeFaces = vertexFaces + numVertices;
+  std::copy(origin, origin + numFaces, faceFaces);
+  std::fill(vertexFaces, vertexFaces + numVertices, std::numeric_limits<Index>::max());
+  faces.ForEachCorner(0, numFaces, [&](Index f, Index h, Index) {
+    Index& lowest = vertexFaces[faces.Corners[h]];
+    lowest = std::min(lowest, origin[f]);
+  });
+  // An edge's V-face comes from its two faces and its ends' V-faces: each half-edge brings
+  // its face and the end it starts at; the first half-edges write, then the second ones
+  // (one writer per edge in each pass).
+  for (const bool firstHalves : { true, false })
+  {
+    parallelFor(0, numFaces, [&](Index begin, Index end) {
+      faces.ForEachCorner(begin, end, [&](Index f, Index h, Index) {
+        if (faces.IsFirstHalfEdge(h) == firstHalves)
+        {
+          const Index lowest = std::min(origin[f], vertexFaces[faces.Corners[h]]);
+          Index& edgeFace = edgeFaces[faces.Edges[h]];
+          edgeFace = firstHalves ? lowest : std::min(edgeFace, lowest);
+        }
+      });
+    });
+  }
+  return fine;
+}
+
+MeshTopology MidpointGrandchildFaces(const MeshTopology& grandparent, const ParallelFor& parallelFor)
+{
+  const GrandparentFaces faces(grandparent);
+  const Index numFaces = grandparent.GetNumFaces(), numVertices = grandparent.GetNumVertices();
+  const Index numEdges = grandparent.GetNumEdges(), numCorners = grandparent.GetNumFaceCorners();
+  IndexArray offsets(static_cast<size_t>(numFaces) + numVertices + numEdges + 1);
+  // F-faces of F-faces: each face of G again, on its own corners.
+  std::copy(faces.Offsets, faces.Offsets + numFaces + 1, offsets.begin());
+  // F-faces of V-faces: as many corners as the vertex has faces; each fan starts at the
+  // vertex's lowest corner (in its lowest face).
+  Index* vertexEnds = offsets.data() + numFaces + 1;
+  std::fill(vertexEnds, vertexEnds + numVertices, 0);
+  std::vector<Index> fanStart(static_cast<size_t>(numVertices), InvalidIndex);
+  for (Index h = 0; h < numCorners; ++h)
+  {
+    const Index v = faces.Corners[h];
+    ++vertexEnds[v];
+    fanStart[v] = fanStart[v] == InvalidIndex ? h : fanStart[v];
+  }
+  for (Index v = 0; v < numVertices; ++v)
+  {
+    vertexEnds[v] += offsets[numFaces + v];
+  }
+  // V-faces of the points of G's edges: quads.
+  const Index quadsBegin = offsets[numFaces + numVertices];
+  Index* edgeEnds = offsets.data() + numFaces + numVertices + 1;
+  parallelFor(0, numEdges, [&](Index begin, Index end) {
+    for (Index e = begin; e < end; ++e)
+    {
+      edgeEnds[e] = quadsBegin + 4 * (e + 1);
+    }
+  });
+  IndexArray vertices(static_cast<size_t>(quadsBegin) + 4 * static_cast<size_t>(numEdges));
+  Index* quads = vertices.data() + quadsBegin;
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    faces.ForEachCorner(begin, end, [&](Index, Index h, Index previous) {
+      vertices[h] = h;
+      Index* quad = quads + 4 * static_cast<size_t>(faces.Edges[h]) + (faces.IsFirstHalfEdge(h) ? 0 : 2);
+      quad[0] = h;
+      quad[1] = previous;
+    });
+  });
+  // Each quad holds both half-edges of its edge, each with the corner before it: the fans
+  // are walked from them. The corner before h ends at h's start vertex v, and the other
+  // half-edge of its edge starts at v in the next face of v's fan.
+  auto previousOf = [quads, &faces](Index h) {
+    const Index* quad = quads + 4 * static_cast<size_t>(faces.Edges[h]);
+    return quad[0] == h ? quad[1] : quad[3];
+  };
+  auto otherHalfOf = [quads, &faces](Index h) {
+    const Index* quad = quads + 4 * static_cast<size_t>(faces.Edges[h]);
+    return quad[0] == h ? quad[2] : quad[0];
+  };
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v)
+    {
+      Index h = fanStart[v];
+      for (Index k = offsets[numFaces + v]; k < offsets[numFaces + v + 1]; ++k)
+      {
+        const Index previous = previousOf(h);
+        vertices[k] = previous;
+        h = otherHalfOf(previous);
+      }
+    }
+  });
+  return MeshTopology::BuildFacesOnly(numCorners, std::move(offsets), std::move(vertices));
+}
+
+Index CountMidpointGrandchildFaces(const MeshTopology& grandparent)
+{
+  return grandparent.GetNumFaces() + grandparent.GetNumVertices() + grandparent.GetNumEdges();
+}
+}

@@ -1,0 +1,151 @@
+// The midpoint scheme's finest level written from its grandparent in closed form
+// (SubDMidpointGrandchild.h), against two splits by the split itself (SubDMidpointSplit.h).
+#include "SubDMidpointGrandchild.h"
+#include "SubDMidpointSplit.h"
+#include "SubDTestMeshes.h"
+#include "SubDTestParallel.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+using subd::Index;
+
+namespace
+{
+// A closed surface of two quads glued along their boundary: every vertex has two faces.
+subdtest::TestMesh Pillow()
+{
+  subdtest::TestMesh m;
+  m.Name = "pillow";
+  m.AddPoint(0, 0, 0);
+  m.AddPoint(1, 0, 0);
+  m.AddPoint(1, 1, 0);
+  m.AddPoint(0, 1, 0);
+  m.AddFace({ 0, 1, 2, 3 });
+  m.AddFace({ 3, 2, 1, 0 });
+  return m;
+}
+
+// Values of `rows` applied to `parents` (components values each) in ranges of two rows on
+// three threads.
+std::vector<double> ApplyOnThreads(const subd::StencilTable& rows, const std::vector<double>& parents, int components)
+{
+  std::vector<double> children(static_cast<size_t>(rows.GetNumRows()) * components);
+  for (Index b = 0; b < rows.GetNumBlocks(); ++b)
+  {
+    subdtest::ThreeThreadFor(rows.GetBlockBegin(b), rows.GetBlockEnd(b), [&](Index begin, Index end) {
+      rows.ApplyRows(parents.data(), children.data(), components, begin, end);
+    });
+  }
+  return children;
+}
+}
+
+// On every closed smooth fixture (n-gons, a torus, valences 3 to 8 and an apex of valence 70,
+// past the fan walk's room on the stack), from the base level and from one split down: the
+// faces, their origins (scrambled in the grandparent, so that each child's lowest one is
+// tested) and the rows' values equal, bit for bit, those of splitting twice, serially and on
+// threads, with the grandparent trimmed to what Refine keeps of it (Part::FacesWithEdges).
+TEST(MidpointGrandchild, EqualsTwoSplits)
+{
+  std::vector<subdtest::TestMesh> meshes = subdtest::StandardMeshes();
+  for (const subdtest::TestMesh& m : subdtest::TriangleMeshes())
+  {
+    meshes.push_back(m);
+  }
+  meshes.push_back(subdtest::Bipyramid(70));
+  int checked = 0;
+  for (const subdtest::TestMesh& mesh : meshes)
+  {
+    subd::Level grandparent = subdtest::BaseLevel(mesh);
+    for (int depth = 0; depth < 2; ++depth)
+    {
+      if (depth == 1)
+      {
+        grandparent = subd::SplitMidpoint(grandparent, subd::ChildTopology::Full);
+      }
+      if (!subd::MidpointGrandchildHasClosedForm(grandparent))
+      {
+        continue;
+      }
+      const std::string what = mesh.Name + " from depth " + std::to_string(depth);
+      for (Index f = 0; f < grandparent.Topology.GetNumFaces(); ++f)
+      {
+        grandparent.FaceOrigin[f] = (f * 7919) % 1009; // not increasing
+      }
+      const subd::Level parent = subd::SplitMidpoint(grandparent, subd::ChildTopology::Full);
+      const subd::Level fine = subd::SplitMidpoint(parent, subd::ChildTopology::FacesOnly);
+      const auto parentRows = subd::StencilTable::FromSource(
+        subd::MakeMidpointRowSource(std::make_shared<const subd::Level>(parent)));
+
+      auto trimmed = std::make_shared<subd::Level>(grandparent);
+      subd::KeepOnly(*trimmed, subd::MeshTopology::Part::FacesWithEdges, subd::SerialFor, true);
+      ASSERT_FALSE(trimmed->Topology.HasVertexRelations());
+      for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor),
+             subd::ParallelFor(subdtest::ThreeThreadFor) })
+      {
+        const subd::MeshTopology faces = subd::MidpointGrandchildFaces(trimmed->Topology, parallelFor);
+        ASSERT_EQ(faces.GetFaceOffsetArray(), fine.Topology.GetFaceOffsetArray()) << what;
+        ASSERT_EQ(faces.GetFaceVertexArray(), fine.Topology.GetFaceVertexArray()) << what;
+        EXPECT_EQ(faces.GetNumVertices(), fine.Topology.GetNumVertices()) << what;
+        EXPECT_EQ(subd::CountMidpointGrandchildFaces(trimmed->Topology), fine.Topology.GetNumFaces()) << what;
+
+        const subd::Level tags = subd::MidpointGrandchildTags(*trimmed, true, parallelFor);
+        EXPECT_EQ(tags.FaceOrigin, fine.FaceOrigin) << what;
+        EXPECT_EQ(tags.Depth, fine.Depth) << what;
+        EXPECT_TRUE(subd::MidpointGrandchildTags(*trimmed, false, parallelFor).FaceOrigin.empty()) << what;
+      }
+      const auto rows = subd::StencilTable::FromSource(subd::MakeMidpointGrandchildRowSource(trimmed));
+      ASSERT_EQ(rows.GetNumRows(), parentRows.GetNumRows()) << what;
+      ASSERT_EQ(rows.GetNumParents(), parentRows.GetNumParents()) << what;
+      for (int components : { 3, 5 })
+      {
+        std::vector<double> values(static_cast<size_t>(rows.GetNumParents()) * components);
+        for (size_t i = 0; i < values.size(); ++i)
+          values[i] = std::sin(0.37 * static_cast<double>(i));
+        std::vector<double> expected(static_cast<size_t>(rows.GetNumRows()) * components);
+        parentRows.Apply(values.data(), expected.data(), components);
+        EXPECT_EQ(ApplyOnThreads(rows, values, components), expected) << what;
+      }
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 10);
+}
+
+// No closed form where the level between keeps a vertex or misses a V-face: a boundary, a
+// non-manifold edge or vertex, a sharp edge or vertex (semi-sharp included), a hole, a vertex
+// of two faces.
+TEST(MidpointGrandchild, NoneWhereTheSplitKeepsVerticesOrLeavesVFacesOut)
+{
+  const subdtest::TestMesh cube = subdtest::Cube();
+  EXPECT_TRUE(subd::MidpointGrandchildHasClosedForm(subdtest::BaseLevel(cube)));
+  EXPECT_TRUE(subd::MidpointGrandchildHasClosedForm(subdtest::BaseLevel(subdtest::Grid(6, 5, true, true))));
+  EXPECT_FALSE(subd::MidpointGrandchildHasClosedForm(subdtest::BaseLevel(subdtest::Grid(4, 3, false, false))));
+  EXPECT_FALSE(subd::MidpointGrandchildHasClosedForm(subdtest::BaseLevel(subdtest::House(true))));
+  EXPECT_FALSE(subd::MidpointGrandchildHasClosedForm(subdtest::BaseLevel(subdtest::NonManifold())));
+  EXPECT_FALSE(subd::MidpointGrandchildHasClosedForm(subdtest::BaseLevel(subdtest::PinchedCubes())));
+  EXPECT_FALSE(subd::MidpointGrandchildHasClosedForm(subdtest::BaseLevel(Pillow())));
+  const subd::MeshTopology topology = subd::MeshTopology::Build(cube.NumVertices(), cube.Offsets, cube.Vertices);
+  subd::BaseTags semiSharpEdge;
+  semiSharpEdge.EdgeSharpness.assign(static_cast<size_t>(topology.GetNumEdges()), 0.0f);
+  semiSharpEdge.EdgeSharpness[3] = 0.5f;
+  EXPECT_FALSE(subd::MidpointGrandchildHasClosedForm(
+    subd::MakeBaseLevel(topology, semiSharpEdge, subd::BoundaryRule::EdgeOnly)));
+  subd::BaseTags sharpVertex;
+  sharpVertex.VertexSharpness.assign(static_cast<size_t>(topology.GetNumVertices()), 0.0f);
+  sharpVertex.VertexSharpness[5] = 2.0f;
+  EXPECT_FALSE(subd::MidpointGrandchildHasClosedForm(
+    subd::MakeBaseLevel(topology, sharpVertex, subd::BoundaryRule::EdgeOnly)));
+  subd::BaseTags hole;
+  hole.FaceIsHole.assign(static_cast<size_t>(topology.GetNumFaces()), 0);
+  hole.FaceIsHole[2] = 1;
+  EXPECT_FALSE(
+    subd::MidpointGrandchildHasClosedForm(subd::MakeBaseLevel(topology, hole, subd::BoundaryRule::EdgeOnly)));
+  // The semi-sharp edge has decayed one split down: the closed form holds there.
+  const subd::Level creased = subd::MakeBaseLevel(topology, semiSharpEdge, subd::BoundaryRule::EdgeOnly);
+  EXPECT_TRUE(subd::MidpointGrandchildHasClosedForm(subd::SplitMidpoint(creased, subd::ChildTopology::Full)));
+}
