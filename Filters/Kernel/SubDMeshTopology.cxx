@@ -27,6 +27,15 @@ MeshTopology MeshTopology::BuildFacesOnly(Index numVertices, IndexArray faceOffs
   return topology;
 }
 
+MeshTopology MeshTopology::BuildFacesWithEdges(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
+  IndexArray faceEdges, IndexArray edgeVertices)
+{
+  MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), std::move(faceVertices));
+  topology.FaceEdges = std::move(faceEdges);
+  topology.EdgeVertices = std::move(edgeVertices);
+  return topology;
+}
+
 bool MeshTopology::ReleaseFaces(IndexArray& faceOffsets, IndexArray& faceVertices)
 {
   if (this->HasEdges())

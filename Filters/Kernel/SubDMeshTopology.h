@@ -184,6 +184,12 @@ public:
   /// For a last level that is only output.
   static MeshTopology BuildFacesOnly(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices);
   bool HasEdges() const { return !FaceEdges.empty() || FaceVertices.empty(); }
+  /// A topology of what Part::FacesWithEdges keeps, given in closed form by a split that
+  /// knows it (the midpoint split of a closed smooth level: SubDMidpointGrandchild.h): the
+  /// faces, each face's edges and each edge's two ends, on a closed manifold (no boundary or
+  /// non-manifold edge). No lists or tags around the vertices, no edge faces.
+  static MeshTopology BuildFacesWithEdges(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
+    IndexArray faceEdges, IndexArray edgeVertices);
   /// Moves a faces-only topology's face arrays out (offsets, corners), leaving its vertices
   /// and no faces: a caller that hands the faces on (to an output) then needs no copy.
   /// Returns false, moving nothing, when the topology has edges (its relations index them).

@@ -111,6 +111,78 @@ std::shared_ptr<const RowSource> MakeMidpointGrandchildRowSource(std::shared_ptr
   return std::make_shared<MidpointGrandchildRows>(std::move(grandparent));
 }
 
+namespace
+{
+// The origins of the faces of one split of a closed smooth level: its faces' own (the F-faces)
+// then, per vertex, the lowest of its faces' (the V-faces); 'faces' + F + V of them.
+void WriteSplitOrigins(const GrandparentFaces& faces, const Index* origin, Index* out)
+{
+  const Index numFaces = faces.Topology.GetNumFaces(), numVertices = faces.Topology.GetNumVertices();
+  std::copy(origin, origin + numFaces, out);
+  Index* vertexFaces = out + numFaces;
+  std::fill(vertexFaces, vertexFaces + numVertices, std::numeric_limits<Index>::max());
+  faces.ForEachCorner(0, numFaces, [&](Index f, Index h, Index) {
+    Index& lowest = vertexFaces[faces.Corners[h]];
+    lowest = std::min(lowest, origin[f]);
+  });
+}
+}
+
+Level MidpointChildWithEdges(const Level& parent, bool keepOrigins, const ParallelFor& parallelFor)
+{
+  const MeshTopology& topology = parent.Topology;
+  const GrandparentFaces faces(topology);
+  const Index numFaces = topology.GetNumFaces(), numVertices = topology.GetNumVertices();
+  const Index numCorners = topology.GetNumFaceCorners();
+  IndexArray offsets(static_cast<size_t>(numFaces) + numVertices + 1);
+  std::copy(faces.Offsets, faces.Offsets + numFaces + 1, offsets.begin());
+  for (Index v = 0; v < numVertices; ++v)
+  {
+    offsets[numFaces + v + 1] = offsets[numFaces + v] + topology.GetNumVertexFaces(v);
+  }
+  // The F-faces run through the points of their face's edges, along the child's edges
+  // numbered by the face's corners; the child's edge h joins the points of the edges at h
+  // and after it.
+  IndexArray corners(2 * static_cast<size_t>(numCorners)), edges(corners.size());
+  IndexArray edgeEnds(2 * static_cast<size_t>(numCorners));
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    faces.ForEachCorner(begin, end, [&](Index, Index h, Index previous) {
+      corners[h] = faces.Edges[h];
+      edges[h] = h;
+      edgeEnds[2 * static_cast<size_t>(previous)] = faces.Edges[previous];
+      edgeEnds[2 * static_cast<size_t>(previous) + 1] = faces.Edges[h];
+    });
+  });
+  // The V-faces run through the points of the edges leaving the vertex, in fan order, along
+  // the child's edges of the corners before the vertex's.
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
+    std::vector<Index> fan, fanCorners;
+    for (Index v = begin; v < end; ++v)
+    {
+      topology.GetOrderedVertexFaces(v, fan, fanCorners);
+      Index k = offsets[numFaces + v];
+      for (size_t i = 0; i < fan.size(); ++i, ++k)
+      {
+        const Index first = topology.GetFaceOffset(fan[i]), size = topology.GetFaceSize(fan[i]);
+        const Index h = first + fanCorners[i];
+        corners[k] = faces.Edges[h];
+        edges[k] = first + (fanCorners[i] == 0 ? size - 1 : fanCorners[i] - 1);
+      }
+    }
+  });
+  Level child;
+  child.Depth = parent.Depth + 1;
+  child.Creasing = parent.Creasing;
+  if (keepOrigins)
+  {
+    child.FaceOrigin.resize(static_cast<size_t>(numFaces) + numVertices);
+    WriteSplitOrigins(faces, parent.FaceOrigin.data(), child.FaceOrigin.data());
+  }
+  child.Topology = MeshTopology::BuildFacesWithEdges(
+    topology.GetNumEdges(), std::move(offsets), std::move(corners), std::move(edges), std::move(edgeEnds));
+  return child;
+}
+
 Level MidpointGrandchildTags(const Level& grandparent, bool keepOrigins, const ParallelFor& parallelFor)
 {
   Level fine;
@@ -125,15 +197,9 @@ Level MidpointGrandchildTags(const Level& grandparent, bool keepOrigins, const P
   const Index numFaces = topology.GetNumFaces(), numVertices = topology.GetNumVertices();
   const Index* origin = grandparent.FaceOrigin.data();
   fine.FaceOrigin.resize(static_cast<size_t>(numFaces) + numVertices + topology.GetNumEdges());
-  Index* faceFaces = fine.FaceOrigin.data();
-  Index* vertexFaces = faceFaces + numFaces; // the lowest origin around each vertex
-  Index* edgeFaces = vertexFaces + numVertices;
-  std::copy(origin, origin + numFaces, faceFaces);
-  std::fill(vertexFaces, vertexFaces + numVertices, std::numeric_limits<Index>::max());
-  faces.ForEachCorner(0, numFaces, [&](Index f, Index h, Index) {
-    Index& lowest = vertexFaces[faces.Corners[h]];
-    lowest = std::min(lowest, origin[f]);
-  });
+  WriteSplitOrigins(faces, origin, fine.FaceOrigin.data());
+  const Index* vertexFaces = fine.FaceOrigin.data() + numFaces;
+  Index* edgeFaces = fine.FaceOrigin.data() + numFaces + numVertices;
   // An edge's V-face comes from its two faces and its ends' V-faces: each half-edge brings
   // its face and the end it starts at; the first half-edges write, then the second ones
   // (one writer per edge in each pass).

@@ -46,6 +46,17 @@ namespace subd
 /// vertex, hole, and every vertex of at least three faces.
 SUBDKERNEL_EXPORT bool MidpointGrandchildHasClosedForm(const Level& grandparent);
 
+/// The split of a level with that closed form (its child has it too), with what its
+/// grandchild written from it and its own rows read alone: its faces with their edges and
+/// their edges' ends (MeshTopology::BuildFacesWithEdges), and its faces' origins if
+/// `keepOrigins`; no relation, tag or sharpness (nothing is sharp). The same faces, edges
+/// and origins as SplitMidpoint's, for about a third of its memory: the child's F-faces run
+/// through the points of their face's edges, its V-faces through those of the edges
+/// leaving their vertex in fan order; its edge h (numbered by the parent's corners) joins the
+/// points of the edges at and after corner h.
+SUBDKERNEL_EXPORT Level MidpointChildWithEdges(
+  const Level& parent, bool keepOrigins, const ParallelFor& parallelFor = SerialFor);
+
 /// The rows of the finest level's points (one per corner of `grandparent`) from the points
 /// of the level between (one per edge of `grandparent`), written as they are applied. They
 /// read the grandparent's faces and their edges only.

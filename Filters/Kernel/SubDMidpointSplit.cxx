@@ -10,6 +10,10 @@ namespace subd
 bool MidpointKeepsVertex(const Level& level, Index v)
 {
   const MeshTopology& topo = level.Topology;
+  if (!topo.HasVertexRelations())
+  {
+    return false; // split for a grandchild alone (MidpointChildWithEdges): closed and smooth
+  }
   const VertexTag tag = topo.GetVertexTag(v);
   if (tag.NonManifold || topo.GetVertexFaces(v).empty())
   {

@@ -37,7 +37,9 @@
 namespace subd
 {
 /// True for a vertex the split keeps (a child point of its own): on a boundary, sharp, or
-/// with two or more crease edges; never a non-manifold or isolated one.
+/// with two or more crease edges; never a non-manifold or isolated one, nor one of a level
+/// without relations around its vertices (split for a grandchild alone, closed and smooth:
+/// SubDMidpointGrandchild.h).
 SUBDKERNEL_EXPORT bool MidpointKeepsVertex(const Level& level, Index v);
 
 /// The split and its stencils together: both depend on which boundary vertices are kept.

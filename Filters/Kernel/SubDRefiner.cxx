@@ -22,6 +22,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
     (levelRows == LevelRows::WrittenFromGrandparent || levelRows == LevelRows::WrittenLean);
   bool parentSkipped = false; // the finest level's parent was not built
   bool splitAloneTrim = false; // current was trimmed to be split alone (LeanChild::SplitAlone)
+  bool splitForGrandchildAlone = false; // current has only what its rows and grandchild read
   // A full finest level is split from a full parent; else the levels between have what the
   // scheme reads of them.
   const ChildTopology between = finest == ChildTopology::FacesOnly ? scheme.GetTopologyBetween() : ChildTopology::Full;
@@ -96,7 +97,9 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         // alone (RefineFromGrandparent reads nothing of it): always for the linear rules, and
         // for the others written from their grandparent when none of their rows needs it.
         parentSkipped = l + 2 == levels &&
-          (finestFromGrandparentAlone || (finestFromGrandparentIfSmooth && scheme.RefinesFromGrandparentAlone(*parent)));
+          (finestFromGrandparentAlone ||
+            (finestFromGrandparentIfSmooth &&
+              (splitForGrandchildAlone || scheme.RefinesFromGrandparentAlone(*parent))));
         // Once split, the level is kept for its rows (and its grandchild's): what they never
         // read goes, when the split allows before the child's topology is built.
         auto trim = [&scheme, rowsReadFacesOnly](Level& split) {
@@ -126,6 +129,14 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         {
           current = Level();
           trim(*parent);
+        }
+        else if (l + 3 == levels && finestFromGrandparentIfSmooth && scheme.SplitsForGrandchildAlone(*parent))
+        {
+          // The finest level's grandparent, split with what its rows and the finest level
+          // read alone (its child is skipped, above, at the next step).
+          current = scheme.SplitForGrandchildAlone(*parent);
+          trim(*parent);
+          splitForGrandchildAlone = true;
         }
         else
         {

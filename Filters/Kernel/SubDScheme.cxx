@@ -215,6 +215,16 @@ bool MidpointScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandpar
   return true;
 }
 
+bool MidpointScheme::SplitsForGrandchildAlone(const Level& parent) const
+{
+  return MidpointGrandchildHasClosedForm(parent);
+}
+
+Level MidpointScheme::SplitForGrandchildAlone(const Level& parent) const
+{
+  return MidpointChildWithEdges(parent, this->GetFacesOnlyOrigins(), this->GetParallelFor());
+}
+
 MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
 {
   // Upper bounds (plus kept boundary vertices, at most V): a point per edge; F- and

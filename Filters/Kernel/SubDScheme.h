@@ -202,6 +202,18 @@ public:
     (void)faceOrigins;
     return false;
   }
+  /// Whether `parent`'s child may be split with only what its own rows and its grandchild,
+  /// written from it alone, read (SplitForGrandchildAlone): Refine asks so of the level three
+  /// above a faces-only finest level in the leaner modes, and then skips that child's child
+  /// as where RefinesFromGrandparentAlone holds. False by default; the midpoint scheme on a
+  /// closed smooth level (MidpointGrandchildHasClosedForm), whose child has the closed form too.
+  virtual bool SplitsForGrandchildAlone(const Level& parent) const
+  {
+    (void)parent;
+    return false;
+  }
+  /// That split; Split with the full topology by default.
+  virtual Level SplitForGrandchildAlone(const Level& parent) const { return this->Split(parent, ChildTopology::Full); }
   /// How much of the levels between the base and a faces-only finest level Refine builds: the
   /// full topology, except for the linear rules, whose rows, splits and grandchild rows read
   /// faces and edges only (the faces of an edge where it is non-manifold): the lists and tags
@@ -503,6 +515,9 @@ public:
   }
   bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
     StencilTable& rows, Level& child, LaterFaces& childFaces, const RowSource* grandparentRows = nullptr) const override;
+  /// MidpointGrandchildHasClosedForm(parent): MidpointChildWithEdges.
+  bool SplitsForGrandchildAlone(const Level& parent) const override;
+  Level SplitForGrandchildAlone(const Level& parent) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
 };

@@ -48,7 +48,8 @@ std::vector<double> ApplyOnThreads(const subd::StencilTable& rows, const std::ve
 // past the fan walk's room on the stack), from the base level and from one split down: the
 // faces, their origins (scrambled in the grandparent, so that each child's lowest one is
 // tested) and the rows' values equal, bit for bit, those of splitting twice, serially and on
-// threads, with the grandparent trimmed to what Refine keeps of it (Part::FacesWithEdges).
+// threads, with the grandparent trimmed to what Refine keeps of it (Part::FacesWithEdges);
+// and the lean split (MidpointChildWithEdges) has the faces, edges and origins of the split.
 TEST(MidpointGrandchild, EqualsTwoSplits)
 {
   std::vector<subdtest::TestMesh> meshes = subdtest::StandardMeshes();
@@ -80,6 +81,40 @@ TEST(MidpointGrandchild, EqualsTwoSplits)
       const subd::Level fine = subd::SplitMidpoint(parent, subd::ChildTopology::FacesOnly);
       const auto parentRows = subd::StencilTable::FromSource(
         subd::MakeMidpointRowSource(std::make_shared<const subd::Level>(parent)));
+
+      // The split with what the grandchild reads alone: the full split's faces, edges and
+      // origins.
+      for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor),
+             subd::ParallelFor(subdtest::ThreeThreadFor) })
+      {
+        const subd::Level lean = subd::MidpointChildWithEdges(grandparent, true, parallelFor);
+        const subd::MeshTopology& a = lean.Topology;
+        const subd::MeshTopology& b = parent.Topology;
+        ASSERT_EQ(a.GetFaceOffsetArray(), b.GetFaceOffsetArray()) << what;
+        ASSERT_EQ(a.GetFaceVertexArray(), b.GetFaceVertexArray()) << what;
+        ASSERT_EQ(a.GetFaceEdgeArray(), b.GetFaceEdgeArray()) << what;
+        ASSERT_EQ(a.GetNumEdges(), b.GetNumEdges()) << what;
+        ASSERT_EQ(a.GetNumVertices(), b.GetNumVertices()) << what;
+        for (Index e = 0; e < a.GetNumEdges(); ++e)
+        {
+          ASSERT_EQ(a.GetEdgeVertices(e)[0], b.GetEdgeVertices(e)[0]) << what << " edge " << e;
+          ASSERT_EQ(a.GetEdgeVertices(e)[1], b.GetEdgeVertices(e)[1]) << what << " edge " << e;
+        }
+        EXPECT_EQ(lean.FaceOrigin, parent.FaceOrigin) << what;
+        EXPECT_EQ(lean.Depth, parent.Depth) << what;
+        EXPECT_FALSE(a.HasVertexRelations()) << what;
+        EXPECT_TRUE(subd::MidpointChildWithEdges(grandparent, false, parallelFor).FaceOrigin.empty()) << what;
+        // Its own rows are the split's (no vertex kept: none is on a boundary or sharp).
+        const auto leanRows = subd::StencilTable::FromSource(
+          subd::MakeMidpointRowSource(std::make_shared<const subd::Level>(lean)));
+        ASSERT_EQ(leanRows.GetNumRows(), parentRows.GetNumRows()) << what;
+        std::vector<double> values(static_cast<size_t>(leanRows.GetNumParents()) * 3);
+        for (size_t i = 0; i < values.size(); ++i)
+          values[i] = std::cos(0.21 * static_cast<double>(i));
+        std::vector<double> expected(static_cast<size_t>(parentRows.GetNumRows()) * 3);
+        parentRows.Apply(values.data(), expected.data(), 3);
+        EXPECT_EQ(ApplyOnThreads(leanRows, values, 3), expected) << what;
+      }
 
       auto trimmed = std::make_shared<subd::Level>(grandparent);
       subd::KeepOnly(*trimmed, subd::MeshTopology::Part::FacesWithEdges, subd::SerialFor, true);
