@@ -21,10 +21,18 @@ double FacesBytes(const MeshCounts& c)
 double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
 {
   const int levels = std::max(request.Levels, 0);
+  // On a closed manifold, the midpoint's finest level comes from its grandparent alone,
+  // which is split with its faces, their edges, its edges' ends and its faces' origins only
+  // (SubDMidpointGrandchild.h); the levels above keep their edges' ends for their rows. A
+  // faces-only finest level means no sharp feature: the counts are then exact.
+  const bool grandchildAlone = levels >= 2 && request.Finest == ChildTopology::FacesOnly &&
+    (request.Rows == LevelRows::WrittenLean || request.Rows == LevelRows::WrittenFromGrandparent) &&
+    request.ClosedManifoldBase && scheme.MaySplitForGrandchildAlone();
   std::vector<MeshCounts> counts{ request.Base };
   for (int l = 0; l < levels; ++l)
   {
-    counts.push_back(scheme.PredictChildCounts(counts.back()));
+    counts.push_back(grandchildAlone ? scheme.PredictClosedSmoothChildCounts(counts.back())
+                                     : scheme.PredictChildCounts(counts.back()));
   }
   const MeshCounts& finest = counts.back();
   const double output = finest.Vertices * request.OutputBytesPerPoint +
@@ -58,6 +66,24 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
   // midpoint's kept vertices;
   // sqrt(3)'s vertex rules and the faces of its centroids); each level is whole while it is
   // split.
+  if (grandchildAlone)
+  {
+    auto edgeEnds = [](const MeshCounts& c) { return 8.0 * c.Edges + 4.0 * c.Vertices; };
+    auto facesWithEdges = [](const MeshCounts& c) { return FacesBytes(c) + 4.0 * c.Corners + 8.0 * c.Edges + 4.0 * c.Faces; };
+    double kept = 0.0, splitPeak = 0.0;
+    for (int l = 0; l + 2 < levels; ++l)
+    {
+      const MeshCounts& next = counts[l + 1];
+      const double child = l + 3 == levels ? facesWithEdges(next) : TopologyBytes(next);
+      splitPeak = std::max(splitPeak, kept + TopologyBytes(counts[l]) + edgeEnds(counts[l]) + child);
+      kept += edgeEnds(counts[l]);
+    }
+    const MeshCounts& grandparent = counts[levels - 2];
+    // The base is whole where it is the grandparent; the finest faces' fan starts.
+    const double grandparentBytes = levels == 2 ? TopologyBytes(grandparent) : facesWithEdges(grandparent);
+    kept += grandparentBytes + 4.0 * grandparent.Vertices;
+    return std::max(splitPeak, kept + output + scratch + 4.0 * finest.Faces);
+  }
   MeshTopology::Part part;
   if (scheme.WrittenRowsReadOnly(part))
   {

@@ -239,6 +239,16 @@ MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
   return child;
 }
 
+MeshCounts MidpointScheme::PredictClosedSmoothChildCounts(const MeshCounts& parent) const
+{
+  MeshCounts child;
+  child.Vertices = parent.Edges;
+  child.Faces = parent.Faces + parent.Vertices;
+  child.Corners = 2.0 * parent.Corners;
+  child.Edges = parent.Corners;
+  return child;
+}
+
 StencilTable ButterflyScheme::BuildStencils(const Level& parent) const
 {
   return BuildButterflyStencils(parent, this->Tension, this->GetParallelFor());

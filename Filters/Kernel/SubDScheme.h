@@ -214,6 +214,9 @@ public:
   }
   /// That split; Split with the full topology by default.
   virtual Level SplitForGrandchildAlone(const Level& parent) const { return this->Split(parent, ChildTopology::Full); }
+  /// Whether SplitsForGrandchildAlone may be true (on a closed mesh without sharp features):
+  /// what EstimatePeakBytes counts.
+  virtual bool MaySplitForGrandchildAlone() const { return false; }
   /// How much of the levels between the base and a faces-only finest level Refine builds: the
   /// full topology, except for the linear rules, whose rows, splits and grandchild rows read
   /// faces and edges only (the faces of an edge where it is non-manifold): the lists and tags
@@ -246,6 +249,12 @@ public:
   }
   /// The counts of the next level of a mesh with the given counts (for size guards).
   virtual MeshCounts PredictChildCounts(const MeshCounts& parent) const = 0;
+  /// The same for a closed manifold mesh without sharp features (where the midpoint scheme
+  /// keeps no vertex): PredictChildCounts by default.
+  virtual MeshCounts PredictClosedSmoothChildCounts(const MeshCounts& parent) const
+  {
+    return this->PredictChildCounts(parent);
+  }
   /// False for schemes whose points only interpolate within a face (linear, bilinear): the
   /// boundary rule cannot change them, so BoundaryRule::None makes no holes (as in
   /// OpenSubdiv, where it only applies to schemes with a neighbourhood).
@@ -518,6 +527,10 @@ public:
   /// MidpointGrandchildHasClosedForm(parent): MidpointChildWithEdges.
   bool SplitsForGrandchildAlone(const Level& parent) const override;
   Level SplitForGrandchildAlone(const Level& parent) const override;
+  bool MaySplitForGrandchildAlone() const override { return true; }
+  /// Exact: a point per edge, a face per face and vertex, two corners per corner, an edge
+  /// per corner.
+  MeshCounts PredictClosedSmoothChildCounts(const MeshCounts& parent) const override;
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
   bool UsesBoundaryRule() const override { return false; }
 };

@@ -1,7 +1,10 @@
 // The midpoint scheme's finest level written from its grandparent in closed form
 // (SubDMidpointGrandchild.h), against two splits by the split itself (SubDMidpointSplit.h).
+#include "SubDMemoryEstimate.h"
 #include "SubDMidpointGrandchild.h"
 #include "SubDMidpointSplit.h"
+#include "SubDScheme.h"
+#include "SubDTestHeap.h"
 #include "SubDTestMeshes.h"
 #include "SubDTestParallel.h"
 
@@ -184,3 +187,43 @@ TEST(MidpointGrandchild, NoneWhereTheSplitKeepsVerticesOrLeavesVFacesOut)
   const subd::Level creased = subd::MakeBaseLevel(topology, semiSharpEdge, subd::BoundaryRule::EdgeOnly);
   EXPECT_TRUE(subd::MidpointGrandchildHasClosedForm(subd::SplitMidpoint(creased, subd::ChildTopology::Full)));
 }
+
+// The memory estimate counts the finest level from its grandparent alone only for a closed
+// manifold base (RefinementRequest::ClosedManifoldBase): it still covers what the refinement
+// and its evaluation hold (the heap in use, the finest faces made), and stays below the
+// general path's, from two to four levels (the grandparent whole, then split lean).
+#if defined(SUBD_HEAP_MEASURABLE)
+TEST(MidpointGrandchild, MemoryEstimateCoversTheHeldMemory)
+{
+  const subd::MidpointScheme scheme;
+  const subdtest::TestMesh mesh = subdtest::Grid(40, 40, true, true); // a torus
+  const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+  for (int levels = 2; levels <= 4; ++levels)
+  {
+    subd::RefinementRequest request;
+    request.Base = { double(topology.GetNumFaces()), double(topology.GetNumEdges()),
+      double(topology.GetNumVertices()), double(topology.GetNumFaceCorners()),
+      double(topology.GetNumBoundaryEdges()) };
+    request.Levels = levels;
+    request.Rows = subd::LevelRows::WrittenLean;
+    const double general = subd::EstimatePeakBytes(scheme, request);
+    request.ClosedManifoldBase = true;
+    const double predicted = subd::EstimatePeakBytes(scheme, request) - subd::EstimateLibraryBytes;
+    EXPECT_LT(predicted + subd::EstimateLibraryBytes, general) << levels;
+    const size_t before = subdtest::HeapInUse();
+    double held = 0.0;
+    {
+      subd::Hierarchy hierarchy;
+      subd::Refine(scheme, subd::MakeBaseLevel(topology, {}, subd::BoundaryRule::EdgeOnly), request.Levels,
+        hierarchy, nullptr, request.Finest, request.Rows);
+      EXPECT_FALSE(hierarchy.HasFinestFaces()) << levels; // written from the grandparent
+      std::vector<double> finest(static_cast<size_t>(hierarchy.GetNumFinestPoints()) * 3);
+      hierarchy.Evaluate(mesh.Points.data(), 3, finest.data());
+      hierarchy.MakeFinestFaces();
+      held = static_cast<double>(subdtest::HeapInUse() - before);
+    }
+    EXPECT_GT(held, 1.0e5) << levels; // a measurement, not noise
+    EXPECT_LE(held, predicted) << levels;
+  }
+}
+#endif
