@@ -60,12 +60,8 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
     return std::max(refinePeak, tables + output + scratch);
   }
 
-  // Rows that read a part of their parent's topology keep that part of each level, and what
-  // they number their rows with (Doo-Sabin's dual numbering: 8 bytes per corner where
-  // corners are welded, two per vertex, and the corners before sharp edges, few; the
-  // midpoint's kept vertices;
-  // sqrt(3)'s vertex rules and the faces of its centroids); each level is whole while it is
-  // split.
+  // The midpoint's levels above the grandparent keep their edges' ends for their rows; the
+  // one above the grandparent is split whole, the grandparent with what it keeps only.
   if (grandchildAlone)
   {
     auto edgeEnds = [](const MeshCounts& c) { return 8.0 * c.Edges + 4.0 * c.Vertices; };
@@ -82,8 +78,15 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
     // The base is whole where it is the grandparent; the finest faces' fan starts.
     const double grandparentBytes = levels == 2 ? TopologyBytes(grandparent) : facesWithEdges(grandparent);
     kept += grandparentBytes + 4.0 * grandparent.Vertices;
-    return std::max(splitPeak, kept + output + scratch + 4.0 * finest.Faces);
+    return std::max(splitPeak, kept + output + scratch + 4.0 * finest.Faces); // and the faces' origins
   }
+
+  // Rows that read a part of their parent's topology keep that part of each level, and what
+  // they number their rows with (Doo-Sabin's dual numbering: 8 bytes per corner where
+  // corners are welded, two per vertex, and the corners before sharp edges, few; the
+  // midpoint's kept vertices;
+  // sqrt(3)'s vertex rules and the faces of its centroids); each level is whole while it is
+  // split.
   MeshTopology::Part part;
   if (scheme.WrittenRowsReadOnly(part))
   {

@@ -8,10 +8,10 @@ namespace subd
 {
 namespace
 {
-// The raw arrays the closed form reads (MeshTopology::Part::FacesWithEdges).
-struct GrandparentFaces
+// The raw arrays of a level the closed form reads (MeshTopology::Part::FacesWithEdges).
+struct FacesWithEdges
 {
-  explicit GrandparentFaces(const MeshTopology& topology)
+  explicit FacesWithEdges(const MeshTopology& topology)
     : Offsets(topology.GetFaceOffsetArray().data())
     , Corners(topology.GetFaceVertexArray().data())
     , Edges(topology.GetFaceEdgeArray().data())
@@ -113,9 +113,10 @@ std::shared_ptr<const RowSource> MakeMidpointGrandchildRowSource(std::shared_ptr
 
 namespace
 {
-// The origins of the faces of one split of a closed smooth level: its faces' own (the F-faces)
-// then, per vertex, the lowest of its faces' (the V-faces); 'faces' + F + V of them.
-void WriteSplitOrigins(const GrandparentFaces& faces, const Index* origin, Index* out)
+// The origins of the faces of one split of a closed smooth level into `out` (as many as the
+// level's faces and vertices): its faces' own (the F-faces) then, per vertex, the lowest of
+// its faces' (the V-faces).
+void WriteSplitOrigins(const FacesWithEdges& faces, const Index* origin, Index* out)
 {
   const Index numFaces = faces.Topology.GetNumFaces(), numVertices = faces.Topology.GetNumVertices();
   std::copy(origin, origin + numFaces, out);
@@ -131,7 +132,7 @@ void WriteSplitOrigins(const GrandparentFaces& faces, const Index* origin, Index
 Level MidpointChildWithEdges(const Level& parent, bool keepOrigins, const ParallelFor& parallelFor)
 {
   const MeshTopology& topology = parent.Topology;
-  const GrandparentFaces faces(topology);
+  const FacesWithEdges faces(topology);
   const Index numFaces = topology.GetNumFaces(), numVertices = topology.GetNumVertices();
   const Index numCorners = topology.GetNumFaceCorners();
   IndexArray offsets(static_cast<size_t>(numFaces) + numVertices + 1);
@@ -193,7 +194,7 @@ Level MidpointGrandchildTags(const Level& grandparent, bool keepOrigins, const P
     return fine;
   }
   const MeshTopology& topology = grandparent.Topology;
-  const GrandparentFaces faces(topology);
+  const FacesWithEdges faces(topology);
   const Index numFaces = topology.GetNumFaces(), numVertices = topology.GetNumVertices();
   const Index* origin = grandparent.FaceOrigin.data();
   fine.FaceOrigin.resize(static_cast<size_t>(numFaces) + numVertices + topology.GetNumEdges());
@@ -221,7 +222,7 @@ Level MidpointGrandchildTags(const Level& grandparent, bool keepOrigins, const P
 
 MeshTopology MidpointGrandchildFaces(const MeshTopology& grandparent, const ParallelFor& parallelFor)
 {
-  const GrandparentFaces faces(grandparent);
+  const FacesWithEdges faces(grandparent);
   const Index numFaces = grandparent.GetNumFaces(), numVertices = grandparent.GetNumVertices();
   const Index numEdges = grandparent.GetNumEdges(), numCorners = grandparent.GetNumFaceCorners();
   IndexArray offsets(static_cast<size_t>(numFaces) + numVertices + numEdges + 1);

@@ -31,6 +31,10 @@
 // first half-edge from its second), which G's own rows keep anyway (the ends): G is kept
 // with MeshTopology::Part::FacesWithEdges. The fans are walked from the V-faces' quads once
 // they are written (each quad holds both half-edges of an edge and the corners before them).
+// Where G's own parent has the closed form too, G itself is split with that part alone
+// (MidpointChildWithEdges): its faces, edges and edges' ends follow from its parent's the
+// same way, and its lists and tags around the vertices, most of a level's topology, are
+// never made.
 #ifndef SubDMidpointGrandchild_h
 #define SubDMidpointGrandchild_h
 

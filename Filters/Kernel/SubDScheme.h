@@ -516,6 +516,7 @@ public:
   /// On a closed smooth level (MidpointGrandchildHasClosedForm) the faces-only finest level
   /// two splits down is written from it alone, its parent never built.
   bool RefinesFromGrandparentAlone(const Level& grandparent) const override;
+  using Scheme::RefinesFromGrandparentAlone;
   bool GrandchildAloneReadsOnly(MeshTopology::Part& part, bool& faceOrigins) const override
   {
     part = MeshTopology::Part::FacesWithEdges;
