@@ -485,10 +485,11 @@ int vtkSubDSurfaceFilter::Execute(
       vtkWarningMacro(<< nonManifold << ".");
     }
 
-    bool someBaseVertexUnused = false;
+    bool someBaseVertexUnused = false, threeFacesAtEveryVertex = true;
     for (subd::Index v = 0; v < topology.GetNumVertices() && !someBaseVertexUnused; ++v)
     {
       someBaseVertexUnused = topology.GetVertexFaces(v).empty();
+      threeFacesAtEveryVertex = threeFacesAtEveryVertex && topology.GetNumVertexFaces(v) >= 3;
     }
 
     // Size guard: predict the finest level and the peak memory before allocating anything.
@@ -507,6 +508,7 @@ int vtkSubDSurfaceFilter::Execute(
     request.Base = baseCounts;
     request.ClosedManifoldBase = topology.GetNumBoundaryEdges() == 0 && topology.GetNumNonManifoldEdges() == 0 &&
       topology.GetNumNonManifoldVertices() == 0 && !someBaseVertexUnused;
+    request.ThreeFacesAtEveryBaseVertex = threeFacesAtEveryVertex;
     request.Levels = this->NumberOfSubdivisions;
     request.Finest = sharpFeatures || this->ProjectToLimit || limitGeometry ? subd::ChildTopology::Full
                                                                            : subd::ChildTopology::FacesOnly;

@@ -21,13 +21,14 @@ double FacesBytes(const MeshCounts& c)
 double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
 {
   const int levels = std::max(request.Levels, 0);
-  // On a closed manifold, the midpoint's finest level comes from its grandparent alone,
-  // which is split with its faces, their edges, its edges' ends and its faces' origins only
-  // (SubDMidpointGrandchild.h); the levels above keep their edges' ends for their rows. A
-  // faces-only finest level means no sharp feature: the counts are then exact.
+  // On a closed manifold whose vertices have three faces or more, the midpoint's finest level
+  // comes from its grandparent alone, which is split with its faces, their edges, its edges'
+  // ends and its faces' origins only (SubDMidpointGrandchild.h); the levels above keep their
+  // edges' ends for their rows. The filters ask for a faces-only finest level only without
+  // sharp features and holes: the counts are then exact.
   const bool grandchildAlone = levels >= 2 && request.Finest == ChildTopology::FacesOnly &&
     (request.Rows == LevelRows::WrittenLean || request.Rows == LevelRows::WrittenFromGrandparent) &&
-    request.ClosedManifoldBase && scheme.MaySplitForGrandchildAlone();
+    request.ClosedManifoldBase && request.ThreeFacesAtEveryBaseVertex && scheme.MaySplitForGrandchildAlone();
   std::vector<MeshCounts> counts{ request.Base };
   for (int l = 0; l < levels; ++l)
   {

@@ -37,6 +37,10 @@ struct RefinementRequest
   /// then sqrt(3)'s finest rows may come from the grandparent
   /// (Scheme::MayWriteFinestRowsFromGrandparent); false counts the general path.
   bool ClosedManifoldBase = false;
+  /// Besides, every vertex of the base has three faces or more: then, with a faces-only
+  /// finest level (no sharp feature, no hole), the midpoint's finest level comes from its
+  /// grandparent alone (Scheme::MaySplitForGrandchildAlone).
+  bool ThreeFacesAtEveryBaseVertex = false;
 };
 
 /// The model's margin, and the process's own code and small data it adds.

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <stdexcept>
 #include <vector>
 
 namespace subd
@@ -12,7 +13,13 @@ bool MidpointKeepsVertex(const Level& level, Index v)
   const MeshTopology& topo = level.Topology;
   if (!topo.HasVertexRelations())
   {
-    return false; // split for a grandchild alone (MidpointChildWithEdges): closed and smooth
+    // Split for a grandchild alone (MidpointChildWithEdges): closed and smooth. Any other
+    // level without its relations was trimmed before its rows were made.
+    if (topo.GetNumBoundaryEdges() != 0 || topo.GetNumNonManifoldEdges() != 0 || level.HasSharpFeatures())
+    {
+      throw std::logic_error("MidpointKeepsVertex: a level with boundaries or creases has no vertex relations");
+    }
+    return false;
   }
   const VertexTag tag = topo.GetVertexTag(v);
   if (tag.NonManifold || topo.GetVertexFaces(v).empty())

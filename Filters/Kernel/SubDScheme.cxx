@@ -202,10 +202,14 @@ bool MidpointScheme::RefinesFromGrandparentAlone(const Level& grandparent) const
 bool MidpointScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
   ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces, const RowSource*) const
 {
+  // Refine skips the parent only where the closed form holds, after trimming the grandparent
+  // to Part::FacesWithEdges; a grandparent trimmed otherwise (its faces' edges gone), or
+  // without faces, is not one.
   const bool parentBuilt = parent.Topology.GetNumVertices() > 0 || parent.Topology.GetNumFaces() > 0;
-  if (depth != ChildTopology::FacesOnly || parentBuilt)
+  const MeshTopology& kept = grandparent->Topology;
+  if (depth != ChildTopology::FacesOnly || parentBuilt || kept.GetNumFaces() == 0 || kept.GetFaceEdgeArray().empty())
   {
-    return false; // split from the parent (the closed form holds where Refine skipped it)
+    return false; // split from the parent
   }
   const ParallelFor& parallelFor = this->GetParallelFor();
   child = MidpointGrandchildTags(*grandparent, this->GetFacesOnlyOrigins(), parallelFor);

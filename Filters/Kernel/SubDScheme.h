@@ -166,7 +166,9 @@ public:
   /// where its parent was not built, and returns false otherwise.
   virtual bool RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
     StencilTable& rows, Level& child, LaterFaces& childFaces, const RowSource* grandparentRows = nullptr) const;
-  /// True for the schemes whose RefineFromGrandparent can return true.
+  /// True for the schemes whose RefineFromGrandparent can return true for any level (those
+  /// with GetGrandchildScheme; LowMemory applies to them). The midpoint scheme's returns true
+  /// only where Refine skipped the parent, which the leaner modes do alike: false for it.
   bool RefinesFromGrandparent() const
   {
     GrandchildScheme which;

@@ -154,6 +154,67 @@ TEST(MidpointGrandchild, EqualsTwoSplits)
   EXPECT_GE(checked, 10);
 }
 
+// Refine with threads and without the finest faces' origins (what the filters do when no cell
+// data is carried), in the leaner modes, gives the faces and points of the stored refinement
+// bit for bit, from two to four levels, on closed meshes with and without the closed form at
+// the base: a torus, a cube, and a cube with a vertex of two faces on one of its edges (no
+// V-face there: the closed form first holds one split down).
+TEST(MidpointGrandchild, RefineOnThreadsWithoutOriginsEqualsTheStoredRefinement)
+{
+  // The cube with vertex 8 inserted on its edge from 0 to 1, in both faces of that edge.
+  subdtest::TestMesh notched;
+  notched.Name = "cube with a vertex of two faces";
+  const subdtest::TestMesh cube = subdtest::Cube();
+  notched.Points = cube.Points;
+  notched.AddPoint(0.5, -0.05, 0.0);
+  notched.AddFace({ 0, 3, 2, 1, 8 });
+  notched.AddFace({ 4, 5, 6, 7 });
+  notched.AddFace({ 0, 8, 1, 5, 4 });
+  notched.AddFace({ 1, 2, 6, 5 });
+  notched.AddFace({ 2, 3, 7, 6 });
+  notched.AddFace({ 3, 0, 4, 7 });
+  const std::vector<subdtest::TestMesh> meshes = { subdtest::Grid(6, 5, true, true).Jitter(0.05),
+    subdtest::Cube().Jitter(0.1), notched };
+  const subd::Level notchedBase = subdtest::BaseLevel(notched);
+  ASSERT_EQ(notchedBase.Topology.GetNumVertexFaces(8), 2);
+  ASSERT_EQ(notchedBase.Topology.GetNumBoundaryEdges(), 0);
+  ASSERT_FALSE(subd::MidpointGrandchildHasClosedForm(notchedBase));
+  subd::MidpointScheme threaded;
+  threaded.SetParallelFor(subdtest::ThreeThreadFor);
+  threaded.SetFacesOnlyOrigins(false);
+  const subd::MidpointScheme serial;
+  int closedForms = 0;
+  for (const subdtest::TestMesh& mesh : meshes)
+  {
+    for (int levels = 2; levels <= 4; ++levels)
+    {
+      const std::string what = mesh.Name + " L" + std::to_string(levels);
+      subd::Hierarchy stored;
+      subd::Refine(serial, subdtest::BaseLevel(mesh), levels, stored);
+      subd::Hierarchy above;
+      subd::Refine(serial, subdtest::BaseLevel(mesh), levels - 2, above, nullptr, subd::ChildTopology::Full);
+      const bool closedForm = subd::MidpointGrandchildHasClosedForm(above.Finest);
+      closedForms += closedForm;
+      for (subd::LevelRows rows : { subd::LevelRows::WrittenLean, subd::LevelRows::WrittenFromGrandparent })
+      {
+        subd::Hierarchy written;
+        subd::Refine(threaded, subdtest::BaseLevel(mesh), levels, written, nullptr, subd::ChildTopology::FacesOnly, rows);
+        EXPECT_EQ(written.HasFinestFaces(), !closedForm) << what;
+        std::vector<double> a(static_cast<size_t>(stored.GetNumFinestPoints()) * 3), b(a.size());
+        ASSERT_EQ(written.GetNumFinestPoints(), stored.GetNumFinestPoints()) << what;
+        stored.Evaluate(mesh.Points.data(), 3, a.data());
+        written.Evaluate(mesh.Points.data(), 3, b.data(), subdtest::ThreeThreadFor);
+        EXPECT_EQ(a, b) << what;
+        written.MakeFinestFaces();
+        EXPECT_EQ(written.Finest.Topology.GetFaceOffsetArray(), stored.Finest.Topology.GetFaceOffsetArray()) << what;
+        EXPECT_EQ(written.Finest.Topology.GetFaceVertexArray(), stored.Finest.Topology.GetFaceVertexArray()) << what;
+        EXPECT_EQ(written.Finest.FaceOrigin.empty(), closedForm) << what; // origins not made
+      }
+    }
+  }
+  EXPECT_GE(closedForms, 7); // torus and cube at every level, the notched cube from level 3
+}
+
 // No closed form where the level between keeps a vertex or misses a V-face: a boundary, a
 // non-manifold edge or vertex, a sharp edge or vertex (semi-sharp included), a hole, a vertex
 // of two faces.
@@ -189,7 +250,8 @@ TEST(MidpointGrandchild, NoneWhereTheSplitKeepsVerticesOrLeavesVFacesOut)
 }
 
 // The memory estimate counts the finest level from its grandparent alone only for a closed
-// manifold base (RefinementRequest::ClosedManifoldBase): it still covers what the refinement
+// manifold base whose vertices have three faces or more (RefinementRequest::ClosedManifoldBase,
+// ThreeFacesAtEveryBaseVertex): it still covers what the refinement
 // and its evaluation hold (the heap in use, the finest faces made), and stays below the
 // general path's, from two to four levels (the grandparent whole, then split lean).
 #if defined(SUBD_HEAP_MEASURABLE)
@@ -208,6 +270,8 @@ TEST(MidpointGrandchild, MemoryEstimateCoversTheHeldMemory)
     request.Rows = subd::LevelRows::WrittenLean;
     const double general = subd::EstimatePeakBytes(scheme, request);
     request.ClosedManifoldBase = true;
+    EXPECT_EQ(subd::EstimatePeakBytes(scheme, request), general) << levels; // vertices of two faces?
+    request.ThreeFacesAtEveryBaseVertex = true;
     const double predicted = subd::EstimatePeakBytes(scheme, request) - subd::EstimateLibraryBytes;
     EXPECT_LT(predicted + subd::EstimateLibraryBytes, general) << levels;
     const size_t before = subdtest::HeapInUse();
