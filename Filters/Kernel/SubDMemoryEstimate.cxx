@@ -66,7 +66,8 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
   if (grandchildAlone)
   {
     auto edgeEnds = [](const MeshCounts& c) { return 8.0 * c.Edges + 4.0 * c.Vertices; };
-    auto facesWithEdges = [](const MeshCounts& c) { return FacesBytes(c) + 4.0 * c.Corners + 8.0 * c.Edges + 4.0 * c.Faces; };
+    // Offsets, the faces' edges, the edges' ends and the faces' origins.
+    auto facesWithEdges = [](const MeshCounts& c) { return 8.0 * c.Faces + 4.0 * c.Corners + 8.0 * c.Edges; };
     double kept = 0.0, splitPeak = 0.0;
     for (int l = 0; l + 2 < levels; ++l)
     {
@@ -76,9 +77,8 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
       kept += edgeEnds(counts[l]);
     }
     const MeshCounts& grandparent = counts[levels - 2];
-    // The base is whole where it is the grandparent; the finest faces' fan starts.
-    const double grandparentBytes = levels == 2 ? TopologyBytes(grandparent) : facesWithEdges(grandparent);
-    kept += grandparentBytes + 4.0 * grandparent.Vertices;
+    // The base is whole where it is the grandparent.
+    kept += levels == 2 ? TopologyBytes(grandparent) : facesWithEdges(grandparent);
     return std::max(splitPeak, kept + output + scratch + 4.0 * finest.Faces); // and the faces' origins
   }
 

@@ -27,10 +27,10 @@ MeshTopology MeshTopology::BuildFacesOnly(Index numVertices, IndexArray faceOffs
   return topology;
 }
 
-MeshTopology MeshTopology::BuildFacesWithEdges(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
-  IndexArray faceEdges, IndexArray edgeVertices)
+MeshTopology MeshTopology::BuildFacesWithEdges(
+  Index numVertices, IndexArray faceOffsets, IndexArray faceEdges, IndexArray edgeVertices)
 {
-  MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), std::move(faceVertices));
+  MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), IndexArray());
   topology.FaceEdges = std::move(faceEdges);
   topology.EdgeVertices = std::move(edgeVertices);
   return topology;
@@ -129,9 +129,12 @@ void MeshTopology::KeepOnly(Part part, const ParallelFor& parallelFor)
   {
     lists.push_back(&this->FaceEdges);
   }
-  if (part == Part::EdgeEnds)
+  if (part == Part::EdgeEnds || part == Part::FacesWithEdges)
   {
     lists.push_back(&this->FaceVertices);
+  }
+  if (part == Part::EdgeEnds)
+  {
     offsets.push_back(&this->FaceOffsets);
   }
   for (IndexArray* list : lists)

@@ -54,8 +54,9 @@ public:
   Index GetNumVertices() const { return NumVertices; }
   Index GetNumFaces() const { return static_cast<Index>(FaceOffsets.size()) - 1; }
   Index GetNumEdges() const { return static_cast<Index>(EdgeVertices.size() / 2); }
-  /// Sum of all face sizes (number of face corners / half-edges).
-  Index GetNumFaceCorners() const { return static_cast<Index>(FaceVertices.size()); }
+  /// Sum of all face sizes (number of face corners / half-edges); also where only the faces'
+  /// edges are kept (Part::FacesWithEdges).
+  Index GetNumFaceCorners() const { return FaceOffsets.back(); }
 
   Index GetFaceSize(Index f) const { return FaceOffsets[f + 1] - FaceOffsets[f]; }
   Index GetFaceOffset(Index f) const { return FaceOffsets[f]; }
@@ -92,14 +93,15 @@ public:
     Faces,         ///< each face's corners (Doo-Sabin's rows)
     EdgeEnds,      ///< each edge's two vertices (the midpoint rows)
     FacesAndRings, ///< each face's corners and vertex's ring of neighbours (sqrt(3)'s rows)
-    FacesWithEdges, ///< each face's corners and edges, and each edge's ends (the midpoint's
-                    ///< rows and its grandchild written from the level, SubDMidpointGrandchild.h)
+    FacesWithEdges, ///< each face's edges (and offsets, not its corners) and each edge's ends:
+                    ///< a corner's vertex is the end its two edges share (the midpoint's rows
+                    ///< and its grandchild written from the level, SubDMidpointGrandchild.h)
   };
   /// Frees everything but `part` (and the vertex count): for a level kept only for rows that
   /// read nothing else. Only that part's accessors may be called then (GetNumFaces,
   /// GetFaceSize, GetFaceOffset, GetFaceVertices; GetNumEdges,
   /// GetEdgeVertices, GetOtherEndpoint; GetVertexEdges' sizes and ForEachRingVertex;
-  /// GetFaceEdges and the raw face arrays for FacesWithEdges). For
+  /// GetFaceEdges and the face offsets and edges arrays for FacesWithEdges). For
   /// FacesAndRings each vertex's list of edges is overwritten, in place, with the vertices
   /// at their other ends in increasing order (ForEachRingVertex's), and the edges' ends go:
   /// the rings cost no more than the edge lists did and are read without the indirection.
@@ -107,7 +109,7 @@ public:
   /// False for a level between split with ChildTopology::FacesAndEdges (and a faces-only
   /// one): no list, count or tag around its vertices, no valence.
   bool HasVertexRelations() const { return VertexEdgeOffsets.size() == static_cast<size_t>(NumVertices) + 1; }
-  bool HasVertexFaceLists() const { return !VertexFaces.empty() || FaceVertices.empty(); }
+  bool HasVertexFaceLists() const { return !VertexFaces.empty() || GetNumFaceCorners() == 0; }
   /// Whether each vertex's face count is known (GetNumVertexFaces): kept by
   /// ReleaseVertexFaceLists and ReleaseVertexEdgeLists, not by KeepOnly.
   bool HasVertexFaceCounts() const { return VertexFaceOffsets.size() == static_cast<size_t>(NumVertices) + 1; }
@@ -183,13 +185,14 @@ public:
   /// Keeps only the faces: no edges, no incidence relations, no tags (GetNumEdges() is 0).
   /// For a last level that is only output.
   static MeshTopology BuildFacesOnly(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices);
-  bool HasEdges() const { return !FaceEdges.empty() || FaceVertices.empty(); }
+  bool HasEdges() const { return !FaceEdges.empty() || GetNumFaceCorners() == 0; }
   /// A topology of what Part::FacesWithEdges keeps, given in closed form by a split that
   /// knows it (the midpoint split of a closed smooth level: SubDMidpointGrandchild.h): the
-  /// faces, each face's edges and each edge's two ends, on a closed manifold (no boundary or
-  /// non-manifold edge). No lists or tags around the vertices, no edge faces.
-  static MeshTopology BuildFacesWithEdges(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
-    IndexArray faceEdges, IndexArray edgeVertices);
+  /// faces' offsets, each face's edges and each edge's two ends, on a closed manifold (no
+  /// boundary or non-manifold edge). No corners (GetFaceVertices), no lists or tags around
+  /// the vertices, no edge faces.
+  static MeshTopology BuildFacesWithEdges(
+    Index numVertices, IndexArray faceOffsets, IndexArray faceEdges, IndexArray edgeVertices);
   /// Moves a faces-only topology's face arrays out (offsets, corners), leaving its vertices
   /// and no faces: a caller that hands the faces on (to an output) then needs no copy.
   /// Returns false, moving nothing, when the topology has edges (its relations index them).

@@ -8,19 +8,30 @@ namespace subd
 {
 namespace
 {
-// The raw arrays of a level the closed form reads (MeshTopology::Part::FacesWithEdges).
+// The arrays of a level the closed form reads (MeshTopology::Part::FacesWithEdges): its
+// faces' offsets and edges and its edges' ends. A corner's vertex is the end its edge shares
+// with the edge before it (no face repeats a vertex, so they share one end only).
 struct FacesWithEdges
 {
   explicit FacesWithEdges(const MeshTopology& topology)
     : Offsets(topology.GetFaceOffsetArray().data())
-    , Corners(topology.GetFaceVertexArray().data())
     , Edges(topology.GetFaceEdgeArray().data())
     , Topology(topology)
   {
   }
+  // The vertex at corner h, whose previous corner in its face is `previous`.
+  Index VertexAt(Index h, Index previous) const
+  {
+    const Index* ends = this->Topology.GetEdgeVertices(this->Edges[h]);
+    const Index* before = this->Topology.GetEdgeVertices(this->Edges[previous]);
+    return ends[0] == before[0] || ends[0] == before[1] ? ends[0] : ends[1];
+  }
   // Whether corner h holds its edge's first half-edge: the one that starts at the edge's
   // first end (the two half-edges of a manifold edge start at its two ends).
-  bool IsFirstHalfEdge(Index h) const { return this->Corners[h] == this->Topology.GetEdgeVertices(this->Edges[h])[0]; }
+  bool IsFirstHalfEdge(Index h, Index previous) const
+  {
+    return this->VertexAt(h, previous) == this->Topology.GetEdgeVertices(this->Edges[h])[0];
+  }
   // Calls visit(f, h, previous corner) for the corners of the faces [begin, end).
   template <typename Visit>
   void ForEachCorner(Index begin, Index end, Visit&& visit) const
@@ -36,7 +47,6 @@ struct FacesWithEdges
   }
 
   const Index* Offsets;
-  const Index* Corners;
   const Index* Edges;
   const MeshTopology& Topology;
 };
@@ -122,8 +132,8 @@ void WriteSplitOrigins(const FacesWithEdges& faces, const Index* origin, Index* 
   std::copy(origin, origin + numFaces, out);
   Index* vertexFaces = out + numFaces;
   std::fill(vertexFaces, vertexFaces + numVertices, std::numeric_limits<Index>::max());
-  faces.ForEachCorner(0, numFaces, [&](Index f, Index h, Index) {
-    Index& lowest = vertexFaces[faces.Corners[h]];
+  faces.ForEachCorner(0, numFaces, [&](Index f, Index h, Index previous) {
+    Index& lowest = vertexFaces[faces.VertexAt(h, previous)];
     lowest = std::min(lowest, origin[f]);
   });
 }
@@ -141,21 +151,17 @@ Level MidpointChildWithEdges(const Level& parent, bool keepOrigins, const Parall
   {
     offsets[numFaces + v + 1] = offsets[numFaces + v] + topology.GetNumVertexFaces(v);
   }
-  // The F-faces run through the points of their face's edges, along the child's edges
-  // numbered by the face's corners; the child's edge h joins the points of the edges at h
-  // and after it.
-  IndexArray corners(2 * static_cast<size_t>(numCorners)), edges(corners.size());
-  IndexArray edgeEnds(2 * static_cast<size_t>(numCorners));
+  // The F-faces run along the child's edges numbered by the face's corners; the child's edge
+  // h joins the points of the edges at h and after it.
+  IndexArray edges(2 * static_cast<size_t>(numCorners)), edgeEnds(2 * static_cast<size_t>(numCorners));
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     faces.ForEachCorner(begin, end, [&](Index, Index h, Index previous) {
-      corners[h] = faces.Edges[h];
       edges[h] = h;
       edgeEnds[2 * static_cast<size_t>(previous)] = faces.Edges[previous];
       edgeEnds[2 * static_cast<size_t>(previous) + 1] = faces.Edges[h];
     });
   });
-  // The V-faces run through the points of the edges leaving the vertex, in fan order, along
-  // the child's edges of the corners before the vertex's.
+  // The V-faces run along the child's edges of the corners before the vertex's, in fan order.
   parallelFor(0, numVertices, [&](Index begin, Index end) {
     std::vector<Index> fan, fanCorners;
     for (Index v = begin; v < end; ++v)
@@ -165,8 +171,6 @@ Level MidpointChildWithEdges(const Level& parent, bool keepOrigins, const Parall
       for (size_t i = 0; i < fan.size(); ++i, ++k)
       {
         const Index first = topology.GetFaceOffset(fan[i]), size = topology.GetFaceSize(fan[i]);
-        const Index h = first + fanCorners[i];
-        corners[k] = faces.Edges[h];
         edges[k] = first + (fanCorners[i] == 0 ? size - 1 : fanCorners[i] - 1);
       }
     }
@@ -179,8 +183,8 @@ Level MidpointChildWithEdges(const Level& parent, bool keepOrigins, const Parall
     child.FaceOrigin.resize(static_cast<size_t>(numFaces) + numVertices);
     WriteSplitOrigins(faces, parent.FaceOrigin.data(), child.FaceOrigin.data());
   }
-  child.Topology = MeshTopology::BuildFacesWithEdges(
-    topology.GetNumEdges(), std::move(offsets), std::move(corners), std::move(edges), std::move(edgeEnds));
+  child.Topology =
+    MeshTopology::BuildFacesWithEdges(topology.GetNumEdges(), std::move(offsets), std::move(edges), std::move(edgeEnds));
   return child;
 }
 
@@ -207,10 +211,11 @@ Level MidpointGrandchildTags(const Level& grandparent, bool keepOrigins, const P
   for (const bool firstHalves : { true, false })
   {
     parallelFor(0, numFaces, [&](Index begin, Index end) {
-      faces.ForEachCorner(begin, end, [&](Index f, Index h, Index) {
-        if (faces.IsFirstHalfEdge(h) == firstHalves)
+      faces.ForEachCorner(begin, end, [&](Index f, Index h, Index previous) {
+        const Index v = faces.VertexAt(h, previous);
+        if ((v == topology.GetEdgeVertices(faces.Edges[h])[0]) == firstHalves) // IsFirstHalfEdge
         {
-          const Index lowest = std::min(origin[f], vertexFaces[faces.Corners[h]]);
+          const Index lowest = std::min(origin[f], vertexFaces[v]);
           Index& edgeFace = edgeFaces[faces.Edges[h]];
           edgeFace = firstHalves ? lowest : std::min(edgeFace, lowest);
         }
@@ -226,19 +231,21 @@ MeshTopology MidpointGrandchildFaces(const MeshTopology& grandparent, const Para
   const Index numFaces = grandparent.GetNumFaces(), numVertices = grandparent.GetNumVertices();
   const Index numEdges = grandparent.GetNumEdges(), numCorners = grandparent.GetNumFaceCorners();
   IndexArray offsets(static_cast<size_t>(numFaces) + numVertices + numEdges + 1);
-  // F-faces of F-faces: each face of G again, on its own corners.
+  IndexArray vertices(2 * static_cast<size_t>(numCorners) + 4 * static_cast<size_t>(numEdges));
+  // F-faces of F-faces: each face of G again, on its own corners (written last: until then
+  // the first entries hold each vertex's first corner, where its fan starts: in its lowest
+  // face; every vertex has three corners or more, so there is room).
   std::copy(faces.Offsets, faces.Offsets + numFaces + 1, offsets.begin());
-  // F-faces of V-faces: as many corners as the vertex has faces; each fan starts at the
-  // vertex's lowest corner (in its lowest face).
+  // F-faces of V-faces: as many corners as the vertex has faces.
   Index* vertexEnds = offsets.data() + numFaces + 1;
+  Index* fanStart = vertices.data();
   std::fill(vertexEnds, vertexEnds + numVertices, 0);
-  std::vector<Index> fanStart(static_cast<size_t>(numVertices), InvalidIndex);
-  for (Index h = 0; h < numCorners; ++h)
-  {
-    const Index v = faces.Corners[h];
+  std::fill(fanStart, fanStart + numVertices, InvalidIndex);
+  faces.ForEachCorner(0, numFaces, [&](Index, Index h, Index previous) {
+    const Index v = faces.VertexAt(h, previous);
     ++vertexEnds[v];
     fanStart[v] = fanStart[v] == InvalidIndex ? h : fanStart[v];
-  }
+  });
   for (Index v = 0; v < numVertices; ++v)
   {
     vertexEnds[v] += offsets[numFaces + v];
@@ -252,12 +259,10 @@ MeshTopology MidpointGrandchildFaces(const MeshTopology& grandparent, const Para
       edgeEnds[e] = quadsBegin + 4 * (e + 1);
     }
   });
-  IndexArray vertices(static_cast<size_t>(quadsBegin) + 4 * static_cast<size_t>(numEdges));
   Index* quads = vertices.data() + quadsBegin;
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     faces.ForEachCorner(begin, end, [&](Index, Index h, Index previous) {
-      vertices[h] = h;
-      Index* quad = quads + 4 * static_cast<size_t>(faces.Edges[h]) + (faces.IsFirstHalfEdge(h) ? 0 : 2);
+      Index* quad = quads + 4 * static_cast<size_t>(faces.Edges[h]) + (faces.IsFirstHalfEdge(h, previous) ? 0 : 2);
       quad[0] = h;
       quad[1] = previous;
     });
@@ -283,6 +288,12 @@ MeshTopology MidpointGrandchildFaces(const MeshTopology& grandparent, const Para
         vertices[k] = previous;
         h = otherHalfOf(previous);
       }
+    }
+  });
+  parallelFor(0, numCorners, [&](Index begin, Index end) {
+    for (Index h = begin; h < end; ++h)
+    {
+      vertices[h] = h;
     }
   });
   return MeshTopology::BuildFacesOnly(numCorners, std::move(offsets), std::move(vertices));

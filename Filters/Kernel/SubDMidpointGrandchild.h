@@ -27,10 +27,12 @@
 // the rows give the bits of P's own (MakeMidpointRowSource). The faces' origins are the
 // lowest of the faces each comes from, as the split gives them.
 //
-// The finest faces need G's corners, their edges and its edges' ends (to tell an edge's
-// first half-edge from its second), which G's own rows keep anyway (the ends): G is kept
-// with MeshTopology::Part::FacesWithEdges. The fans are walked from the V-faces' quads once
-// they are written (each quad holds both half-edges of an edge and the corners before them).
+// The finest faces need G's faces' edges and its edges' ends, which G's own rows keep anyway
+// (the ends): G is kept with MeshTopology::Part::FacesWithEdges, without its faces' corners,
+// since a corner's vertex is the end its edge shares with the edge before it (which tells an
+// edge's first half-edge, starting at its first end, from its second). The fans are walked
+// from the V-faces' quads once they are written (each quad holds both half-edges of an edge
+// and the corners before them).
 // Where G's own parent has the closed form too, G itself is split with that part alone
 // (MidpointChildWithEdges): its faces, edges and edges' ends follow from its parent's the
 // same way, and its lists and tags around the vertices, most of a level's topology, are
@@ -51,25 +53,25 @@ namespace subd
 SUBDKERNEL_EXPORT bool MidpointGrandchildHasClosedForm(const Level& grandparent);
 
 /// The split of a level with that closed form (its child has it too), with what its
-/// grandchild written from it and its own rows read alone: its faces with their edges and
-/// their edges' ends (MeshTopology::BuildFacesWithEdges), and its faces' origins if
-/// `keepOrigins`; no relation, tag or sharpness (nothing is sharp). The same faces, edges
-/// and origins as SplitMidpoint's, for about a third of its memory: the child's F-faces run
-/// through the points of their face's edges, its V-faces through those of the edges
-/// leaving their vertex in fan order; its edge h (numbered by the parent's corners) joins the
-/// points of the edges at and after corner h.
+/// grandchild written from it and its own rows read alone: its faces' offsets and edges and
+/// its edges' ends (MeshTopology::BuildFacesWithEdges), and its faces' origins if
+/// `keepOrigins`; no corners, relation, tag or sharpness (nothing is sharp). The same faces'
+/// edges, edges' ends and origins as SplitMidpoint's, for about a fifth of its memory: the
+/// child's F-faces run along its edges numbered by the face's corners, its V-faces along those
+/// of the corners before the vertex's in fan order; its edge h joins the points of the
+/// parent's edges at and after corner h.
 SUBDKERNEL_EXPORT Level MidpointChildWithEdges(
   const Level& parent, bool keepOrigins, const ParallelFor& parallelFor = SerialFor);
 
 /// The rows of the finest level's points (one per corner of `grandparent`) from the points
 /// of the level between (one per edge of `grandparent`), written as they are applied. They
-/// read the grandparent's faces and their edges only.
+/// read the grandparent's faces' offsets and edges only.
 SUBDKERNEL_EXPORT std::shared_ptr<const RowSource> MakeMidpointGrandchildRowSource(
   std::shared_ptr<const Level> grandparent);
 
 /// The finest level's tags, without its faces: depth, crease method and, if `keepOrigins`,
-/// each face's origin. Reads the grandparent's faces, their edges, its edges' ends and its
-/// faces' origins.
+/// each face's origin. Reads the grandparent's faces' edges, its edges' ends and its faces'
+/// origins.
 SUBDKERNEL_EXPORT Level MidpointGrandchildTags(
   const Level& grandparent, bool keepOrigins, const ParallelFor& parallelFor = SerialFor);
 
