@@ -61,20 +61,22 @@ double ModelBytes(const Scheme& scheme, const RefinementRequest& request)
     return std::max(refinePeak, tables + output + scratch);
   }
 
-  // The midpoint's levels above the grandparent keep their edges' ends for their rows; the
-  // one above the grandparent is split whole, the grandparent with what it keeps only.
+  // The midpoint's levels above the grandparent keep their edges' ends for their rows; each is
+  // split with what its child keeps only.
   if (grandchildAlone)
   {
     auto edgeEnds = [](const MeshCounts& c) { return 8.0 * c.Edges + 4.0 * c.Vertices; };
     // Offsets, the faces' edges, the edges' ends and the faces' origins.
     auto facesWithEdges = [](const MeshCounts& c) { return 8.0 * c.Faces + 4.0 * c.Corners + 8.0 * c.Edges; };
+    // The base is whole; the levels below it are split from their parent's faces' edges
+    // (with a table of four entries per edge of the parent).
     double kept = 0.0, splitPeak = 0.0;
     for (int l = 0; l + 2 < levels; ++l)
     {
-      const MeshCounts& next = counts[l + 1];
-      const double child = l + 3 == levels ? facesWithEdges(next) : TopologyBytes(next);
-      splitPeak = std::max(splitPeak, kept + TopologyBytes(counts[l]) + edgeEnds(counts[l]) + child);
-      kept += edgeEnds(counts[l]);
+      const MeshCounts& level = counts[l];
+      const double parent = l == 0 ? TopologyBytes(level) : facesWithEdges(level) + 16.0 * level.Edges;
+      splitPeak = std::max(splitPeak, kept + parent + edgeEnds(level) + facesWithEdges(counts[l + 1]));
+      kept += edgeEnds(level);
     }
     const MeshCounts& grandparent = counts[levels - 2];
     // The base is whole where it is the grandparent.

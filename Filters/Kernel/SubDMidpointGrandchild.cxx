@@ -99,10 +99,19 @@ private:
 bool MidpointGrandchildHasClosedForm(const Level& grandparent)
 {
   const MeshTopology& topology = grandparent.Topology;
-  if (!topology.HasVertexRelations() || !topology.HasEdges() || topology.GetNumFaces() == 0 ||
-    topology.GetNumBoundaryEdges() != 0 || topology.GetNumNonManifoldEdges() != 0 ||
+  if (topology.GetNumFaces() == 0 || topology.GetNumBoundaryEdges() != 0 || topology.GetNumNonManifoldEdges() != 0 ||
     topology.GetNumNonManifoldVertices() != 0 || grandparent.FaceTagShift != 0 || grandparent.HasHoles() ||
     grandparent.HasSharpFeatures())
+  {
+    return false;
+  }
+  if (!topology.HasVertexRelations())
+  {
+    // Split for a grandchild alone (MidpointChildWithEdges) from a level with the closed
+    // form: four faces at each vertex. (A level trimmed otherwise keeps no faces' edges.)
+    return topology.GetFaceVertexArray().empty() && !topology.GetFaceEdgeArray().empty();
+  }
+  if (!topology.HasEdges())
   {
     return false;
   }
@@ -139,6 +148,75 @@ void WriteSplitOrigins(const FacesWithEdges& faces, const Index* origin, Index* 
 }
 }
 
+namespace
+{
+// One split of a closed smooth level along the child's edges, which are numbered by the
+// level's corners: `offsets` (as many as the level's faces and vertices, plus one) and
+// `edges` (two per corner) get the F-faces' then the V-faces' edges; `quads` (four per edge
+// of the level) each edge's half-edges (corners: the first one's, then the second one's),
+// each with the corner before it in its face, from which the fans are walked.
+void WriteSplitFaceEdges(
+  const FacesWithEdges& faces, Index* offsets, Index* edges, Index* quads, const ParallelFor& parallelFor)
+{
+  const Index numFaces = faces.Topology.GetNumFaces(), numVertices = faces.Topology.GetNumVertices();
+  const Index numCorners = faces.Topology.GetNumFaceCorners();
+  // F-faces: along the edges of their corners (written last: until then the first entries
+  // hold each vertex's first corner, where its fan starts, in its lowest face; every vertex
+  // has three corners or more, so there is room).
+  std::copy(faces.Offsets, faces.Offsets + numFaces + 1, offsets);
+  // V-faces: as many edges as the vertex has faces.
+  Index* vertexEnds = offsets + numFaces + 1;
+  Index* fanStart = edges;
+  std::fill(vertexEnds, vertexEnds + numVertices, 0);
+  std::fill(fanStart, fanStart + numVertices, InvalidIndex);
+  faces.ForEachCorner(0, numFaces, [&](Index, Index h, Index previous) {
+    const Index v = faces.VertexAt(h, previous);
+    ++vertexEnds[v];
+    fanStart[v] = fanStart[v] == InvalidIndex ? h : fanStart[v];
+  });
+  for (Index v = 0; v < numVertices; ++v)
+  {
+    vertexEnds[v] += offsets[numFaces + v];
+  }
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    faces.ForEachCorner(begin, end, [&](Index, Index h, Index previous) {
+      Index* quad = quads + 4 * static_cast<size_t>(faces.Edges[h]) + (faces.IsFirstHalfEdge(h, previous) ? 0 : 2);
+      quad[0] = h;
+      quad[1] = previous;
+    });
+  });
+  // The corner before h ends at h's start vertex v, and the other half-edge of its edge
+  // starts at v in the next face of v's fan: the V-face runs along the edges of the corners
+  // before v's, in fan order.
+  auto previousOf = [quads, &faces](Index h) {
+    const Index* quad = quads + 4 * static_cast<size_t>(faces.Edges[h]);
+    return quad[0] == h ? quad[1] : quad[3];
+  };
+  auto otherHalfOf = [quads, &faces](Index h) {
+    const Index* quad = quads + 4 * static_cast<size_t>(faces.Edges[h]);
+    return quad[0] == h ? quad[2] : quad[0];
+  };
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
+    for (Index v = begin; v < end; ++v)
+    {
+      Index h = fanStart[v];
+      for (Index k = offsets[numFaces + v]; k < offsets[numFaces + v + 1]; ++k)
+      {
+        const Index previous = previousOf(h);
+        edges[k] = previous;
+        h = otherHalfOf(previous);
+      }
+    }
+  });
+  parallelFor(0, numCorners, [&](Index begin, Index end) {
+    for (Index h = begin; h < end; ++h)
+    {
+      edges[h] = h;
+    }
+  });
+}
+}
+
 Level MidpointChildWithEdges(const Level& parent, bool keepOrigins, const ParallelFor& parallelFor)
 {
   const MeshTopology& topology = parent.Topology;
@@ -146,34 +224,18 @@ Level MidpointChildWithEdges(const Level& parent, bool keepOrigins, const Parall
   const Index numFaces = topology.GetNumFaces(), numVertices = topology.GetNumVertices();
   const Index numCorners = topology.GetNumFaceCorners();
   IndexArray offsets(static_cast<size_t>(numFaces) + numVertices + 1);
-  std::copy(faces.Offsets, faces.Offsets + numFaces + 1, offsets.begin());
-  for (Index v = 0; v < numVertices; ++v)
+  IndexArray edges(2 * static_cast<size_t>(numCorners));
   {
-    offsets[numFaces + v + 1] = offsets[numFaces + v] + topology.GetNumVertexFaces(v);
+    IndexArray quads(4 * static_cast<size_t>(topology.GetNumEdges()));
+    WriteSplitFaceEdges(faces, offsets.data(), edges.data(), quads.data(), parallelFor);
   }
-  // The F-faces run along the child's edges numbered by the face's corners; the child's edge
-  // h joins the points of the edges at h and after it.
-  IndexArray edges(2 * static_cast<size_t>(numCorners)), edgeEnds(2 * static_cast<size_t>(numCorners));
+  // The child's edge h joins the points of the parent's edges at h and after it.
+  IndexArray edgeEnds(2 * static_cast<size_t>(numCorners));
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     faces.ForEachCorner(begin, end, [&](Index, Index h, Index previous) {
-      edges[h] = h;
       edgeEnds[2 * static_cast<size_t>(previous)] = faces.Edges[previous];
       edgeEnds[2 * static_cast<size_t>(previous) + 1] = faces.Edges[h];
     });
-  });
-  // The V-faces run along the child's edges of the corners before the vertex's, in fan order.
-  parallelFor(0, numVertices, [&](Index begin, Index end) {
-    std::vector<Index> fan, fanCorners;
-    for (Index v = begin; v < end; ++v)
-    {
-      topology.GetOrderedVertexFaces(v, fan, fanCorners);
-      Index k = offsets[numFaces + v];
-      for (size_t i = 0; i < fan.size(); ++i, ++k)
-      {
-        const Index first = topology.GetFaceOffset(fan[i]), size = topology.GetFaceSize(fan[i]);
-        edges[k] = first + (fanCorners[i] == 0 ? size - 1 : fanCorners[i] - 1);
-      }
-    }
   });
   Level child;
   child.Depth = parent.Depth + 1;
@@ -227,73 +289,20 @@ Level MidpointGrandchildTags(const Level& grandparent, bool keepOrigins, const P
 
 MeshTopology MidpointGrandchildFaces(const MeshTopology& grandparent, const ParallelFor& parallelFor)
 {
+  // The faces of the split of the level between are those of the grandparent's split along
+  // its edges (F-faces of F- and V-faces), then its V-faces: the quads.
   const FacesWithEdges faces(grandparent);
   const Index numFaces = grandparent.GetNumFaces(), numVertices = grandparent.GetNumVertices();
   const Index numEdges = grandparent.GetNumEdges(), numCorners = grandparent.GetNumFaceCorners();
   IndexArray offsets(static_cast<size_t>(numFaces) + numVertices + numEdges + 1);
   IndexArray vertices(2 * static_cast<size_t>(numCorners) + 4 * static_cast<size_t>(numEdges));
-  // F-faces of F-faces: each face of G again, on its own corners (written last: until then
-  // the first entries hold each vertex's first corner, where its fan starts: in its lowest
-  // face; every vertex has three corners or more, so there is room).
-  std::copy(faces.Offsets, faces.Offsets + numFaces + 1, offsets.begin());
-  // F-faces of V-faces: as many corners as the vertex has faces.
-  Index* vertexEnds = offsets.data() + numFaces + 1;
-  Index* fanStart = vertices.data();
-  std::fill(vertexEnds, vertexEnds + numVertices, 0);
-  std::fill(fanStart, fanStart + numVertices, InvalidIndex);
-  faces.ForEachCorner(0, numFaces, [&](Index, Index h, Index previous) {
-    const Index v = faces.VertexAt(h, previous);
-    ++vertexEnds[v];
-    fanStart[v] = fanStart[v] == InvalidIndex ? h : fanStart[v];
-  });
-  for (Index v = 0; v < numVertices; ++v)
-  {
-    vertexEnds[v] += offsets[numFaces + v];
-  }
-  // V-faces of the points of G's edges: quads.
-  const Index quadsBegin = offsets[numFaces + numVertices];
-  Index* edgeEnds = offsets.data() + numFaces + numVertices + 1;
+  const Index quadsBegin = 2 * numCorners;
+  WriteSplitFaceEdges(faces, offsets.data(), vertices.data(), vertices.data() + quadsBegin, parallelFor);
+  Index* quadEnds = offsets.data() + numFaces + numVertices + 1;
   parallelFor(0, numEdges, [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e)
     {
-      edgeEnds[e] = quadsBegin + 4 * (e + 1);
-    }
-  });
-  Index* quads = vertices.data() + quadsBegin;
-  parallelFor(0, numFaces, [&](Index begin, Index end) {
-    faces.ForEachCorner(begin, end, [&](Index, Index h, Index previous) {
-      Index* quad = quads + 4 * static_cast<size_t>(faces.Edges[h]) + (faces.IsFirstHalfEdge(h, previous) ? 0 : 2);
-      quad[0] = h;
-      quad[1] = previous;
-    });
-  });
-  // Each quad holds both half-edges of its edge, each with the corner before it: the fans
-  // are walked from them. The corner before h ends at h's start vertex v, and the other
-  // half-edge of its edge starts at v in the next face of v's fan.
-  auto previousOf = [quads, &faces](Index h) {
-    const Index* quad = quads + 4 * static_cast<size_t>(faces.Edges[h]);
-    return quad[0] == h ? quad[1] : quad[3];
-  };
-  auto otherHalfOf = [quads, &faces](Index h) {
-    const Index* quad = quads + 4 * static_cast<size_t>(faces.Edges[h]);
-    return quad[0] == h ? quad[2] : quad[0];
-  };
-  parallelFor(0, numVertices, [&](Index begin, Index end) {
-    for (Index v = begin; v < end; ++v)
-    {
-      Index h = fanStart[v];
-      for (Index k = offsets[numFaces + v]; k < offsets[numFaces + v + 1]; ++k)
-      {
-        const Index previous = previousOf(h);
-        vertices[k] = previous;
-        h = otherHalfOf(previous);
-      }
-    }
-  });
-  parallelFor(0, numCorners, [&](Index begin, Index end) {
-    for (Index h = begin; h < end; ++h)
-    {
-      vertices[h] = h;
+      quadEnds[e] = quadsBegin + 4 * (e + 1);
     }
   });
   return MeshTopology::BuildFacesOnly(numCorners, std::move(offsets), std::move(vertices));

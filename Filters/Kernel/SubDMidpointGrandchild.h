@@ -33,10 +33,10 @@
 // edge's first half-edge, starting at its first end, from its second). The fans are walked
 // from the V-faces' quads once they are written (each quad holds both half-edges of an edge
 // and the corners before them).
-// Where G's own parent has the closed form too, G itself is split with that part alone
-// (MidpointChildWithEdges): its faces, edges and edges' ends follow from its parent's the
-// same way, and its lists and tags around the vertices, most of a level's topology, are
-// never made.
+// Where a level above G has the closed form too, each level from it down to G is split with
+// that part alone (MidpointChildWithEdges): its faces' edges and edges' ends follow from its
+// parent's the same way (the F-faces of F- and V-faces above), and its lists and tags around
+// the vertices, most of a level's topology, are never made.
 #ifndef SubDMidpointGrandchild_h
 #define SubDMidpointGrandchild_h
 
@@ -47,19 +47,21 @@
 
 namespace subd
 {
-/// Whether the finest level two midpoint splits below `grandparent` (a full-topology level)
-/// has the closed form above: no boundary, non-manifold edge or vertex, sharp edge or
-/// vertex, hole, and every vertex of at least three faces.
+/// Whether the finest level two midpoint splits below `grandparent` (a full-topology level,
+/// or one split by MidpointChildWithEdges) has the closed form above: no boundary,
+/// non-manifold edge or vertex, sharp edge or vertex, hole, and every vertex of at least three
+/// faces.
 SUBDKERNEL_EXPORT bool MidpointGrandchildHasClosedForm(const Level& grandparent);
 
 /// The split of a level with that closed form (its child has it too), with what its
 /// grandchild written from it and its own rows read alone: its faces' offsets and edges and
 /// its edges' ends (MeshTopology::BuildFacesWithEdges), and its faces' origins if
-/// `keepOrigins`; no corners, relation, tag or sharpness (nothing is sharp). The same faces'
-/// edges, edges' ends and origins as SplitMidpoint's, for about a fifth of its memory: the
-/// child's F-faces run along its edges numbered by the face's corners, its V-faces along those
-/// of the corners before the vertex's in fan order; its edge h joins the points of the
-/// parent's edges at and after corner h.
+/// `keepOrigins`; no corners, relation, tag or sharpness (nothing is sharp). It reads the
+/// parent's faces' edges, edges' ends and origins only, so `parent` may be such a split
+/// itself. The same faces' edges, edges' ends and origins as SplitMidpoint's, for about a
+/// fifth of its memory: the child's F-faces run along its edges numbered by the face's
+/// corners, its V-faces along those of the corners before the vertex's in fan order; its
+/// edge h joins the points of the parent's edges at and after corner h.
 SUBDKERNEL_EXPORT Level MidpointChildWithEdges(
   const Level& parent, bool keepOrigins, const ParallelFor& parallelFor = SerialFor);
 

@@ -130,10 +130,11 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
           current = Level();
           trim(*parent);
         }
-        else if (l + 3 == levels && finestFromGrandparentIfSmooth && scheme.SplitsForGrandchildAlone(*parent))
+        else if (l + 3 <= levels && finestFromGrandparentIfSmooth && scheme.SplitsForGrandchildAlone(*parent))
         {
-          // The finest level's grandparent, split with what its rows and the finest level
-          // read alone (its child is skipped, above, at the next step).
+          // A level down to the finest level's grandparent, split with what its rows and its
+          // own split (the finest level, for the grandparent) read alone: the next one is split
+          // so again, and the finest level's parent is skipped (above, at the next step).
           current = scheme.SplitForGrandchildAlone(*parent);
           trim(*parent);
           splitForGrandchildAlone = true;

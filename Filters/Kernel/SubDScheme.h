@@ -205,10 +205,11 @@ public:
     return false;
   }
   /// Whether `parent`'s child may be split with only what its own rows and its grandchild,
-  /// written from it alone, read (SplitForGrandchildAlone): Refine asks so of the level three
-  /// above a faces-only finest level in the leaner modes, and then skips that child's child
-  /// as where RefinesFromGrandparentAlone holds. False by default; the midpoint scheme on a
-  /// closed smooth level (MidpointGrandchildHasClosedForm), whose child has the closed form too.
+  /// written from it alone, read (SplitForGrandchildAlone): Refine asks so of the levels from
+  /// the base to the one three above a faces-only finest level in the leaner modes, splits
+  /// each such child so again, and skips the finest level's parent as where
+  /// RefinesFromGrandparentAlone holds. False by default; the midpoint scheme on a closed
+  /// smooth level (MidpointGrandchildHasClosedForm), whose child has the closed form too.
   virtual bool SplitsForGrandchildAlone(const Level& parent) const
   {
     (void)parent;

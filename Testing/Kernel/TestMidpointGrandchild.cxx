@@ -157,6 +157,49 @@ TEST(MidpointGrandchild, EqualsTwoSplits)
   EXPECT_GE(checked, 10);
 }
 
+// Levels split lean from lean parents (what Refine does from a closed smooth base down to the
+// finest level's grandparent) have the faces' edges, edges' ends and origins of the split
+// itself two levels down, and the closed form; the finest faces from the second equal two
+// more splits, on threads.
+TEST(MidpointGrandchild, LeanSplitsChainFromTheBase)
+{
+  int checked = 0;
+  for (const subdtest::TestMesh& mesh : { subdtest::Cube().Jitter(0.1), subdtest::Grid(6, 5, true, true).Jitter(0.05),
+         subdtest::House(false).Jitter(0.1), subdtest::Bipyramid(70) })
+  {
+    subd::Level base = subdtest::BaseLevel(mesh);
+    ASSERT_TRUE(subd::MidpointGrandchildHasClosedForm(base)) << mesh.Name;
+    for (Index f = 0; f < base.Topology.GetNumFaces(); ++f)
+    {
+      base.FaceOrigin[f] = (f * 7919) % 1009;
+    }
+    const subd::Level full1 = subd::SplitMidpoint(base, subd::ChildTopology::Full);
+    const subd::Level full2 = subd::SplitMidpoint(full1, subd::ChildTopology::Full);
+    const subd::Level lean1 = subd::MidpointChildWithEdges(base, true, subdtest::ThreeThreadFor);
+    ASSERT_TRUE(subd::MidpointGrandchildHasClosedForm(lean1)) << mesh.Name;
+    const subd::Level lean2 = subd::MidpointChildWithEdges(lean1, true, subdtest::ThreeThreadFor);
+    ASSERT_TRUE(subd::MidpointGrandchildHasClosedForm(lean2)) << mesh.Name;
+    EXPECT_EQ(lean2.Topology.GetFaceOffsetArray(), full2.Topology.GetFaceOffsetArray()) << mesh.Name;
+    EXPECT_EQ(lean2.Topology.GetFaceEdgeArray(), full2.Topology.GetFaceEdgeArray()) << mesh.Name;
+    ASSERT_EQ(lean2.Topology.GetNumEdges(), full2.Topology.GetNumEdges()) << mesh.Name;
+    for (Index e = 0; e < lean2.Topology.GetNumEdges(); ++e)
+    {
+      ASSERT_EQ(lean2.Topology.GetEdgeVertices(e)[0], full2.Topology.GetEdgeVertices(e)[0]) << mesh.Name;
+      ASSERT_EQ(lean2.Topology.GetEdgeVertices(e)[1], full2.Topology.GetEdgeVertices(e)[1]) << mesh.Name;
+    }
+    EXPECT_EQ(lean2.FaceOrigin, full2.FaceOrigin) << mesh.Name;
+    const subd::Level fine =
+      subd::SplitMidpoint(subd::SplitMidpoint(full2, subd::ChildTopology::Full), subd::ChildTopology::FacesOnly);
+    const subd::MeshTopology faces = subd::MidpointGrandchildFaces(lean2.Topology, subdtest::ThreeThreadFor);
+    EXPECT_EQ(faces.GetFaceOffsetArray(), fine.Topology.GetFaceOffsetArray()) << mesh.Name;
+    EXPECT_EQ(faces.GetFaceVertexArray(), fine.Topology.GetFaceVertexArray()) << mesh.Name;
+    EXPECT_EQ(subd::MidpointGrandchildTags(lean2, true, subdtest::ThreeThreadFor).FaceOrigin, fine.FaceOrigin)
+      << mesh.Name;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4);
+}
+
 // Refine with threads and without the finest faces' origins (what the filters do when no cell
 // data is carried), in the leaner modes, gives the faces and points of the stored refinement
 // bit for bit, from two to four levels, on closed meshes with and without the closed form at
