@@ -1,4 +1,5 @@
 #include "SubDMidpointSplit.h"
+#include "SubDMidpointGrandchild.h"
 
 #include <algorithm>
 #include <limits>
@@ -15,9 +16,9 @@ bool MidpointKeepsVertex(const Level& level, Index v)
   {
     // Split for a grandchild alone (MidpointChildWithEdges): closed and smooth. Any other
     // level without its relations was trimmed before its rows were made.
-    if (topo.GetNumBoundaryEdges() != 0 || topo.GetNumNonManifoldEdges() != 0 || level.HasSharpFeatures())
+    if (!MidpointGrandchildHasClosedForm(level))
     {
-      throw std::logic_error("MidpointKeepsVertex: a level with boundaries or creases has no vertex relations");
+      throw std::logic_error("MidpointKeepsVertex: a level without vertex relations that is not a lean split");
     }
     return false;
   }

@@ -22,7 +22,6 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
     (levelRows == LevelRows::WrittenFromGrandparent || levelRows == LevelRows::WrittenLean);
   bool parentSkipped = false; // the finest level's parent was not built
   bool splitAloneTrim = false; // current was trimmed to be split alone (LeanChild::SplitAlone)
-  bool splitForGrandchildAlone = false; // current has only what its rows and grandchild read
   // A full finest level is split from a full parent; else the levels between have what the
   // scheme reads of them.
   const ChildTopology between = finest == ChildTopology::FacesOnly ? scheme.GetTopologyBetween() : ChildTopology::Full;
@@ -97,9 +96,7 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
         // alone (RefineFromGrandparent reads nothing of it): always for the linear rules, and
         // for the others written from their grandparent when none of their rows needs it.
         parentSkipped = l + 2 == levels &&
-          (finestFromGrandparentAlone ||
-            (finestFromGrandparentIfSmooth &&
-              (splitForGrandchildAlone || scheme.RefinesFromGrandparentAlone(*parent))));
+          (finestFromGrandparentAlone || (finestFromGrandparentIfSmooth && scheme.RefinesFromGrandparentAlone(*parent)));
         // Once split, the level is kept for its rows (and its grandchild's): what they never
         // read goes, when the split allows before the child's topology is built.
         auto trim = [&scheme, rowsReadFacesOnly](Level& split) {
@@ -118,26 +115,28 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
             split.Topology.ReleaseVertexFaceLists();
           }
         };
-        MeshTopology::Part grandchildPart;
-        bool grandchildOrigins = false;
-        if (parentSkipped && scheme.GrandchildAloneReadsOnly(grandchildPart, grandchildOrigins))
+        if (parentSkipped)
         {
           current = Level();
-          KeepOnly(*parent, grandchildPart, scheme.GetParallelFor(), grandchildOrigins);
-        }
-        else if (parentSkipped)
-        {
-          current = Level();
-          trim(*parent);
+          MeshTopology::Part grandchildPart;
+          bool grandchildOrigins = false;
+          if (scheme.GrandchildAloneReadsOnly(grandchildPart, grandchildOrigins))
+          {
+            KeepOnly(*parent, grandchildPart, scheme.GetParallelFor(), grandchildOrigins);
+          }
+          else
+          {
+            trim(*parent);
+          }
         }
         else if (l + 3 <= levels && finestFromGrandparentIfSmooth && scheme.SplitsForGrandchildAlone(*parent))
         {
           // A level down to the finest level's grandparent, split with what its rows and its
           // own split (the finest level, for the grandparent) read alone: the next one is split
-          // so again, and the finest level's parent is skipped (above, at the next step).
+          // so again, and the finest level's parent is skipped (above, at the next step: the
+          // lean level has the closed form, RefinesFromGrandparentAlone).
           current = scheme.SplitForGrandchildAlone(*parent);
           trim(*parent);
-          splitForGrandchildAlone = true;
         }
         else
         {

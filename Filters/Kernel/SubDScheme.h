@@ -207,9 +207,10 @@ public:
   /// Whether `parent`'s child may be split with only what its own rows and its grandchild,
   /// written from it alone, read (SplitForGrandchildAlone): Refine asks so of the levels from
   /// the base to the one three above a faces-only finest level in the leaner modes, splits
-  /// each such child so again, and skips the finest level's parent as where
-  /// RefinesFromGrandparentAlone holds. False by default; the midpoint scheme on a closed
-  /// smooth level (MidpointGrandchildHasClosedForm), whose child has the closed form too.
+  /// each such child so again, and skips the finest level's parent, since a child so split must
+  /// have RefinesFromGrandparentAlone and SplitsForGrandchildAlone. False by default; the
+  /// midpoint scheme on a closed smooth level (MidpointGrandchildHasClosedForm), whose child
+  /// has the closed form too.
   virtual bool SplitsForGrandchildAlone(const Level& parent) const
   {
     (void)parent;

@@ -32,6 +32,28 @@ subdtest::TestMesh Pillow()
   return m;
 }
 
+// A lean split (MidpointChildWithEdges) has the faces' offsets and edges, the edges' ends and
+// the origins of the split itself, and no corners or relations around its vertices.
+void ExpectSameFacesEdgesAndOrigins(const subd::Level& lean, const subd::Level& split, const std::string& what)
+{
+  const subd::MeshTopology& a = lean.Topology;
+  const subd::MeshTopology& b = split.Topology;
+  ASSERT_EQ(a.GetFaceOffsetArray(), b.GetFaceOffsetArray()) << what;
+  ASSERT_EQ(a.GetFaceEdgeArray(), b.GetFaceEdgeArray()) << what;
+  EXPECT_TRUE(a.GetFaceVertexArray().empty()) << what;
+  EXPECT_EQ(a.GetNumFaceCorners(), b.GetNumFaceCorners()) << what;
+  ASSERT_EQ(a.GetNumEdges(), b.GetNumEdges()) << what;
+  ASSERT_EQ(a.GetNumVertices(), b.GetNumVertices()) << what;
+  for (Index e = 0; e < a.GetNumEdges(); ++e)
+  {
+    ASSERT_EQ(a.GetEdgeVertices(e)[0], b.GetEdgeVertices(e)[0]) << what << " edge " << e;
+    ASSERT_EQ(a.GetEdgeVertices(e)[1], b.GetEdgeVertices(e)[1]) << what << " edge " << e;
+  }
+  EXPECT_EQ(lean.FaceOrigin, split.FaceOrigin) << what;
+  EXPECT_EQ(lean.Depth, split.Depth) << what;
+  EXPECT_FALSE(a.HasVertexRelations()) << what;
+}
+
 // Values of `rows` applied to `parents` (components values each) in ranges of two rows on
 // three threads.
 std::vector<double> ApplyOnThreads(const subd::StencilTable& rows, const std::vector<double>& parents, int components)
@@ -91,22 +113,7 @@ TEST(MidpointGrandchild, EqualsTwoSplits)
              subd::ParallelFor(subdtest::ThreeThreadFor) })
       {
         const subd::Level lean = subd::MidpointChildWithEdges(grandparent, true, parallelFor);
-        const subd::MeshTopology& a = lean.Topology;
-        const subd::MeshTopology& b = parent.Topology;
-        ASSERT_EQ(a.GetFaceOffsetArray(), b.GetFaceOffsetArray()) << what;
-        ASSERT_EQ(a.GetFaceEdgeArray(), b.GetFaceEdgeArray()) << what;
-        EXPECT_TRUE(a.GetFaceVertexArray().empty()) << what;
-        EXPECT_EQ(a.GetNumFaceCorners(), b.GetNumFaceCorners()) << what;
-        ASSERT_EQ(a.GetNumEdges(), b.GetNumEdges()) << what;
-        ASSERT_EQ(a.GetNumVertices(), b.GetNumVertices()) << what;
-        for (Index e = 0; e < a.GetNumEdges(); ++e)
-        {
-          ASSERT_EQ(a.GetEdgeVertices(e)[0], b.GetEdgeVertices(e)[0]) << what << " edge " << e;
-          ASSERT_EQ(a.GetEdgeVertices(e)[1], b.GetEdgeVertices(e)[1]) << what << " edge " << e;
-        }
-        EXPECT_EQ(lean.FaceOrigin, parent.FaceOrigin) << what;
-        EXPECT_EQ(lean.Depth, parent.Depth) << what;
-        EXPECT_FALSE(a.HasVertexRelations()) << what;
+        ExpectSameFacesEdgesAndOrigins(lean, parent, what);
         EXPECT_TRUE(subd::MidpointChildWithEdges(grandparent, false, parallelFor).FaceOrigin.empty()) << what;
         // Its own rows are the split's (no vertex kept: none is on a boundary or sharp).
         const auto leanRows = subd::StencilTable::FromSource(
@@ -179,15 +186,8 @@ TEST(MidpointGrandchild, LeanSplitsChainFromTheBase)
     ASSERT_TRUE(subd::MidpointGrandchildHasClosedForm(lean1)) << mesh.Name;
     const subd::Level lean2 = subd::MidpointChildWithEdges(lean1, true, subdtest::ThreeThreadFor);
     ASSERT_TRUE(subd::MidpointGrandchildHasClosedForm(lean2)) << mesh.Name;
-    EXPECT_EQ(lean2.Topology.GetFaceOffsetArray(), full2.Topology.GetFaceOffsetArray()) << mesh.Name;
-    EXPECT_EQ(lean2.Topology.GetFaceEdgeArray(), full2.Topology.GetFaceEdgeArray()) << mesh.Name;
-    ASSERT_EQ(lean2.Topology.GetNumEdges(), full2.Topology.GetNumEdges()) << mesh.Name;
-    for (Index e = 0; e < lean2.Topology.GetNumEdges(); ++e)
-    {
-      ASSERT_EQ(lean2.Topology.GetEdgeVertices(e)[0], full2.Topology.GetEdgeVertices(e)[0]) << mesh.Name;
-      ASSERT_EQ(lean2.Topology.GetEdgeVertices(e)[1], full2.Topology.GetEdgeVertices(e)[1]) << mesh.Name;
-    }
-    EXPECT_EQ(lean2.FaceOrigin, full2.FaceOrigin) << mesh.Name;
+    ExpectSameFacesEdgesAndOrigins(lean1, full1, mesh.Name + " one split down");
+    ExpectSameFacesEdgesAndOrigins(lean2, full2, mesh.Name + " two splits down");
     const subd::Level fine =
       subd::SplitMidpoint(subd::SplitMidpoint(full2, subd::ChildTopology::Full), subd::ChildTopology::FacesOnly);
     const subd::MeshTopology faces = subd::MidpointGrandchildFaces(lean2.Topology, subdtest::ThreeThreadFor);
