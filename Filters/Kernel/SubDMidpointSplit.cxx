@@ -210,6 +210,10 @@ std::vector<Index> NumberKeptPoints(const Level& parent, Index& numChildPoints)
   const MeshTopology& topo = parent.Topology;
   std::vector<Index> keptPoint(static_cast<size_t>(topo.GetNumVertices()), InvalidIndex);
   numChildPoints = topo.GetNumEdges();
+  if (!topo.HasVertexRelations() && MidpointGrandchildHasClosedForm(parent))
+  {
+    return keptPoint; // a lean split keeps no vertex (asked once for the level, not per vertex)
+  }
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
     if (MidpointKeepsVertex(parent, v))
