@@ -8,8 +8,9 @@
 //     triangles per face written straight into VTK's arrays on the benchmark's threads, the
 //     edges given (numbered in the parent process);
 //   - "minimal split": the same after numbering the edges with the least work known here (the
-//     half-edges filed under their lower vertex, matched within each file; one thread), with
-//     no input screening, no topology beyond the edges, no caching for re-application;
+//     half-edges filed under their lower vertex, matched within each file), with no input
+//     screening, no topology beyond the edges, no caching for re-application; numbered on one
+//     thread, then ("... 2 threads") on two;
 // next to SubD's filter and VTK's, and prints VTK's time over each. What the minimal split
 // leaves of the 10x budget is what the filter's checks, topology and caches must fit in.
 //
@@ -27,6 +28,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <vector>
 
 namespace
@@ -88,6 +90,85 @@ Edges NumberEdges(int numVertices, int numCorners, const vtkTypeInt64* corners)
       edges.OfCorner[filed[i] & 0xffffffffu] = edge;
     }
   }
+  return edges;
+}
+
+// NumberEdges on two threads: each half of the half-edges counted and filed with its own
+// cursors (the second half after the first in every file, so the files are the same), then
+// each half of the vertices' files matched on its own, the second half's edges numbered after
+// the first's.
+Edges NumberEdgesOnTwoThreads(int numVertices, int numCorners, const vtkTypeInt64* corners)
+{
+  auto next = [](int h) { return h % 3 == 2 ? h - 2 : h + 1; };
+  auto onTwoThreads = [](const std::function<void(int)>& task) {
+    vtkSMPTools::For(0, 2, 1, [&task](vtkIdType begin, vtkIdType end) {
+      for (vtkIdType t = begin; t < end; ++t)
+      {
+        task(static_cast<int>(t));
+      }
+    });
+  };
+  const int cornerHalf[3] = { 0, numCorners / 6 * 3, numCorners };
+  std::vector<int> counts[2];
+  onTwoThreads([&](int t) {
+    counts[t].assign(static_cast<size_t>(numVertices), 0);
+    for (int h = cornerHalf[t]; h < cornerHalf[t + 1]; ++h)
+    {
+      const int a = static_cast<int>(corners[h]), b = static_cast<int>(corners[next(h)]);
+      ++counts[t][a < b ? a : b];
+    }
+  });
+  std::vector<int> offsets(static_cast<size_t>(numVertices) + 1);
+  offsets[0] = 0;
+  for (int v = 0; v < numVertices; ++v)
+  {
+    offsets[v + 1] = offsets[v] + counts[0][v] + counts[1][v];
+    counts[1][v] = offsets[v] + counts[0][v]; // the cursors
+    counts[0][v] = offsets[v];
+  }
+  std::vector<std::uint64_t> filed(static_cast<size_t>(numCorners)); // (upper vertex, half-edge)
+  onTwoThreads([&](int t) {
+    std::vector<int>& cursor = counts[t];
+    for (int h = cornerHalf[t]; h < cornerHalf[t + 1]; ++h)
+    {
+      const int a = static_cast<int>(corners[h]), b = static_cast<int>(corners[next(h)]);
+      const int lower = a < b ? a : b, upper = a < b ? b : a;
+      filed[cursor[lower]++] = static_cast<std::uint64_t>(upper) << 32 | static_cast<std::uint32_t>(h);
+    }
+  });
+  Edges edges;
+  edges.OfCorner.resize(static_cast<size_t>(numCorners));
+  const int vertexHalf[3] = { 0, numVertices / 2, numVertices };
+  std::vector<int> ends[2];
+  onTwoThreads([&](int t) {
+    ends[t].reserve(static_cast<size_t>(offsets[vertexHalf[t + 1]] - offsets[vertexHalf[t]]));
+    for (int v = vertexHalf[t]; v < vertexHalf[t + 1]; ++v)
+    {
+      for (int i = offsets[v]; i < offsets[v + 1]; ++i)
+      {
+        const std::uint64_t upper = filed[i] >> 32;
+        int edge = -1;
+        for (int j = offsets[v]; j < i && edge < 0; ++j)
+        {
+          edge = (filed[j] >> 32) == upper ? edges.OfCorner[filed[j] & 0xffffffffu] : -1;
+        }
+        if (edge < 0)
+        {
+          edge = static_cast<int>(ends[t].size() / 2);
+          ends[t].push_back(v);
+          ends[t].push_back(static_cast<int>(upper));
+        }
+        edges.OfCorner[filed[i] & 0xffffffffu] = edge;
+      }
+    }
+  });
+  const int firstHalfEdges = static_cast<int>(ends[0].size() / 2);
+  for (int i = offsets[vertexHalf[1]]; i < numCorners; ++i)
+  {
+    edges.OfCorner[filed[i] & 0xffffffffu] += firstHalfEdges;
+  }
+  edges.Ends = std::move(ends[0]);
+  edges.Ends.insert(edges.Ends.end(), ends[1].begin(), ends[1].end());
   return edges;
 }
 
@@ -181,8 +262,15 @@ int main(int argc, char* argv[])
   const int numCorners = static_cast<int>(polys->GetNumberOfConnectivityIds());
   const vtkTypeInt64* corners = polys->GetConnectivityArray64()->GetPointer(0);
   const Edges given = NumberEdges(static_cast<int>(input->GetNumberOfPoints()), numCorners, corners);
+  subdbench::StartThreads(threads);
+  const Edges onThreads = NumberEdgesOnTwoThreads(static_cast<int>(input->GetNumberOfPoints()), numCorners, corners);
+  if (onThreads.OfCorner != given.OfCorner || onThreads.Ends != given.Ends)
+  {
+    std::fprintf(stderr, "BenchLinearFloor: the two edge numberings differ\n");
+    return 1;
+  }
 
-  const char* names[] = { "writing alone", "minimal split", "SubD filter", "VTK" };
+  const char* names[] = { "writing alone", "minimal split", "... 2 threads", "SubD filter", "VTK" };
   const std::vector<std::function<Work()>> works = {
     [&] {
       subdbench::StartThreads(threads);
@@ -193,6 +281,12 @@ int main(int argc, char* argv[])
       subdbench::StartThreads(threads);
       const Clock::time_point start = Clock::now();
       const Edges edges = NumberEdges(static_cast<int>(input->GetNumberOfPoints()), numCorners, corners);
+      return Report(start, WriteLevelOne(input, edges));
+    },
+    [&] {
+      subdbench::StartThreads(threads);
+      const Clock::time_point start = Clock::now();
+      const Edges edges = NumberEdgesOnTwoThreads(static_cast<int>(input->GetNumberOfPoints()), numCorners, corners);
       return Report(start, WriteLevelOne(input, edges));
     },
     [&] {
