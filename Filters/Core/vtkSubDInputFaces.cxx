@@ -145,7 +145,9 @@ std::string vtkSubDNonManifoldWarning(const subd::MeshTopology& topology, const 
       return "";
     }
   }
-  return "Input is non-manifold (" + std::to_string(edges) +
-    " edges with more than two faces or inconsistent orientation, " + std::to_string(vertices) +
-    " non-manifold vertices); they are subdivided as infinitely sharp";
+  // A topology without vertex relations (the linear schemes') does not know its vertices.
+  const std::string vertexCount =
+    topology.HasVertexRelations() ? ", " + std::to_string(vertices) + " non-manifold vertices" : "";
+  return "Input is non-manifold (" + std::to_string(edges) + " edges with more than two faces or inconsistent " +
+    "orientation" + vertexCount + "); they are subdivided as infinitely sharp";
 }

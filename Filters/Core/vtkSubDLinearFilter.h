@@ -19,6 +19,12 @@
  * The surface does not change shape, so creases change no point; crease lines are still
  * refined and carried to the output (with decayed sharpness) like every primal scheme's.
  *
+ * The rules read each face's edges and each edge's ends only, never the faces or edges around
+ * a vertex. Without crease lines, limit options or ghost cells, the input's topology is built
+ * so too (subd::MeshTopology::BuildFacesAndEdges, about half the work of the full one): its
+ * non-manifold edges are reported, but not a vertex where otherwise manifold faces pinch
+ * (a bowtie), which changes nothing here.
+ *
  * Attributes, cell data, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
  */
 #ifndef vtkSubDLinearFilter_h

@@ -457,11 +457,25 @@ int vtkSubDSurfaceFilter::Execute(
     cache.Scheme.reset(this->NewScheme(allTriangles));
     cache.Scheme->SetParallelFor(&vtkSubDPointDataInterpolation::SMPFor);
     const subd::Scheme* scheme = cache.Scheme.get();
-    subd::MeshTopology topology =
-      subd::MeshTopology::Build(static_cast<subd::Index>(numPoints),
-        subd::CopyOnThreads(screened.Offsets.begin(), screened.Offsets.end(), &vtkSubDPointDataInterpolation::SMPFor),
-        subd::CopyOnThreads(screened.Vertices.begin(), screened.Vertices.end(), &vtkSubDPointDataInterpolation::SMPFor),
-        &vtkSubDPointDataInterpolation::SMPFor);
+    const bool sharpFeatures = features.Any() || this->AutomaticCreases;
+    const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
+    const bool facesOnlyFinest = !sharpFeatures && !this->ProjectToLimit && !limitGeometry;
+    // The linear schemes' splits and rows read faces and edges only (Scheme::GetTopologyBetween):
+    // with a faces-only finest level, no crease line to match to an edge and no ghost layers,
+    // nothing reads the base's lists and tags around its vertices either, about half of
+    // building its topology (linear, bunny, 2 threads, fresh process: level 1 11.3 to 9.1-9.7
+    // ms, level 2 22.9 to 20.4 ms).
+    const bool facesAndEdgesBase = facesOnlyFinest && features.SegmentSharpness.empty() && faceIsGhost.empty() &&
+      scheme->GetTopologyBetween() == subd::ChildTopology::FacesAndEdges;
+    subd::IndexArray baseOffsets =
+      subd::CopyOnThreads(screened.Offsets.begin(), screened.Offsets.end(), &vtkSubDPointDataInterpolation::SMPFor);
+    subd::IndexArray baseVertices =
+      subd::CopyOnThreads(screened.Vertices.begin(), screened.Vertices.end(), &vtkSubDPointDataInterpolation::SMPFor);
+    subd::MeshTopology topology = facesAndEdgesBase
+      ? subd::MeshTopology::BuildFacesAndEdges(static_cast<subd::Index>(numPoints), std::move(baseOffsets),
+          std::move(baseVertices), &vtkSubDPointDataInterpolation::SMPFor)
+      : subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), std::move(baseOffsets), std::move(baseVertices),
+          &vtkSubDPointDataInterpolation::SMPFor);
     const std::string nonManifold = vtkSubDNonManifoldWarning(topology, faceIsGhost);
     cache.FaceGhostLayer =
       faceIsGhost.empty() ? std::vector<std::uint8_t>() : vtkSubDGhostLayers(topology, faceIsGhost, outputGhostLevels);
@@ -485,11 +499,23 @@ int vtkSubDSurfaceFilter::Execute(
       vtkWarningMacro(<< nonManifold << ".");
     }
 
-    bool someBaseVertexUnused = false, threeFacesAtEveryVertex = true;
-    for (subd::Index v = 0; v < topology.GetNumVertices() && !someBaseVertexUnused; ++v)
+    bool someBaseVertexUnused = false, threeFacesAtEveryVertex = topology.HasVertexRelations();
+    if (topology.HasVertexRelations())
     {
-      someBaseVertexUnused = topology.GetVertexFaces(v).empty();
-      threeFacesAtEveryVertex = threeFacesAtEveryVertex && topology.GetNumVertexFaces(v) >= 3;
+      for (subd::Index v = 0; v < topology.GetNumVertices() && !someBaseVertexUnused; ++v)
+      {
+        someBaseVertexUnused = topology.GetVertexFaces(v).empty();
+        threeFacesAtEveryVertex = threeFacesAtEveryVertex && topology.GetNumVertexFaces(v) >= 3;
+      }
+    }
+    else
+    {
+      std::vector<std::uint8_t> used(static_cast<size_t>(numPoints), 0);
+      for (subd::Index v : topology.GetFaceVertexArray())
+      {
+        used[v] = 1;
+      }
+      someBaseVertexUnused = std::find(used.begin(), used.end(), 0) != used.end();
     }
 
     // Size guard: predict the finest level and the peak memory before allocating anything.
@@ -502,16 +528,13 @@ int vtkSubDSurfaceFilter::Execute(
     {
       counts = scheme->PredictChildCounts(counts);
     }
-    const bool sharpFeatures = features.Any() || this->AutomaticCreases;
-    const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
     subd::RefinementRequest request;
     request.Base = baseCounts;
     request.ClosedManifoldBase = topology.GetNumBoundaryEdges() == 0 && topology.GetNumNonManifoldEdges() == 0 &&
-      topology.GetNumNonManifoldVertices() == 0 && !someBaseVertexUnused;
+      topology.HasVertexRelations() && topology.GetNumNonManifoldVertices() == 0 && !someBaseVertexUnused;
     request.ThreeFacesAtEveryBaseVertex = threeFacesAtEveryVertex;
     request.Levels = this->NumberOfSubdivisions;
-    request.Finest = sharpFeatures || this->ProjectToLimit || limitGeometry ? subd::ChildTopology::Full
-                                                                           : subd::ChildTopology::FacesOnly;
+    request.Finest = facesOnlyFinest ? subd::ChildTopology::FacesOnly : subd::ChildTopology::Full;
     request.Rows = this->LowMemory ? subd::LevelRows::WrittenFromGrandparent : subd::LevelRows::WrittenLean;
     int maxComponents = 3;
     vtkPointData* inPD = input->GetPointData();

@@ -286,8 +286,11 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
     return level;
   }
 
+  // A topology of faces and edges only (MeshTopology::BuildFacesAndEdges) gets its edges'
+  // tags alone: its vertices are unknown.
+  const bool vertexRelations = topo.HasVertexRelations();
   // Holes first: they depend on the explicit sharpness, before boundaries are sharpened.
-  if (rule == BoundaryRule::None)
+  if (rule == BoundaryRule::None && vertexRelations)
   {
     for (Index v = 0; v < numVertices; ++v)
     {
@@ -319,7 +322,7 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
     }
   }
 
-  for (Index v = 0; v < numVertices; ++v)
+  for (Index v = 0; v < numVertices && vertexRelations; ++v)
   {
     const IndexSpan edges = topo.GetVertexEdges(v);
     const IndexSpan faces = topo.GetVertexFaces(v);

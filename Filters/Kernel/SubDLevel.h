@@ -338,7 +338,9 @@ struct BaseTags
 /// are sharpened, except those inside a non-manifold crease (two non-manifold edges, no
 /// boundary, more faces than edges); with BoundaryRule::None the faces around every vertex
 /// that has a boundary edge not explicitly infinitely sharp become holes. Those tags are
-/// inherited by later levels, never re-derived from their topology.
+/// inherited by later levels, never re-derived from their topology. A topology of faces and
+/// edges only (MeshTopology::BuildFacesAndEdges, for the linear rules, which read no
+/// sharpness) gets its edges' tags alone: no vertex sharpened, no hole made.
 SUBDKERNEL_EXPORT Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule rule);
 
 /// Frees all of a level but a part of its topology (MeshTopology::KeepOnly) and its vertex

@@ -72,6 +72,18 @@ MeshTopology MeshTopology::Build(
   return topology;
 }
 
+MeshTopology MeshTopology::BuildFacesAndEdges(
+  Index numVertices, IndexArray faceOffsets, IndexArray faceVertices, const ParallelFor& parallelFor)
+{
+  MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), std::move(faceVertices));
+  const bool allTriangles = topology.FaceVertices.size() == 3 * static_cast<size_t>(topology.GetNumFaces());
+  EdgeCountsByBlock edgeCounts;
+  const HalfEdgePairing pairing = topology.PairHalfEdgesByLowerVertex(allTriangles, edgeCounts, parallelFor);
+  topology.NumberEdges(pairing, edgeCounts, parallelFor);
+  topology.BuildEdgeFaces(pairing, parallelFor);
+  return topology;
+}
+
 void MeshTopology::ReleaseVertexFaceLists()
 {
   IndexArray().swap(this->VertexFaces);
@@ -327,6 +339,62 @@ struct CornerChains
 };
 }
 
+namespace
+{
+// A half-edge h of the vertex pair (lower, upper) as one key, (upper, h, whether h starts at
+// the lower vertex): sorted, the keys filed at a lower vertex come in runs of one pair each,
+// in increasing half-edge.
+inline std::uint64_t HalfEdgeKey(Index upper, Index h, bool upward)
+{
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(upper)) << 32) |
+    (static_cast<std::uint64_t>(h) << 1) | (upward ? 1u : 0u);
+}
+
+inline Index HalfEdgeOfKey(std::uint64_t key)
+{
+  return static_cast<Index>((key & 0xffffffffu) >> 1);
+}
+
+// Calls pair(count, forward, halfEdgeAt) for each run of one vertex pair's keys in the sorted
+// [first, last): its `count` half-edges, halfEdgeAt(i) in increasing order, `forward` of them
+// running the way the first does.
+template <typename Pair>
+void ForEachVertexPair(const std::uint64_t* first, const std::uint64_t* last, const Pair& pair)
+{
+  for (const std::uint64_t* run = first; run != last;)
+  {
+    const std::uint64_t* runEnd = run + 1;
+    while (runEnd != last && (*runEnd >> 32) == (*run >> 32))
+    {
+      ++runEnd;
+    }
+    Index forward = 0;
+    for (const std::uint64_t* it = run; it != runEnd; ++it)
+    {
+      forward += (*it & 1u) == (*run & 1u);
+    }
+    pair(static_cast<Index>(runEnd - run), forward, [run](Index i) { return HalfEdgeOfKey(run[i]); });
+    run = runEnd;
+  }
+}
+}
+
+// One vertex pair's group, its `count` half-edges in increasing order (halfEdgeAt(i)), `forward`
+// of them running the way the first does, which lies in the face starting at `firstFaceStart`:
+// each paired with the first, and the edge counted in its block.
+template <typename HalfEdgeAt>
+void MeshTopology::WriteHalfEdgeGroup(HalfEdgePairing& pairing, const EdgeCountsByBlock& counts,
+  std::vector<EdgeCounts>& blockCounts, Index count, Index forward, Index firstFaceStart, const HalfEdgeAt& halfEdgeAt)
+{
+  const Index first = halfEdgeAt(0);
+  for (Index i = 0; i < count; ++i)
+  {
+    pairing[halfEdgeAt(i)] = { first, i };
+  }
+  pairing[first].RankOrGroup = HalfEdgePair::Group(count, forward);
+  blockCounts[counts.BlockOf(firstFaceStart)].Add(count, forward == 1);
+}
+
 // The half-edges of one vertex pair are paired at the pair's lower vertex v, from v's own
 // face corners: the half-edge leaving v at a corner, when it goes up (or loops back to v),
 // and the one entering it from a higher vertex. At most vertices (up to 32 corners, no
@@ -351,17 +419,8 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
     std::vector<EdgeCounts> blockCounts(counts.Blocks.size());
     CornerNeighbours neighbours;
     Index leavingEdge[smallValence], enteringEdge[smallValence], faceStart[smallValence];
-    // One vertex pair's group: its `count` half-edges in increasing order (halfEdgeAt(i)),
-    // `forward` of them running the way the first does, which lies in the face starting at
-    // corner `firstFaceStart`.
     auto writeGroup = [&](Index count, Index forward, Index firstFaceStart, const auto& halfEdgeAt) {
-      const Index first = halfEdgeAt(0);
-      for (Index i = 0; i < count; ++i)
-      {
-        pairing[halfEdgeAt(i)] = { first, i };
-      }
-      pairing[first].RankOrGroup = HalfEdgePair::Group(count, forward);
-      blockCounts[counts.BlockOf(firstFaceStart)].Add(count, forward == 1);
+      WriteHalfEdgeGroup(pairing, counts, blockCounts, count, forward, firstFaceStart, halfEdgeAt);
     };
     // A group of one half-edge, or of two running opposite ways (b != InvalidIndex), each in
     // the face starting at the corner given after it.
@@ -436,12 +495,6 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
       {
         keys.resize(2 * static_cast<size_t>(n));
       }
-      // Each half-edge as one key, (upper vertex, h, whether it starts at the lower vertex):
-      // sorting compares the keys themselves.
-      auto key = [](Index upper, Index h, bool upward) {
-        return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(upper)) << 32) |
-          (static_cast<std::uint64_t>(h) << 1) | (upward ? 1u : 0u);
-      };
       std::uint64_t* first = keys.data();
       std::uint64_t* last = first;
       for (Index k = 0; k < n; ++k)
@@ -450,31 +503,80 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
         cornerAt(k, faceFirst, h, previous, to, from);
         if (to >= v)
         {
-          *last++ = key(to, h, to > v);
+          *last++ = HalfEdgeKey(to, h, to > v);
         }
         if (from > v)
         {
-          *last++ = key(from, previous, false);
+          *last++ = HalfEdgeKey(from, previous, false);
         }
       }
       SortShortList(first, last);
-      for (std::uint64_t* run = first; run != last;)
+      ForEachVertexPair(first, last, [&](Index count, Index forward, const auto& halfEdgeAt) {
+        writeGroup(count, forward, this->GetFaceStart(halfEdgeAt(0), allTriangles), halfEdgeAt);
+      });
+    }
+    const std::lock_guard<std::mutex> lock(merging);
+    for (size_t b = 0; b < blockCounts.size(); ++b)
+    {
+      counts.Blocks[b] += blockCounts[b];
+    }
+  });
+  return pairing;
+}
+
+// Each half-edge filed under its lower vertex (a counting sort, in half-edge order), as its
+// key; each vertex's file sorted, it holds one run per vertex pair, paired as Build's
+// fallback pairs them: the same groups, ranks and counts as PairHalfEdges, without the lists
+// of faces around the vertices or any fan.
+MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdgesByLowerVertex(
+  bool allTriangles, EdgeCountsByBlock& counts, const ParallelFor& parallelFor) const
+{
+  HalfEdgePairing pairing(this->FaceVertices.size());
+  counts = EdgeCountsByBlock(this->FaceVertices.size());
+  LevelArray<std::uint64_t> filed(this->FaceVertices.size());
+  IndexArray fileOffsets;
+  auto halfEdges = [this, allTriangles](Index begin, Index end, const auto& visit) {
+    for (Index f = begin; f < end; ++f)
+    {
+      const Index first = allTriangles ? 3 * f : this->FaceOffsets[f];
+      const Index last = allTriangles ? first + 3 : this->FaceOffsets[f + 1];
+      for (Index h = first; h < last; ++h)
       {
-        std::uint64_t* runEnd = run + 1;
-        while (runEnd != last && (*runEnd >> 32) == (*run >> 32))
-        {
-          ++runEnd;
-        }
-        Index forward = 0;
-        for (std::uint64_t* it = run; it != runEnd; ++it)
-        {
-          forward += (*it & 1u) == (*run & 1u);
-        }
-        const Index first = static_cast<Index>((*run & 0xffffffffu) >> 1);
-        writeGroup(static_cast<Index>(runEnd - run), forward, this->GetFaceStart(first, allTriangles),
-          [run](Index i) { return static_cast<Index>((run[i] & 0xffffffffu) >> 1); });
-        run = runEnd;
+        const Index a = this->FaceVertices[h], b = this->FaceVertices[h + 1 < last ? h + 1 : first];
+        visit(std::min(a, b), HalfEdgeKey(std::max(a, b), h, a < b));
       }
+    }
+  };
+  FileByKey(this->NumVertices, this->GetNumFaces(), halfEdges,
+    [&filed](Index slot, std::uint64_t key) { filed[slot] = key; }, fileOffsets, parallelFor);
+  // Where faces are not all triangles, each half-edge's slot holds the start of its face
+  // until its group is written (one group per half-edge: its first's slot is read before any
+  // of the group's is written), rather than a search of the offsets per edge.
+  if (!allTriangles)
+  {
+    parallelFor(0, this->GetNumFaces(), [&](Index begin, Index end) {
+      for (Index f = begin; f < end; ++f)
+      {
+        for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
+        {
+          pairing[h].Representative = this->FaceOffsets[f];
+        }
+      }
+    });
+  }
+  std::mutex merging;
+  parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
+    std::vector<EdgeCounts> blockCounts(counts.Blocks.size());
+    for (Index v = begin; v < end; ++v)
+    {
+      std::uint64_t* first = filed.data() + fileOffsets[v];
+      std::uint64_t* last = filed.data() + fileOffsets[v + 1];
+      SortShortList(first, last);
+      ForEachVertexPair(first, last, [&](Index count, Index forward, const auto& halfEdgeAt) {
+        const Index h = halfEdgeAt(0);
+        const Index faceStart = allTriangles ? h - h % 3 : pairing[h].Representative;
+        WriteHalfEdgeGroup(pairing, counts, blockCounts, count, forward, faceStart, halfEdgeAt);
+      });
     }
     const std::lock_guard<std::mutex> lock(merging);
     for (size_t b = 0; b < blockCounts.size(); ++b)

@@ -47,6 +47,16 @@ public:
   /// `parallelFor` runs every pass on threads; the topology does not depend on their number.
   static MeshTopology Build(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
     const ParallelFor& parallelFor = SerialFor);
+  /// The topology the linear schemes' splits, rows and grandchild rows read (what a split
+  /// with ChildTopology::FacesAndEdges gives its child): the faces, their edges, each edge's
+  /// ends, faces and tags, numbered as Build numbers them, without anything around the
+  /// vertices (no lists, tags or valence: HasVertexRelations() is false, and
+  /// GetNumNonManifoldVertices() 0). Build's pairing of half-edges reads the faces around
+  /// each vertex; this one files the half-edges under their lower vertex instead, so the
+  /// lists of faces and edges around vertices, about half of Build's time and memory, are
+  /// never made.
+  static MeshTopology BuildFacesAndEdges(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
+    const ParallelFor& parallelFor = SerialFor);
   /// The same from std::vector (copied on `parallelFor`'s threads).
   static MeshTopology Build(Index numVertices, const std::vector<Index>& faceOffsets,
     const std::vector<Index>& faceVertices, const ParallelFor& parallelFor = SerialFor);
@@ -335,6 +345,12 @@ private:
   void BuildVertexFaces(const ParallelFor& parallelFor);
   HalfEdgePairing PairHalfEdges(
     bool allTriangles, IndexArray& smallFans, EdgeCountsByBlock& counts, const ParallelFor& parallelFor) const;
+  template <typename HalfEdgeAt>
+  static void WriteHalfEdgeGroup(HalfEdgePairing& pairing, const EdgeCountsByBlock& counts,
+    std::vector<EdgeCounts>& blockCounts, Index count, Index forward, Index firstFaceStart,
+    const HalfEdgeAt& halfEdgeAt);
+  HalfEdgePairing PairHalfEdgesByLowerVertex(
+    bool allTriangles, EdgeCountsByBlock& counts, const ParallelFor& parallelFor) const;
   void NumberEdges(const HalfEdgePairing& pairing, const EdgeCountsByBlock& counts, const ParallelFor& parallelFor);
   void BuildEdgeFaces(const HalfEdgePairing& pairing, const ParallelFor& parallelFor);
   void BuildVertexEdges(const ParallelFor& parallelFor);

@@ -33,7 +33,7 @@ struct CorpusEntry
 {
   std::string File;
   int Levels = 0;
-  std::string Read, Surface, Curve, Exact;
+  std::string Read, Surface, Curve, Exact, Linear;
 };
 
 // gtest prints a parameter with this (the test's name in ctest's listing).
@@ -62,6 +62,7 @@ std::vector<CorpusEntry> LoadCorpus()
     std::getline(fields, e.Surface, '\t');
     std::getline(fields, e.Curve, '\t');
     std::getline(fields, e.Exact, '\t');
+    std::getline(fields, e.Linear, '\t');
     e.Levels = std::stoi(levels);
     entries.push_back(e);
   }
@@ -144,6 +145,7 @@ TEST_P(Corpus, EveryFilterGivesAValidOutputOrAClearError)
   vtkSmartPointer<vtkPolyData> input = subdapp::ReadMesh(SUBD_CORPUS_DIR "/" + entry.File, readError);
   std::string surface = entry.Surface, curve = entry.Curve;
   std::string exact = entry.Exact == "-" ? entry.Surface : entry.Exact;
+  std::string linear = entry.Linear.empty() || entry.Linear == "-" ? entry.Surface : entry.Linear;
   if (entry.Read == "ok")
   {
     ASSERT_TRUE(input) << readError; // (readers do not check ids: some entries test the filters')
@@ -155,7 +157,7 @@ TEST_P(Corpus, EveryFilterGivesAValidOutputOrAClearError)
     EXPECT_NE(readError.find(entry.File), std::string::npos) << "the message names the file: " << readError;
     // What a failed read leaves downstream: nothing. Every filter must say so.
     input = vtkSmartPointer<vtkPolyData>::New();
-    surface = exact = "error~no points|no polygons";
+    surface = exact = linear = "error~no points|no polygons";
     curve = "ok~no lines"; // the curve filter passes through what it cannot refine
   }
 
@@ -163,7 +165,8 @@ TEST_P(Corpus, EveryFilterGivesAValidOutputOrAClearError)
   {
     subdapp::SchemeOptions options;
     options.Levels = entry.Levels;
-    CheckFilter(scheme.Make(options), input, scheme.Curve ? curve : surface, scheme.Name);
+    CheckFilter(
+      scheme.Make(options), input, scheme.Curve ? curve : scheme.Name == "linear" ? linear : surface, scheme.Name);
     if (scheme.Curve)
     {
       options.ProjectToLimit = options.Tangents = true;

@@ -1060,3 +1060,57 @@ TEST(GrandchildRows, EveryRowSmoothOnlyOnClosedMeshesWithoutSharpFeatures)
   EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::Butterfly, level(bipyramid, 0, -1)));
   EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::Butterfly, level(bipyramid, -1, 0)));
 }
+
+// The linear schemes read faces and edges only: refined from a base of faces and edges
+// (MeshTopology::BuildFacesAndEdges, what vtkSubDLinearFilter builds without sharp features),
+// their faces-only finest level has the same faces and the same points, bit for bit, as from
+// the full base, on every fixture (open, non-manifold edges, pinched vertices), at every
+// level, with every way of writing the rows, serially and on threads.
+TEST(LinearSchemes, FacesAndEdgesBaseRefinesAsTheFullBase)
+{
+  const std::vector<subd::LevelRows> allRows = { subd::LevelRows::Stored, subd::LevelRows::Written,
+    subd::LevelRows::WrittenLean, subd::LevelRows::WrittenFromGrandparent };
+  for (bool triangles : { false, true })
+  {
+    for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor) })
+    {
+      std::unique_ptr<subd::Scheme> scheme;
+      if (triangles)
+        scheme = std::make_unique<subd::LinearTriangleScheme>();
+      else
+        scheme = std::make_unique<subd::BilinearScheme>();
+      scheme->SetParallelFor(parallelFor);
+      for (const subdtest::TestMesh& mesh : triangles ? subdtest::TriangleMeshes() : subdtest::StandardMeshes())
+      {
+        const subd::IndexArray offsets(mesh.Offsets.begin(), mesh.Offsets.end());
+        const subd::IndexArray vertices(mesh.Vertices.begin(), mesh.Vertices.end());
+        const subd::BoundaryRule rule = scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly);
+        for (int levels = 0; levels <= 3; ++levels)
+        {
+          for (subd::LevelRows rows : allRows)
+          {
+            SCOPED_TRACE(mesh.Name + " level " + std::to_string(levels) + " rows " + std::to_string(static_cast<int>(rows)));
+            subd::Hierarchy full, lean;
+            ASSERT_TRUE(subd::Refine(*scheme,
+              subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), offsets, vertices, parallelFor), {}, rule),
+              levels, full, nullptr, subd::ChildTopology::FacesOnly, rows));
+            const subd::MeshTopology base =
+              subd::MeshTopology::BuildFacesAndEdges(mesh.NumVertices(), offsets, vertices, parallelFor);
+            ASSERT_FALSE(base.HasVertexRelations());
+            ASSERT_TRUE(subd::Refine(
+              *scheme, subd::MakeBaseLevel(base, {}, rule), levels, lean, nullptr, subd::ChildTopology::FacesOnly, rows));
+            full.MakeFinestFaces();
+            lean.MakeFinestFaces();
+            EXPECT_EQ(lean.Finest.Topology.GetFaceOffsetArray(), full.Finest.Topology.GetFaceOffsetArray());
+            EXPECT_EQ(lean.Finest.Topology.GetFaceVertexArray(), full.Finest.Topology.GetFaceVertexArray());
+            ASSERT_EQ(lean.GetNumFinestPoints(), full.GetNumFinestPoints());
+            std::vector<double> a(static_cast<size_t>(full.GetNumFinestPoints()) * 3), b(a.size());
+            ASSERT_TRUE(full.Evaluate(mesh.Points.data(), 3, a.data(), parallelFor));
+            ASSERT_TRUE(lean.Evaluate(mesh.Points.data(), 3, b.data(), parallelFor));
+            EXPECT_EQ(a, b);
+          }
+        }
+      }
+    }
+  }
+}

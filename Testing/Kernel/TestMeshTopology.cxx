@@ -594,12 +594,21 @@ namespace
 {
 // Build's relations worked out the obvious way, for comparing: an edge per vertex pair met
 // walking the faces, numbered in that order; a vertex's fans joined across its edges of two
-// faces by a union-find.
+// faces by a union-find. BuildFacesAndEdges (its own pairing, by lower vertex) must give
+// Build's faces, edges, edge faces and tags, serially and on threads, and nothing else.
 void ExpectBuildEqualsBruteForce(Index numVertices, const std::vector<Index>& offsets,
   const std::vector<Index>& vertices, const std::string& what)
 {
   SCOPED_TRACE(what);
   const MeshTopology t = MeshTopology::Build(numVertices, offsets, vertices, subdtest::ThreeThreadFor);
+  for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor) })
+  {
+    const MeshTopology lean = MeshTopology::BuildFacesAndEdges(numVertices,
+      subd::IndexArray(offsets.begin(), offsets.end()), subd::IndexArray(vertices.begin(), vertices.end()), parallelFor);
+    EXPECT_FALSE(lean.HasVertexRelations());
+    EXPECT_EQ(lean.GetNumNonManifoldVertices(), 0);
+    ExpectSameFacesAndEdges(t, lean);
+  }
   const Index numFaces = static_cast<Index>(offsets.size()) - 1;
   std::vector<std::pair<Index, Index>> pairs;           // per edge, (lower, upper)
   std::vector<std::vector<Index>> edgeFaces;            // per edge

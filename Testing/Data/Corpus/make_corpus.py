@@ -5,7 +5,7 @@
 
 Every entry is a mesh file (or a broken one) plus a line of OUTPUT_DIR/corpus.txt:
 
-    file <TAB> levels <TAB> read <TAB> surface <TAB> curve <TAB> exact
+    file <TAB> levels <TAB> read <TAB> surface <TAB> curve <TAB> exact <TAB> linear
 
 - `read`: what reading the file through `subd`'s readers gives: `ok`, or `error~REGEX` (the
   message must match REGEX, case-insensitive).
@@ -16,6 +16,10 @@ Every entry is a mesh file (or a broken one) plus a line of OUTPUT_DIR/corpus.tx
 - `curve`: the same for the curve filter (Chaikin, cubic B-spline, 4-point).
 - `exact`: the same for the exact limit evaluation (Catmull-Clark and Loop limit normals and
   curvature, vtkSubDLimitFilter); `-` when it is `surface`'s answer.
+- `linear`: the linear scheme's answer (vtkSubDLinearFilter, its points not projected) where it
+  differs from `surface`; `-` when it does not. Its rules read nothing around vertices, so it
+  reports non-manifold edges but not a vertex whose faces pinch (a bowtie), which changes
+  nothing in its output.
 
 The expectations are written here by hand from the file formats and the filters' documented
 rules, not produced by SubD. The files are written in a fixed order from a seeded generator, so
@@ -35,8 +39,8 @@ rng = random.Random(20261121)
 manifest = []
 
 
-def expect(name, read="ok", surface="ok", curve="ok", levels=2, exact="-"):
-    manifest.append((name, str(levels), read, surface, curve, exact))
+def expect(name, read="ok", surface="ok", curve="ok", levels=2, exact="-", linear="-"):
+    manifest.append((name, str(levels), read, surface, curve, exact, linear))
 
 
 def write_text(name, text):
@@ -82,7 +86,7 @@ expect("nonmanifold-edge.off", surface="ok~non-manifold")
 # Two triangles touching at one vertex only (a bowtie).
 write_text("bowtie.off", off([(0, 0, 0), (1, 0.5, 0), (1, -0.5, 0), (-1, 0.5, 0), (-1, -0.5, 0)],
                              [(0, 2, 1), (0, 3, 4)]))
-expect("bowtie.off", surface="ok~non-manifold")
+expect("bowtie.off", surface="ok~non-manifold", linear="ok")
 
 # Two quads of a strip, the second one flipped: their shared edge runs the same way in both.
 write_text("inconsistent-orientation.off",
@@ -291,7 +295,7 @@ for choice in range(9):
                 bytes([choice, 0x61, 1, 6, 0, 0, 0, 0, 0, 0, 0, 2, 3, 0, 1, 4, 3, 3, 1, 2, 5, 4, 0x19, 0, 1, 4, 48]))
 
 with open(os.path.join(OUT, "corpus.txt"), "w", newline="\n") as f:
-    f.write("# file\tlevels\tread\tsurface\tcurve\texact (see make_corpus.py)\n")
+    f.write("# file\tlevels\tread\tsurface\tcurve\texact\tlinear (see make_corpus.py)\n")
     for row in manifest:
         f.write("\t".join(row) + "\n")
 print("make_corpus: %d entries in %s" % (len(manifest), OUT))
