@@ -44,34 +44,21 @@ struct Edges
   std::vector<int> Ends;
 };
 
-// The edges numbered by lower vertex: each half-edge (a, b) is filed under min(a, b) (a counting
-// sort), and within a file a half-edge takes the edge of an earlier one to the same upper
-// vertex, or a new edge.
-Edges NumberEdges(int numVertices, int numCorners, const vtkTypeInt64* corners)
+// Half-edge h of a triangle mesh: its lower vertex, and its key (upper vertex, h).
+int LowerVertex(const vtkTypeInt64* corners, int h, std::uint64_t& key)
 {
-  auto next = [](int h) { return h % 3 == 2 ? h - 2 : h + 1; };
-  std::vector<int> offsets(static_cast<size_t>(numVertices) + 1, 0);
-  for (int h = 0; h < numCorners; ++h)
-  {
-    const int a = static_cast<int>(corners[h]), b = static_cast<int>(corners[next(h)]);
-    ++offsets[(a < b ? a : b) + 1];
-  }
-  for (int v = 0; v < numVertices; ++v)
-  {
-    offsets[v + 1] += offsets[v];
-  }
-  std::vector<std::uint64_t> filed(static_cast<size_t>(numCorners)); // (upper vertex, half-edge)
-  std::vector<int> cursor(offsets.begin(), offsets.end() - 1);
-  for (int h = 0; h < numCorners; ++h)
-  {
-    const int a = static_cast<int>(corners[h]), b = static_cast<int>(corners[next(h)]);
-    const int lower = a < b ? a : b, upper = a < b ? b : a;
-    filed[cursor[lower]++] = static_cast<std::uint64_t>(upper) << 32 | static_cast<std::uint32_t>(h);
-  }
-  Edges edges;
-  edges.OfCorner.resize(static_cast<size_t>(numCorners));
-  edges.Ends.reserve(static_cast<size_t>(numCorners)); // about half the corners are edges
-  for (int v = 0; v < numVertices; ++v)
+  const int a = static_cast<int>(corners[h]), b = static_cast<int>(corners[h % 3 == 2 ? h - 2 : h + 1]);
+  key = static_cast<std::uint64_t>(a < b ? b : a) << 32 | static_cast<std::uint32_t>(h);
+  return a < b ? a : b;
+}
+
+// The edges of the files of vertices [begin, end) (each vertex's half-edges, filed under it as
+// their lower vertex, in increasing order), numbered from 0 in that order: within a file, a
+// half-edge takes the edge of an earlier one to the same upper vertex, or a new edge.
+void NumberFiledEdges(int begin, int end, const std::vector<int>& offsets, const std::vector<std::uint64_t>& filed,
+  std::vector<int>& ofCorner, std::vector<int>& ends)
+{
+  for (int v = begin; v < end; ++v)
   {
     for (int i = offsets[v]; i < offsets[v + 1]; ++i)
     {
@@ -79,17 +66,44 @@ Edges NumberEdges(int numVertices, int numCorners, const vtkTypeInt64* corners)
       int edge = -1;
       for (int j = offsets[v]; j < i && edge < 0; ++j)
       {
-        edge = (filed[j] >> 32) == upper ? edges.OfCorner[filed[j] & 0xffffffffu] : -1;
+        edge = (filed[j] >> 32) == upper ? ofCorner[filed[j] & 0xffffffffu] : -1;
       }
       if (edge < 0)
       {
-        edge = static_cast<int>(edges.Ends.size() / 2);
-        edges.Ends.push_back(v);
-        edges.Ends.push_back(static_cast<int>(upper));
+        edge = static_cast<int>(ends.size() / 2);
+        ends.push_back(v);
+        ends.push_back(static_cast<int>(upper));
       }
-      edges.OfCorner[filed[i] & 0xffffffffu] = edge;
+      ofCorner[filed[i] & 0xffffffffu] = edge;
     }
   }
+}
+
+// The edges numbered by lower vertex: each half-edge filed under its lower vertex (a counting
+// sort), then the files matched in vertex order.
+Edges NumberEdges(int numVertices, int numCorners, const vtkTypeInt64* corners)
+{
+  std::vector<int> offsets(static_cast<size_t>(numVertices) + 1, 0);
+  std::uint64_t key;
+  for (int h = 0; h < numCorners; ++h)
+  {
+    ++offsets[LowerVertex(corners, h, key) + 1];
+  }
+  for (int v = 0; v < numVertices; ++v)
+  {
+    offsets[v + 1] += offsets[v];
+  }
+  std::vector<std::uint64_t> filed(static_cast<size_t>(numCorners));
+  std::vector<int> cursor(offsets.begin(), offsets.end() - 1);
+  for (int h = 0; h < numCorners; ++h)
+  {
+    const int lower = LowerVertex(corners, h, key);
+    filed[cursor[lower]++] = key;
+  }
+  Edges edges;
+  edges.OfCorner.resize(static_cast<size_t>(numCorners));
+  edges.Ends.reserve(static_cast<size_t>(numCorners)); // about half the corners are edges
+  NumberFiledEdges(0, numVertices, offsets, filed, edges.OfCorner, edges.Ends);
   return edges;
 }
 
@@ -99,7 +113,6 @@ Edges NumberEdges(int numVertices, int numCorners, const vtkTypeInt64* corners)
 // the first's.
 Edges NumberEdgesOnTwoThreads(int numVertices, int numCorners, const vtkTypeInt64* corners)
 {
-  auto next = [](int h) { return h % 3 == 2 ? h - 2 : h + 1; };
   auto onTwoThreads = [](const std::function<void(int)>& task) {
     vtkSMPTools::For(0, 2, 1, [&task](vtkIdType begin, vtkIdType end) {
       for (vtkIdType t = begin; t < end; ++t)
@@ -112,10 +125,10 @@ Edges NumberEdgesOnTwoThreads(int numVertices, int numCorners, const vtkTypeInt6
   std::vector<int> counts[2];
   onTwoThreads([&](int t) {
     counts[t].assign(static_cast<size_t>(numVertices), 0);
+    std::uint64_t key;
     for (int h = cornerHalf[t]; h < cornerHalf[t + 1]; ++h)
     {
-      const int a = static_cast<int>(corners[h]), b = static_cast<int>(corners[next(h)]);
-      ++counts[t][a < b ? a : b];
+      ++counts[t][LowerVertex(corners, h, key)];
     }
   });
   std::vector<int> offsets(static_cast<size_t>(numVertices) + 1);
@@ -126,14 +139,14 @@ Edges NumberEdgesOnTwoThreads(int numVertices, int numCorners, const vtkTypeInt6
     counts[1][v] = offsets[v] + counts[0][v]; // the cursors
     counts[0][v] = offsets[v];
   }
-  std::vector<std::uint64_t> filed(static_cast<size_t>(numCorners)); // (upper vertex, half-edge)
+  std::vector<std::uint64_t> filed(static_cast<size_t>(numCorners));
   onTwoThreads([&](int t) {
     std::vector<int>& cursor = counts[t];
+    std::uint64_t key;
     for (int h = cornerHalf[t]; h < cornerHalf[t + 1]; ++h)
     {
-      const int a = static_cast<int>(corners[h]), b = static_cast<int>(corners[next(h)]);
-      const int lower = a < b ? a : b, upper = a < b ? b : a;
-      filed[cursor[lower]++] = static_cast<std::uint64_t>(upper) << 32 | static_cast<std::uint32_t>(h);
+      const int lower = LowerVertex(corners, h, key);
+      filed[cursor[lower]++] = key;
     }
   });
   Edges edges;
@@ -142,25 +155,7 @@ Edges NumberEdgesOnTwoThreads(int numVertices, int numCorners, const vtkTypeInt6
   std::vector<int> ends[2];
   onTwoThreads([&](int t) {
     ends[t].reserve(static_cast<size_t>(offsets[vertexHalf[t + 1]] - offsets[vertexHalf[t]]));
-    for (int v = vertexHalf[t]; v < vertexHalf[t + 1]; ++v)
-    {
-      for (int i = offsets[v]; i < offsets[v + 1]; ++i)
-      {
-        const std::uint64_t upper = filed[i] >> 32;
-        int edge = -1;
-        for (int j = offsets[v]; j < i && edge < 0; ++j)
-        {
-          edge = (filed[j] >> 32) == upper ? edges.OfCorner[filed[j] & 0xffffffffu] : -1;
-        }
-        if (edge < 0)
-        {
-          edge = static_cast<int>(ends[t].size() / 2);
-          ends[t].push_back(v);
-          ends[t].push_back(static_cast<int>(upper));
-        }
-        edges.OfCorner[filed[i] & 0xffffffffu] = edge;
-      }
-    }
+    NumberFiledEdges(vertexHalf[t], vertexHalf[t + 1], offsets, filed, edges.OfCorner, ends[t]);
   });
   const int firstHalfEdges = static_cast<int>(ends[0].size() / 2);
   for (int i = offsets[vertexHalf[1]]; i < numCorners; ++i)
