@@ -462,9 +462,9 @@ int vtkSubDSurfaceFilter::Execute(
     const bool facesOnlyFinest = !sharpFeatures && !this->ProjectToLimit && !limitGeometry;
     // The linear schemes' splits and rows read faces and edges only (Scheme::GetTopologyBetween):
     // with a faces-only finest level, no crease line to match to an edge and no ghost layers,
-    // nothing reads the base's lists and tags around its vertices either, about half of
-    // building its topology (linear, bunny, 2 threads, fresh process: level 1 11.3 to 9.1-9.7
-    // ms, level 2 22.9 to 20.4 ms).
+    // nothing reads the base's lists and tags around its vertices either, which are then not
+    // made (linear, bunny, 2 threads, fresh process: level 1 11.3-11.7 to 9.1-10.8 ms, level 2
+    // 22.8-22.9 to 20.2-20.8 ms).
     const bool facesAndEdgesBase = facesOnlyFinest && features.SegmentSharpness.empty() && faceIsGhost.empty() &&
       scheme->GetTopologyBetween() == subd::ChildTopology::FacesAndEdges;
     subd::IndexArray baseOffsets =

@@ -47,19 +47,19 @@ public:
   /// `parallelFor` runs every pass on threads; the topology does not depend on their number.
   static MeshTopology Build(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
     const ParallelFor& parallelFor = SerialFor);
+  /// The same from std::vector (copied on `parallelFor`'s threads).
+  static MeshTopology Build(Index numVertices, const std::vector<Index>& faceOffsets,
+    const std::vector<Index>& faceVertices, const ParallelFor& parallelFor = SerialFor);
   /// The topology the linear schemes' splits, rows and grandchild rows read (what a split
   /// with ChildTopology::FacesAndEdges gives its child): the faces, their edges, each edge's
   /// ends, faces and tags, numbered as Build numbers them, without anything around the
   /// vertices (no lists, tags or valence: HasVertexRelations() is false, and
   /// GetNumNonManifoldVertices() 0). Build's pairing of half-edges reads the faces around
   /// each vertex; this one files the half-edges under their lower vertex instead, so the
-  /// lists of faces and edges around vertices, about half of Build's time and memory, are
-  /// never made.
+  /// lists of faces and edges around vertices are never made (the bunny's, 75k triangles:
+  /// 6.1 instead of 7.8 ms and 6.3 instead of 9.8 MiB in a fresh process, 2 threads).
   static MeshTopology BuildFacesAndEdges(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
     const ParallelFor& parallelFor = SerialFor);
-  /// The same from std::vector (copied on `parallelFor`'s threads).
-  static MeshTopology Build(Index numVertices, const std::vector<Index>& faceOffsets,
-    const std::vector<Index>& faceVertices, const ParallelFor& parallelFor = SerialFor);
 
   Index GetNumVertices() const { return NumVertices; }
   Index GetNumFaces() const { return static_cast<Index>(FaceOffsets.size()) - 1; }
