@@ -20,10 +20,10 @@
  * refined and carried to the output (with decayed sharpness) like every primal scheme's.
  *
  * The rules read each face's edges and each edge's ends only, never the faces or edges around
- * a vertex. Without crease lines, limit options or ghost cells, the input's topology is built
- * so too (subd::MeshTopology::BuildFacesAndEdges, a fifth faster than the full one): its
- * non-manifold edges are reported, but not a vertex where otherwise manifold faces pinch
- * (a bowtie), which changes nothing here.
+ * a vertex. Without crease lines or corner sharpness, limit options or ghost cells, the input's
+ * topology is built so too (subd::MeshTopology::BuildFacesAndEdges, a fifth faster than the
+ * full one): its non-manifold edges are reported, but not a vertex where otherwise manifold
+ * faces pinch (a bowtie), which changes nothing here.
  *
  * Attributes, cell data, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
  */

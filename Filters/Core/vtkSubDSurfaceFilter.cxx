@@ -461,11 +461,13 @@ int vtkSubDSurfaceFilter::Execute(
     const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
     const bool facesOnlyFinest = !sharpFeatures && !this->ProjectToLimit && !limitGeometry;
     // The linear schemes' splits and rows read faces and edges only (Scheme::GetTopologyBetween):
-    // with a faces-only finest level, no crease line to match to an edge and no ghost layers,
-    // nothing reads the base's lists and tags around its vertices either, which are then not
-    // made (linear, bunny, 2 threads, fresh process: level 1 11.3-11.7 to 9.1-10.8 ms, level 2
-    // 22.8-22.9 to 20.2-20.8 ms).
-    const bool facesAndEdgesBase = facesOnlyFinest && features.SegmentSharpness.empty() && faceIsGhost.empty() &&
+    // with a faces-only finest level, no crease line to match to an edge, no corner sharpness to
+    // pass on (the base's, at level 0, is infinite at non-manifold vertices) and no ghost
+    // layers, nothing reads the base's lists and tags around its vertices either, which are
+    // then not made (linear, bunny, 2 threads, fresh process: level 1 11.3-11.7 to 9.1-10.8 ms,
+    // level 2 22.8-22.9 to 20.2-20.8 ms).
+    const bool facesAndEdgesBase = facesOnlyFinest && features.SegmentSharpness.empty() &&
+      features.CornerSharpness.empty() && faceIsGhost.empty() &&
       scheme->GetTopologyBetween() == subd::ChildTopology::FacesAndEdges;
     subd::IndexArray baseOffsets =
       subd::CopyOnThreads(screened.Offsets.begin(), screened.Offsets.end(), &vtkSubDPointDataInterpolation::SMPFor);
