@@ -322,7 +322,11 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
     }
   }
 
-  for (Index v = 0; v < numVertices && vertexRelations; ++v)
+  if (!vertexRelations)
+  {
+    return level;
+  }
+  for (Index v = 0; v < numVertices; ++v)
   {
     const IndexSpan edges = topo.GetVertexEdges(v);
     const IndexSpan faces = topo.GetVertexFaces(v);

@@ -230,6 +230,18 @@ Work Report(Clock::time_point start, vtkPolyData* output)
   work.Extra[0] = static_cast<double>(output->GetNumberOfPoints());
   return work;
 }
+
+// A filter's level 1, timed from its construction.
+template <typename Filter>
+Work FilterLevelOne(vtkPolyData* input)
+{
+  const Clock::time_point start = Clock::now();
+  vtkNew<Filter> filter;
+  filter->SetInputData(input);
+  filter->SetNumberOfSubdivisions(1);
+  filter->Update();
+  return Report(start, filter->GetOutput());
+}
 }
 
 int main(int argc, char* argv[])
@@ -256,14 +268,15 @@ int main(int argc, char* argv[])
   }
   const int numCorners = static_cast<int>(polys->GetNumberOfConnectivityIds());
   const vtkTypeInt64* corners = polys->GetConnectivityArray64()->GetPointer(0);
-  const Edges given = NumberEdges(static_cast<int>(input->GetNumberOfPoints()), numCorners, corners);
+  const int numVertices = static_cast<int>(input->GetNumberOfPoints());
+  const Edges given = NumberEdges(numVertices, numCorners, corners);
   // The two numberings agree (checked in a child: threads started here would not be there
   // in the children forked later, whose own pools the measurements start).
   const pid_t checker = fork();
   if (checker == 0)
   {
     subdbench::StartThreads(threads);
-    const Edges onThreads = NumberEdgesOnTwoThreads(static_cast<int>(input->GetNumberOfPoints()), numCorners, corners);
+    const Edges onThreads = NumberEdgesOnTwoThreads(numVertices, numCorners, corners);
     _exit(onThreads.OfCorner == given.OfCorner && onThreads.Ends == given.Ends ? 0 : 1);
   }
   int status = 0;
@@ -274,6 +287,14 @@ int main(int argc, char* argv[])
     return 1;
   }
 
+  // A minimal split whose edges `number` numbers.
+  auto minimalSplit = [&](Edges (*number)(int, int, const vtkTypeInt64*)) {
+    return [&, number] {
+      subdbench::StartThreads(threads);
+      const Clock::time_point start = Clock::now();
+      return Report(start, WriteLevelOne(input, number(numVertices, numCorners, corners)));
+    };
+  };
   const char* names[] = { "writing alone", "minimal split", "... 2 threads", "SubD filter", "VTK" };
   const std::vector<std::function<Work()>> works = {
     [&] {
@@ -281,35 +302,13 @@ int main(int argc, char* argv[])
       const Clock::time_point start = Clock::now();
       return Report(start, WriteLevelOne(input, given));
     },
+    minimalSplit(&NumberEdges),
+    minimalSplit(&NumberEdgesOnTwoThreads),
     [&] {
       subdbench::StartThreads(threads);
-      const Clock::time_point start = Clock::now();
-      const Edges edges = NumberEdges(static_cast<int>(input->GetNumberOfPoints()), numCorners, corners);
-      return Report(start, WriteLevelOne(input, edges));
+      return FilterLevelOne<vtkSubDLinearFilter>(input);
     },
-    [&] {
-      subdbench::StartThreads(threads);
-      const Clock::time_point start = Clock::now();
-      const Edges edges = NumberEdgesOnTwoThreads(static_cast<int>(input->GetNumberOfPoints()), numCorners, corners);
-      return Report(start, WriteLevelOne(input, edges));
-    },
-    [&] {
-      subdbench::StartThreads(threads);
-      const Clock::time_point start = Clock::now();
-      vtkNew<vtkSubDLinearFilter> filter;
-      filter->SetInputData(input);
-      filter->SetNumberOfSubdivisions(1);
-      filter->Update();
-      return Report(start, filter->GetOutput());
-    },
-    [&] {
-      const Clock::time_point start = Clock::now();
-      vtkNew<vtkLinearSubdivisionFilter> filter;
-      filter->SetInputData(input);
-      filter->SetNumberOfSubdivisions(1);
-      filter->Update();
-      return Report(start, filter->GetOutput());
-    },
+    [&] { return FilterLevelOne<vtkLinearSubdivisionFilter>(input); }, // serial
   };
   const std::vector<subdbench::Result> results = subdbench::MeasureInterleaved(works, repeats);
   std::printf("Linear level 1 on %s (%d faces), %d threads, best of %d forked runs each\n", argv[1],
