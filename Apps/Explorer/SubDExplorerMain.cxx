@@ -47,8 +47,6 @@ void ApplyOptions(const ExplorerOptions& options, ExplorerWindow& window)
     window.SetShowWireframe(true);
   if (given("--limit"))
     window.SetLimit(true);
-  if (given("--low-memory"))
-    window.SetLowMemory(true);
 }
 
 // --time-edits: sets the sharpness of `count` cage edges in turn (2, then back to 0 on the

@@ -60,7 +60,7 @@ std::string ExplorerUsage()
          "                     [--levels N] [--color none|mean|gaussian|k1|k2] [--limit]\n"
          "                     [--colormap cool-to-warm|rainbow|black-body|grayscale]\n"
          "                     [--range symmetric|percentile] [--percentile P] [--no-cage]\n"
-         "                     [--cage-opacity O] [--wireframe] [--low-memory] [--size WxH]\n"
+         "                     [--cage-opacity O] [--wireframe] [--size WxH]\n"
          "                     [--screenshot VIEWS.png] [--window-shot WINDOW.png]\n"
          "                     [--crease A-B=S]... [--corner V=S]... [--select A-B|V]\n"
          "                     [--export-cage CAGE.vtp] [--cancel-after MS] [--time-edits N]\n"
@@ -307,10 +307,6 @@ bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std:
     else if (arg == "--limit")
     {
       options.Limit = true;
-    }
-    else if (arg == "--low-memory")
-    {
-      options.LowMemory = true;
     }
     else if (arg == "--quit")
     {

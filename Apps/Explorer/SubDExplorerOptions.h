@@ -23,7 +23,6 @@ struct ExplorerOptions
   double CageOpacity = 1.0;
   bool Wireframe = false;
   bool Limit = false; ///< project to the limit (and use exact curvature) where the scheme can
-  bool LowMemory = false; ///< Catmull-Clark and Loop refined with LowMemory
   long long SelectA = -1, SelectB = -1; ///< --select A-B or --select V
   std::string Screenshot; ///< PNG of the views, written once the views are up to date
   std::string WindowShot; ///< PNG of the whole window (controls included)

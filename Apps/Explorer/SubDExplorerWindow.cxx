@@ -191,10 +191,6 @@ QWidget* ExplorerWindow::BuildControls()
   form->addRow(cageRow);
   this->ShowWireframe = new QCheckBox("Refined wireframe (W)");
   form->addRow(this->ShowWireframe);
-  this->LowMemory = new QCheckBox("Low memory (Catmull-Clark, Loop, butterfly)");
-  this->LowMemory->setToolTip("Write the finest level from the level two above, keeping no topology of the level "
-                              "between: the same surface with about half the peak memory, refined more slowly");
-  form->addRow(this->LowMemory);
   layout->addWidget(global);
 
   auto* creases = new QGroupBox("Creases");
@@ -319,7 +315,6 @@ QWidget* ExplorerWindow::BuildControls()
       this->SetCageOpacity(value / 100.0);
   });
   connect(this->ShowWireframe, &QCheckBox::toggled, this, [this](bool show) { this->SetShowWireframe(show); });
-  connect(this->LowMemory, &QCheckBox::toggled, this, [this](bool lowMemory) { this->SetLowMemory(lowMemory); });
   this->SetViewCount(1);
   return panel;
 }
@@ -574,15 +569,6 @@ void ExplorerWindow::SetLimit(bool limit)
   }
 }
 
-void ExplorerWindow::SetLowMemory(bool lowMemory)
-{
-  this->SetQuietly([&]() { this->LowMemory->setChecked(lowMemory); });
-  if (!this->Updating)
-  {
-    this->UpdateViews();
-  }
-}
-
 bool ExplorerWindow::SetSharpness(vtkIdType a, vtkIdType b, double sharpness, QString& error)
 {
   std::string message;
@@ -674,7 +660,6 @@ subdapp::SchemeOptions ExplorerWindow::ViewOptions(int v) const
   options.ProjectToLimit = view.Limit->isChecked() && entry->LimitPositions;
   options.LimitCurvature = options.ProjectToLimit && entry->LimitCurvature &&
     this->Scene->GetColoring() != vtkSubDScene::COLOR_NONE;
-  options.LowMemory = this->LowMemory->isChecked() && !entry->Curve;
   return options;
 }
 
@@ -1022,7 +1007,6 @@ void ExplorerWindow::UseSettings(std::unique_ptr<QSettings> settings)
     this->SetShowCage(in.value("cage", this->ShowCage->isChecked()).toBool());
     this->SetCageOpacity(in.value("cageOpacity", this->Scene->GetCageOpacity()).toDouble());
     this->SetShowWireframe(in.value("wireframe", this->ShowWireframe->isChecked()).toBool());
-    this->SetLowMemory(in.value("lowMemory", this->LowMemory->isChecked()).toBool());
     in.endGroup();
   });
   this->restoreGeometry(in.value("window/geometry").toByteArray());
@@ -1057,7 +1041,6 @@ void ExplorerWindow::SaveSettings()
   out.setValue("cage", this->ShowCage->isChecked());
   out.setValue("cageOpacity", this->Scene->GetCageOpacity());
   out.setValue("wireframe", this->ShowWireframe->isChecked());
-  out.setValue("lowMemory", this->LowMemory->isChecked());
   out.endGroup();
   out.setValue("window/geometry", this->saveGeometry());
   out.setValue("window/state", this->saveState());
@@ -1082,8 +1065,7 @@ std::string ExplorerWindow::DescribeState() const
       << "range " << this->RangeMode->currentText().toStdString() << " " << this->RangePercentile->value() << "\n"
       << "cage " << (this->ShowCage->isChecked() ? "on" : "off") << " opacity " << this->Scene->GetCageOpacity()
       << "\n"
-      << "wireframe " << (this->ShowWireframe->isChecked() ? "on" : "off") << "\n"
-      << "low memory " << (this->LowMemory->isChecked() ? "on" : "off") << "\n";
+      << "wireframe " << (this->ShowWireframe->isChecked() ? "on" : "off") << "\n";
   return out.str();
 }
 }

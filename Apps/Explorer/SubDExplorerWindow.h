@@ -64,9 +64,6 @@ public:
   void SetCageOpacity(double opacity); ///< in [0, 1]
   void SetShowWireframe(bool show);
   void SetLimit(bool limit); ///< every view's Limit box
-  /// Catmull-Clark, Loop and butterfly views refined with vtkSubDSurfaceFilter::LowMemory (about half
-  /// the peak memory for the same surface, slower).
-  void SetLowMemory(bool lowMemory);
 
   /// Reads the layout (views, schemes and their options, level, colouring, overlays, window
   /// geometry) and recent files from `settings`, and writes them there from now on; with
@@ -175,7 +172,6 @@ private:
   QCheckBox* ShowCage = nullptr;
   QSlider* CageOpacity = nullptr;
   QCheckBox* ShowWireframe = nullptr;
-  QCheckBox* LowMemory = nullptr;
   QLabel* CageLabel = nullptr;
   QLabel* SelectionLabel = nullptr;
   QDoubleSpinBox* Sharpness = nullptr;

@@ -94,7 +94,7 @@ std::string UsageText()
   std::ostringstream out;
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
          "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--normals]\n"
-         "            [--curvature] [--tangents] [--closed] [--interpolate] [--low-memory]\n"
+         "            [--curvature] [--tangents] [--closed] [--interpolate]\n"
          "            [--output FILE] [--compress]\n"
          "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
          "\n"
@@ -138,12 +138,6 @@ std::string UsageText()
          "                     through the input's points - all, or those whose point data\n"
          "                     \"Interpolate\" is non-zero - then subdivide that cage (catmull-clark,\n"
          "                     loop, doo-sabin, chaikin, bspline; --levels 0 writes the cage itself)\n"
-         "  --low-memory       catmull-clark, loop and butterfly (without tension): write the\n"
-         "                     finest level (and every other level above it) from the level two\n"
-         "                     above, keeping no topology of the level between: about half the\n"
-         "                     peak memory for the same output, slower (less saved with creases,\n"
-         "                     --limit, --normals or --curvature, which keep the finest level's\n"
-         "                     topology)\n"
          "\n"
          "Creases come with the input: in .vtp/.vtk as line cells with the cell array\n"
          "\"Sharpness\" (0 smooth .. 10 infinitely sharp), \"CornerSharpness\" point data and\n"
@@ -385,11 +379,6 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     else if (arg == "--compress")
     {
       cmd.Compress = true;
-    }
-    else if (arg == "--low-memory")
-    {
-      cmd.Options.LowMemory = true;
-      cmd.SurfaceOptions.push_back(arg);
     }
     else if (arg == "--no-cage")
     {

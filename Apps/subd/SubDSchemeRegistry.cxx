@@ -31,7 +31,6 @@ vtkSmartPointer<Filter> NewSurfaceFilter(const SchemeOptions& options)
   filter->SetProjectToLimit(options.ProjectToLimit);
   filter->SetComputeLimitNormals(options.LimitNormals);
   filter->SetComputeCurvature(options.LimitCurvature);
-  filter->SetLowMemory(options.LowMemory);
   if (options.FeatureAngle > 0.0)
   {
     filter->SetFeatureAngle(options.FeatureAngle);

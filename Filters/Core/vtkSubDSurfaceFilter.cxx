@@ -134,7 +134,7 @@ public:
   // Which finest faces and points are output. In the common case (no holes, no isolated
   // input points) all are, and no maps are stored.
   bool CompactPoints = false;
-  subd::Index NumFinestFaces = 0; // kept: the finest faces may be handed to the output
+  subd::Index NumFinestFaces = 0; // kept: the finest faces are handed to the output
   std::vector<subd::Index> EmittedFaces;      // when holes exist: finest faces that are not holes
   std::vector<vtkIdType> OutputPointOfFinest; // when compacting: -1 where a finest point is unused
   std::vector<vtkIdType> FinestPointOfOutput;
@@ -144,15 +144,6 @@ public:
   // them instead of faulting in a new array.
   vtkSmartPointer<vtkDataArray> LastCoords;
   subd::EvaluationScratch<double> Scratch; // the intermediate levels' values, reused likewise
-  bool LowMemory = false; // refined with LevelRows::WrittenFromGrandparent (asked, or to fit MaximumMemory)
-  // Refined with LevelRows::WrittenLean and its finest rows still written from the
-  // grandparent: promoted (subd::PromoteFinestRows) when re-applied, and no scratch kept
-  // until then, so that a single update peaks like LowMemory.
-  bool LeanFinest = false;
-  // The finest faces' origins were freed after refining (nothing read them: no cell data
-  // to carry, no parent ids, no ghosts, no sharp features): a later update that reads them
-  // refines again.
-  bool FinestOriginsReleased = false;
   vtkDataArray* TakeRecyclableCoords()
   {
     vtkDataArray* last = this->LastCoords;
@@ -232,9 +223,8 @@ void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
   this->CompactPoints = someBaseVertexUnused || finest.HasHoles() || !this->FaceGhostLayer.empty();
   if (!this->CompactPoints)
   {
-    return; // the faces, if left to be made later, are made only for the output
+    return;
   }
-  this->Hierarchy.MakeFinestFaces();
   const subd::Index numFinestFaces = finest.Topology.GetNumFaces();
   for (subd::Index f = 0; f < numFinestFaces; ++f)
   {
@@ -435,10 +425,7 @@ int vtkSubDSurfaceFilter::Execute(
 
   vtkInternals& cache = *this->Internals;
   const int inputDepth = ReadInputDepth(input);
-  // The finest faces' origins name each output face's input cell (cell data, parent ids).
-  const bool readsFaceOrigins = input->GetCellData()->GetNumberOfArrays() > 0 || this->GenerateParentCellIds;
-  const bool reuse = cache.Valid && !(cache.FinestOriginsReleased && readsFaceOrigins) &&
-    cache.FilterMTime == this->GetMTime() && cache.InputDepth == inputDepth &&
+  const bool reuse = cache.Valid && cache.FilterMTime == this->GetMTime() && cache.InputDepth == inputDepth &&
     cache.NumInputPoints == numPoints && cache.Offsets == screened.Offsets &&
     cache.Vertices == screened.Vertices && cache.FaceIsGhost == faceIsGhost &&
     cache.OutputGhostLevels == outputGhostLevels && cache.Features == features && !this->AutomaticCreases;
@@ -460,24 +447,12 @@ int vtkSubDSurfaceFilter::Execute(
     const bool sharpFeatures = features.Any() || this->AutomaticCreases;
     const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
     const bool facesOnlyFinest = !sharpFeatures && !this->ProjectToLimit && !limitGeometry;
-    // The linear schemes' splits and rows read faces and edges only (Scheme::GetTopologyBetween):
-    // with a faces-only finest level, no crease line to match to an edge, no corner sharpness to
-    // pass on (the base's, at level 0, is infinite at non-manifold vertices) and no ghost
-    // layers, nothing reads the base's lists and tags around its vertices either, which are
-    // then not made (linear, bunny, 2 threads, fresh process: level 1 11.3-11.7 to 9.1-10.8 ms,
-    // level 2 22.8-22.9 to 20.2-20.8 ms).
-    const bool facesAndEdgesBase = facesOnlyFinest && features.SegmentSharpness.empty() &&
-      features.CornerSharpness.empty() && faceIsGhost.empty() &&
-      scheme->GetTopologyBetween() == subd::ChildTopology::FacesAndEdges;
     subd::IndexArray baseOffsets =
       subd::CopyOnThreads(screened.Offsets.begin(), screened.Offsets.end(), &vtkSubDPointDataInterpolation::SMPFor);
     subd::IndexArray baseVertices =
       subd::CopyOnThreads(screened.Vertices.begin(), screened.Vertices.end(), &vtkSubDPointDataInterpolation::SMPFor);
-    subd::MeshTopology topology = facesAndEdgesBase
-      ? subd::MeshTopology::BuildFacesAndEdges(static_cast<subd::Index>(numPoints), std::move(baseOffsets),
-          std::move(baseVertices), &vtkSubDPointDataInterpolation::SMPFor)
-      : subd::MeshTopology::Build(static_cast<subd::Index>(numPoints), std::move(baseOffsets), std::move(baseVertices),
-          &vtkSubDPointDataInterpolation::SMPFor);
+    subd::MeshTopology topology = subd::MeshTopology::Build(static_cast<subd::Index>(numPoints),
+      std::move(baseOffsets), std::move(baseVertices), &vtkSubDPointDataInterpolation::SMPFor);
     const std::string nonManifold = vtkSubDNonManifoldWarning(topology, faceIsGhost);
     cache.FaceGhostLayer =
       faceIsGhost.empty() ? std::vector<std::uint8_t>() : vtkSubDGhostLayers(topology, faceIsGhost, outputGhostLevels);
@@ -501,23 +476,10 @@ int vtkSubDSurfaceFilter::Execute(
       vtkWarningMacro(<< nonManifold << ".");
     }
 
-    bool someBaseVertexUnused = false, threeFacesAtEveryVertex = topology.HasVertexRelations();
-    if (topology.HasVertexRelations())
+    bool someBaseVertexUnused = false;
+    for (subd::Index v = 0; v < topology.GetNumVertices() && !someBaseVertexUnused; ++v)
     {
-      for (subd::Index v = 0; v < topology.GetNumVertices() && !someBaseVertexUnused; ++v)
-      {
-        someBaseVertexUnused = topology.GetVertexFaces(v).empty();
-        threeFacesAtEveryVertex = threeFacesAtEveryVertex && topology.GetNumVertexFaces(v) >= 3;
-      }
-    }
-    else
-    {
-      std::vector<std::uint8_t> used(static_cast<size_t>(numPoints), 0);
-      for (subd::Index v : topology.GetFaceVertexArray())
-      {
-        used[v] = 1;
-      }
-      someBaseVertexUnused = std::find(used.begin(), used.end(), 0) != used.end();
+      someBaseVertexUnused = topology.GetVertexFaces(v).empty();
     }
 
     // Size guard: predict the finest level and the peak memory before allocating anything.
@@ -532,12 +494,9 @@ int vtkSubDSurfaceFilter::Execute(
     }
     subd::RefinementRequest request;
     request.Base = baseCounts;
-    request.ClosedManifoldBase = topology.GetNumBoundaryEdges() == 0 && topology.GetNumNonManifoldEdges() == 0 &&
-      topology.HasVertexRelations() && topology.GetNumNonManifoldVertices() == 0 && !someBaseVertexUnused;
-    request.ThreeFacesAtEveryBaseVertex = threeFacesAtEveryVertex;
     request.Levels = this->NumberOfSubdivisions;
     request.Finest = facesOnlyFinest ? subd::ChildTopology::FacesOnly : subd::ChildTopology::Full;
-    request.Rows = this->LowMemory ? subd::LevelRows::WrittenFromGrandparent : subd::LevelRows::WrittenLean;
+    request.Rows = subd::LevelRows::Written;
     int maxComponents = 3;
     vtkPointData* inPD = input->GetPointData();
     for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
@@ -561,30 +520,11 @@ int vtkSubDSurfaceFilter::Execute(
     const double MiB = 1024.0 * 1024.0;
     const double limit = this->MaximumMemory * MiB;
     const double bytes = subd::EstimatePeakBytes(*scheme, request);
-    bool fits = bytes <= limit;
-    cache.LowMemory = this->LowMemory;
-    if (!fits && !this->LowMemory && scheme->RefinesFromGrandparent())
-    {
-      // What does not fit by default may fit with LowMemory: refine so, and say why.
-      subd::RefinementRequest lean = request;
-      lean.Rows = subd::LevelRows::WrittenFromGrandparent;
-      const double leanBytes = subd::EstimatePeakBytes(*scheme, lean);
-      fits = cache.LowMemory = leanBytes <= limit;
-      if (fits)
-      {
-        vtkWarningMacro("The output would have about " << counts.Faces << " faces and " << counts.Vertices
-                                                       << " points and need about " << bytes / MiB
-                                                       << " MiB, more than MaximumMemory (" << this->MaximumMemory
-                                                       << " MiB): refined as with LowMemory, which needs about "
-                                                       << leanBytes / MiB << " MiB and is slower.");
-      }
-    }
-    if (!fits)
+    if (bytes > limit)
     {
       vtkErrorMacro("Refusing " << this->NumberOfSubdivisions << " subdivision level(s): the output "
                                 << "would have about " << counts.Faces << " faces and " << counts.Vertices
-                                << " points and need about " << bytes / MiB << " MiB"
-                                << (this->LowMemory ? " even with LowMemory" : "") << ", more than MaximumMemory ("
+                                << " points and need about " << bytes / MiB << " MiB, more than MaximumMemory ("
                                 << this->MaximumMemory << " MiB).");
       return fail();
     }
@@ -608,28 +548,10 @@ int vtkSubDSurfaceFilter::Execute(
       scheme->EffectiveBoundaryRule(static_cast<subd::BoundaryRule>(this->BoundaryRule)));
     cache.WritesDepth = scheme->DependsOnDepth();
     base.Depth = cache.WritesDepth ? inputDepth : 0;
-    // The finest faces' origins are read for cell data, parent ids, ghosts and crease lines
-    // (sharp features: a full finest level) only: else the splits that can do without them
-    // do (Doo-Sabin, bunny, level 3, 2 threads: peak 268 to 249 MB).
-    cache.FinestOriginsReleased =
-      !readsFaceOrigins && faceIsGhost.empty() && request.Finest == subd::ChildTopology::FacesOnly;
-    cache.Scheme->SetFacesOnlyOrigins(!cache.FinestOriginsReleased);
     if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy, refineProgress,
-          request.Finest, cache.LowMemory ? subd::LevelRows::WrittenFromGrandparent : subd::LevelRows::WrittenLean))
+          request.Finest, subd::LevelRows::Written))
     {
       return aborted();
-    }
-    // What nothing reads is freed before the points are evaluated: a faces-only finest
-    // level's hole flags where none is a hole (read through Level::IsFaceHole), and its
-    // origins where not kept (above).
-    subd::Level& finestLevel = cache.Hierarchy.Finest;
-    if (request.Finest == subd::ChildTopology::FacesOnly && !finestLevel.HasHoles())
-    {
-      subd::LevelArray<std::uint8_t>().swap(finestLevel.FaceIsHole);
-    }
-    if (cache.FinestOriginsReleased)
-    {
-      subd::LevelArray<subd::Index>().swap(finestLevel.FaceOrigin);
     }
     if (this->ProjectToLimit)
     {
@@ -663,12 +585,6 @@ int vtkSubDSurfaceFilter::Execute(
       }
     }
     ++this->NumberOfStencilBuilds;
-    cache.LeanFinest = !cache.LowMemory && subd::HasFinestRowsToPromote(*scheme, cache.Hierarchy);
-
-    if (!faceRank.empty())
-    {
-      cache.Hierarchy.MakeFinestFaces();
-    }
     cache.SeamLineCopies = faceRank.empty()
       ? std::vector<std::uint8_t>()
       : vtkSubDSeamLineCopies(cache.Hierarchy.Finest, cache.FaceGhostLayer, faceRank);
@@ -686,27 +602,17 @@ int vtkSubDSurfaceFilter::Execute(
   }
   else
   {
-    if (cache.LeanFinest)
-    {
-      // Re-applied (the points or point data changed, not the topology): from now on the
-      // finest rows come from their parent's lists, built once here (subd::PromoteFinestRows).
-      subd::PromoteFinestRows(*cache.Scheme, cache.Hierarchy);
-      cache.LeanFinest = false;
-    }
     refineProgress(1.0);
   }
 
   const subd::Hierarchy& hierarchy = cache.Hierarchy;
   const subd::Level& finest = hierarchy.Finest;
   // Only re-applications keep the scratch levels (the intermediate levels' values) for the
-  // next update, and not with LowMemory: the first update of a topology, which may be the
-  // only one, frees its own (shared by its arrays) before the faces (made last, below) take
-  // their memory, which keeps them out of its peak (linear, bunny, level 4: 744 to about 670
-  // MiB). A lean hierarchy is promoted above when re-applied, so it never gets here with reuse.
+  // next update: the first update of a topology, which may be the only one, frees its own
+  // before the output faces are made.
   subd::EvaluationScratch<double> updateScratch;
   vtkSubDPointDataInterpolation interpolation(hierarchy, vtkSubDPointDataInterpolation::SMPFor,
-    cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr,
-    reuse && !cache.LowMemory ? &cache.Scratch : &updateScratch);
+    cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr, reuse ? &cache.Scratch : &updateScratch);
 
   // Points.
   // Double input points are read where they are; others are converted once.
@@ -815,11 +721,7 @@ int vtkSubDSurfaceFilter::Execute(
   // The faces depend on the topology only: re-applied stencils reuse them.
   if (!cache.OutputFaces)
   {
-    if (!updateScratch.IsEmpty())
-    {
-      updateScratch = subd::EvaluationScratch<double>();
-      subd::ReleaseFreeMemory(); // to the system, where the faces are not going
-    }
+    updateScratch = subd::EvaluationScratch<double>();
     cache.OutputFaces = this->MakeOutputFaces();
   }
   output->SetPolys(cache.OutputFaces);
@@ -1008,9 +910,9 @@ vtkSmartPointer<vtkCellArray> vtkSubDSurfaceFilter::MakeOutputFaces()
 {
   vtkInternals& cache = *this->Internals;
   vtkNew<vtkCellArray> polys;
-  cache.Hierarchy.MakeFinestFaces();
   subd::IndexArray kernelOffsets, kernelVertices;
-  if (!cache.CompactPoints && cache.Hierarchy.Finest.Topology.ReleaseFaces(kernelOffsets, kernelVertices))
+  if (!cache.CompactPoints &&
+    subd::MeshTopology::MoveFacesOut(std::move(cache.Hierarchy.Finest.Topology), kernelOffsets, kernelVertices))
   {
     polys->SetData(vtkSubDAdoptVector(std::move(kernelOffsets)), vtkSubDAdoptVector(std::move(kernelVertices)));
     return polys;
@@ -1060,6 +962,5 @@ void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CornerSharpnessArrayName: " << name(this->CornerSharpnessArrayName) << "\n";
   os << indent << "HoleArrayName: " << name(this->HoleArrayName) << "\n";
   os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
-  os << indent << "LowMemory: " << (this->LowMemory ? "On" : "Off") << "\n";
   os << indent << "NumberOfStencilBuilds: " << this->NumberOfStencilBuilds << "\n";
 }

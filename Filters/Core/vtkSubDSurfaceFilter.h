@@ -26,8 +26,7 @@
  * Bad input never crashes: an empty input, input without polygons, NaN or infinite
  * coordinates and out-of-range point ids each give an error message naming the problem and
  * an empty output. A request whose predicted peak memory exceeds MaximumMemory (MiB) is
- * refused with a message before anything large is allocated, unless it fits with LowMemory
- * (then used, with a warning).
+ * refused with a message before anything large is allocated.
  *
  * Sharp features (DeRose, Kass, Truong, "Subdivision Surfaces in Character Animation",
  * SIGGRAPH 1998), read from the input:
@@ -243,42 +242,10 @@ public:
    * Refuse requests whose predicted peak memory is more than this many MiB (default: half the
    * physical memory), with an error naming the estimate, before allocating anything. The
    * prediction (SubDMemoryEstimate.h) follows the refinement level by level and errs on the
-   * safe side: 1.1 to 1.3 times the measured peak for the schemes that write their rows,
-   * more for Doo-Sabin, sqrt(3) and midpoint. A request that does not fit by default but fits
-   * with LowMemory (Catmull-Clark, Loop, the butterfly without tension) is refined so, with a
-   * warning saying so.
+   * safe side.
    */
   vtkSetClampMacro(MaximumMemory, double, 1.0, 1.0e9);
   vtkGetMacro(MaximumMemory, double);
-  ///@}
-
-  ///@{
-  /**
-   * Trade speed for memory (default off). On, the schemes that can (Catmull-Clark, Loop, the
-   * butterfly without tension) write
-   * the finest level, and every other level above it, from the level two above, so that the
-   * topologies of the levels between (the largest of all is the finest level's parent's) are
-   * never kept. The finest faces are made after the points, once the evaluation's scratch
-   * levels (not kept between updates) are freed, and freed memory is handed back to the
-   * system between these phases: about half the peak memory (the output plus 35 % to 45 % at
-   * level 4), the same points and faces bit for bit, but each evaluation (including
-   * re-evaluations when only the input points move) works out every point's neighbourhood
-   * again and is slower (1.3x to 1.8x). With sharp features,
-   * limit positions or limit geometry the finest level keeps its own topology, and the
-   * saving is smaller.
-   *
-   * Off (the default), a closed mesh without sharp features (Catmull-Clark, Loop, butterfly;
-   * faces-only output) still gets its finest level written from the level two above, the finest level's
-   * parent never built (subd::LevelRows::WrittenLean): one update peaks at LowMemory's memory
-   * (about 1.4x the output at level 4) at the default's speed. The first update that
-   * re-applies the rows (the points or point data changed, not the topology) then builds that
-   * parent once (subd::PromoteFinestRows) and keeps it with the scratch levels, so that this
-   * and later re-applications read its lists: memory is spent on what is reused. The output
-   * is the same, bit for bit, either way.
-   */
-  vtkSetMacro(LowMemory, bool);
-  vtkGetMacro(LowMemory, bool);
-  vtkBooleanMacro(LowMemory, bool);
   ///@}
 
   ///@{
@@ -359,7 +326,6 @@ protected:
   bool ComputeLimitNormals = false;
   bool ComputeCurvature = false;
   double MaximumMemory; // half the physical memory (vtkSubDMemoryBudget.h)
-  bool LowMemory = false;
   int NumberOfStencilBuilds = 0;
 
 private:

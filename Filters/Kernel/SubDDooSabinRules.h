@@ -39,10 +39,7 @@ SUBDKERNEL_EXPORT double DooSabinWeight(Index n, Index d);
 SUBDKERNEL_EXPORT StencilTable BuildDooSabinStencils(
   const Level& parent, const DualPoints& points, const ParallelFor& parallelFor = SerialFor);
 /// The same rows written as they are applied (SubDRowWriting.h), with the numbering of
-/// `parent` made here by `parallelFor`. They read the parent's faces' corners and that
-/// numbering only (with a bit per corner before a sharp edge, made here from the faces'
-/// edges): the rest of its topology may be freed (MeshTopology::KeepOnly) once its child is
-/// split.
+/// `parent` made here by `parallelFor`.
 SUBDKERNEL_EXPORT std::shared_ptr<const RowSource> MakeDooSabinRowSource(
   std::shared_ptr<const Level> parent, const ParallelFor& parallelFor = SerialFor);
 }

@@ -377,11 +377,10 @@ void InheritDualSharpness(const Level& parent, const DualPoints& points, Level& 
 }
 
 Level SplitDual(
-  const Level& parent, const DualPoints& points, ChildTopology depth, const ParallelFor& parallelFor, FaceTagsKept kept)
+  const Level& parent, const DualPoints& points, ChildTopology depth, const ParallelFor& parallelFor)
 {
   EmittedFaces faces = EmitFacesInParallel(DualFaceWriter(parent, points).GetNumElements(), parallelFor,
-    [&](Index begin, Index end, FaceBlock& block) { DualFaceWriter(parent, points).WriteBlock(begin, end, block); },
-    kept);
+    [&](Index begin, Index end, FaceBlock& block) { DualFaceWriter(parent, points).WriteBlock(begin, end, block); });
   Level child;
   child.FaceOrigin = std::move(faces.Origins);
   child.FaceIsHole = std::move(faces.Holes);

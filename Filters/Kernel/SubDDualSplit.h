@@ -59,10 +59,9 @@ struct DualPoints
 SUBDKERNEL_EXPORT DualPoints NumberDualPoints(const Level& level, const ParallelFor& parallelFor = SerialFor);
 
 /// Writes the child faces in parallel (in blocks of parent elements, copied to their place
-/// in order), so that the result does not depend on the number of threads. The child keeps
-/// the face tags `kept` asks for (else its FaceOrigin or FaceIsHole is empty).
+/// in order), so that the result does not depend on the number of threads.
 SUBDKERNEL_EXPORT Level SplitDual(const Level& parent, const DualPoints& points, ChildTopology depth,
-  const ParallelFor& parallelFor = SerialFor, FaceTagsKept kept = {});
+  const ParallelFor& parallelFor = SerialFor);
 }
 
 #endif

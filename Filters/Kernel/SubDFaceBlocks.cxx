@@ -81,18 +81,12 @@ void ForEachBlockPart(const ParallelFor& parallelFor, const std::vector<size_t>&
 }
 
 EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelFor,
-  const std::function<void(Index begin, Index end, FaceBlock& block)>& write, FaceTagsKept kept)
+  const std::function<void(Index begin, Index end, FaceBlock& block)>& write)
 {
-  // Fixed ranges, not the ParallelFor's: its ranges are many small ones (its grain), whose
-  // growing blocks churned through the C library's per-thread arenas, which kept the freed
-  // pieces (Doo-Sabin, bunny level 3, 2 threads: 34 MB more peak than on one thread). A few
-  // large blocks come from the system and go back to it (AllocateLargeBlock).
+  // Fixed ranges, not the ParallelFor's: its ranges are many small ones (its grain), and the
+  // result must not depend on how the work was cut.
   const FixedRanges ranges(numElements, 64);
   std::vector<FaceBlock> written(static_cast<size_t>(ranges.NumRanges));
-  for (FaceBlock& block : written)
-  {
-    block.Kept = kept;
-  }
   ForEachBlock(ranges.NumRanges, parallelFor,
     [&](Index r) { write(ranges.Begin(r), ranges.Begin(r + 1), written[static_cast<size_t>(r)]); });
 
@@ -106,8 +100,8 @@ EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelF
   faces.Offsets.resize(firstFace.back() + 1);
   faces.Offsets[0] = 0;
   faces.Vertices.resize(firstCorner.back());
-  faces.Origins.resize(kept.Origins ? firstFace.back() : 0);
-  faces.Holes.resize(kept.Holes ? firstFace.back() : 0);
+  faces.Origins.resize(firstFace.back());
+  faces.Holes.resize(firstFace.back());
   ForEachBlockPart(parallelFor, firstFace, [&](size_t b, size_t from, size_t to, size_t at) {
     const FaceBlock& block = written[b];
     const Index base = static_cast<Index>(firstCorner[b]);
@@ -115,14 +109,8 @@ EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelF
     {
       faces.Offsets[at + (i - from) + 1] = base + block.Ends[i];
     }
-    if (kept.Origins)
-    {
-      std::copy(block.Origins.begin() + Offset(from), block.Origins.begin() + Offset(to), faces.Origins.begin() + Offset(at));
-    }
-    if (kept.Holes)
-    {
-      std::copy(block.Holes.begin() + Offset(from), block.Holes.begin() + Offset(to), faces.Holes.begin() + Offset(at));
-    }
+    std::copy(block.Origins.begin() + Offset(from), block.Origins.begin() + Offset(to), faces.Origins.begin() + Offset(at));
+    std::copy(block.Holes.begin() + Offset(from), block.Holes.begin() + Offset(to), faces.Holes.begin() + Offset(at));
   }, [&written](size_t b) {
     FaceBlock& block = written[b];
     IndexArray().swap(block.Ends);
@@ -138,7 +126,7 @@ EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelF
 
 EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallelFor,
   const std::function<Index(Index begin, Index end)>& count,
-  const std::function<void(Index begin, Index end, TriangleCursor& cursor)>& write, FaceTagsKept kept)
+  const std::function<void(Index begin, Index end, TriangleCursor& cursor)>& write)
 {
   // Fixed ranges: the counts and the writes must cover the same elements.
   const FixedRanges ranges(numElements, 1024);
@@ -149,13 +137,13 @@ EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallel
   const size_t numTriangles = firstTriangle.back();
   EmittedFaces faces;
   faces.Vertices.resize(3 * numTriangles);
-  faces.Origins.resize(kept.Origins ? numTriangles : 0);
-  faces.Holes.resize(kept.Holes ? numTriangles : 0);
+  faces.Origins.resize(numTriangles);
+  faces.Holes.resize(numTriangles);
   std::atomic<bool> miscounted{ false };
   ForEachBlock(ranges.NumRanges, parallelFor, [&](Index r) {
     const size_t first = firstTriangle[r], last = firstTriangle[r + 1];
-    TriangleCursor cursor{ faces.Vertices.data() + 3 * first, kept.Origins ? faces.Origins.data() + first : nullptr,
-      kept.Holes ? faces.Holes.data() + first : nullptr, faces.Vertices.data() + 3 * last };
+    TriangleCursor cursor{ faces.Vertices.data() + 3 * first, faces.Origins.data() + first, faces.Holes.data() + first,
+      faces.Vertices.data() + 3 * last };
     write(ranges.Begin(r), ranges.Begin(r + 1), cursor);
     if (cursor.Overflowed || cursor.Vertices != cursor.End)
     {

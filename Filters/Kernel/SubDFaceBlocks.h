@@ -19,25 +19,13 @@
 
 namespace subd
 {
-/// Which tags a split records with each face. A faces-only finest level whose caller reads
-/// no origin (Scheme::SetFacesOnlyOrigins), or whose parent has no hole, need not hold them:
-/// 5 bytes a face at the peak of the split.
-struct FaceTagsKept
-{
-  bool Origins = true;
-  bool Holes = true;
-};
-
 /// The faces written for one range of parent elements.
 struct SUBDKERNEL_EXPORT FaceBlock
 {
-  // Level arrays: a large block's memory goes back to the system when it is freed (as the
-  // blocks are concatenated, EmitFacesInParallel), instead of staying with the C library.
   IndexArray Ends;                 ///< corner count after each face
   IndexArray Vertices;             ///< faces' corners; a face in progress is at the end
   IndexArray Origins;              ///< one per face
   LevelArray<std::uint8_t> Holes;  ///< one per face
-  FaceTagsKept Kept;               ///< Origins and Holes stay empty where not kept
 
   /// Starts a face: returns where its corners begin, for EndFaceWithoutRepeats.
   size_t BeginFace() const { return this->Vertices.size(); }
@@ -45,14 +33,8 @@ struct SUBDKERNEL_EXPORT FaceBlock
   void EndFace(Index origin, std::uint8_t hole)
   {
     this->Ends.push_back(static_cast<Index>(this->Vertices.size()));
-    if (this->Kept.Origins)
-    {
-      this->Origins.push_back(origin);
-    }
-    if (this->Kept.Holes)
-    {
-      this->Holes.push_back(hole);
-    }
+    this->Origins.push_back(origin);
+    this->Holes.push_back(hole);
   }
   /// The same, without repeats of welded points (consecutive, or last = first); a face left
   /// with fewer than three corners is dropped.
@@ -64,23 +46,22 @@ struct EmittedFaces
 {
   IndexArray Offsets;                ///< numFaces + 1 entries, from 0
   IndexArray Vertices;
-  LevelArray<Index> Origins;         ///< empty where not kept
-  LevelArray<std::uint8_t> Holes;    ///< empty where not kept
+  LevelArray<Index> Origins;         ///< one per face
+  LevelArray<std::uint8_t> Holes;    ///< one per face
 };
 
 /// Runs write(begin, end, block) over at most 64 ranges covering [0, numElements), each
 /// writing the faces of its elements in order, and concatenates the blocks in element order.
-/// The blocks keep the tags `kept` asks for.
 SUBDKERNEL_EXPORT EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelFor,
-  const std::function<void(Index begin, Index end, FaceBlock& block)>& write, FaceTagsKept kept = {});
+  const std::function<void(Index begin, Index end, FaceBlock& block)>& write);
 
 /// Where one range of elements writes its triangles, in place in the output
 /// (EmitTrianglesInPlace).
 struct TriangleCursor
 {
   Index* Vertices;         ///< the next triangle's corners
-  Index* Origins;          ///< its origin (null: not kept)
-  std::uint8_t* Holes;     ///< whether it is a hole (null: not kept)
+  Index* Origins;          ///< its origin
+  std::uint8_t* Holes;     ///< whether it is a hole
   const Index* End;        ///< past the range's last corner
   bool Overflowed = false; ///< the range wrote more triangles than it counted (dropped)
 
@@ -95,14 +76,8 @@ struct TriangleCursor
     this->Vertices[1] = b;
     this->Vertices[2] = c;
     this->Vertices += 3;
-    if (this->Origins)
-    {
-      *this->Origins++ = origin;
-    }
-    if (this->Holes)
-    {
-      *this->Holes++ = hole;
-    }
+    *this->Origins++ = origin;
+    *this->Holes++ = hole;
   }
 };
 
@@ -111,11 +86,10 @@ struct TriangleCursor
 /// write(begin, end, cursor) writes each range's triangles straight into the output, in
 /// element order. No blocks to concatenate: the faces' memory is touched once, and not
 /// copied (the blocks cost a second fault-in of every page and a copy). Throws
-/// std::logic_error if a range writes other than the triangles it counted. The tags `kept`
-/// asks for are written too.
+/// std::logic_error if a range writes other than the triangles it counted.
 SUBDKERNEL_EXPORT EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallelFor,
   const std::function<Index(Index begin, Index end)>& count,
-  const std::function<void(Index begin, Index end, TriangleCursor& cursor)>& write, FaceTagsKept kept = {});
+  const std::function<void(Index begin, Index end, TriangleCursor& cursor)>& write);
 }
 
 #endif

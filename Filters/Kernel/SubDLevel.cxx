@@ -19,40 +19,8 @@ Index Level::GetNumSharpEdges(Index v) const
 bool ActsAsBoundary(const Level& level, Index e)
 {
   const MeshTopology& topo = level.Topology;
-  return (!level.EdgeSharpness.empty() && IsSharp(level.EdgeSharpness[e])) || topo.GetEdgeFaces(e).size() != 2 ||
+  return IsSharp(level.EdgeSharpness[e]) || topo.GetEdgeFaces(e).size() != 2 ||
     topo.GetEdgeTag(e).NonManifold;
-}
-
-void TrimToLeanChild(Level& child, LeanChild lean)
-{
-  if (lean == LeanChild::No)
-  {
-    return;
-  }
-  child.Topology.ReleaseVertexFaceLists();
-  child.Topology.ReleaseFaceEdges();
-  if (lean == LeanChild::SplitAlone)
-  {
-    child.Topology.ReleaseVertexEdgeLists();
-    if (!child.HasSharpFeatures())
-    {
-      LevelArray<float>().swap(child.EdgeSharpness);
-      LevelArray<float>().swap(child.VertexSharpness);
-    }
-  }
-}
-
-void RestoreSplitAloneTrim(Level& level, const ParallelFor& parallelFor)
-{
-  level.Topology.RestoreVertexEdgeLists(parallelFor);
-  if (level.EdgeSharpness.empty())
-  {
-    level.EdgeSharpness.assign(static_cast<size_t>(level.Topology.GetNumEdges()), SharpnessSmooth);
-  }
-  if (level.VertexSharpness.empty())
-  {
-    level.VertexSharpness.assign(static_cast<size_t>(level.Topology.GetNumVertices()), SharpnessSmooth);
-  }
 }
 
 bool Level::HasHoles() const
@@ -286,11 +254,8 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
     return level;
   }
 
-  // A topology of faces and edges only (MeshTopology::BuildFacesAndEdges) gets its edges'
-  // tags alone: its vertices are unknown.
-  const bool vertexRelations = topo.HasVertexRelations();
   // Holes first: they depend on the explicit sharpness, before boundaries are sharpened.
-  if (rule == BoundaryRule::None && vertexRelations)
+  if (rule == BoundaryRule::None)
   {
     for (Index v = 0; v < numVertices; ++v)
     {
@@ -322,10 +287,6 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
     }
   }
 
-  if (!vertexRelations)
-  {
-    return level;
-  }
   for (Index v = 0; v < numVertices; ++v)
   {
     const IndexSpan edges = topo.GetVertexEdges(v);
@@ -354,15 +315,4 @@ Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule ru
   return level;
 }
 
-void KeepOnly(Level& level, MeshTopology::Part part, const ParallelFor& parallelFor, bool keepFaceOrigins)
-{
-  level.Topology.KeepOnly(part, parallelFor);
-  LevelArray<float>().swap(level.EdgeSharpness);
-  LevelArray<float>().swap(level.VertexSharpness);
-  LevelArray<std::uint8_t>().swap(level.FaceIsHole);
-  if (!keepFaceOrigins)
-  {
-    LevelArray<Index>().swap(level.FaceOrigin);
-  }
-}
 }

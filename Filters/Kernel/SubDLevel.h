@@ -18,14 +18,10 @@ struct SUBDKERNEL_EXPORT Level
   LevelArray<float> EdgeSharpness;        ///< one per edge, OpenSubdiv's scale
   LevelArray<float> VertexSharpness;      ///< one per vertex
   LevelArray<std::uint8_t> FaceIsHole;    ///< per face (or none: no hole); holes shape neighbours, aren't emitted
-  LevelArray<Index> FaceOrigin;           ///< per face: the base-level face it comes from (a
-                                          ///< finest level's may be freed by a caller that reads none)
+  LevelArray<Index> FaceOrigin;           ///< per face: the base-level face it comes from
   /// Face f's hole flag and origin are at f >> FaceTagShift: 0, one per face, except for a
-  /// finest level written from its grandparent (SplitTwice), whose faces come four from each
-  /// face of the level between and keep that face's tags (2: a quarter of the memory), or
-  /// sixteen from each face of the grandparent when every face of it has four children (4),
-  /// and for a faces-only primal split whose parent's faces have four children each
-  /// (InheritPrimalFaceTags: 2).
+  /// faces-only primal split whose parent's faces have four children each, which keeps its
+  /// parent's tags (InheritPrimalFaceTags: 2).
   int FaceTagShift = 0;
   int Depth = 0;                         ///< 0 for the base level, then 1, 2, ...
 
@@ -44,14 +40,8 @@ struct SUBDKERNEL_EXPORT Level
 
 /// True for an edge that schemes without a crease rule of their own (Doo-Sabin, midpoint,
 /// sqrt(3)) treat like a boundary: sharp at this level, or without exactly two faces, or
-/// non-manifold. A level without edge sharpness (LeanChild::SplitAlone) has no sharp edge.
+/// non-manifold.
 SUBDKERNEL_EXPORT bool ActsAsBoundary(const Level& level, Index e);
-
-/// Frees what `lean` says a split's child may come without (LeanChild).
-SUBDKERNEL_EXPORT void TrimToLeanChild(Level& child, LeanChild lean);
-/// Gives a level trimmed to LeanChild::SplitAlone its lists of edges around vertices and its
-/// (smooth) sharpness arrays again, where it is refined in general after all.
-SUBDKERNEL_EXPORT void RestoreSplitAloneTrim(Level& level, const ParallelFor& parallelFor);
 
 /// The number of edges at vertex v for which isCounted(level, e) holds.
 template <typename Predicate>
@@ -338,16 +328,9 @@ struct BaseTags
 /// are sharpened, except those inside a non-manifold crease (two non-manifold edges, no
 /// boundary, more faces than edges); with BoundaryRule::None the faces around every vertex
 /// that has a boundary edge not explicitly infinitely sharp become holes. Those tags are
-/// inherited by later levels, never re-derived from their topology. A topology of faces and
-/// edges only (MeshTopology::BuildFacesAndEdges, for the linear rules, which read no
-/// sharpness) gets its edges' tags alone: no vertex sharpened, no hole made.
+/// inherited by later levels, never re-derived from their topology.
 SUBDKERNEL_EXPORT Level MakeBaseLevel(MeshTopology topology, const BaseTags& tags, BoundaryRule rule);
 
-/// Frees all of a level but a part of its topology (MeshTopology::KeepOnly) and its vertex
-/// count: no sharpness, no hole flags, and no face origins unless `keepFaceOrigins` (for a
-/// grandchild written from the level that keeps them).
-SUBDKERNEL_EXPORT void KeepOnly(
-  Level& level, MeshTopology::Part part, const ParallelFor& parallelFor = SerialFor, bool keepFaceOrigins = false);
 }
 
 #endif

@@ -27,24 +27,15 @@ MeshTopology MeshTopology::BuildFacesOnly(Index numVertices, IndexArray faceOffs
   return topology;
 }
 
-MeshTopology MeshTopology::BuildFacesWithEdges(
-  Index numVertices, IndexArray faceOffsets, IndexArray faceEdges, IndexArray edgeVertices)
+bool MeshTopology::MoveFacesOut(MeshTopology&& topology, IndexArray& faceOffsets, IndexArray& faceVertices)
 {
-  MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), IndexArray());
-  topology.FaceEdges = std::move(faceEdges);
-  topology.EdgeVertices = std::move(edgeVertices);
-  return topology;
-}
-
-bool MeshTopology::ReleaseFaces(IndexArray& faceOffsets, IndexArray& faceVertices)
-{
-  if (this->HasEdges())
+  if (topology.HasEdges())
   {
     return false;
   }
-  faceOffsets = std::move(this->FaceOffsets);
-  faceVertices = std::move(this->FaceVertices);
-  *this = BuildFacesOnly(this->NumVertices, {}, {});
+  faceOffsets = std::move(topology.FaceOffsets);
+  faceVertices = std::move(topology.FaceVertices);
+  topology = BuildFacesOnly(topology.NumVertices, {}, {});
   return true;
 }
 
@@ -70,103 +61,6 @@ MeshTopology MeshTopology::Build(
   topology.BuildVertexEdges(parallelFor);
   topology.TagVertices(smallFans, parallelFor);
   return topology;
-}
-
-MeshTopology MeshTopology::BuildFacesAndEdges(
-  Index numVertices, IndexArray faceOffsets, IndexArray faceVertices, const ParallelFor& parallelFor)
-{
-  MeshTopology topology = BuildFacesOnly(numVertices, std::move(faceOffsets), std::move(faceVertices));
-  const bool allTriangles = topology.FaceVertices.size() == 3 * static_cast<size_t>(topology.GetNumFaces());
-  EdgeCountsByBlock edgeCounts;
-  const HalfEdgePairing pairing = topology.PairHalfEdgesByLowerVertex(allTriangles, edgeCounts, parallelFor);
-  topology.NumberEdges(pairing, edgeCounts, parallelFor);
-  topology.BuildEdgeFaces(pairing, parallelFor);
-  return topology;
-}
-
-void MeshTopology::ReleaseVertexFaceLists()
-{
-  IndexArray().swap(this->VertexFaces);
-  IndexArray().swap(this->VertexFaceCorners);
-}
-
-void MeshTopology::ReleaseFaceEdges()
-{
-  IndexArray().swap(this->FaceEdges);
-}
-
-void MeshTopology::ReleaseVertexEdgeLists()
-{
-  IndexArray().swap(this->VertexEdges);
-  IndexArray().swap(this->VertexEdgeOffsets);
-}
-
-void MeshTopology::RestoreVertexEdgeLists(const ParallelFor& parallelFor)
-{
-  if (!this->HasVertexRelations())
-  {
-    this->BuildVertexEdges(parallelFor);
-  }
-}
-
-void MeshTopology::KeepOnly(Part part, const ParallelFor& parallelFor)
-{
-  if (part == Part::FacesAndRings && !this->RingsHoldVertices)
-  {
-    parallelFor(0, this->NumVertices, [this](Index begin, Index end) {
-      for (Index v = begin; v < end; ++v)
-      {
-        for (Index i = this->VertexEdgeOffsets[v]; i < this->VertexEdgeOffsets[v + 1]; ++i)
-        {
-          this->VertexEdges[i] = this->GetOtherEndpoint(this->VertexEdges[i], v);
-        }
-        SortShortList(this->VertexEdges.data() + this->VertexEdgeOffsets[v],
-          this->VertexEdges.data() + this->VertexEdgeOffsets[v + 1]);
-      }
-    });
-    this->RingsHoldVertices = true;
-  }
-  std::vector<IndexArray*> lists{ &this->EdgeFaces, &this->VertexFaces, &this->VertexFaceCorners };
-  std::vector<IndexArray*> offsets{ &this->EdgeFaceOffsets, &this->VertexFaceOffsets };
-  if (part != Part::FacesAndRings)
-  {
-    lists.push_back(&this->VertexEdges);
-    offsets.push_back(&this->VertexEdgeOffsets);
-  }
-  if (part != Part::EdgeEnds && part != Part::FacesWithEdges)
-  {
-    lists.push_back(&this->EdgeVertices);
-  }
-  if (part != Part::FacesWithEdges)
-  {
-    lists.push_back(&this->FaceEdges);
-  }
-  if (part == Part::EdgeEnds || part == Part::FacesWithEdges)
-  {
-    lists.push_back(&this->FaceVertices);
-  }
-  if (part == Part::EdgeEnds)
-  {
-    offsets.push_back(&this->FaceOffsets);
-  }
-  for (IndexArray* list : lists)
-  {
-    IndexArray().swap(*list);
-  }
-  for (IndexArray* list : offsets)
-  {
-    IndexArray{ 0 }.swap(*list);
-  }
-  LevelArray<EdgeTag>().swap(this->EdgeTags);
-  LevelArray<VertexTag>().swap(this->VertexTags);
-}
-
-void MeshTopology::RestoreVertexFaceLists(const ParallelFor& parallelFor)
-{
-  if (!this->HasVertexFaceLists())
-  {
-    this->BuildVertexFaces(parallelFor);
-  }
 }
 
 // Every pass below runs per face, per vertex or per block of items and writes only its own
@@ -513,69 +407,6 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
       SortShortList(first, last);
       ForEachVertexPair(first, last, [&](Index count, Index forward, const auto& halfEdgeAt) {
         writeGroup(count, forward, this->GetFaceStart(halfEdgeAt(0), allTriangles), halfEdgeAt);
-      });
-    }
-    const std::lock_guard<std::mutex> lock(merging);
-    for (size_t b = 0; b < blockCounts.size(); ++b)
-    {
-      counts.Blocks[b] += blockCounts[b];
-    }
-  });
-  return pairing;
-}
-
-// Each half-edge filed under its lower vertex (a counting sort, in half-edge order), as its
-// key; each vertex's file sorted, it holds one run per vertex pair, paired as Build's
-// fallback pairs them: the same groups, ranks and counts as PairHalfEdges, without the lists
-// of faces around the vertices or any fan.
-MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdgesByLowerVertex(
-  bool allTriangles, EdgeCountsByBlock& counts, const ParallelFor& parallelFor) const
-{
-  HalfEdgePairing pairing(this->FaceVertices.size());
-  counts = EdgeCountsByBlock(this->FaceVertices.size());
-  LevelArray<std::uint64_t> filed(this->FaceVertices.size());
-  IndexArray fileOffsets;
-  auto halfEdges = [this, allTriangles](Index begin, Index end, const auto& visit) {
-    for (Index f = begin; f < end; ++f)
-    {
-      const Index first = allTriangles ? 3 * f : this->FaceOffsets[f];
-      const Index last = allTriangles ? first + 3 : this->FaceOffsets[f + 1];
-      for (Index h = first; h < last; ++h)
-      {
-        const Index a = this->FaceVertices[h], b = this->FaceVertices[h + 1 < last ? h + 1 : first];
-        visit(std::min(a, b), HalfEdgeKey(std::max(a, b), h, a < b));
-      }
-    }
-  };
-  FileByKey(this->NumVertices, this->GetNumFaces(), halfEdges,
-    [&filed](Index slot, std::uint64_t key) { filed[slot] = key; }, fileOffsets, parallelFor);
-  // Where faces are not all triangles, each half-edge's slot holds the start of its face
-  // until its group is written (one group per half-edge: its first's slot is read before any
-  // of the group's is written), rather than a search of the offsets per edge.
-  if (!allTriangles)
-  {
-    parallelFor(0, this->GetNumFaces(), [&](Index begin, Index end) {
-      for (Index f = begin; f < end; ++f)
-      {
-        for (Index h = this->FaceOffsets[f]; h < this->FaceOffsets[f + 1]; ++h)
-        {
-          pairing[h].Representative = this->FaceOffsets[f];
-        }
-      }
-    });
-  }
-  std::mutex merging;
-  parallelFor(0, this->NumVertices, [&](Index begin, Index end) {
-    std::vector<EdgeCounts> blockCounts(counts.Blocks.size());
-    for (Index v = begin; v < end; ++v)
-    {
-      std::uint64_t* first = filed.data() + fileOffsets[v];
-      std::uint64_t* last = filed.data() + fileOffsets[v + 1];
-      SortShortList(first, last);
-      ForEachVertexPair(first, last, [&](Index count, Index forward, const auto& halfEdgeAt) {
-        const Index h = halfEdgeAt(0);
-        const Index faceStart = allTriangles ? h - h % 3 : pairing[h].Representative;
-        WriteHalfEdgeGroup(pairing, counts, blockCounts, count, forward, faceStart, halfEdgeAt);
       });
     }
     const std::lock_guard<std::mutex> lock(merging);

@@ -50,22 +50,10 @@ public:
   /// The same from std::vector (copied on `parallelFor`'s threads).
   static MeshTopology Build(Index numVertices, const std::vector<Index>& faceOffsets,
     const std::vector<Index>& faceVertices, const ParallelFor& parallelFor = SerialFor);
-  /// The topology the linear schemes' splits, rows and grandchild rows read (what a split
-  /// with ChildTopology::FacesAndEdges gives its child): the faces, their edges, each edge's
-  /// ends, faces and tags, numbered as Build numbers them, without anything around the
-  /// vertices (no lists, tags or valence: HasVertexRelations() is false, and
-  /// GetNumNonManifoldVertices() 0). Build's pairing of half-edges reads the faces around
-  /// each vertex; this one files the half-edges under their lower vertex instead, so the
-  /// lists of faces and edges around vertices are never made (the bunny's, 75k triangles:
-  /// 6.1 instead of 7.8 ms and 6.3 instead of 9.8 MiB in a fresh process, 2 threads).
-  static MeshTopology BuildFacesAndEdges(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
-    const ParallelFor& parallelFor = SerialFor);
-
   Index GetNumVertices() const { return NumVertices; }
   Index GetNumFaces() const { return static_cast<Index>(FaceOffsets.size()) - 1; }
   Index GetNumEdges() const { return static_cast<Index>(EdgeVertices.size() / 2); }
-  /// Sum of all face sizes (number of face corners / half-edges); also where only the faces'
-  /// edges are kept (Part::FacesWithEdges).
+  /// Sum of all face sizes (number of face corners / half-edges).
   Index GetNumFaceCorners() const { return FaceOffsets.back(); }
 
   Index GetFaceSize(Index f) const { return FaceOffsets[f + 1] - FaceOffsets[f]; }
@@ -81,50 +69,9 @@ public:
   IndexSpan GetVertexFaceCorners(Index v) const { return this->VertexFaceSpan(VertexFaceCorners, v); }
   Index GetNumVertexFaces(Index v) const { return VertexFaceOffsets[v + 1] - VertexFaceOffsets[v]; }
 
-  /// Frees the lists of faces around each vertex (and their corners), keeping their counts:
-  /// for a level kept only for rows that never read them (Loop's and the butterfly's levels
-  /// once split), whose lists would otherwise be a large share of the peak. Until
-  /// RestoreVertexFaceLists, GetVertexFaces and GetVertexFaceCorners give spans of the right
-  /// size and no data (a null pointer: reading them faults at once).
-  void ReleaseVertexFaceLists();
-  /// Frees each face's edges (GetFaceEdges, GetTriangleEdges and what reads them may not be
-  /// called then): for a level whose last reader finds edges from their ends.
-  void ReleaseFaceEdges();
-  /// Frees the lists of edges around each vertex and their offsets (GetVertexEdges,
-  /// ForEachRingVertex and what reads them may not be called then; HasVertexRelations is
-  /// false): for a level kept only for rows that never read them (the butterfly's, once its
-  /// grandchild's rows are made). RestoreVertexEdgeLists builds them again.
-  void ReleaseVertexEdgeLists();
-  /// Builds the lists again, as Build made them (each vertex's edges in increasing order).
-  void RestoreVertexEdgeLists(const ParallelFor& parallelFor = SerialFor);
-  /// A part of the topology that rows written from a level may read alone.
-  enum class Part
-  {
-    Faces,         ///< each face's corners (Doo-Sabin's rows)
-    EdgeEnds,      ///< each edge's two vertices (the midpoint rows)
-    FacesAndRings, ///< each face's corners and vertex's ring of neighbours (sqrt(3)'s rows)
-    FacesWithEdges, ///< each face's edges (and offsets, not its corners) and each edge's ends:
-                    ///< a corner's vertex is the end its two edges share (the midpoint's rows
-                    ///< and its grandchild written from the level, SubDMidpointGrandchild.h)
-  };
-  /// Frees everything but `part` (and the vertex count): for a level kept only for rows that
-  /// read nothing else. Only that part's accessors may be called then (GetNumFaces,
-  /// GetFaceSize, GetFaceOffset, GetFaceVertices; GetNumEdges,
-  /// GetEdgeVertices, GetOtherEndpoint; GetVertexEdges' sizes and ForEachRingVertex;
-  /// GetFaceEdges and the face offsets and edges arrays for FacesWithEdges). For
-  /// FacesAndRings each vertex's list of edges is overwritten, in place, with the vertices
-  /// at their other ends in increasing order (ForEachRingVertex's), and the edges' ends go:
-  /// the rings cost no more than the edge lists did and are read without the indirection.
-  void KeepOnly(Part part, const ParallelFor& parallelFor = SerialFor);
-  /// False for a level between split with ChildTopology::FacesAndEdges (and a faces-only
-  /// one): no list, count or tag around its vertices, no valence.
+  /// False for a faces-only topology (BuildFacesOnly): no list, count or tag around its
+  /// vertices, no valence.
   bool HasVertexRelations() const { return VertexEdgeOffsets.size() == static_cast<size_t>(NumVertices) + 1; }
-  bool HasVertexFaceLists() const { return !VertexFaces.empty() || GetNumFaceCorners() == 0; }
-  /// Whether each vertex's face count is known (GetNumVertexFaces): kept by
-  /// ReleaseVertexFaceLists and ReleaseVertexEdgeLists, not by KeepOnly.
-  bool HasVertexFaceCounts() const { return VertexFaceOffsets.size() == static_cast<size_t>(NumVertices) + 1; }
-  /// Builds the lists again, as Build made them (each vertex's faces in increasing order).
-  void RestoreVertexFaceLists(const ParallelFor& parallelFor = SerialFor);
   /// The corner of face f at vertex v, or InvalidIndex (faces of v are sorted: binary search).
   Index FindCorner(Index v, Index f) const;
 
@@ -137,20 +84,11 @@ public:
   IndexSpan GetVertexEdges(Index v) const { return Span(VertexEdges, VertexEdgeOffsets, v); }
   /// Calls visit(w) for the vertex w at the other end of each of v's edges, in increasing
   /// order of w: an order that does not depend on how the edges are numbered, so that rows
-  /// written from another level can follow it (sqrt(3)'s from the grandparent). Also once
-  /// KeepOnly(Part::FacesAndRings) kept the rings alone, sorted.
+  /// written from another level can follow it.
   template <typename Visit>
   void ForEachRingVertex(Index v, Visit&& visit) const
   {
     const IndexSpan list = this->GetVertexEdges(v);
-    if (this->RingsHoldVertices)
-    {
-      for (Index w : list)
-      {
-        visit(w);
-      }
-      return;
-    }
     constexpr Index onStack = 64;
     Index stack[onStack];
     std::vector<Index> heap;
@@ -174,8 +112,7 @@ public:
   /// The vertex at the other end of edge `e` from `v`, which must be one of its ends.
   Index GetOtherEndpoint(Index e, Index v) const
   {
-    // Without a branch (OtherOfTwo): converting a level's rings (KeepOnly) took twice as long
-    // with one.
+    // Without a branch (OtherOfTwo): which end v is changes from edge to edge at random.
     return OtherOfTwo(IndexSpan{ GetEdgeVertices(e), 2 }, v);
   }
 
@@ -196,17 +133,10 @@ public:
   /// For a last level that is only output.
   static MeshTopology BuildFacesOnly(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices);
   bool HasEdges() const { return !FaceEdges.empty() || GetNumFaceCorners() == 0; }
-  /// A topology of what Part::FacesWithEdges keeps, given in closed form by a split that
-  /// knows it (the midpoint split of a closed smooth level: SubDMidpointGrandchild.h): the
-  /// faces' offsets, each face's edges and each edge's two ends, on a closed manifold (no
-  /// boundary or non-manifold edge). No corners (GetFaceVertices), no lists or tags around
-  /// the vertices, no edge faces.
-  static MeshTopology BuildFacesWithEdges(
-    Index numVertices, IndexArray faceOffsets, IndexArray faceEdges, IndexArray edgeVertices);
-  /// Moves a faces-only topology's face arrays out (offsets, corners), leaving its vertices
-  /// and no faces: a caller that hands the faces on (to an output) then needs no copy.
-  /// Returns false, moving nothing, when the topology has edges (its relations index them).
-  bool ReleaseFaces(IndexArray& faceOffsets, IndexArray& faceVertices);
+  /// Moves a faces-only topology's face arrays out (offsets, corners): a caller that hands
+  /// the faces on (to an output) then needs no copy. Returns false, moving nothing, when the
+  /// topology has edges (its relations index them).
+  static bool MoveFacesOut(MeshTopology&& topology, IndexArray& faceOffsets, IndexArray& faceVertices);
 
   /// For a triangle f and one of its edges e: the vertex of f not on e.
   Index GetTriangleOppositeVertex(Index f, Index e) const;
@@ -349,8 +279,6 @@ private:
   static void WriteHalfEdgeGroup(HalfEdgePairing& pairing, const EdgeCountsByBlock& counts,
     std::vector<EdgeCounts>& blockCounts, Index count, Index forward, Index firstFaceStart,
     const HalfEdgeAt& halfEdgeAt);
-  HalfEdgePairing PairHalfEdgesByLowerVertex(
-    bool allTriangles, EdgeCountsByBlock& counts, const ParallelFor& parallelFor) const;
   void NumberEdges(const HalfEdgePairing& pairing, const EdgeCountsByBlock& counts, const ParallelFor& parallelFor);
   void BuildEdgeFaces(const HalfEdgePairing& pairing, const ParallelFor& parallelFor);
   void BuildVertexEdges(const ParallelFor& parallelFor);
@@ -369,7 +297,6 @@ private:
   IndexArray VertexFaceCorners;
   IndexArray VertexEdgeOffsets{ 0 };
   IndexArray VertexEdges;
-  bool RingsHoldVertices = false; // VertexEdges holds each edge's other end (KeepOnly)
   LevelArray<EdgeTag> EdgeTags;
   LevelArray<VertexTag> VertexTags;
   Index NumNonManifoldEdges = 0;

@@ -1,5 +1,4 @@
 #include "SubDMidpointSplit.h"
-#include "SubDMidpointGrandchild.h"
 
 #include <algorithm>
 #include <limits>
@@ -12,16 +11,6 @@ namespace subd
 bool MidpointKeepsVertex(const Level& level, Index v)
 {
   const MeshTopology& topo = level.Topology;
-  if (!topo.HasVertexRelations())
-  {
-    // Split for a grandchild alone (MidpointChildWithEdges): closed and smooth. Any other
-    // level without its relations was trimmed before its rows were made.
-    if (!MidpointGrandchildHasClosedForm(level))
-    {
-      throw std::logic_error("MidpointKeepsVertex: a level without vertex relations that is not a lean split");
-    }
-    return false;
-  }
   const VertexTag tag = topo.GetVertexTag(v);
   if (tag.NonManifold || topo.GetVertexFaces(v).empty())
   {
@@ -210,10 +199,6 @@ std::vector<Index> NumberKeptPoints(const Level& parent, Index& numChildPoints)
   const MeshTopology& topo = parent.Topology;
   std::vector<Index> keptPoint(static_cast<size_t>(topo.GetNumVertices()), InvalidIndex);
   numChildPoints = topo.GetNumEdges();
-  if (!topo.HasVertexRelations() && MidpointGrandchildHasClosedForm(parent))
-  {
-    return keptPoint; // a lean split keeps no vertex (asked once for the level, not per vertex)
-  }
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
     if (MidpointKeepsVertex(parent, v))

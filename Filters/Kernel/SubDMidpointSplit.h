@@ -37,9 +37,7 @@
 namespace subd
 {
 /// True for a vertex the split keeps (a child point of its own): on a boundary, sharp, or
-/// with two or more crease edges; never a non-manifold or isolated one, nor one of a level
-/// without relations around its vertices (split for a grandchild alone, closed and smooth:
-/// SubDMidpointGrandchild.h).
+/// with two or more crease edges; never a non-manifold or isolated one.
 SUBDKERNEL_EXPORT bool MidpointKeepsVertex(const Level& level, Index v);
 
 /// The split and its stencils together: both depend on which boundary vertices are kept.
@@ -48,9 +46,7 @@ SUBDKERNEL_EXPORT LevelRefinement RefineMidpoint(
 /// The split alone (RefineMidpoint's child).
 SUBDKERNEL_EXPORT Level SplitMidpoint(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
 /// RefineMidpoint's rows written as they are applied (SubDRowWriting.h): each midpoint from
-/// its edge's ends, each kept vertex copied. They read the parent's edges' ends and which
-/// vertices are kept only: the rest of its topology may be freed (MeshTopology::KeepOnly)
-/// once its child is split.
+/// its edge's ends, each kept vertex copied.
 SUBDKERNEL_EXPORT std::shared_ptr<const RowSource> MakeMidpointRowSource(std::shared_ptr<const Level> parent);
 }
 

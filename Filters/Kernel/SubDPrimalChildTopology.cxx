@@ -12,12 +12,12 @@ struct PrimalChildAssembly
 {
   template <typename Shape>
   static MeshTopology Assemble(const Shape& shape, IndexArray offsets, IndexArray vertices,
-    const ParallelFor& parallelFor, ChildTopology depth);
+    const ParallelFor& parallelFor);
 };
 
 template <typename Shape>
 MeshTopology PrimalChildAssembly::Assemble(
-  const Shape& shape, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor, ChildTopology depth)
+  const Shape& shape, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
 {
   const MeshTopology& parent = shape.Parent;
   const Index numFaces = parent.GetNumFaces();
@@ -101,11 +101,6 @@ MeshTopology PrimalChildAssembly::Assemble(
     });
   });
 
-  if (depth == ChildTopology::FacesAndEdges)
-  {
-    return child; // nothing around vertices
-  }
-
   // Vertex relations, by the kind of point: face points, edge points, vertex points.
   const size_t numSlots = static_cast<size_t>(numChildVertices) + 1;
   child.VertexFaceOffsets.resize(numSlots); // counts of every point below
@@ -167,18 +162,17 @@ MeshTopology PrimalChildAssembly::Assemble(
   return child;
 }
 
-MeshTopology PrimalChildTopology::OfQuadSplit(const MeshTopology& parent, IndexArray offsets, IndexArray vertices,
-  const ParallelFor& parallelFor, ChildTopology depth)
+MeshTopology PrimalChildTopology::OfQuadSplit(
+  const MeshTopology& parent, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
 {
-  return PrimalChildAssembly::Assemble(
-    QuadSplitShape{ parent }, std::move(offsets), std::move(vertices), parallelFor, depth);
+  return PrimalChildAssembly::Assemble(QuadSplitShape{ parent }, std::move(offsets), std::move(vertices), parallelFor);
 }
 
-MeshTopology PrimalChildTopology::OfTriangleSplit(const MeshTopology& parent, IndexArray offsets,
-  IndexArray vertices, const ParallelFor& parallelFor, ChildTopology depth)
+MeshTopology PrimalChildTopology::OfTriangleSplit(
+  const MeshTopology& parent, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
 {
   return PrimalChildAssembly::Assemble(
-    TriangleSplitShape{ parent }, std::move(offsets), std::move(vertices), parallelFor, depth);
+    TriangleSplitShape{ parent }, std::move(offsets), std::move(vertices), parallelFor);
 }
 
 void PrimalChildTopology::SetChildLevel(const Level& parent, Level& child, Split split, Index numChildVertices,
@@ -193,11 +187,8 @@ void PrimalChildTopology::SetChildLevel(const Level& parent, Level& child, Split
   child.Depth = parent.Depth + 1;
   child.Creasing = parent.Creasing;
   child.Topology = split == Split::Quads
-    ? OfQuadSplit(parent.Topology, std::move(offsets), std::move(vertices), parallelFor, depth)
-    : OfTriangleSplit(parent.Topology, std::move(offsets), std::move(vertices), parallelFor, depth);
-  if (depth == ChildTopology::Full) // a level of faces and edges is for rules without sharpness
-  {
-    InheritPrimalSharpness(parent, child, firstEdgePoint, firstVertexPoint);
-  }
+    ? OfQuadSplit(parent.Topology, std::move(offsets), std::move(vertices), parallelFor)
+    : OfTriangleSplit(parent.Topology, std::move(offsets), std::move(vertices), parallelFor);
+  InheritPrimalSharpness(parent, child, firstEdgePoint, firstVertexPoint);
 }
 }

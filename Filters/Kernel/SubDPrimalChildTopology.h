@@ -32,24 +32,21 @@ class SUBDKERNEL_EXPORT PrimalChildTopology
 {
 public:
   /// The child of the quad split of `parent` (SubDQuadSplit.h), whose faces (four corners
-  /// each, numbered as the split numbers them) are `offsets` and `vertices`. With `depth`
-  /// FacesAndEdges, nothing around the child's vertices (MeshTopology::HasVertexRelations
-  /// false), which reads nothing around the parent's either.
-  static MeshTopology OfQuadSplit(const MeshTopology& parent, IndexArray offsets, IndexArray vertices,
-    const ParallelFor& parallelFor, ChildTopology depth = ChildTopology::Full);
+  /// each, numbered as the split numbers them) are `offsets` and `vertices`.
+  static MeshTopology OfQuadSplit(
+    const MeshTopology& parent, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor);
 
   /// The child of the triangle split of the all-triangle `parent` (SubDTriangleSplit.h).
-  static MeshTopology OfTriangleSplit(const MeshTopology& parent, IndexArray offsets, IndexArray vertices,
-    const ParallelFor& parallelFor, ChildTopology depth = ChildTopology::Full);
+  static MeshTopology OfTriangleSplit(
+    const MeshTopology& parent, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor);
 
   enum class Split
   {
     Quads,
     Triangles
   };
-  /// Finishes a primal split's child level from its faces: faces only, faces and edges
-  /// (no sharpness either: for the linear rules), or the full topology derived from the
-  /// parent's with the sharpness the child inherits (InheritPrimalSharpness).
+  /// Finishes a primal split's child level from its faces: faces only, or the full topology
+  /// derived from the parent's with the sharpness the child inherits (InheritPrimalSharpness).
   static void SetChildLevel(const Level& parent, Level& child, Split split, Index numChildVertices,
     IndexArray offsets, IndexArray vertices, ChildTopology depth, Index firstEdgePoint,
     Index firstVertexPoint, const ParallelFor& parallelFor);

@@ -36,10 +36,6 @@ struct SUBDKERNEL_EXPORT Hierarchy
   /// points to as many points (the limit projection), which Evaluate then applies too.
   std::vector<StencilTable> Stencils;
   Level Finest; ///< the last level: its faces, holes and origins (edges: see Refine)
-  /// Finest's faces when Refine left them to be made later (a faces-only finest level written
-  /// from its grandparent: LevelRows::WrittenFromGrandparent, or the linear schemes with any
-  /// written rows): Finest has its tags, and MakeFinestFaces its faces.
-  LaterFaces FinestFaces;
 
   int GetNumStencilTables() const { return static_cast<int>(Stencils.size()); }
   /// The points the tables make (curve hierarchies have tables but no Finest level).
@@ -48,25 +44,7 @@ struct SUBDKERNEL_EXPORT Hierarchy
     return Stencils.empty() ? Finest.Topology.GetNumVertices() : Stencils.back().GetNumRows();
   }
 
-  /// Whether Finest has its faces (see FinestFaces).
-  bool HasFinestFaces() const { return !this->FinestFaces.Make; }
-  Index GetNumFinestFaces() const
-  {
-    return this->HasFinestFaces() ? this->Finest.Topology.GetNumFaces() : this->FinestFaces.NumFaces;
-  }
-  /// Makes Finest's faces if they are still to be made. A caller that evaluates the points
-  /// first, and frees its scratch levels, never holds those and the faces at once: with a
-  /// faces-only finest level written from its grandparent, the peak memory is then the
-  /// output plus the grandparent's topology.
-  void MakeFinestFaces()
-  {
-    if (!this->HasFinestFaces())
-    {
-      ReleaseFreeMemory(); // what the caller freed (its scratch) makes room for the faces
-      this->Finest.Topology = this->FinestFaces.Make();
-      this->FinestFaces = LaterFaces();
-    }
-  }
+  Index GetNumFinestFaces() const { return this->Finest.Topology.GetNumFaces(); }
 
   /// Applies every level's stencils to `components` values per base point; `finest` receives
   /// GetNumFinestPoints() * components values. T is float or double (accumulation is in
@@ -85,37 +63,12 @@ enum class LevelRows
   Written, ///< written as they are applied, from the level above, where the scheme can
            ///< (Scheme::MakeRowSource): a fraction of the memory and time of storing them,
            ///< and applied in parallel where building a table is serial. Each level's
-           ///< topology is then kept (a third of the finest parent's, summed over levels).
-  WrittenFromGrandparent, ///< as Written, but the finest level's rows (and faces) are written
-                          ///< from its grandparent where the scheme can
-                          ///< (Scheme::RefineFromGrandparent), and so are every other level's
-                          ///< above it, so the largest topology of all, the finest level's
-                          ///< parent's, is not kept, nor the ones two, four... levels above
-                          ///< it: less peak memory, for slower evaluations
-                          ///< (each row works out its neighbourhood). A faces-only finest
-                          ///< level then gets its faces from Hierarchy::MakeFinestFaces.
-  WrittenLean, ///< as Written, but a faces-only finest level whose rows all have a smooth form
-               ///< (EveryGrandchildRowIsSmooth of its grandparent: a closed mesh without sharp
-               ///< features) is written from its grandparent, its parent never built:
-               ///< WrittenFromGrandparent's memory at Written's speed, for a single
-               ///< evaluation. Re-evaluations are slower until PromoteFinestRows builds the
-               ///< parent (what the filters do when they re-apply their rows). With both
-               ///< modes, a scheme that can write the finest rows from the grandparent once
-               ///< the parent is built (Scheme::WritesFinestRowsFromGrandparent: sqrt(3) on
-               ///< closed smooth levels) splits the parent and frees it instead of keeping it.
+           ///< topology is then kept by its rows.
 };
 
-/// If the finest level's rows are written from its grandparent, its parent not kept
-/// (LevelRows::WrittenLean on a mesh without sharp features, or WrittenFromGrandparent; for
-/// Catmull-Clark and Loop), builds that parent and writes the rows from its lists instead:
-/// the same rows, re-applied 2-3x faster, for the memory of the parent's topology (about as
-/// much as the finest level's own faces). Returns whether it did.
-SUBDKERNEL_EXPORT bool PromoteFinestRows(const Scheme& scheme, Hierarchy& hierarchy);
-/// Whether PromoteFinestRows would do something.
-SUBDKERNEL_EXPORT bool HasFinestRowsToPromote(const Scheme& scheme, const Hierarchy& hierarchy);
-
-/// Refines `base` `levels` times. The finest level has faces only unless `finest` asks
-/// for its full topology and tags (to read its sharp edges). Returns false if progress
+/// Refines `base` `levels` times: per level, the scheme's split, then its rows. The finest
+/// level has faces only unless `finest` asks for its full topology and tags (to read its
+/// sharp edges, evaluate its limit), OpenSubdiv's fullTopologyInLastLevel. Returns false if progress
 /// asked to stop (out is then incomplete).
 SUBDKERNEL_EXPORT bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out,
   const ProgressCallback& progress = nullptr, ChildTopology finest = ChildTopology::FacesOnly,

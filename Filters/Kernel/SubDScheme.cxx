@@ -1,6 +1,5 @@
 #include "SubDScheme.h"
 #include "SubDLimitRules.h"
-#include "SubDGrandchildRows.h"
 #include "SubDCatmullClarkRules.h"
 #include "SubDButterflyRules.h"
 #include "SubDDooSabinRules.h"
@@ -8,13 +7,10 @@
 #include "SubDDualSplit.h"
 #include "SubDLinearRules.h"
 #include "SubDLoopRules.h"
-#include "SubDSqrt3ChildTopology.h"
-#include "SubDMidpointGrandchild.h"
 #include "SubDMidpointSplit.h"
 #include "SubDQuadSplit.h"
 #include "SubDRowWriting.h"
 #include "SubDSqrt3Limit.h"
-#include "SubDSqrt3GrandparentRows.h"
 #include "SubDSqrt3Rules.h"
 #include "SubDTriangleSplit.h"
 
@@ -33,37 +29,6 @@ StencilTable CatmullClarkScheme::BuildStencils(const Level& parent) const
 std::shared_ptr<const RowSource> CatmullClarkScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
 {
   return std::make_shared<WrittenRows<CatmullClarkRowWriter>>(std::move(parent), this->GetParallelFor());
-}
-
-bool Scheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent, ChildTopology depth,
-  StencilTable& rows, Level& child, LaterFaces& childFaces, const RowSource* grandparentRows) const
-{
-  GrandchildScheme which;
-  if (!this->GetGrandchildScheme(which))
-  {
-    return false;
-  }
-  const ParallelFor& parallelFor = this->GetParallelFor();
-  auto grandchildRows = EveryGrandchildRowIsSmooth(which, *grandparent)
-    ? std::make_shared<GrandchildRows>(which, grandparent, parallelFor, grandparentRows)
-    : std::make_shared<GrandchildRows>(which, grandparent, parent, parallelFor, grandparentRows);
-  if (depth == ChildTopology::FacesOnly)
-  {
-    parent = Level(); // the rows and the faces below come from the grandparent
-    child = SplitTwiceTags(which, *grandparent, parallelFor);
-    childFaces.NumFaces = CountSplitTwiceFaces(which, grandparent->Topology);
-    childFaces.Make = [which, grandchildRows, parallelFor] {
-      return SplitTwiceFaces(
-        which, grandchildRows->GetGrandparent().Topology, grandchildRows->GetParentEdgeNumbering(), parallelFor);
-    };
-  }
-  else
-  {
-    child = this->Split(parent, depth); // the child's full topology is the parent's split
-    parent = Level();
-  }
-  rows = StencilTable::FromSource(std::move(grandchildRows));
-  return true;
 }
 
 MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const
@@ -132,18 +97,7 @@ StencilTable LinearTriangleScheme::BuildStencils(const Level& parent) const
 
 Level DooSabinScheme::Split(const Level& parent, ChildTopology depth) const
 {
-  return SplitDual(parent, NumberDualPoints(parent, this->GetParallelFor()), depth, this->GetParallelFor(),
-    this->GetFaceTagsKept(parent, depth));
-}
-
-Level DooSabinScheme::SplitBeforeTrim(Level& parent, ChildTopology depth) const
-{
-  const DualPoints points = NumberDualPoints(parent, this->GetParallelFor());
-  if (depth == ChildTopology::FacesOnly)
-  {
-    parent.Topology.ReleaseVertexEdgeLists();
-  }
-  return SplitDual(parent, points, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth));
+  return SplitDual(parent, NumberDualPoints(parent, this->GetParallelFor()), depth, this->GetParallelFor());
 }
 
 StencilTable DooSabinScheme::BuildStencils(const Level& parent) const
@@ -157,7 +111,7 @@ LevelRefinement DooSabinScheme::RefineLevel(const Level& parent, ChildTopology d
   const DualPoints points = NumberDualPoints(parent, this->GetParallelFor());
   LevelRefinement r;
   r.Stencils = BuildDooSabinStencils(parent, points, this->GetParallelFor());
-  r.Child = SplitDual(parent, points, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth));
+  r.Child = SplitDual(parent, points, depth, this->GetParallelFor());
   return r;
 }
 
@@ -194,41 +148,6 @@ std::shared_ptr<const RowSource> MidpointScheme::MakeRowSource(std::shared_ptr<c
   return MakeMidpointRowSource(std::move(parent));
 }
 
-bool MidpointScheme::RefinesFromGrandparentAlone(const Level& grandparent) const
-{
-  return MidpointGrandchildHasClosedForm(grandparent);
-}
-
-bool MidpointScheme::RefineFromGrandparent(std::shared_ptr<const Level> grandparent, Level& parent,
-  ChildTopology depth, StencilTable& rows, Level& child, LaterFaces& childFaces, const RowSource*) const
-{
-  // Refine skips the parent only where the closed form holds, after trimming the grandparent
-  // to Part::FacesWithEdges; a grandparent trimmed otherwise (its faces' edges gone), or
-  // without faces, is not one.
-  const bool parentBuilt = parent.Topology.GetNumVertices() > 0 || parent.Topology.GetNumFaces() > 0;
-  const MeshTopology& kept = grandparent->Topology;
-  if (depth != ChildTopology::FacesOnly || parentBuilt || kept.GetNumFaces() == 0 || kept.GetFaceEdgeArray().empty())
-  {
-    return false; // split from the parent
-  }
-  const ParallelFor& parallelFor = this->GetParallelFor();
-  child = MidpointGrandchildTags(*grandparent, this->GetFacesOnlyOrigins(), parallelFor);
-  childFaces.NumFaces = CountMidpointGrandchildFaces(grandparent->Topology);
-  childFaces.Make = [grandparent, parallelFor] { return MidpointGrandchildFaces(grandparent->Topology, parallelFor); };
-  rows = StencilTable::FromSource(MakeMidpointGrandchildRowSource(std::move(grandparent)));
-  return true;
-}
-
-bool MidpointScheme::SplitsForGrandchildAlone(const Level& parent) const
-{
-  return MidpointGrandchildHasClosedForm(parent);
-}
-
-Level MidpointScheme::SplitForGrandchildAlone(const Level& parent) const
-{
-  return MidpointChildWithEdges(parent, this->GetFacesOnlyOrigins(), this->GetParallelFor());
-}
-
 MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
 {
   // Upper bounds (plus kept boundary vertices, at most V): a point per edge; F- and
@@ -243,16 +162,6 @@ MeshCounts MidpointScheme::PredictChildCounts(const MeshCounts& parent) const
   return child;
 }
 
-MeshCounts MidpointScheme::PredictClosedSmoothChildCounts(const MeshCounts& parent) const
-{
-  MeshCounts child;
-  child.Vertices = parent.Edges;
-  child.Faces = parent.Faces + parent.Vertices;
-  child.Corners = 2.0 * parent.Corners;
-  child.Edges = parent.Corners;
-  return child;
-}
-
 StencilTable ButterflyScheme::BuildStencils(const Level& parent) const
 {
   return BuildButterflyStencils(parent, this->Tension, this->GetParallelFor());
@@ -260,65 +169,12 @@ StencilTable ButterflyScheme::BuildStencils(const Level& parent) const
 
 LevelRefinement Sqrt3Scheme::RefineLevel(const Level& parent, ChildTopology depth) const
 {
-  return RefineSqrt3(parent, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth));
+  return RefineSqrt3(parent, depth, this->GetParallelFor());
 }
 
 Level Sqrt3Scheme::Split(const Level& parent, ChildTopology depth) const
 {
-  return SplitSqrt3(parent, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth));
-}
-
-Level Sqrt3Scheme::SplitAndTrim(
-  Level& parent, ChildTopology depth, LeanChild lean, const std::function<void(Level&)>& trimParent) const
-{
-  bool trimmed = false;
-  auto trim = [&] {
-    trimParent(parent);
-    trimmed = true;
-  };
-  Level child = SplitSqrt3(parent, depth, this->GetParallelFor(), this->GetFaceTagsKept(parent, depth), trim, lean);
-  if (!trimmed)
-  {
-    trimParent(parent);
-  }
-  return child;
-}
-
-bool Sqrt3Scheme::WritesFinestRowsFromGrandparent(const Level& grandparent, const Level& parent) const
-{
-  return Sqrt3RowsFromGrandparentApply(grandparent, parent, this->GetParallelFor());
-}
-
-std::shared_ptr<const RowSource> Sqrt3Scheme::MakeFinestRowSourceFromGrandparent(
-  std::shared_ptr<const Level> grandparent, const RowSource* grandparentRows) const
-{
-  return MakeSqrt3RowSourceFromGrandparent(std::move(grandparent), this->GetParallelFor(), Sqrt3RowFans(grandparentRows));
-}
-
-std::shared_ptr<const RowSource> Sqrt3Scheme::MakeRowSourceWithoutVertexLists(std::shared_ptr<const Level> parent) const
-{
-  const Index numPoints = parent->Topology.GetNumFaces() + parent->Topology.GetNumVertices();
-  if (parent->HasSharpFeatures() || !Sqrt3ChildTopology::Applies(*parent, numPoints))
-  {
-    return nullptr;
-  }
-  return MakeSqrt3RowSourceReadingFans(std::move(parent), this->GetParallelFor());
-}
-
-Level Sqrt3Scheme::SplitFinestAlone(Level& parent) const
-{
-  const FaceTagsKept kept = this->GetFaceTagsKept(parent, ChildTopology::FacesOnly);
-  parent.Topology.ReleaseVertexEdgeLists();
-  LevelArray<float>().swap(parent.VertexSharpness); // a faces-only child inherits none
-  if (!kept.Origins)
-  {
-    LevelArray<Index>().swap(parent.FaceOrigin);
-  }
-  if (!kept.Holes)
-  {
-    LevelArray<std::uint8_t>().swap(parent.FaceIsHole); // none is a hole
-  }
-  return SplitSqrt3(parent, ChildTopology::FacesOnly, this->GetParallelFor(), kept);
+  return SplitSqrt3(parent, depth, this->GetParallelFor());
 }
 
 std::shared_ptr<const RowSource> Sqrt3Scheme::MakeRowSource(std::shared_ptr<const Level> parent) const

@@ -60,10 +60,8 @@ struct Spoke
 }
 
 MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexArray offsets, IndexArray vertices,
-  const ParallelFor& parallelFor, LeanChild lean)
+  const ParallelFor& parallelFor)
 {
-  const bool vertexFaceListsAndFaceEdges = lean == LeanChild::No;
-  const bool vertexEdgeLists = lean != LeanChild::SplitAlone;
   const Index numFaces = parent.GetNumFaces();
   const Index numEdges = parent.GetNumEdges();
   const Index numVertices = parent.GetNumVertices();
@@ -112,9 +110,8 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexAr
 
   // Number them: each edge's ends (as first met) and two triangles; and, for the lists that
   // name the child edges, each old edge's flipped edge and each corner's spoke.
-  const bool namesEdges = vertexEdgeLists; // lists of faces come with them (LeanChild)
-  IndexArray flippedEdge(namesEdges ? static_cast<size_t>(numEdges) : 0);
-  IndexArray spokeEdge(namesEdges ? static_cast<size_t>(parent.GetNumFaceCorners()) : 0);
+  IndexArray flippedEdge(static_cast<size_t>(numEdges));
+  IndexArray spokeEdge(static_cast<size_t>(parent.GetNumFaceCorners()));
   child.EdgeVertices.resize(2 * static_cast<size_t>(numChildEdges));
   child.EdgeFaces.resize(2 * static_cast<size_t>(numChildEdges));
   parallelFor(0, numEdges, [&](Index begin, Index end) {
@@ -133,35 +130,20 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexAr
         const Index v = from < numFaces ? to - numFaces : from - numFaces;
         if (slot == 2)
         {
-          const Index flipped = add(edge.F2, edge.F1, 2 * e, 2 * e + 1); // triangle 2e, corner 1
-          if (namesEdges)
-          {
-            flippedEdge[e] = flipped;
-          }
+          flippedEdge[e] = add(edge.F2, edge.F1, 2 * e, 2 * e + 1); // triangle 2e, corner 1
         }
         if (spoke.OtherEdge > e)
         {
-          const Index added = add(from, to, triangleAt(e, v), triangleAt(spoke.OtherEdge, v));
-          if (namesEdges)
-          {
-            spokeEdge[spoke.Corner] = added;
-          }
+          spokeEdge[spoke.Corner] = add(from, to, triangleAt(e, v), triangleAt(spoke.OtherEdge, v));
         }
       });
     }
   });
   FillStrided(child.EdgeFaceOffsets, numChildEdges, 2, parallelFor);
-  // Numbered: what only the numbering read goes before the lists around the points take
-  // their memory (the edges' first ends stay for the faces around the points, if made).
-  IndexArray().swap(firstNewEdge);
-  if (!vertexFaceListsAndFaceEdges)
-  {
-    IndexArray().swap(edgeStart);
-  }
 
   // Face edges: triangle 2e (spoke, flipped, spoke), triangle 2e + 1 (spoke, flipped, spoke).
-  child.FaceEdges.resize(vertexFaceListsAndFaceEdges ? child.FaceVertices.size() : 0);
-  parallelFor(0, vertexFaceListsAndFaceEdges ? numEdges : 0, [&](Index begin, Index end) {
+  child.FaceEdges.resize(child.FaceVertices.size());
+  parallelFor(0, numEdges, [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e)
     {
       Index* edges = child.FaceEdges.data() + 6 * static_cast<size_t>(e);
@@ -176,11 +158,11 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexAr
   // three spokes). Old vertices: one triangle per edge, one spoke per face.
   const size_t centroidSlots = 6 * static_cast<size_t>(numFaces);
   // As many faces around a point as edges: the parent's vertex-edge lists size them.
-  const size_t faceSlots = vertexFaceListsAndFaceEdges ? centroidSlots + parent.VertexEdges.size() : 0;
-  child.VertexFaces.resize(faceSlots);
-  child.VertexFaceCorners.resize(faceSlots);
-  child.VertexEdges.resize(vertexEdgeLists ? centroidSlots + parent.VertexEdges.size() : 0);
-  parallelFor(0, namesEdges ? numFaces : 0, [&](Index begin, Index end) {
+  const size_t slots = centroidSlots + parent.VertexEdges.size();
+  child.VertexFaces.resize(slots);
+  child.VertexFaceCorners.resize(slots);
+  child.VertexEdges.resize(slots);
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {
       Index faceEdges[3] = { parent.GetFaceEdges(f)[0], parent.GetFaceEdges(f)[1], parent.GetFaceEdges(f)[2] };
@@ -189,34 +171,28 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexAr
       for (int i = 0; i < 3; ++i)
       {
         const Index e = faceEdges[i];
-        if (vertexFaceListsAndFaceEdges)
-        {
-          Index* faces = child.VertexFaces.data() + 6 * static_cast<size_t>(f);
-          Index* corners = child.VertexFaceCorners.data() + 6 * static_cast<size_t>(f);
-          const bool first = parent.GetEdgeFaces(e)[0] == f; // m1 of (a, m2, m1), (b, m1, m2)
-          faces[2 * i] = 2 * e;
-          faces[2 * i + 1] = 2 * e + 1;
-          corners[2 * i] = first ? 2 : 1;
-          corners[2 * i + 1] = first ? 1 : 2;
-        }
+        Index* faces = child.VertexFaces.data() + 6 * static_cast<size_t>(f);
+        Index* corners = child.VertexFaceCorners.data() + 6 * static_cast<size_t>(f);
+        const bool first = parent.GetEdgeFaces(e)[0] == f; // m1 of (a, m2, m1), (b, m1, m2)
+        faces[2 * i] = 2 * e;
+        faces[2 * i + 1] = 2 * e + 1;
+        corners[2 * i] = first ? 2 : 1;
+        corners[2 * i + 1] = first ? 1 : 2;
         edges[i] = flippedEdge[e];
         edges[3 + i] = spokeEdge[parent.GetFaceOffset(f) + i];
       }
       std::sort(edges, edges + 6);
     }
   });
-  parallelFor(0, vertexEdgeLists ? numVertices : 0, [&](Index begin, Index end) {
+  parallelFor(0, numVertices, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v)
     {
       const size_t first = centroidSlots + static_cast<size_t>(parent.VertexEdgeOffsets[v]);
       const IndexSpan vertexEdges = parent.GetVertexEdges(v);
-      if (vertexFaceListsAndFaceEdges)
+      for (Index i = 0; i < vertexEdges.size(); ++i) // edges sorted: so are their triangles
       {
-        for (Index i = 0; i < vertexEdges.size(); ++i) // edges sorted: so are their triangles
-        {
-          child.VertexFaces[first + i] = triangleAt(vertexEdges[i], v);
-          child.VertexFaceCorners[first + i] = 0;
-        }
+        child.VertexFaces[first + i] = triangleAt(vertexEdges[i], v);
+        child.VertexFaceCorners[first + i] = 0;
       }
       const IndexSpan faces = parent.GetVertexFaces(v), corners = parent.GetVertexFaceCorners(v);
       Index* edges = child.VertexEdges.data() + centroidSlots + parent.VertexFaceOffsets[v];
@@ -239,10 +215,7 @@ MeshTopology Sqrt3ChildTopology::OfSqrt3Step(const MeshTopology& parent, IndexAr
     });
   };
   offsetsOf(parent.VertexEdgeOffsets, child.VertexFaceOffsets); // a closed manifold vertex:
-  if (vertexEdgeLists)
-  {
-    offsetsOf(parent.VertexEdgeOffsets, child.VertexEdgeOffsets); // as many faces as edges
-  }
+  offsetsOf(parent.VertexEdgeOffsets, child.VertexEdgeOffsets);  // as many faces as edges
 
   child.EdgeTags.assign(static_cast<size_t>(numChildEdges), EdgeTag{ 0, 0 });
   child.VertexTags.assign(static_cast<size_t>(numFaces + numVertices), VertexTag{ 0, 0 });

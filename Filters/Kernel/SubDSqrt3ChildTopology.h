@@ -30,12 +30,9 @@ public:
   static bool Applies(const Level& parent, Index numPoints);
 
   /// The child topology, from the triangles the step wrote (`offsets`, `vertices`: two per
-  /// old edge, in edge order). Requires Applies(). With `lean` WithoutFaceLists, the child
-  /// has no lists of faces around its vertices (their counts only: as after
-  /// MeshTopology::ReleaseVertexFaceLists) and no face edges (ReleaseFaceEdges); with
-  /// SplitAlone no lists of edges around its vertices either (ReleaseVertexEdgeLists).
-  static MeshTopology OfSqrt3Step(const MeshTopology& parent, IndexArray offsets, IndexArray vertices,
-    const ParallelFor& parallelFor, LeanChild lean = LeanChild::No);
+  /// old edge, in edge order). Requires Applies().
+  static MeshTopology OfSqrt3Step(
+    const MeshTopology& parent, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor);
 };
 }
 

@@ -2,7 +2,6 @@
 #include "SubDFaceBlocks.h"
 #include "SubDRowWriting.h"
 #include "SubDSqrt3ChildTopology.h"
-#include "SubDTriangleFans.h"
 
 #include <algorithm>
 #include <array>
@@ -111,10 +110,6 @@ Sqrt3VertexRule ClassifySqrt3Vertex(const Level& level, Index v, bool evenStep, 
 
 bool HasSqrt3InteriorCurveEdge(const Level& level, const ParallelFor& parallelFor)
 {
-  if (level.EdgeSharpness.empty())
-  {
-    return false; // no sharp edge (LeanChild::SplitAlone)
-  }
   const MeshTopology& topo = level.Topology;
   std::atomic<bool> found{ false };
   parallelFor(0, topo.GetNumEdges(), [&](Index begin, Index end) {
@@ -241,13 +236,6 @@ struct Sqrt3InheritedSharpness
       [](float s) { return DecaySharpness(s); });
   }
 
-  // Whether the child inherits no sharpness at all.
-  bool Smooth() const
-  {
-    return this->SharpEdges.empty() &&
-      std::none_of(this->VertexSharpness.begin(), this->VertexSharpness.end(), [](float s) { return IsSharp(s); });
-  }
-
   void SetOn(Level& child) const
   {
     const MeshTopology& childTopo = child.Topology;
@@ -268,17 +256,14 @@ struct Sqrt3InheritedSharpness
 };
 
 // The rows of one step, numbered like Sqrt3Points, written one at a time (SubDRowWriting.h).
-// What the rows need beyond the parent's faces and vertices' rings is kept here
-// in compact form (each vertex's rule; the curve neighbours of the few curve vertices and
-// trisected edges), so that rows written as they are applied let the rest of the parent go
-// (MeshTopology::Part::FacesAndRings).
+// What the rows need beyond the parent's topology is worked out once, when the writer is
+// made: each vertex's rule, the curve neighbours of the few curve vertices and trisected edges.
 class Sqrt3RowWriter
 {
 public:
-  Sqrt3RowWriter(const Level& parent, const ParallelFor& parallelFor, std::shared_ptr<const TriangleFans> fans = nullptr)
+  Sqrt3RowWriter(const Level& parent, const ParallelFor& parallelFor)
     : Sqrt3RowWriter(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), parallelFor)
   {
-    this->Fans = std::move(fans);
   }
   Sqrt3RowWriter(const Level& parent, const Sqrt3Points& points, const ParallelFor& parallelFor)
     : Topo(parent.Topology)
@@ -412,26 +397,11 @@ public:
     return true;
   }
 
-  const std::shared_ptr<const TriangleFans>& GetFans() const { return this->Fans; }
-
 private:
-  // Calls visit(source, weight) for a relaxed vertex's row: itself, then its ring in
-  // increasing order, from the parent's rings or, where the rows were given them, its fans.
+  // Calls visit(source, weight) for a relaxed vertex's row: itself, then its ring.
   template <typename Visit>
   void VisitRelaxedRow(Index v, Visit&& visit) const
   {
-    if (this->Fans)
-    {
-      FanScratch ring(this->Fans->GetMaxValence());
-      const Index valence = this->Fans->SortedNeighbours(this->Topo.GetFaceVertexArray().data(), v, ring.data());
-      const double alpha = this->Alpha(valence);
-      visit(v, 1.0 - alpha);
-      for (Index k = 0; k < valence; ++k)
-      {
-        visit(ring.data()[k], alpha / valence);
-      }
-      return;
-    }
     const Index valence = this->Topo.GetVertexEdges(v).size();
     const double alpha = this->Alpha(valence);
     visit(v, 1.0 - alpha);
@@ -452,7 +422,6 @@ private:
   std::vector<Index> CurveSlot;                  // per vertex: its CurveEnds (empty: no curve vertex)
   std::vector<std::array<Index, 2>> CurveEnds;   // the curve neighbours p, q of a curve vertex
   std::vector<std::array<Index, 4>> Trisections; // a, b, p, q per trisected edge, in point order
-  std::shared_ptr<const TriangleFans> Fans;      // the parent's, when its rings are not kept
   double Alphas[MaxTabulatedValence] = {};
 };
 
@@ -514,9 +483,7 @@ public:
 
 private:
   Index VertexPoint(Index v) const { return this->Points.FirstVertexPoint + v; }
-  // A face's tags, where the parent still has them: a finest split from a parent kept for
-  // nothing else may have freed those its child does not keep (SplitFinestAlone).
-  Index Origin(Index f) const { return this->Parent.FaceOrigin.empty() ? 0 : this->Parent.FaceOrigin[f]; }
+  Index Origin(Index f) const { return this->Parent.FaceOrigin[f]; }
   std::uint8_t Hole(Index f) const { return this->Parent.IsFaceHole(f); }
 
   // Edge e's ends (a, b) in the order triangle f runs them, from the triangle's corners
@@ -605,14 +572,12 @@ private:
 };
 
 // The child level of one step (without its rows).
-Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopology depth,
-  const ParallelFor& parallelFor, FaceTagsKept kept, const std::function<void()>& parentRead = nullptr,
-  LeanChild lean = LeanChild::No)
+Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopology depth, const ParallelFor& parallelFor)
 {
   const Sqrt3FaceWriter writer(parent, points);
   EmittedFaces faces = EmitTrianglesInPlace(
     writer.GetNumElements(), parallelFor, [&writer](Index begin, Index end) { return writer.CountBlock(begin, end); },
-    [&writer](Index begin, Index end, TriangleCursor& cursor) { writer.WriteBlock(begin, end, cursor); }, kept);
+    [&writer](Index begin, Index end, TriangleCursor& cursor) { writer.WriteBlock(begin, end, cursor); });
   Level child;
   child.FaceOrigin = std::move(faces.Origins);
   child.FaceIsHole = std::move(faces.Holes);
@@ -620,90 +585,39 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
   {
     child.Depth = parent.Depth + 1;
     child.Creasing = parent.Creasing;
-    const Sqrt3InheritedSharpness inherited(parent, points);
-    child.Topology = Sqrt3ChildTopology::OfSqrt3Step(
-      parent.Topology, std::move(faces.Offsets), std::move(faces.Vertices), parallelFor, lean);
-    if (parentRead)
-    {
-      parentRead(); // before the child's sharpness: the peak of a step
-    }
-    if (lean == LeanChild::SplitAlone && inherited.Smooth())
-    {
-      return child; // without sharpness arrays: nothing is sharp
-    }
+    child.Topology =
+      Sqrt3ChildTopology::OfSqrt3Step(parent.Topology, std::move(faces.Offsets), std::move(faces.Vertices), parallelFor);
     child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), SharpnessSmooth);
     child.VertexSharpness.assign(static_cast<size_t>(points.NumPoints), SharpnessSmooth);
-    inherited.SetOn(child);
+    Sqrt3InheritedSharpness(parent, points).SetOn(child);
     return child;
   }
-  // The general builder reads the child's faces alone: what the child inherits is gathered
-  // first, and the parent may go before the child's topology takes its memory.
-  std::unique_ptr<Sqrt3InheritedSharpness> inherited;
+  SetChildTopology(parent, child, points.NumPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
   if (depth == ChildTopology::Full)
   {
-    inherited = std::make_unique<Sqrt3InheritedSharpness>(parent, points);
+    Sqrt3InheritedSharpness(parent, points).SetOn(child);
   }
-  Level depthOnly; // what SetChildTopology reads of the parent
-  depthOnly.Depth = parent.Depth;
-  depthOnly.Creasing = parent.Creasing;
-  if (parentRead)
-  {
-    parentRead();
-  }
-  SetChildTopology(
-    depthOnly, child, points.NumPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
-  if (inherited)
-  {
-    inherited->SetOn(child);
-  }
-  TrimToLeanChild(child, lean);
   return child;
 }
 }
 
-LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor, FaceTagsKept kept)
+LevelRefinement RefineSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
   const Sqrt3Points points(parent, IsEvenStep(parent), parallelFor);
   LevelRefinement result;
   result.Stencils = WriteStencilTable(Sqrt3RowWriter(parent, points, parallelFor), parallelFor);
-  result.Child = SplitWithPoints(parent, points, depth, parallelFor, kept);
+  result.Child = SplitWithPoints(parent, points, depth, parallelFor);
   return result;
 }
 
-Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor, FaceTagsKept kept,
-  const std::function<void()>& parentRead, LeanChild lean)
+Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
-  return SplitWithPoints(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), depth, parallelFor, kept,
-    parentRead, lean);
+  return SplitWithPoints(parent, Sqrt3Points(parent, IsEvenStep(parent), parallelFor), depth, parallelFor);
 }
 
 std::shared_ptr<const RowSource> MakeSqrt3RowSource(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
 {
   return std::make_shared<WrittenRows<Sqrt3RowWriter>>(std::move(parent), parallelFor);
-}
-
-std::shared_ptr<const RowSource> MakeSqrt3RowSourceReadingFans(
-  std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
-{
-  const MeshTopology& topo = parent->Topology;
-  if (topo.GetNumFaceCorners() != 3 * topo.GetNumFaces() || topo.GetNumBoundaryEdges() > 0 ||
-    topo.GetNumNonManifoldEdges() > 0 || topo.GetNumNonManifoldVertices() > 0)
-  {
-    return nullptr;
-  }
-  std::shared_ptr<const TriangleFans> fans =
-    TriangleFans::Build(topo.GetFaceVertexArray().data(), topo.GetNumFaces(), topo.GetNumVertices(), parallelFor);
-  if (!fans)
-  {
-    return nullptr;
-  }
-  return std::make_shared<WrittenRows<Sqrt3RowWriter>>(std::move(parent), parallelFor, std::move(fans));
-}
-
-std::shared_ptr<const TriangleFans> Sqrt3RowFans(const RowSource* rows)
-{
-  const auto* written = dynamic_cast<const WrittenRows<Sqrt3RowWriter>*>(rows);
-  return written ? written->GetWriter().GetFans() : nullptr;
 }
 
 Index Sqrt3FirstVertexPoint(const Level& parent)

@@ -49,7 +49,6 @@
 
 namespace subd
 {
-class TriangleFans;
 /// Kobbelt's alpha_n.
 SUBDKERNEL_EXPORT double Sqrt3Alpha(Index n);
 
@@ -80,32 +79,13 @@ SUBDKERNEL_EXPORT Index Sqrt3FirstVertexPoint(const Level& parent);
 
 /// One step (split and stencils share the point numbering); every face of `parent` must be a
 /// triangle.
-/// The child keeps the face tags `kept` asks for (else its FaceOrigin or FaceIsHole is empty).
 SUBDKERNEL_EXPORT LevelRefinement RefineSqrt3(
-  const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor, FaceTagsKept kept = {});
-/// The split alone (RefineSqrt3's child). `parentRead`, if given, is called once the split
-/// reads nothing more of `parent` (which it may free): where the child's topology is built in
-/// general, before it is; in Sqrt3ChildTopology's closed form, which reads the parent's
-/// topology, after it, before the child's sharpness takes its memory.
-/// `lean` says what the child comes without (LeanChild): the closed form never makes it.
-SUBDKERNEL_EXPORT Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor,
-  FaceTagsKept kept = {}, const std::function<void()>& parentRead = nullptr, LeanChild lean = LeanChild::No);
-/// RefineSqrt3's rows written as they are applied (SubDRowWriting.h). Besides what they keep
-/// of their own (each vertex's rule, the curve vertices' and trisected edges' neighbours),
-/// they read the parent's faces' corners and vertices' rings only: the rest of its topology
-/// may be freed (MeshTopology::KeepOnly, Part::FacesAndRings) once its child is split.
+  const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
+/// The split alone (RefineSqrt3's child).
+SUBDKERNEL_EXPORT Level SplitSqrt3(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor = SerialFor);
+/// RefineSqrt3's rows written as they are applied (SubDRowWriting.h).
 SUBDKERNEL_EXPORT std::shared_ptr<const RowSource> MakeSqrt3RowSource(
   std::shared_ptr<const Level> parent, const ParallelFor& parallelFor = SerialFor);
-/// The same rows reading each vertex's ring from the fans of the parent's triangles
-/// (SubDTriangleFans.h) instead of its rings, so that those may be freed as well
-/// (MeshTopology::ReleaseVertexEdgeLists) once the child is split: the same bits. For a
-/// closed manifold triangle mesh; nullptr for any other parent.
-SUBDKERNEL_EXPORT std::shared_ptr<const RowSource> MakeSqrt3RowSourceReadingFans(
-  std::shared_ptr<const Level> parent, const ParallelFor& parallelFor = SerialFor);
-/// The fans rows made by MakeSqrt3RowSourceReadingFans read (nullptr for other rows): the
-/// rows of the next level written from the grandparent share them
-/// (MakeSqrt3RowSourceFromGrandparent).
-SUBDKERNEL_EXPORT std::shared_ptr<const TriangleFans> Sqrt3RowFans(const RowSource* rows);
 }
 
 #endif

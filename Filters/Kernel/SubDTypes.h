@@ -19,40 +19,6 @@ namespace subd
 using Index = std::int32_t;
 constexpr Index InvalidIndex = -1;
 
-/// Blocks of at least this size come from AllocateLargeBlock, and so go back to the system
-/// when freed. Low enough that the pieces a level is built from (face blocks of a parallel
-/// split, per-vertex offsets, tags) do too: left with the C library, they stayed in the
-/// process through the later, larger phases (Doo-Sabin, bunny level 3: peak 393 to 269 MB).
-constexpr std::size_t LargeBlockBytes = std::size_t(256) << 10;
-/// Memory for a large array (freed by FreeLargeBlock), mapped from the system and given back
-/// to it when freed (on Linux; elsewhere, and under AddressSanitizer, which checks malloc's
-/// blocks only, malloc's). With SUBD_HUGE_PAGES=1 in the environment
-/// a block of 4 MiB or more is instead aligned to 2 MiB and marked for transparent huge
-/// pages (Linux "madvise" mode, Debian's default): filling a fresh array then takes one page
-/// fault per 2 MiB instead of one per 4 KiB. That is opt-in because on the 2-core VM of the
-/// benchmarks it made refinements faster in the median (Catmull-Clark armadillo L3 on one
-/// thread: 0.31 s against 0.36 s) but now and then two to three times slower (fresh huge
-/// pages the hypervisor had not backed yet), where 4 KiB pages gave steady times. Throws
-/// std::bad_alloc when out of memory.
-SUBDKERNEL_EXPORT void* AllocateLargeBlock(std::size_t bytes);
-/// Frees a block of `bytes` bytes from AllocateLargeBlock. Where blocks are mapped, a few
-/// freed blocks (8 MiB at most) stay mapped for the next requests while the large blocks in
-/// use are under 32 MiB: each fresh page costs a page fault when first written, a third of
-/// a small refinement's time on the benchmark VM, and a reused block's pages are there
-/// already. The first request that takes the blocks in use past 32 MiB gives the kept ones
-/// back, so a large refinement's peak holds none.
-SUBDKERNEL_EXPORT void FreeLargeBlock(void* block, std::size_t bytes) noexcept;
-/// The bytes of the freed blocks kept mapped for reuse (see FreeLargeBlock).
-SUBDKERNEL_EXPORT std::size_t GetKeptLargeBlockBytes() noexcept;
-/// The bytes of the large blocks in use: the memory the C library's statistics (mallinfo2)
-/// do not see, since it comes from the system directly.
-SUBDKERNEL_EXPORT std::size_t GetLargeBlockBytesInUse() noexcept;
-/// Hands the memory the process has freed back to the system where the C library keeps it
-/// (glibc keeps freed blocks below its moving mmap threshold, up to 32 MiB each, for reuse):
-/// called between the phases of a low-memory refinement, so that freed topology does not
-/// count twice in the peak. Also gives back the freed large blocks kept for reuse.
-SUBDKERNEL_EXPORT void ReleaseFreeMemory() noexcept;
-
 /// Inlines a function the compiler would call: the row writers' per-row evaluation
 /// (ApplySmoothRow), whose call costs as much as a small row (Catmull-Clark re-applied at
 /// level 3: 10 % faster inlined).
@@ -93,27 +59,6 @@ struct DefaultInitAllocator : std::allocator<T>
   {
     using other = DefaultInitAllocator<U>;
   };
-  T* allocate(std::size_t n)
-  {
-    if (n >= LargeBlockBytes / sizeof(T))
-    {
-      if (n > static_cast<std::size_t>(-1) / sizeof(T))
-      {
-        throw std::bad_array_new_length();
-      }
-      return static_cast<T*>(AllocateLargeBlock(n * sizeof(T)));
-    }
-    return std::allocator<T>::allocate(n);
-  }
-  void deallocate(T* p, std::size_t n) noexcept
-  {
-    if (n >= LargeBlockBytes / sizeof(T))
-    {
-      FreeLargeBlock(p, n * sizeof(T));
-      return;
-    }
-    std::allocator<T>::deallocate(p, n);
-  }
   template <typename U>
   void construct(U* p) noexcept(std::is_nothrow_default_constructible<U>::value)
   {
@@ -178,27 +123,12 @@ SUBDKERNEL_EXPORT const char* ToString(BoundaryRule rule);
 
 /// How much of a child level's topology a split builds. The last level of a refinement only
 /// needs its faces (to be output); its edges and incidence relations, the costliest part of a
-/// level at four times the size of the one before, are only built when another level follows.
-/// A level between read by rules that only ask for faces and edges (the linear rules) needs
-/// no relation around its vertices, nor sharpness (FacesAndEdges: the primal splits; see
-/// Scheme::GetTopologyBetween).
+/// level at four times the size of the one before, are only built when another level follows
+/// or the caller reads them (creases out, limit geometry).
 enum class ChildTopology : int
 {
   Full = 0,
-  FacesOnly = 1,
-  FacesAndEdges = 2
-};
-
-/// What a split's child may come without, where nothing reads it (Scheme::SplitAndTrim).
-enum class LeanChild : int
-{
-  No = 0,
-  /// Without the lists of faces around its vertices (their counts stay) and its faces' edges.
-  WithoutFaceLists = 1,
-  /// Also without the lists of edges around its vertices and, where nothing is sharp, its
-  /// sharpness arrays (empty: every edge and vertex smooth): the finest level's parent when
-  /// it is split alone (Scheme::SplitFinestAlone), its rows written from its own parent.
-  SplitAlone = 2
+  FacesOnly = 1
 };
 }
 

@@ -4,8 +4,7 @@
 // measurement runs in a forked child so its peak RSS is its own. Prints seconds, output
 // faces per second, peak RSS, the ratio OpenSubdiv time / SubD time, and for the filter the
 // peak RSS over the output's bytes and the time over the bandwidth bound (writing the output
-// once), also with the filter's LowMemory option (the finest level's parent topology not
-// kept). The last row of a level re-applies the cached stencils after the points moved (the
+// once). The last row of a level re-applies the cached stencils after the points moved (the
 // explorer's and an animation's case: the fastest of 5 frames), in output points per second.
 //
 //   usage: BenchCatmullClark mesh.off [maxLevel=4] [repeats=3]
@@ -61,13 +60,12 @@ Work RunKernel(const Mesh& mesh, int level)
   return { seconds, double(h.Finest.Topology.GetNumFaces()) };
 }
 
-Work RunFilter(const Mesh& mesh, int level, int threads, bool lowMemory = false)
+Work RunFilter(const Mesh& mesh, int level, int threads)
 {
   subdbench::StartThreads(threads);
   vtkNew<vtkSubDCatmullClarkFilter> filter;
   filter->SetInputData(mesh.PolyData);
   filter->SetNumberOfSubdivisions(level);
-  filter->SetLowMemory(lowMemory);
   const Clock::time_point start = Clock::now();
   filter->Update();
   const double seconds = subdbench::SecondsSince(start);
@@ -126,10 +124,10 @@ int main(int argc, char* argv[])
     const std::vector<Result> results = subdbench::MeasureInterleaved(
       { [&] { return subdbench::RunOpenSubdiv(mesh, level, Sdc::SCHEME_CATMARK); }, [&] { return RunKernel(mesh, level); },
         [&] { return RunFilter(mesh, level, 1); }, [&] { return RunFilter(mesh, level, 2); },
-        [&] { return RunFilter(mesh, level, 2, true); }, [&] { return RunReapply(mesh, level, 2); } },
+        [&] { return RunReapply(mesh, level, 2); } },
       repeats);
     const Result &osd = results[0], &kernel = results[1], &filter1 = results[2], &filter2 = results[3],
-                 &lean = results[4], &reapply = results[5];
+                 &reapply = results[4];
     auto row = [&](const char* name, const Result& r) {
       std::printf("%-5d %-28s %10.4f %12.3g %9.2f", level, name, r.Seconds, r.Faces / r.Seconds, osd.Seconds / r.Seconds);
       subdbench::PrintMemory(r);
@@ -139,10 +137,9 @@ int main(int argc, char* argv[])
     row("SubD kernel (1 thread)", kernel);
     row("SubD filter (1 thread)", filter1);
     row("SubD filter (2 threads)", filter2);
-    row("SubD LowMemory (2 threads)", lean);
     std::printf("%-5d %-28s %10.4f %12.3g points/s (re-applied stencils, points moved)\n", level,
       "SubD re-apply (2 threads)", reapply.Seconds, reapply.Faces / reapply.Seconds);
-    if (kernel.Faces != osd.Faces || filter2.Faces != osd.Faces || lean.Faces != osd.Faces)
+    if (kernel.Faces != osd.Faces || filter2.Faces != osd.Faces)
     {
       std::fprintf(stderr, "bench: face counts differ (%g, %g, %g)\n", osd.Faces, kernel.Faces, filter2.Faces);
       return 1;

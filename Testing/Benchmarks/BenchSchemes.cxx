@@ -6,8 +6,7 @@
 // own mesh structure, refinement and point computation (what a user waits for); each runs in
 // a forked child (own peak RSS), best of `repeats`, the implementations' runs interleaved
 // (subdbench::MeasureInterleaved). Prints seconds, output faces per second, peak RSS and, per
-// scheme, the ratio fastest peer time / SubD time (2 threads); for Loop from level 2 on,
-// also with the filter's LowMemory option.
+// scheme, the ratio fastest peer time / SubD time (2 threads).
 //
 //   usage: BenchSchemes mesh.off [maxLevel=3] [repeats=3] [scheme,scheme,...]
 #include "SubDBenchOpenSubdiv.h"
@@ -54,23 +53,16 @@ using subdbench::Work;
 
 using Mesh = subdbench::BenchMesh;
 
-template <typename Filter, typename Configure>
-Work RunConfiguredFilter(const Mesh& mesh, int level, Configure&& configure)
+template <typename Filter>
+Work RunFilter(const Mesh& mesh, int level)
 {
   const Clock::time_point start = Clock::now();
   vtkNew<Filter> filter;
   filter->SetInputData(mesh.PolyData);
   filter->SetNumberOfSubdivisions(level);
-  configure(filter.Get());
   filter->Update();
   return { SecondsSince(start), double(filter->GetOutput()->GetNumberOfPolys()),
     subdbench::OutputBytes(filter->GetOutput()) };
-}
-
-template <typename Filter>
-Work RunFilter(const Mesh& mesh, int level)
-{
-  return RunConfiguredFilter<Filter>(mesh, level, [](Filter*) {});
 }
 
 template <typename Filter>
@@ -78,14 +70,6 @@ Work RunSubD(const Mesh& mesh, int level, int threads)
 {
   subdbench::StartThreads(threads);
   return RunFilter<Filter>(mesh, level);
-}
-
-// With LowMemory (the finest level written from the level two above).
-template <typename Filter>
-Work RunSubDLowMemory(const Mesh& mesh, int level, int threads)
-{
-  subdbench::StartThreads(threads);
-  return RunConfiguredFilter<Filter>(mesh, level, [](Filter* filter) { filter->LowMemoryOn(); });
 }
 
 using CgalMesh = CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3>;
@@ -154,7 +138,6 @@ struct SchemeBench
   std::string Name;
   std::function<Work(const Mesh&, int, int)> SubD;
   std::vector<Peer> Peers;
-  std::function<Work(const Mesh&, int, int)> SubDLowMemory; // where LowMemory applies
 };
 }
 
@@ -175,8 +158,7 @@ int main(int argc, char* argv[])
       { { "OpenSubdiv Far", RunOpenSubdivLoop },
         { "CGAL", [](const Mesh& m, int l) { return RunCgal(m, l, [](CgalMesh& x, auto p) { CGAL::Subdivision_method_3::Loop_subdivision(x, p); }); } },
         { "OpenMesh", RunOpenMesh<OMTri, OpenMesh::Subdivider::Uniform::LoopT<OMTri>> },
-        { "VTK", RunFilter<vtkLoopSubdivisionFilter> } },
-      RunSubDLowMemory<vtkSubDLoopFilter> },
+        { "VTK", RunFilter<vtkLoopSubdivisionFilter> } } },
     { "butterfly", RunSubD<vtkSubDButterflyFilter>,
       { { "OpenMesh", RunOpenMesh<OMTri, OpenMesh::Subdivider::Uniform::ModifiedButterflyT<OMTri>> },
         { "VTK", RunFilter<vtkButterflySubdivisionFilter> } } },
@@ -210,17 +192,12 @@ int main(int argc, char* argv[])
         subdbench::PrintMemory(r);
         std::printf("\n");
       };
-      // SubD on 1 and 2 threads, each peer, and SubD LowMemory where it applies, interleaved.
+      // SubD on 1 and 2 threads and each peer, interleaved.
       std::vector<std::function<Work()>> works = { [&] { return scheme.SubD(mesh, level, 1); },
         [&] { return scheme.SubD(mesh, level, 2); } };
       for (const Peer& peer : scheme.Peers)
       {
         works.push_back([&] { return peer.Run(mesh, level); });
-      }
-      const bool measuresLean = scheme.SubDLowMemory && level >= 2;
-      if (measuresLean)
-      {
-        works.push_back([&] { return scheme.SubDLowMemory(mesh, level, 2); });
       }
       const std::vector<Result> results = subdbench::MeasureInterleaved(works, repeats);
       const Result& one = results[0];
@@ -241,13 +218,6 @@ int main(int argc, char* argv[])
       }
       std::printf("%-10s %-5d ratio fastest peer (%s) / SubD 2 threads: %.2f, / SubD 1 thread: %.2f\n",
         scheme.Name.c_str(), level, fastestName.c_str(), fastestPeer / two.Seconds, fastestPeer / one.Seconds);
-      if (measuresLean)
-      {
-        const Result& lean = results.back();
-        row("SubD LowMemory (2 thr.)", lean);
-        std::printf("%-10s %-5d ratio fastest peer (%s) / SubD LowMemory 2 threads: %.2f\n", scheme.Name.c_str(),
-          level, fastestName.c_str(), fastestPeer / lean.Seconds);
-      }
     }
   }
   return 0;

@@ -2,8 +2,6 @@
 #ifndef SubDTestHeap_h
 #define SubDTestHeap_h
 
-#include "SubDTypes.h"
-
 #include <cstddef>
 #include <malloc.h>
 
@@ -18,10 +16,10 @@
 #define SUBD_HEAP_MEASURABLE
 namespace subdtest
 {
-/// The heap in use: the C library's, and the large blocks mapped beside it.
+/// The heap in use: the C library's small blocks and its mapped large ones.
 inline std::size_t HeapInUse()
 {
-  return mallinfo2().uordblks + mallinfo2().hblkhd + subd::GetLargeBlockBytesInUse();
+  return mallinfo2().uordblks + mallinfo2().hblkhd;
 }
 }
 #endif

@@ -282,10 +282,9 @@ TYPED_TEST(AnySurfaceFilter, CellDataInheritedAndParentIds)
   }
 }
 
-// Without cell data, parent ids or ghosts, the finest faces' origins are not kept (the
-// splits that can do without them spare them at their peak): the same faces and points, and
-// cell data added to the same topology later refines again to carry it.
-TYPED_TEST(AnySurfaceFilter, CellDataAddedLaterRefinesAgainForTheFaceOrigins)
+// Cell data added to the same topology later is carried by the cached refinement (every
+// finest face knows its input cell): the same faces and points, no new refinement.
+TYPED_TEST(AnySurfaceFilter, CellDataAddedLaterIsCarriedWithoutRefiningAgain)
 {
   vtkSmartPointer<vtkPolyData> cube = Cube();
   vtkNew<TypeParam> filter;
@@ -299,7 +298,7 @@ TYPED_TEST(AnySurfaceFilter, CellDataAddedLaterRefinesAgainForTheFaceOrigins)
   AddFaceIds(cube);
   cube->Modified();
   filter->Update();
-  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 2);
+  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 1);
   vtkSmartPointer<vtkPolyData> fresh = Subdivide<TypeParam>(cube, 2);
   vtkPolyData* out = filter->GetOutput();
   EXPECT_EQ(subdtest::Coordinates(out), points);
@@ -311,12 +310,12 @@ TYPED_TEST(AnySurfaceFilter, CellDataAddedLaterRefinesAgainForTheFaceOrigins)
   ASSERT_EQ(ids->GetNumberOfTuples(), expected->GetNumberOfTuples());
   for (vtkIdType c = 0; c < ids->GetNumberOfTuples(); ++c)
     ASSERT_EQ(ids->GetValue(c), expected->GetValue(c)) << c;
-  // Kept now: a points-only change reuses the stencils.
+  // A points-only change reuses the stencils too.
   cube->GetPoints()->SetPoint(6, 2.0, 1.5, 1.2);
   cube->GetPoints()->Modified();
   cube->Modified();
   filter->Update();
-  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 2);
+  EXPECT_EQ(filter->GetNumberOfStencilBuilds(), 1);
   EXPECT_NE(filter->GetOutput()->GetCellData()->GetArray("FaceId"), nullptr);
 }
 
@@ -598,62 +597,6 @@ TEST(CatmullClarkFilter, ErrorOutputAboveMemoryBudgetRefused)
   EXPECT_EQ(filter->GetOutput()->GetNumberOfPolys(), 6 * 4096);
 }
 
-// A refinement that needs more than MaximumMemory by default but fits with LowMemory is made
-// with LowMemory (Catmull-Clark and Loop can), with a warning, and gives the same output; one
-// that does not fit even so is refused. The two predictions are read from the refusals.
-namespace
-{
-double PredictedMiB(const std::string& error)
-{
-  const size_t at = error.find("need about ");
-  return at == std::string::npos ? 0.0 : std::stod(error.substr(at + 11));
-}
-
-template <typename Filter>
-void ExpectLowMemoryWhenOnlyItFits(vtkPolyData* input)
-{
-  const int levels = 7;
-  auto run = [&](double budget, bool lowMemory, subdtest::Messages& messages) {
-    vtkNew<Filter> filter;
-    messages.Watch(filter);
-    filter->SetInputData(input);
-    filter->SetNumberOfSubdivisions(levels);
-    filter->SetMaximumMemory(budget);
-    filter->SetLowMemory(lowMemory);
-    filter->Update();
-    return vtkSmartPointer<vtkPolyData>(filter->GetOutput());
-  };
-  subdtest::Messages byDefault, lean;
-  run(1.0, false, byDefault);
-  run(1.0, true, lean);
-  const double defaultMiB = PredictedMiB(byDefault.Errors), leanMiB = PredictedMiB(lean.Errors);
-  EXPECT_NE(lean.Errors.find("even with LowMemory"), std::string::npos) << lean.Errors;
-  ASSERT_GT(leanMiB, 1.0) << lean.Errors;
-  ASSERT_GT(defaultMiB, leanMiB + 1.0) << byDefault.Errors;
-
-  subdtest::Messages between, ample;
-  vtkSmartPointer<vtkPolyData> fitted = run(0.5 * (defaultMiB + leanMiB), false, between);
-  vtkSmartPointer<vtkPolyData> expected = run(1.0e6, false, ample);
-  EXPECT_EQ(between.NumErrors, 0) << between.Errors;
-  EXPECT_NE(between.Warnings.find("refined as with LowMemory"), std::string::npos) << between.Warnings;
-  EXPECT_EQ(ample.NumWarnings, 0) << ample.Warnings;
-  ASSERT_GT(expected->GetNumberOfPolys(), 0);
-  EXPECT_EQ(subdtest::Coordinates(fitted), subdtest::Coordinates(expected));
-  EXPECT_EQ(subdtest::Faces(fitted), subdtest::Faces(expected));
-}
-}
-
-TEST(CatmullClarkFilter, LowMemoryWhenOnlyItFitsMaximumMemory)
-{
-  ExpectLowMemoryWhenOnlyItFits<vtkSubDCatmullClarkFilter>(subdtest::ToPolyData(subdtest::House(true).Jitter(0.1)));
-}
-
-TEST(LoopFilter, LowMemoryWhenOnlyItFitsMaximumMemory)
-{
-  ExpectLowMemoryWhenOnlyItFits<vtkSubDLoopFilter>(
-    subdtest::ToPolyData(subdtest::House(true).Jitter(0.1).Triangulated()));
-}
-
 // When memory runs out all the same (the budget allows the output, the process cannot hold it),
 // the filter reports it and leaves an empty output instead of ending the application. Run in
 // a child process whose address space is capped 1 GiB above what it already maps; the
@@ -742,79 +685,3 @@ TYPED_TEST(AnySurfaceFilter, PrintSelfNamesOptions)
   EXPECT_NE(os.str().find("NumberOfSubdivisions: 1"), std::string::npos);
 }
 
-// LowMemory (the finest level written from the level two above, the one between not kept)
-// gives the default output bit for bit: points, point data, faces, parent cell ids, on an
-// open mesh (with n-gons for Catmull-Clark), with its boundary faces as holes too, and again
-// when only the input points move (re-applied stencils).
-namespace
-{
-template <typename Filter>
-void ExpectLowMemoryGivesTheSameOutput(const subdtest::TestMesh& mesh)
-{
-  vtkSmartPointer<vtkPolyData> input = subdtest::ToPolyData(mesh);
-  vtkNew<vtkDoubleArray> temperature;
-  temperature->SetName("Temperature");
-  temperature->SetNumberOfComponents(2);
-  temperature->SetNumberOfTuples(input->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-    temperature->SetTuple2(i, std::sin(1.3 * i), std::cos(0.4 * i));
-  input->GetPointData()->AddArray(temperature);
-  for (int step = 0; step < 4; ++step)
-  {
-    // Levels 1 to 3, then 3 with the boundary faces as holes (not output).
-    const int levels = std::min(step + 1, 3);
-    vtkNew<Filter> fast, lean;
-    for (Filter* filter : { fast.Get(), lean.Get() })
-    {
-      filter->SetInputData(input);
-      filter->SetNumberOfSubdivisions(levels);
-      filter->GenerateParentCellIdsOn();
-      filter->SetBoundaryRule(step == 3 ? vtkSubDSurfaceFilter::BOUNDARY_NONE : vtkSubDSurfaceFilter::BOUNDARY_EDGE_ONLY);
-    }
-    lean->LowMemoryOn();
-    for (int pass = 0; pass < 2; ++pass)
-    {
-      if (pass == 1)
-      {
-        for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
-        {
-          double p[3];
-          input->GetPoint(i, p);
-          input->GetPoints()->SetPoint(i, p[0] * 1.1, p[1] - 0.2 * p[2], p[2]);
-        }
-        input->GetPoints()->Modified();
-      }
-      fast->Update();
-      lean->Update();
-      vtkPolyData* a = fast->GetOutput();
-      vtkPolyData* b = lean->GetOutput();
-      const std::string what = "step " + std::to_string(step) + " pass " + std::to_string(pass);
-      ASSERT_GT(a->GetNumberOfPolys(), 0) << what;
-      EXPECT_EQ(subdtest::Coordinates(a), subdtest::Coordinates(b)) << what;
-      EXPECT_EQ(subdtest::Faces(a), subdtest::Faces(b)) << what;
-      auto values = [](vtkDataSetAttributes* data, const char* name) {
-        vtkDataArray* array = data->GetArray(name);
-        std::vector<double> out;
-        for (vtkIdType i = 0; array && i < array->GetNumberOfValues(); ++i)
-          out.push_back(array->GetVariantValue(i).ToDouble());
-        return out;
-      };
-      EXPECT_EQ(values(a->GetPointData(), "Temperature"), values(b->GetPointData(), "Temperature")) << what;
-      EXPECT_FALSE(values(a->GetPointData(), "Temperature").empty()) << what;
-      EXPECT_EQ(values(a->GetCellData(), "ParentCellId"), values(b->GetCellData(), "ParentCellId")) << what;
-      EXPECT_FALSE(values(a->GetCellData(), "ParentCellId").empty()) << what;
-    }
-    EXPECT_EQ(lean->GetNumberOfStencilBuilds(), 1) << levels;
-  }
-}
-}
-
-TEST(CatmullClarkFilter, LowMemoryGivesTheSameOutput)
-{
-  ExpectLowMemoryGivesTheSameOutput<vtkSubDCatmullClarkFilter>(subdtest::House(true).Jitter(0.1));
-}
-
-TEST(LoopFilter, LowMemoryGivesTheSameOutput)
-{
-  ExpectLowMemoryGivesTheSameOutput<vtkSubDLoopFilter>(subdtest::House(true).Jitter(0.1).Triangulated());
-}

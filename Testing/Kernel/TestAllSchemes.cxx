@@ -2,9 +2,7 @@
 // refinement commutes with affine maps, planar input stays planar, and the refined mesh of a
 // closed manifold is a closed manifold with the same Euler characteristic.
 #include "SubDButterflyRules.h"
-#include "SubDGrandchildRows.h"
 #include "SubDMemoryEstimate.h"
-#include "SubDMidpointGrandchild.h"
 #include "SubDRefiner.h"
 #include "SubDRowWriting.h"
 #include "SubDScheme.h"
@@ -178,49 +176,6 @@ INSTANTIATE_TEST_SUITE_P(Schemes, AllSchemes, ::testing::ValuesIn(SchemeCases())
     std::replace(name.begin(), name.end(), '-', '_');
     return name;
   });
-
-// Without faces-only origins (Scheme::SetFacesOnlyOrigins), the same finest faces and hole
-// flags: sqrt(3) and Doo-Sabin keep no origin then, and no hole flag where the parent has no
-// hole; the other schemes keep theirs (the option is a hint).
-TEST_P(AllSchemes, FacesOnlyWithoutOriginsGivesTheSameFacesAndHoles)
-{
-  const std::string name = GetParam().Name;
-  const bool spares = name == "sqrt3" || name == "doo-sabin";
-  int withHoles = 0;
-  for (const subdtest::TestMesh& mesh : Fixtures())
-  {
-    for (bool hole : { false, true })
-    {
-      const auto scheme = GetParam().Make();
-      const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
-      subd::BaseTags tags;
-      if (hole)
-        tags.FaceIsHole.assign(static_cast<size_t>(topology.GetNumFaces()), 0), tags.FaceIsHole[0] = 1;
-      const subd::Level base =
-        subd::MakeBaseLevel(topology, tags, scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly));
-      subd::Hierarchy kept, spared;
-      subd::Refine(*scheme, base, 2, kept);
-      scheme->SetFacesOnlyOrigins(false);
-      subd::Refine(*scheme, base, 2, spared);
-      kept.MakeFinestFaces();
-      spared.MakeFinestFaces();
-      const subd::MeshTopology &a = kept.Finest.Topology, &b = spared.Finest.Topology;
-      ASSERT_EQ(a.GetFaceOffsetArray(), b.GetFaceOffsetArray()) << mesh.Name;
-      ASSERT_EQ(a.GetFaceVertexArray(), b.GetFaceVertexArray()) << mesh.Name;
-      bool anyHole = false;
-      for (Index f = 0; f < a.GetNumFaces(); ++f)
-      {
-        ASSERT_EQ(kept.Finest.IsFaceHole(f), spared.Finest.IsFaceHole(f)) << mesh.Name << " face " << f;
-        anyHole |= kept.Finest.IsFaceHole(f);
-      }
-      EXPECT_EQ(spared.Finest.FaceOrigin.empty(), spares) << mesh.Name;
-      EXPECT_EQ(spared.Finest.FaceIsHole.empty(), spares && !anyHole) << mesh.Name;
-      EXPECT_FALSE(kept.Finest.FaceOrigin.empty()) << mesh.Name;
-      withHoles += anyHole;
-    }
-  }
-  EXPECT_GT(withHoles, 0);
-}
 
 // A first evaluation into an empty scratch frees the level before the finest's parent before
 // the finest level is written (it is not read again: the peak of a refinement is lower by it);
@@ -647,30 +602,15 @@ TEST(Level, SmoothClosedVerticesAgreeWithThePerVertexTest)
   EXPECT_LT(smooth, tested);
 }
 
-// Every level's rows written as they are applied (LevelRows::Written, what the filters use,
-// and WrittenFromGrandparent, what they use with LowMemory, at levels 2 and 4 from their
-// grandparents, the finest faces then made after the points) give bit for bit the points,
-// faces, holes and origins the stored table gives, with semi-sharp and sharp creases and
-// corners under both crease methods and with no sharp feature, for 3 double, 3 float and 5
-// float components.
-namespace
-{
-// The schemes with rows of their own written from the grandparent (SubDGrandchildRows.h):
-// the butterfly only without tension.
-bool WritesRowsTwoLevelsDown(const std::string& name)
-{
-  return name == "catmull-clark" || name == "loop" || name == "butterfly";
-}
-}
-
+// Every level's rows written as they are applied (LevelRows::Written, what the filters use)
+// give bit for bit the points, faces, holes and origins the stored table gives, with
+// semi-sharp and sharp creases and corners under both crease methods and with no sharp
+// feature, a faces-only or full finest level, for 3 double, 3 float and 5 float components.
 TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
 {
   const auto scheme = GetParam().Make();
   const subd::BoundaryRule rule = scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly);
-  // The creases' methods, and no sharp feature at all (where Catmull-Clark and Loop, with
-  // WrittenFromGrandparent or WrittenLean, skip the finest level's parent on closed meshes:
-  // EveryGrandchildRowIsSmooth).
-  int leanHierarchies = 0, releasedVertexFaceLists = 0, releasedVertexEdgeLists = 0, midpointClosedForms = 0;
+  const bool writes = scheme->MakeRowSource(std::make_shared<subd::Level>()) != nullptr;
   for (int creases = 0; creases < 3; ++creases)
   {
     const subd::CreaseMethod method = creases == 1 ? subd::CreaseMethod::Chaikin : subd::CreaseMethod::Uniform;
@@ -683,115 +623,42 @@ TEST_P(AllSchemes, WrittenLevelRowsEqualStoredRows)
         values[i] = static_cast<float>(std::sin(0.7 * i));
       for (int levels = 1; levels <= 4; ++levels)
       {
-        subd::Hierarchy stored;
-        subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, stored);
-        for (int variant = 0; variant < 4; ++variant)
+        for (const subd::ChildTopology finest : { subd::ChildTopology::FacesOnly, subd::ChildTopology::Full })
         {
-          // Written rows; written from the grandparent every other level (with the finest
-          // level faces only, and with its full topology); written, the finest level from its
-          // grandparent where no row needs its parent (WrittenLean).
-          const subd::LevelRows rows = variant == 0 ? subd::LevelRows::Written
-            : variant == 3                          ? subd::LevelRows::WrittenLean
-                                                    : subd::LevelRows::WrittenFromGrandparent;
-          const subd::ChildTopology finest = variant == 2 ? subd::ChildTopology::Full : subd::ChildTopology::FacesOnly;
-          subd::Hierarchy written;
-          subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, written, nullptr, finest, rows);
-          const bool writes = scheme->MakeRowSource(std::make_shared<subd::Level>()) != nullptr;
+          const std::string what = mesh.Name + " L" + std::to_string(levels);
+          subd::Hierarchy stored, written;
+          subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, stored, nullptr, finest);
+          subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, written, nullptr, finest,
+            subd::LevelRows::Written);
           for (const subd::StencilTable& table : written.Stencils)
             EXPECT_EQ(table.IsStored(), !writes);
           ASSERT_EQ(written.GetNumFinestPoints(), stored.GetNumFinestPoints());
-          // A faces-only finest level written from its grandparent gets its faces when
-          // asked, after the points (which need none of them). The linear schemes write it
-          // so with any written rows, without building its parent.
-          const std::string name = GetParam().Name;
-          const bool linear = name == "linear-triangles" || name == "bilinear";
-          const bool lean = subd::HasFinestRowsToPromote(*scheme, written);
-          // The midpoint scheme's finest level comes from a closed smooth grandparent in
-          // closed form with the leaner modes (SubDMidpointGrandchild.h).
-          bool midpointClosedForm = false;
-          if (name == "midpoint" && levels >= 2 && variant != 0 && variant != 2)
-          {
-            subd::Hierarchy above;
-            subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels - 2, above, nullptr,
-              subd::ChildTopology::Full);
-            midpointClosedForm = subd::MidpointGrandchildHasClosedForm(above.Finest);
-            midpointClosedForms += midpointClosedForm;
-          }
-          const bool fromGrandparent = levels >= 2 && variant != 2 &&
-            (linear || (variant == 1 && WritesRowsTwoLevelsDown(name)) || lean || midpointClosedForm);
-          EXPECT_TRUE(!lean || variant != 0) << mesh.Name << " L" << levels;
-          leanHierarchies += lean && variant == 3;
-          EXPECT_EQ(written.HasFinestFaces(), !fromGrandparent) << mesh.Name << " L" << levels;
-          EXPECT_EQ(written.GetNumFinestFaces(), stored.GetNumFinestFaces()) << mesh.Name << " L" << levels;
-          EXPECT_EQ(Evaluate(written, mesh.Points), Evaluate(stored, mesh.Points)) << mesh.Name << " L" << levels;
+          EXPECT_EQ(Evaluate(written, mesh.Points), Evaluate(stored, mesh.Points)) << what;
           std::vector<float> a(static_cast<size_t>(stored.GetNumFinestPoints()) * 5), b(a.size());
           stored.Evaluate(values.data(), 5, a.data());
           written.Evaluate(values.data(), 5, b.data());
-          EXPECT_EQ(a, b) << mesh.Name << " L" << levels;
+          EXPECT_EQ(a, b) << what;
           // Three float components: points in single precision (the rows' prefetching path).
           std::vector<float> c(static_cast<size_t>(stored.GetNumFinestPoints()) * 3), d(c.size());
           stored.Evaluate(values.data(), 3, c.data());
           written.Evaluate(values.data(), 3, d.data());
-          EXPECT_EQ(c, d) << mesh.Name << " L" << levels;
-          const auto* rowsTwoDown = dynamic_cast<const subd::GrandchildRows*>(written.Stencils.back().GetSource());
-          if (rowsTwoDown && !linear) // the linear rules' levels between never have them
-          {
-            // The butterfly's grandparent level has no lists of edges around its vertices
-            // once its grandchild's rows are made: its own rows (evaluated above, crease rows
-            // included) and its grandchild's read none.
-            const bool released = !rowsTwoDown->GetGrandparent().Topology.HasVertexRelations();
-            EXPECT_EQ(released, name == "butterfly") << mesh.Name << " L" << levels;
-            releasedVertexEdgeLists += released;
-          }
-          if (lean)
-          {
-            // Loop's rows read the grandparent's vertex rings through its edges, the butterfly's
-            // order them through edges' faces: the lists of faces around its vertices are
-            // freed where the parent was skipped, and restored for the promotion's split
-            // (below, which must give the same values).
-            const auto* grandchildRows = dynamic_cast<const subd::GrandchildRows*>(written.Stencils.back().GetSource());
-            ASSERT_NE(grandchildRows, nullptr);
-            const bool released = !grandchildRows->GetGrandparent().Topology.HasVertexFaceLists();
-            EXPECT_TRUE(!released || name == "loop" || name == "butterfly") << mesh.Name << " L" << levels;
-            releasedVertexFaceLists += released;
-            // The same rows from the parent's lists, built now (what the filters do when
-            // they re-apply them).
-            EXPECT_TRUE(subd::PromoteFinestRows(*scheme, written));
-            EXPECT_FALSE(subd::HasFinestRowsToPromote(*scheme, written));
-            EXPECT_FALSE(subd::PromoteFinestRows(*scheme, written));
-            std::vector<float> promoted(c.size());
-            written.Evaluate(values.data(), 3, promoted.data());
-            EXPECT_EQ(c, promoted) << mesh.Name << " L" << levels;
-          }
-          written.MakeFinestFaces();
-          EXPECT_TRUE(written.HasFinestFaces());
+          EXPECT_EQ(c, d) << what;
           ASSERT_EQ(written.Finest.Topology.GetFaceVertexArray(), stored.Finest.Topology.GetFaceVertexArray());
           EXPECT_EQ(written.Finest.Topology.GetNumVertices(), stored.Finest.Topology.GetNumVertices());
-          EXPECT_EQ(subdtest::FaceTags(written.Finest), subdtest::FaceTags(stored.Finest)) << mesh.Name << " L" << levels;
-          if (finest == subd::ChildTopology::Full)
-          {
-            subd::Hierarchy storedFull;
-            subd::Refine(*scheme, subd::MakeBaseLevel(topology, tags, rule), levels, storedFull, nullptr, finest);
-            EXPECT_EQ(written.Finest.Topology.GetNumEdges(), storedFull.Finest.Topology.GetNumEdges()) << mesh.Name;
-            EXPECT_EQ(written.Finest.EdgeSharpness, storedFull.Finest.EdgeSharpness) << mesh.Name << " L" << levels;
-            EXPECT_EQ(written.Finest.VertexSharpness, storedFull.Finest.VertexSharpness) << mesh.Name << " L" << levels;
-          }
+          EXPECT_EQ(subdtest::FaceTags(written.Finest), subdtest::FaceTags(stored.Finest)) << what;
+          EXPECT_EQ(written.Finest.Topology.GetNumEdges(), stored.Finest.Topology.GetNumEdges()) << what;
+          EXPECT_EQ(written.Finest.EdgeSharpness, stored.Finest.EdgeSharpness) << what;
+          EXPECT_EQ(written.Finest.VertexSharpness, stored.Finest.VertexSharpness) << what;
         }
       }
     }
   }
-  // WrittenLean wrote the finest rows of some closed meshes without their parent.
-  const std::string name = GetParam().Name;
-  EXPECT_EQ(leanHierarchies > 0, WritesRowsTwoLevelsDown(name)) << leanHierarchies;
-  EXPECT_EQ(releasedVertexEdgeLists > 0, name == "butterfly") << releasedVertexEdgeLists;
-  EXPECT_EQ(releasedVertexFaceLists > 0, name == "loop" || name == "butterfly") << releasedVertexFaceLists;
-  EXPECT_EQ(midpointClosedForms > 0, name == "midpoint") << midpointClosedForms;
 }
 
 // The size guard's prediction (SubDMemoryEstimate.h) covers what a refinement holds once its
 // points are evaluated (every level it keeps, the finest faces, the points and the scratch
 // levels: the default path's peak), measured as the heap in use, and is not far above it for
-// the schemes that write their rows; LowMemory's is lower from level 2 on, where it applies.
+// the schemes that write their rows.
 // (Not in the AddressSanitizer build, whose allocator mallinfo2 does not see.)
 #if defined(SUBD_HEAP_MEASURABLE)
 TEST_P(AllSchemes, PeakMemoryEstimateCoversTheHeldMemory)
@@ -811,7 +678,6 @@ TEST_P(AllSchemes, PeakMemoryEstimateCoversTheHeldMemory)
     subd::Hierarchy hierarchy;
     subd::Refine(*scheme, subd::MakeBaseLevel(topology, {}, scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly)),
       request.Levels, hierarchy, nullptr, request.Finest, request.Rows);
-    hierarchy.MakeFinestFaces();
     std::vector<double> finest(static_cast<size_t>(hierarchy.GetNumFinestPoints()) * 3);
     subd::EvaluationScratch<double> scratch;
     hierarchy.Evaluate(mesh.Points.data(), 3, finest.data(), subd::SerialFor, nullptr, -1, &scratch);
@@ -819,298 +685,12 @@ TEST_P(AllSchemes, PeakMemoryEstimateCoversTheHeldMemory)
   }
   EXPECT_GT(held, 1.0e6); // a measurement, not noise
   EXPECT_LE(held, predicted) << GetParam().Name;
-  // Not a bound far above, for the schemes whose written rows keep their levels whole (those
-  // that keep a part of each level, Doo-Sabin and midpoint, peak while a level is split,
-  // which is over when this is measured).
-  const bool writesRows = scheme->MakeRowSource(std::make_shared<subd::Level>()) != nullptr;
-  subd::MeshTopology::Part part;
-  if (writesRows && !scheme->WrittenRowsReadOnly(part))
+  // Not a bound far above, for the schemes whose written rows keep their levels and whose
+  // predicted counts are exact (the midpoint's bound its kept boundary vertices by all).
+  if (scheme->MakeRowSource(std::make_shared<subd::Level>()) != nullptr && GetParam().Name != "midpoint")
   {
     EXPECT_GE(held, 0.5 * predicted) << GetParam().Name;
   }
-  subd::RefinementRequest lean = request;
-  lean.Rows = subd::LevelRows::WrittenFromGrandparent;
-  if (scheme->RefinesFromGrandparent() && !scheme->RefinesFromGrandparentAlone())
-  {
-    EXPECT_LT(subd::EstimatePeakBytes(*scheme, lean) - subd::EstimateLibraryBytes, 0.8 * predicted);
-  }
-  lean.Levels = request.Levels = 1; // no grandparent: the same path
-  EXPECT_EQ(subd::EstimatePeakBytes(*scheme, lean), subd::EstimatePeakBytes(*scheme, request));
 }
 #endif
 
-// The finest level's rows written from its grandparent (the level between is not kept) are
-// the rows the level between writes, entry for entry and bit for bit, in the same blocks;
-// applied in small chunks on threads they give the stored table's values; and the faces two
-// splits down equal those of splitting twice. Catmull-Clark over meshes with n-gons, Loop
-// over triangle meshes, with boundaries, non-manifold edges and pinched fans, semi-sharp and
-// sharp creases, a sharp vertex, holes, under both crease methods, from the base level and
-// from one level down.
-namespace
-{
-// `rows` are `expected`'s, entry for entry and bit for bit, in the same blocks, and applied
-// in small chunks on threads to `components` values they give the table's values.
-void ExpectSameRows(
-  const subd::GrandchildRows& rows, const subd::StencilTable& expected, int components, const std::string& what)
-{
-  const subd::StencilTable written = rows.ToStencilTable();
-  ASSERT_EQ(written.GetNumRows(), expected.GetNumRows()) << what;
-  ASSERT_EQ(written.GetNumBlocks(), expected.GetNumBlocks()) << what;
-  for (subd::Index b = 0; b < expected.GetNumBlocks(); ++b)
-    EXPECT_EQ(written.GetBlockEnd(b), expected.GetBlockEnd(b)) << what;
-  for (subd::Index row = 0; row < expected.GetNumRows(); ++row)
-  {
-    const subd::IndexSpan a = written.GetSources(row), b = expected.GetSources(row);
-    ASSERT_EQ(std::vector<subd::Index>(a.begin(), a.end()), std::vector<subd::Index>(b.begin(), b.end()))
-      << what << " row " << row;
-    for (subd::Index k = 0; k < a.size(); ++k)
-      ASSERT_EQ(written.GetWeights(row)[k], expected.GetWeights(row)[k]) << what << " row " << row;
-  }
-  std::vector<float> parents(static_cast<size_t>(rows.GetNumParents()) * components);
-  for (size_t i = 0; i < parents.size(); ++i)
-    parents[i] = static_cast<float>(std::cos(0.3 * i));
-  std::vector<float> fromTable(static_cast<size_t>(rows.GetNumRows()) * components), chunked(fromTable.size());
-  expected.Apply(parents.data(), fromTable.data(), components);
-  const std::vector<subd::Index> ends = rows.GetBlockEnds();
-  for (size_t b = 0; b < ends.size(); ++b)
-    subdtest::ThreeThreadFor(b == 0 ? 0 : ends[b - 1], ends[b], [&](subd::Index begin, subd::Index end) {
-      rows.ApplyRows(parents.data(), chunked.data(), components, begin, end);
-    });
-  EXPECT_EQ(chunked, fromTable) << what;
-}
-
-void ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme which, const subd::Scheme& scheme,
-  const std::vector<subdtest::TestMesh>& meshes)
-{
-  subd::Index storedRows = 0, writtenRows = 0;
-  subd::Index withoutParent = 0; // grandparents whose rows were also written without the parent
-  subd::Index sharedTables = 0; // grandparents whose butterfly rows shared their tables
-  int tagShifts = 0; // the FaceTagShifts SplitTwice gave, as bits
-  for (int creases = 0; creases < 3; ++creases) // two crease methods, then no sharp feature
-  {
-    const subd::CreaseMethod method = creases == 1 ? subd::CreaseMethod::Chaikin : subd::CreaseMethod::Uniform;
-    for (subd::BoundaryRule rule : { subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::None })
-    {
-      for (const subdtest::TestMesh& mesh : meshes)
-      {
-        const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
-        const subd::BaseTags tags = creases == 2 ? subd::BaseTags() : subdtest::MixedSharpnessTags(topology, method);
-        auto grandparent = std::make_shared<subd::Level>(subd::MakeBaseLevel(topology, tags, rule));
-        for (int depth = 0; depth < 2; ++depth)
-        {
-          const std::string what = mesh.Name + " depth " + std::to_string(depth);
-          const subd::Level parent = scheme.Split(*grandparent, subd::ChildTopology::Full);
-          const subd::GrandchildRows rows(which, grandparent, parent, subdtest::ThreeThreadFor);
-          EXPECT_EQ(rows.GetNumParents(), parent.Topology.GetNumVertices()) << what; // counted from the grandparent
-          const subd::StencilTable expected = scheme.BuildStencils(parent);
-          ExpectSameRows(rows, expected, 5, what);
-          // Given the grandparent's own rows, the same rows; the butterfly's share the
-          // triangles across the grandparent's edges with them.
-          const std::shared_ptr<const subd::RowSource> grandparentRows = scheme.MakeRowSource(grandparent);
-          ASSERT_TRUE(grandparentRows) << what;
-          const subd::GrandchildRows sharing(which, grandparent, parent, subdtest::ThreeThreadFor, grandparentRows.get());
-          ExpectSameRows(sharing, expected, 3, what + " sharing");
-          if (const auto* butterfly =
-                dynamic_cast<const subd::WrittenRows<subd::ButterflyRowWriter>*>(grandparentRows.get()))
-          {
-            EXPECT_EQ(butterfly->GetWriter().GetFaceAcross().use_count(), 2) << what;
-            ++sharedTables;
-          }
-          storedRows += rows.GetNumStoredRows();
-          writtenRows += rows.GetNumRows() - rows.GetNumStoredRows();
-          // Where no row needs the parent, the rows made without it are the same rows.
-          if (subd::EveryGrandchildRowIsSmooth(which, *grandparent))
-          {
-            EXPECT_EQ(rows.GetNumStoredRows(), 0) << what;
-            const subd::GrandchildRows alone(which, grandparent, subdtest::ThreeThreadFor);
-            ExpectSameRows(alone, expected, 3, what + " without the parent"); // 3: the prefetching path
-            ++withoutParent;
-          }
-
-          const subd::Level twice =
-            subd::SplitTwice(which, *grandparent, rows.GetParentEdgeNumbering(), subdtest::ThreeThreadFor);
-          const subd::Level stepwise = scheme.Split(parent, subd::ChildTopology::FacesOnly);
-          EXPECT_EQ(twice.Topology.GetNumVertices(), stepwise.Topology.GetNumVertices()) << what;
-          EXPECT_EQ(twice.Topology.GetFaceOffsetArray(), stepwise.Topology.GetFaceOffsetArray()) << what;
-          EXPECT_EQ(twice.Topology.GetFaceVertexArray(), stepwise.Topology.GetFaceVertexArray()) << what;
-          EXPECT_EQ(subdtest::FaceTags(twice), subdtest::FaceTags(stepwise)) << what;
-          // Kept per face of the level between, or of the grandparent (four children each); a
-          // faces-only split of a level with a tag per face keeps the parent's (four each).
-          EXPECT_EQ(twice.FaceOrigin.size() << twice.FaceTagShift, stepwise.FaceOrigin.size() << stepwise.FaceTagShift)
-            << what;
-          if (!subd::IsQuadSplit(which) && parent.FaceTagShift == 0)
-          {
-            EXPECT_EQ(stepwise.FaceTagShift, 2) << what;
-          }
-          EXPECT_TRUE(twice.FaceTagShift == 2 || twice.FaceTagShift == 4) << what;
-          tagShifts |= 1 << twice.FaceTagShift;
-          EXPECT_EQ(twice.Depth, stepwise.Depth) << what;
-          grandparent = std::make_shared<subd::Level>(parent);
-        }
-      }
-    }
-  }
-  // Triangles always have four children; quads split from n-gons do not (one per corner).
-  EXPECT_EQ(tagShifts, subd::IsQuadSplit(which) ? (1 << 2) | (1 << 4) : 1 << 4);
-  if (subd::WritesEveryRowFromGrandparent(which))
-  {
-    EXPECT_EQ(storedRows, 0); // the linear rules need no parent
-    EXPECT_GT(writtenRows, 0);
-    return;
-  }
-  // Both kinds of rows were compared: written from the grandparent, and stored; and rows
-  // written without the parent, on the closed meshes without sharp features.
-  EXPECT_GT(storedRows, 0);
-  EXPECT_GT(writtenRows, 2 * storedRows);
-  EXPECT_GT(withoutParent, 0);
-  EXPECT_EQ(sharedTables > 0, which == subd::GrandchildScheme::Butterfly);
-}
-}
-
-TEST(GrandchildRows, CatmullClarkEqualsTheParentsRows)
-{
-  ExpectGrandchildRowsEqualTheParentsRows(
-    subd::GrandchildScheme::CatmullClark, subd::CatmullClarkScheme(), subdtest::StandardMeshes());
-}
-
-TEST(GrandchildRows, LoopEqualsTheParentsRows)
-{
-  ExpectGrandchildRowsEqualTheParentsRows(subd::GrandchildScheme::Loop, subd::LoopScheme(), subdtest::TriangleMeshes());
-}
-
-// The butterfly without tension: the 8-point butterfly from two rings of the grandparent's
-// triangles, Zorin's stencils from its extraordinary vertices' ordered fans; on the tiny
-// closed meshes some butterflies meet a point twice (merged as the writer merges them).
-TEST(GrandchildRows, ButterflyEqualsTheParentsRows)
-{
-  ExpectGrandchildRowsEqualTheParentsRows(
-    subd::GrandchildScheme::Butterfly, subd::ButterflyScheme(0.0), subdtest::TriangleMeshes());
-}
-
-// The linear rules (centroids, midpoints, copies), written from the grandparent alone.
-TEST(GrandchildRows, BilinearEqualsTheParentsRows)
-{
-  ExpectGrandchildRowsEqualTheParentsRows(
-    subd::GrandchildScheme::Bilinear, subd::BilinearScheme(), subdtest::StandardMeshes());
-}
-
-TEST(GrandchildRows, LinearTrianglesEqualsTheParentsRows)
-{
-  ExpectGrandchildRowsEqualTheParentsRows(
-    subd::GrandchildScheme::LinearTriangles, subd::LinearTriangleScheme(), subdtest::TriangleMeshes());
-}
-
-// The finest faces' tags are kept per grandparent face only where every grandparent face has
-// four children: not when only the last face has more (a quad, then a pentagon; found by the
-// filters' fuzzer: the tags were read past their end).
-TEST(GrandchildRows, FaceTagsPerGrandparentFaceOnlyWithFourChildrenEach)
-{
-  subdtest::TestMesh mesh;
-  mesh.Name = "quad-pentagon";
-  const double p[7][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 1, 1, 0 }, { 0, 1, 0 }, { 2, 0, 0 }, { 2.5, 0.5, 0 }, { 2, 1, 0 } };
-  for (auto& q : p)
-    mesh.AddPoint(q[0], q[1], q[2]);
-  mesh.AddFace({ 0, 1, 2, 3 });
-  mesh.AddFace({ 1, 4, 5, 6, 2 });
-  const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
-  auto grandparent = std::make_shared<subd::Level>(subd::MakeBaseLevel(topology, {}, subd::BoundaryRule::EdgeOnly));
-  const subd::CatmullClarkScheme scheme;
-  const subd::Level parent = scheme.Split(*grandparent, subd::ChildTopology::Full);
-  const subd::GrandchildRows rows(subd::GrandchildScheme::CatmullClark, grandparent, parent);
-  const subd::Level twice = subd::SplitTwice(subd::GrandchildScheme::CatmullClark, *grandparent, rows.GetParentEdgeNumbering());
-  const subd::Level stepwise = scheme.Split(parent, subd::ChildTopology::FacesOnly);
-  EXPECT_EQ(twice.FaceTagShift, 2);
-  EXPECT_EQ(subdtest::FaceTags(twice), subdtest::FaceTags(stepwise));
-}
-
-// Which grandparents need no parent for their grandchildren's rows: closed meshes without
-// sharp features (any rule); with a boundary, one semi-sharp edge or one sharp vertex, only
-// the linear rules (which have no rule for them); with a sharp vertex, the butterfly too.
-TEST(GrandchildRows, EveryRowSmoothOnlyOnClosedMeshesWithoutSharpFeatures)
-{
-  auto level = [](const subdtest::TestMesh& mesh, int sharpEdge, int sharpVertex) {
-    const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
-    subd::BaseTags tags;
-    if (sharpEdge >= 0)
-    {
-      tags.EdgeSharpness.assign(static_cast<size_t>(topology.GetNumEdges()), 0.0f);
-      tags.EdgeSharpness[static_cast<size_t>(sharpEdge)] = 0.5f;
-    }
-    if (sharpVertex >= 0)
-    {
-      tags.VertexSharpness.assign(static_cast<size_t>(topology.GetNumVertices()), 0.0f);
-      tags.VertexSharpness[static_cast<size_t>(sharpVertex)] = 2.0f;
-    }
-    return subd::MakeBaseLevel(topology, tags, subd::BoundaryRule::EdgeOnly);
-  };
-  using subd::EveryGrandchildRowIsSmooth;
-  using subd::GrandchildScheme;
-  const subdtest::TestMesh cube = subdtest::Cube(), bipyramid = subdtest::Bipyramid(5), house = subdtest::House(true);
-  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::CatmullClark, level(cube, -1, -1)));
-  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::CatmullClark, level(cube, 3, -1)));
-  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::CatmullClark, level(cube, -1, 5)));
-  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::CatmullClark, level(house, -1, -1)));
-  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::Bilinear, level(house, 2, 1)));
-  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::Loop, level(bipyramid, -1, -1)));
-  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::Loop, level(bipyramid, 0, -1)));
-  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::Loop, level(bipyramid, -1, 0)));
-  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::LinearTriangles, level(bipyramid, 0, 0)));
-  // The butterfly has no vertex rule: a sharp vertex changes none of its rows.
-  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::Butterfly, level(bipyramid, -1, -1)));
-  EXPECT_FALSE(EveryGrandchildRowIsSmooth(GrandchildScheme::Butterfly, level(bipyramid, 0, -1)));
-  EXPECT_TRUE(EveryGrandchildRowIsSmooth(GrandchildScheme::Butterfly, level(bipyramid, -1, 0)));
-}
-
-// The linear schemes read faces and edges only: refined from a base of faces and edges
-// (MeshTopology::BuildFacesAndEdges, what vtkSubDLinearFilter builds without sharp features),
-// their faces-only finest level has the same faces and the same points, bit for bit, as from
-// the full base, on every fixture (open, non-manifold edges, pinched vertices), at every
-// level, with every way of writing the rows, serially and on threads.
-TEST(LinearSchemes, FacesAndEdgesBaseRefinesAsTheFullBase)
-{
-  const std::vector<subd::LevelRows> allRows = { subd::LevelRows::Stored, subd::LevelRows::Written,
-    subd::LevelRows::WrittenLean, subd::LevelRows::WrittenFromGrandparent };
-  for (bool triangles : { false, true })
-  {
-    for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor) })
-    {
-      std::unique_ptr<subd::Scheme> scheme;
-      if (triangles)
-        scheme = std::make_unique<subd::LinearTriangleScheme>();
-      else
-        scheme = std::make_unique<subd::BilinearScheme>();
-      scheme->SetParallelFor(parallelFor);
-      for (const subdtest::TestMesh& mesh : triangles ? subdtest::TriangleMeshes() : subdtest::StandardMeshes())
-      {
-        const subd::IndexArray offsets(mesh.Offsets.begin(), mesh.Offsets.end());
-        const subd::IndexArray vertices(mesh.Vertices.begin(), mesh.Vertices.end());
-        const subd::BoundaryRule rule = scheme->EffectiveBoundaryRule(subd::BoundaryRule::EdgeOnly);
-        for (int levels = 0; levels <= 3; ++levels)
-        {
-          for (subd::LevelRows rows : allRows)
-          {
-            SCOPED_TRACE(mesh.Name + " level " + std::to_string(levels) + " rows " + std::to_string(static_cast<int>(rows)));
-            subd::Hierarchy full, lean;
-            ASSERT_TRUE(subd::Refine(*scheme,
-              subd::MakeBaseLevel(subd::MeshTopology::Build(mesh.NumVertices(), offsets, vertices, parallelFor), {}, rule),
-              levels, full, nullptr, subd::ChildTopology::FacesOnly, rows));
-            const subd::MeshTopology base =
-              subd::MeshTopology::BuildFacesAndEdges(mesh.NumVertices(), offsets, vertices, parallelFor);
-            ASSERT_FALSE(base.HasVertexRelations());
-            ASSERT_TRUE(subd::Refine(
-              *scheme, subd::MakeBaseLevel(base, {}, rule), levels, lean, nullptr, subd::ChildTopology::FacesOnly, rows));
-            full.MakeFinestFaces();
-            lean.MakeFinestFaces();
-            EXPECT_EQ(lean.Finest.Topology.GetFaceOffsetArray(), full.Finest.Topology.GetFaceOffsetArray());
-            EXPECT_EQ(lean.Finest.Topology.GetFaceVertexArray(), full.Finest.Topology.GetFaceVertexArray());
-            ASSERT_EQ(lean.GetNumFinestPoints(), full.GetNumFinestPoints());
-            std::vector<double> a(static_cast<size_t>(full.GetNumFinestPoints()) * 3), b(a.size());
-            ASSERT_TRUE(full.Evaluate(mesh.Points.data(), 3, a.data(), parallelFor));
-            ASSERT_TRUE(lean.Evaluate(mesh.Points.data(), 3, b.data(), parallelFor));
-            EXPECT_EQ(a, b);
-          }
-        }
-      }
-    }
-  }
-}

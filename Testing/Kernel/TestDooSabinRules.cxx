@@ -110,39 +110,6 @@ TEST(DualSplit, ThreadsGiveTheSerialPointsFacesAndRows)
   }
 }
 
-// The split Refine makes of a level it keeps for its rows frees, before writing a faces-only
-// child, the lists of edges around the parent's vertices (the peak of a refinement is the
-// finest split): the same faces as Split's, creases (welded corners) or not; a full child
-// is made with the parent whole.
-TEST(DualSplit, FacesOnlySplitForTheRowsFreesTheVertexEdgeListsFirst)
-{
-  const subd::DooSabinScheme scheme;
-  EXPECT_TRUE(scheme.FacesOnlySplitFreesVertexEdgeLists()); // what the memory estimate counts
-  for (const subdtest::TestMesh& mesh : subdtest::StandardMeshes())
-  {
-    for (bool creased : { false, true })
-    {
-      SCOPED_TRACE(mesh.Name + (creased ? " creased" : ""));
-      subd::Level level = subdtest::BaseLevel(mesh);
-      for (Index e = 0; creased && e < level.Topology.GetNumEdges(); ++e)
-      {
-        level.EdgeSharpness[e] = e % 3 == 0 ? subd::SharpnessInfinite : 0.0f;
-      }
-      const subd::Level expected = scheme.Split(level, subd::ChildTopology::FacesOnly);
-      subd::Level parent = level;
-      const subd::Level child = scheme.SplitBeforeTrim(parent, subd::ChildTopology::FacesOnly);
-      EXPECT_FALSE(parent.Topology.HasVertexRelations());
-      EXPECT_EQ(child.Topology.GetFaceOffsetArray(), expected.Topology.GetFaceOffsetArray());
-      EXPECT_EQ(child.Topology.GetFaceVertexArray(), expected.Topology.GetFaceVertexArray());
-      EXPECT_EQ(child.Topology.GetNumVertices(), expected.Topology.GetNumVertices());
-      subd::Level whole = level;
-      const subd::Level full = scheme.SplitBeforeTrim(whole, subd::ChildTopology::Full);
-      EXPECT_TRUE(whole.Topology.HasVertexRelations());
-      EXPECT_EQ(full.Topology.GetFaceVertexArray(), expected.Topology.GetFaceVertexArray());
-    }
-  }
-}
-
 TEST(DualSplit, OpenGridFaces)
 {
   // A 3x3 grid: 9 F-faces, E-faces only for the 12 interior edges, V-faces for the 4

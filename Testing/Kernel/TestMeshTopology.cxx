@@ -238,24 +238,6 @@ void ExpectSplitKnowsItsChild(const subdtest::TestMesh& mesh, Split split, const
   }
 }
 
-// A primal split with faces and edges only (the linear rules' levels between), level after
-// level from such parents, has the faces, edges, edge faces and edge tags of the full split,
-// and nothing around its vertices.
-template <typename Split>
-void ExpectFacesAndEdgesOfTheFullSplit(const subdtest::TestMesh& mesh, Split split, const std::string& what)
-{
-  subd::Level full = subdtest::BaseLevel(mesh), lean = subdtest::BaseLevel(mesh);
-  for (int l = 1; l <= 3; ++l)
-  {
-    SCOPED_TRACE(what + " level " + std::to_string(l));
-    full = split(full, subd::ChildTopology::Full, subdtest::ThreeThreadFor);
-    lean = split(lean, subd::ChildTopology::FacesAndEdges, subdtest::ThreeThreadFor);
-    EXPECT_TRUE(full.Topology.HasVertexRelations());
-    EXPECT_FALSE(lean.Topology.HasVertexRelations());
-    ExpectSameFacesAndEdges(full.Topology, lean.Topology);
-  }
-}
-
 // Meshes with every kind of vertex the tags distinguish: boundary, non-manifold edges,
 // bow-ties, pinched fans, inconsistent orientation, an isolated vertex.
 std::vector<subdtest::TestMesh> TagFixtures()
@@ -275,7 +257,6 @@ TEST(MeshTopology, QuadSplitChildEqualsSearchedTopology)
   int i = 0;
   for (const subdtest::TestMesh& mesh : TagFixtures())
   {
-    ExpectFacesAndEdgesOfTheFullSplit(mesh, subd::SplitQuads, "mesh " + std::to_string(i));
     ExpectSplitKnowsItsChild(mesh, subd::SplitQuads, "mesh " + std::to_string(i++));
   }
 }
@@ -287,7 +268,6 @@ TEST(MeshTopology, TriangleSplitChildEqualsSearchedTopology)
   meshes.push_back(TagFixtures().back());
   for (const subdtest::TestMesh& mesh : meshes)
   {
-    ExpectFacesAndEdgesOfTheFullSplit(mesh, subd::SplitTriangles, "mesh " + std::to_string(i));
     ExpectSplitKnowsItsChild(mesh, subd::SplitTriangles, "mesh " + std::to_string(i++));
   }
 }
@@ -454,53 +434,29 @@ TEST(MeshTopology, OrderedVertexFacesWalkEachFanAcrossItsEdges)
   }
 }
 
-// Rows that keep a level's faces and rings alone (sqrt(3)'s) read each vertex's ring in
-// increasing order, whatever the edges' numbers: KeepOnly overwrites the edge lists with the
-// vertices across them, sorted, in place and on threads, frees the edges, and leaves the
-// faces as they were; the whole topology visits the same rings.
-TEST(MeshTopology, KeptRingsAreTheVerticesAcrossEachEdgeInOrder)
+// Rows that must follow one order around a vertex whatever the edges' numbers read each
+// vertex's ring in increasing order of the vertices across its edges.
+TEST(MeshTopology, RingsAreTheVerticesAcrossEachEdgeInOrder)
 {
-  int i = 0;
   std::vector<subdtest::TestMesh> meshes = TagFixtures();
   meshes.push_back(subdtest::Cube());
   meshes.push_back(subdtest::Bipyramid(70)); // apices of valence 70: rings sorted past the stack
-  for (const subdtest::TestMesh& mesh : meshes)
+  for (size_t i = 0; i < meshes.size(); ++i)
   {
-    const MeshTopology whole = Build(mesh);
-    for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor) })
+    SCOPED_TRACE("mesh " + std::to_string(i));
+    const MeshTopology whole = Build(meshes[i]);
+    for (Index v = 0; v < whole.GetNumVertices(); ++v)
     {
-      SCOPED_TRACE("mesh " + std::to_string(i));
-      MeshTopology kept = whole;
-      kept.KeepOnly(MeshTopology::Part::FacesAndRings, parallelFor);
-      EXPECT_EQ(kept.GetNumEdges(), 0);
-      ASSERT_EQ(kept.GetNumFaces(), whole.GetNumFaces());
-      for (Index f = 0; f < whole.GetNumFaces(); ++f)
+      std::vector<Index> expected, ring;
+      for (Index e : whole.GetVertexEdges(v))
       {
-        const subd::IndexSpan a = whole.GetFaceVertices(f), b = kept.GetFaceVertices(f);
-        EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end()));
+        const Index* ends = whole.GetEdgeVertices(e);
+        expected.push_back(ends[0] == v ? ends[1] : ends[0]);
       }
-      for (Index v = 0; v < whole.GetNumVertices(); ++v)
-      {
-        std::vector<Index> expected, ring, again;
-        for (Index e : whole.GetVertexEdges(v))
-        {
-          const Index* ends = whole.GetEdgeVertices(e);
-          expected.push_back(ends[0] == v ? ends[1] : ends[0]);
-        }
-        std::sort(expected.begin(), expected.end());
-        whole.ForEachRingVertex(v, [&again](Index w) { again.push_back(w); });
-        kept.ForEachRingVertex(v, [&ring](Index w) { ring.push_back(w); });
-        EXPECT_EQ(ring, expected) << "vertex " << v;
-        EXPECT_EQ(again, expected) << "vertex " << v;
-        EXPECT_EQ(kept.GetVertexEdges(v).size(), whole.GetVertexEdges(v).size());
-      }
-      // Kept twice (a level's rows made again): the rings stay vertices.
-      kept.KeepOnly(MeshTopology::Part::FacesAndRings, parallelFor);
-      std::vector<Index> ring;
-      kept.ForEachRingVertex(0, [&ring](Index w) { ring.push_back(w); });
-      EXPECT_EQ(static_cast<Index>(ring.size()), whole.GetVertexEdges(0).size());
+      std::sort(expected.begin(), expected.end());
+      whole.ForEachRingVertex(v, [&ring](Index w) { ring.push_back(w); });
+      EXPECT_EQ(ring, expected) << "vertex " << v;
     }
-    ++i;
   }
 }
 
@@ -594,21 +550,12 @@ namespace
 {
 // Build's relations worked out the obvious way, for comparing: an edge per vertex pair met
 // walking the faces, numbered in that order; a vertex's fans joined across its edges of two
-// faces by a union-find. BuildFacesAndEdges (its own pairing, by lower vertex) must give
-// Build's faces, edges, edge faces and tags, serially and on threads, and nothing else.
+// faces by a union-find.
 void ExpectBuildEqualsBruteForce(Index numVertices, const std::vector<Index>& offsets,
   const std::vector<Index>& vertices, const std::string& what)
 {
   SCOPED_TRACE(what);
   const MeshTopology t = MeshTopology::Build(numVertices, offsets, vertices, subdtest::ThreeThreadFor);
-  for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor) })
-  {
-    const MeshTopology lean = MeshTopology::BuildFacesAndEdges(numVertices,
-      subd::IndexArray(offsets.begin(), offsets.end()), subd::IndexArray(vertices.begin(), vertices.end()), parallelFor);
-    EXPECT_FALSE(lean.HasVertexRelations());
-    EXPECT_EQ(lean.GetNumNonManifoldVertices(), 0);
-    ExpectSameFacesAndEdges(t, lean);
-  }
   const Index numFaces = static_cast<Index>(offsets.size()) - 1;
   std::vector<std::pair<Index, Index>> pairs;           // per edge, (lower, upper)
   std::vector<std::vector<Index>> edgeFaces;            // per edge
