@@ -37,6 +37,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <memory>
 #include <mutex>
@@ -103,6 +104,21 @@ int ReadInputDepth(vtkPolyData* input)
   }
   const double value = depth->GetComponent(0, 0);
   return value >= 0 && value < 1e6 && value == std::floor(value) ? static_cast<int>(value) : 0;
+}
+
+// The rank of each kept face in an order every piece shares, for deciding which piece owns a
+// crease line on a seam. Doo-Sabin's and midpoint's faces are in that order already
+// (vtkSubDOrderFacesAlikeInEveryPiece): their rank is their index.
+std::vector<subd::Index> RankFacesAlikeInEveryPiece(vtkPolyData* input, const subd::FaceScreening& screened,
+  const subd::LevelArray<vtkIdType>& faceCells, bool facesInPieceOrder)
+{
+  if (!facesInPieceOrder)
+  {
+    return vtkSubDFaceRanksAlikeInEveryPiece(input, screened, faceCells);
+  }
+  std::vector<subd::Index> rank(faceCells.size());
+  std::iota(rank.begin(), rank.end(), 0);
+  return rank;
 }
 }
 
@@ -303,6 +319,21 @@ int vtkSubDSurfaceFilter::RequestUpdateExtent(
   return 1;
 }
 
+// The input's polygons as the kernel reads them, with what the refinement and the output need
+// to know about them: each kept face's input cell, the ghost faces of a piece, the sharp
+// features.
+struct vtkSubDSurfaceFilter::vtkInputMesh
+{
+  vtkIdType NumPoints = 0;
+  vtkIdType NumPolys = 0;
+  vtkSubDInputFaces Faces;
+  subd::FaceScreening Screened;
+  subd::LevelArray<vtkIdType> FaceCells;  // per kept face, its input cell
+  std::vector<std::uint8_t> FaceIsGhost; // per kept face; empty unless a piece with ghosts
+  vtkSubDSharpFeatures Features;
+  int Depth = 0; // the input's "SubDDepth"
+};
+
 int vtkSubDSurfaceFilter::Execute(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
@@ -310,35 +341,51 @@ int vtkSubDSurfaceFilter::Execute(
   vtkPolyData* output = vtkPolyData::GetData(outputVector);
   output->Initialize();
   this->SetErrorCode(vtkErrorCode::NoError);
-  auto fail = [this, output]() {
-    output->Initialize();
-    this->SetErrorCode(vtkErrorCode::UserError);
-    return 0;
-  };
-  // An abort (AbortExecute set by an observer) is not an error: empty output, success.
-  auto aborted = [output]() {
-    output->Initialize();
-    return 1;
-  };
   // One of several pieces may hold no polygon at all: nothing to output, nothing wrong.
   const vtkSubDPieceRequest request(outputVector->GetInformationObject(0));
-  const int outputGhostLevels = request.OutputGhostLevels;
   if (request.IsEmptyPiece(input))
   {
     return 1;
   }
+  vtkInputMesh mesh;
+  Status status = this->ReadInputMesh(input, request, mesh) ? Status::Done : Status::Failed;
+  const bool reuse = status == Status::Done && this->CanReuseRefinement(mesh, request.OutputGhostLevels);
+  if (status == Status::Done && !reuse)
+  {
+    status = this->BuildRefinement(input, mesh, request.OutputGhostLevels);
+  }
+  if (status == Status::Done)
+  {
+    this->UpdateProgress(0.5);
+    status = this->WriteOutput(input, mesh, reuse, output);
+  }
+  if (status != Status::Done)
+  {
+    // An abort (AbortExecute set by an observer) is not an error: empty output, success.
+    output->Initialize();
+    if (status == Status::Failed)
+    {
+      this->SetErrorCode(vtkErrorCode::UserError);
+    }
+    return status == Status::Aborted ? 1 : 0;
+  }
+  this->UpdateProgress(1.0);
+  return 1;
+}
 
+bool vtkSubDSurfaceFilter::ReadInputPoints(vtkPolyData* input)
+{
   const vtkIdType numPoints = (input && input->GetPoints()) ? input->GetNumberOfPoints() : 0;
   if (numPoints == 0)
   {
     vtkErrorMacro("Input has no points: nothing to subdivide.");
-    return fail();
+    return false;
   }
   if (numPoints >= static_cast<vtkIdType>(std::numeric_limits<subd::Index>::max() / 8))
   {
     vtkErrorMacro("Input has " << numPoints << " points; at most "
                                << std::numeric_limits<subd::Index>::max() / 8 << " are supported.");
-    return fail();
+    return false;
   }
   const vtkIdType badPoint = vtkSubDFirstNonFinitePoint(input->GetPoints());
   if (badPoint >= 0)
@@ -347,43 +394,48 @@ int vtkSubDSurfaceFilter::Execute(
     input->GetPoint(badPoint, p);
     vtkErrorMacro("Point " << badPoint << " has a non-finite coordinate (" << p[0] << ", " << p[1]
                            << ", " << p[2] << "); NaN or infinite coordinates cannot be subdivided.");
-    return fail();
+    return false;
   }
+  return true;
+}
 
-  vtkSubDInputFaces faces = vtkSubDGatherFaces(input);
+bool vtkSubDSurfaceFilter::ScreenInputFaces(vtkPolyData* input, vtkInputMesh& mesh)
+{
+  mesh.Faces = vtkSubDGatherFaces(input);
+  const vtkSubDInputFaces& faces = mesh.Faces;
   if (faces.NumFaces == 0)
   {
     vtkErrorMacro("Input has no polygons (it has " << input->GetNumberOfVerts() << " verts, "
                                                  << input->GetNumberOfLines()
                                                  << " lines): a surface scheme needs faces.");
-    return fail();
+    return false;
   }
   if (faces.Offsets[faces.NumFaces] >= std::numeric_limits<subd::Index>::max() / 8)
   {
     vtkErrorMacro("Input has " << faces.Offsets[faces.NumFaces] << " face corners; too many.");
-    return fail();
+    return false;
   }
-  subd::FaceScreening screened = subd::ScreenFaces(static_cast<subd::Index>(numPoints),
-    static_cast<subd::Index>(faces.NumFaces), faces.Offsets, faces.Connectivity, &vtkSubDPointDataInterpolation::SMPFor);
-  const vtkIdType numPolys = input->GetNumberOfPolys();
+  mesh.Screened = subd::ScreenFaces(static_cast<subd::Index>(mesh.NumPoints), static_cast<subd::Index>(faces.NumFaces),
+    faces.Offsets, faces.Connectivity, &vtkSubDPointDataInterpolation::SMPFor);
+  const subd::FaceScreening& screened = mesh.Screened;
   if (screened.NumOutOfRange > 0)
   {
     vtkErrorMacro(<< screened.NumOutOfRange << " input cell(s) refer to points that do not exist; "
-                  << "the first, cell " << faces.CellIdOf(screened.FirstOutOfRangeFace, numPolys)
+                  << "the first, cell " << faces.CellIdOf(screened.FirstOutOfRangeFace, mesh.NumPolys)
                   << ", uses point id " << screened.FirstOutOfRangeId << " but the input has "
-                  << numPoints << " points.");
-    return fail();
+                  << mesh.NumPoints << " points.");
+    return false;
   }
   if (screened.NumDropped > 0)
   {
     vtkWarningMacro(<< "Ignored " << screened.NumDropped
                     << " degenerate polygon(s) (fewer than 3 distinct points, or a point repeated); "
-                    << "the first is cell " << faces.CellIdOf(screened.FirstDroppedFace, numPolys)
+                    << "the first is cell " << faces.CellIdOf(screened.FirstDroppedFace, mesh.NumPolys)
                     << ".");
   }
   if (this->RequiresTriangles())
   {
-    const subd::Index split = TriangulateFaces(screened, input->GetPoints());
+    const subd::Index split = TriangulateFaces(mesh.Screened, input->GetPoints());
     if (split > 0)
     {
       vtkWarningMacro(<< split << " polygon(s) with more than 3 corners were split into "
@@ -393,228 +445,310 @@ int vtkSubDSurfaceFilter::Execute(
   if (screened.KeptFaces.empty())
   {
     vtkErrorMacro("No usable polygon remains after removing degenerate ones.");
-    return fail();
+    return false;
   }
+  return true;
+}
 
-  subd::LevelArray<vtkIdType> faceCells(screened.KeptFaces.size()); // every entry written below
-  vtkSubDPointDataInterpolation::SMPFor(
-    0, static_cast<subd::Index>(faceCells.size()), [&](subd::Index begin, subd::Index end) {
-      for (subd::Index f = begin; f < end; ++f)
-      {
-        faceCells[f] = faces.CellIdOf(screened.KeptFaces[f], numPolys);
-      }
-    });
-  // A piece with ghost faces (vtkSubDPieces.h).
-  std::vector<std::uint8_t> faceIsGhost = vtkSubDGhostFaces(input, faceCells);
-  if (!faceIsGhost.empty() && this->MakesFacesFromSeveralFaces())
+bool vtkSubDSurfaceFilter::ReadInputMesh(vtkPolyData* input, const vtkSubDPieceRequest& request, vtkInputMesh& mesh)
+{
+  if (!this->ReadInputPoints(input))
   {
-    vtkSubDOrderFacesAlikeInEveryPiece(input, screened, faceCells);
-    faceIsGhost = vtkSubDGhostFaces(input, faceCells);
+    return false;
   }
-  if (request.OneOfMany && faceIsGhost.empty() && this->GetRequiredGhostLevels() > 0)
+  mesh.NumPoints = input->GetNumberOfPoints();
+  mesh.NumPolys = input->GetNumberOfPolys();
+  if (!this->ScreenInputFaces(input, mesh))
+  {
+    return false;
+  }
+  const subd::IndexArray& kept = mesh.Screened.KeptFaces;
+  mesh.FaceCells.resize(kept.size()); // every entry written below
+  vtkSubDPointDataInterpolation::SMPFor(0, static_cast<subd::Index>(kept.size()), [&](subd::Index begin, subd::Index end) {
+    for (subd::Index f = begin; f < end; ++f)
+    {
+      mesh.FaceCells[f] = mesh.Faces.CellIdOf(kept[f], mesh.NumPolys);
+    }
+  });
+  // A piece with ghost faces (vtkSubDPieces.h).
+  mesh.FaceIsGhost = vtkSubDGhostFaces(input, mesh.FaceCells);
+  if (!mesh.FaceIsGhost.empty() && this->MakesFacesFromSeveralFaces())
+  {
+    vtkSubDOrderFacesAlikeInEveryPiece(input, mesh.Screened, mesh.FaceCells);
+    mesh.FaceIsGhost = vtkSubDGhostFaces(input, mesh.FaceCells);
+  }
+  if (request.OneOfMany && mesh.FaceIsGhost.empty() && this->GetRequiredGhostLevels() > 0)
   {
     vtkWarningMacro(<< vtkSubDMissingGhostsWarning(request.Piece, this->GetRequiredGhostLevels()));
   }
-  vtkSubDSharpFeatures features;
   std::string featureError;
-  if (!features.Read(input, faceCells, featureError, this->GetFeatureArrayNames()))
+  if (!mesh.Features.Read(input, mesh.FaceCells, featureError, this->GetFeatureArrayNames()))
   {
     vtkErrorMacro(<< featureError);
-    return fail();
+    return false;
   }
+  mesh.Depth = ReadInputDepth(input);
+  return true;
+}
 
+bool vtkSubDSurfaceFilter::CanReuseRefinement(const vtkInputMesh& mesh, int outputGhostLevels)
+{
+  const vtkInternals& cache = *this->Internals;
+  return cache.Valid && cache.FilterMTime == this->GetMTime() && cache.InputDepth == mesh.Depth &&
+    cache.NumInputPoints == mesh.NumPoints && cache.Offsets == mesh.Screened.Offsets &&
+    cache.Vertices == mesh.Screened.Vertices && cache.FaceIsGhost == mesh.FaceIsGhost &&
+    cache.OutputGhostLevels == outputGhostLevels && cache.Features == mesh.Features && !this->AutomaticCreases;
+}
+
+bool vtkSubDSurfaceFilter::FitsTheMemoryBudget(
+  const subd::Scheme& scheme, const subd::MeshTopology& topology, vtkPointData* inPD, bool fullFinest)
+{
+  // Predict the finest level and the peak memory before allocating anything.
+  const subd::MeshCounts baseCounts{ static_cast<double>(topology.GetNumFaces()),
+    static_cast<double>(topology.GetNumEdges()), static_cast<double>(topology.GetNumVertices()),
+    static_cast<double>(topology.GetNumFaceCorners()),
+    static_cast<double>(topology.GetNumBoundaryEdges() + topology.GetNumNonManifoldEdges()) };
+  subd::MeshCounts counts = baseCounts;
+  for (int l = 0; l < this->NumberOfSubdivisions; ++l)
+  {
+    counts = scheme.PredictChildCounts(counts);
+  }
+  const double indexLimit = 2147483647.0; // the kernel's and the output's 32-bit indices
+  if (std::max({ counts.Corners, counts.Vertices, counts.Edges }) > indexLimit)
+  {
+    vtkErrorMacro("Refusing " << this->NumberOfSubdivisions << " subdivision level(s): the output "
+                              << "would have about " << counts.Faces << " faces and " << counts.Vertices
+                              << " points, more corners or points than 32-bit indices can number (2^31 - 1).");
+    return false;
+  }
+  subd::RefinementRequest request;
+  request.Base = baseCounts;
+  request.Levels = this->NumberOfSubdivisions;
+  request.Finest = fullFinest ? subd::ChildTopology::Full : subd::ChildTopology::FacesOnly;
+  request.Rows = subd::LevelRows::Written;
+  int maxComponents = 3;
+  for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
+  {
+    if (vtkDataArray* array = inPD->GetArray(a))
+    {
+      request.OutputBytesPerPoint += array->GetNumberOfComponents() * array->GetDataTypeSize();
+      maxComponents = std::max(maxComponents, array->GetNumberOfComponents());
+    }
+  }
+  request.ScratchBytesPerPoint = 8.0 * maxComponents; // one array at a time, in double
+  const double MiB = 1024.0 * 1024.0;
+  const double bytes = subd::EstimatePeakBytes(scheme, request);
+  if (bytes > this->MaximumMemory * MiB)
+  {
+    vtkErrorMacro("Refusing " << this->NumberOfSubdivisions << " subdivision level(s): the output "
+                              << "would have about " << counts.Faces << " faces and " << counts.Vertices
+                              << " points and need about " << bytes / MiB << " MiB, more than MaximumMemory ("
+                              << this->MaximumMemory << " MiB).");
+    return false;
+  }
+  return true;
+}
+
+void vtkSubDSurfaceFilter::ReadBaseTags(
+  vtkPolyData* input, const vtkInputMesh& mesh, const subd::MeshTopology& topology, subd::BaseTags& tags)
+{
   vtkInternals& cache = *this->Internals;
-  const int inputDepth = ReadInputDepth(input);
-  const bool reuse = cache.Valid && cache.FilterMTime == this->GetMTime() && cache.InputDepth == inputDepth &&
-    cache.NumInputPoints == numPoints && cache.Offsets == screened.Offsets &&
-    cache.Vertices == screened.Vertices && cache.FaceIsGhost == faceIsGhost &&
-    cache.OutputGhostLevels == outputGhostLevels && cache.Features == features && !this->AutomaticCreases;
-  auto refineProgress = [this](double fraction) {
+  const vtkSubDSharpFeatures& features = mesh.Features;
+  tags = features.ToBaseTags(topology, input->GetPoints(),
+    this->AutomaticCreases ? this->FeatureAngle : 0.0, static_cast<subd::CreaseMethod>(this->CreaseMethod),
+    cache.UnmatchedSegments);
+  // Ghost line cells are passed through by the piece that owns them.
+  std::vector<subd::Index>& unmatched = cache.UnmatchedSegments;
+  unmatched.erase(std::remove_if(unmatched.begin(), unmatched.end(),
+                    [&](subd::Index segment) { return vtkSubDIsGhostCell(input, features.SegmentCell[segment]); }),
+    unmatched.end());
+  if (!unmatched.empty())
+  {
+    const subd::Index first = unmatched[0];
+    vtkWarningMacro(<< unmatched.size() << " crease line segment(s) are not edges of "
+                    << "the surface and are passed through unchanged; the first is ("
+                    << features.SegmentPoints[2 * first] << ", " << features.SegmentPoints[2 * first + 1]
+                    << ") in line cell " << features.SegmentCell[first] << ".");
+  }
+}
+
+bool vtkSubDSurfaceFilter::AddLimitTables()
+{
+  vtkInternals& cache = *this->Internals;
+  const subd::Scheme& scheme = *cache.Scheme;
+  const subd::Level& finest = cache.Hierarchy.Finest;
+  if (this->ProjectToLimit)
+  {
+    // The limit masks read the finest points: one more stencil table after the levels,
+    // so that points and point data are projected alike, and cached alike.
+    subd::StencilTable limit;
+    std::string limitError;
+    if (!scheme.BuildLimitStencils(finest, limit, limitError))
+    {
+      vtkErrorMacro(<< "ProjectToLimit: " << limitError << ".");
+      return false;
+    }
+    cache.Hierarchy.Stencils.push_back(std::move(limit));
+  }
+  std::string evaluationError;
+  cache.LimitTangents = subd::StencilTable();
+  const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
+  if (!limitGeometry || subd::LimitEvaluator(scheme, finest).IsValid(evaluationError))
+  {
+    return true;
+  }
+  // Without exact derivatives, normals can still come from tangent masks; curvature not.
+  // Catmull-Clark and Loop report the evaluator's reason (e.g. a vertex of too high a
+  // valence), the other schemes why their tangent masks do not apply.
+  std::string tangentError;
+  if (!this->ComputeCurvature && scheme.BuildLimitTangentStencils(finest, cache.LimitTangents, tangentError))
+  {
+    return true;
+  }
+  const std::string name = scheme.GetName();
+  const bool exactScheme = name == "catmull-clark" || name == "loop";
+  vtkErrorMacro(<< (this->ComputeCurvature ? "ComputeCurvature" : "ComputeLimitNormals") << ": "
+                << (exactScheme || tangentError.empty() ? evaluationError : tangentError) << ".");
+  return false;
+}
+
+vtkSubDSurfaceFilter::Status vtkSubDSurfaceFilter::BuildRefinement(vtkPolyData* input, vtkInputMesh& mesh, int outputGhostLevels)
+{
+  vtkInternals& cache = *this->Internals;
+  cache.Valid = false;
+  cache.OutputFaces = nullptr;
+  cache.LastCoords = nullptr;
+  cache.Scratch = subd::EvaluationScratch<double>();
+  const subd::FaceScreening& screened = mesh.Screened;
+  // Screened faces have at least three corners: three per face on average is three each.
+  const bool allTriangles = screened.Vertices.size() == 3 * (screened.Offsets.size() - 1);
+  cache.Scheme.reset(this->NewScheme(allTriangles));
+  cache.Scheme->SetParallelFor(&vtkSubDPointDataInterpolation::SMPFor);
+  const subd::Scheme& scheme = *cache.Scheme;
+  const bool sharpFeatures = mesh.Features.Any() || this->AutomaticCreases;
+  const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
+  // The finest level keeps its full topology where something reads it: crease lines out,
+  // limit positions and limit geometry.
+  const subd::ChildTopology finest = !sharpFeatures && !this->ProjectToLimit && !limitGeometry
+    ? subd::ChildTopology::FacesOnly
+    : subd::ChildTopology::Full;
+  subd::MeshTopology topology = subd::MeshTopology::Build(static_cast<subd::Index>(mesh.NumPoints),
+    subd::CopyOnThreads(screened.Offsets.begin(), screened.Offsets.end(), &vtkSubDPointDataInterpolation::SMPFor),
+    subd::CopyOnThreads(screened.Vertices.begin(), screened.Vertices.end(), &vtkSubDPointDataInterpolation::SMPFor),
+    &vtkSubDPointDataInterpolation::SMPFor);
+  const std::string nonManifold = vtkSubDNonManifoldWarning(topology, mesh.FaceIsGhost);
+  if (!nonManifold.empty())
+  {
+    vtkWarningMacro(<< nonManifold << ".");
+  }
+  cache.FaceGhostLayer = mesh.FaceIsGhost.empty() ? std::vector<std::uint8_t>()
+                                                  : vtkSubDGhostLayers(topology, mesh.FaceIsGhost, outputGhostLevels);
+  // A piece's crease lines on its seams are also in the neighbouring piece: one must own each.
+  const std::vector<subd::Index> faceRank = mesh.FaceIsGhost.empty() || !sharpFeatures
+    ? std::vector<subd::Index>()
+    : RankFacesAlikeInEveryPiece(input, mesh.Screened, mesh.FaceCells, this->MakesFacesFromSeveralFaces());
+  bool someBaseVertexUnused = false;
+  for (subd::Index v = 0; v < topology.GetNumVertices() && !someBaseVertexUnused; ++v)
+  {
+    someBaseVertexUnused = topology.GetVertexFaces(v).empty();
+  }
+  if (!this->FitsTheMemoryBudget(scheme, topology, input->GetPointData(), finest == subd::ChildTopology::Full))
+  {
+    return Status::Failed;
+  }
+  subd::BaseTags tags;
+  this->ReadBaseTags(input, mesh, topology, tags);
+  subd::Level base = subd::MakeBaseLevel(
+    std::move(topology), tags, scheme.EffectiveBoundaryRule(static_cast<subd::BoundaryRule>(this->BoundaryRule)));
+  cache.WritesDepth = scheme.DependsOnDepth();
+  base.Depth = cache.WritesDepth ? mesh.Depth : 0;
+  auto progress = [this](double fraction) {
     this->UpdateProgress(0.5 * fraction);
     return !this->GetAbortExecute();
   };
-  if (!reuse)
+  if (!subd::Refine(scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy, progress, finest,
+        subd::LevelRows::Written))
   {
-    cache.Valid = false;
-    cache.OutputFaces = nullptr;
-    cache.LastCoords = nullptr;
-    cache.Scratch = subd::EvaluationScratch<double>();
-    // Screened faces have at least three corners: three per face on average is three each.
-    const bool allTriangles = screened.Vertices.size() == 3 * (screened.Offsets.size() - 1);
-    cache.Scheme.reset(this->NewScheme(allTriangles));
-    cache.Scheme->SetParallelFor(&vtkSubDPointDataInterpolation::SMPFor);
-    const subd::Scheme* scheme = cache.Scheme.get();
-    const bool sharpFeatures = features.Any() || this->AutomaticCreases;
-    const bool limitGeometry = this->ComputeLimitNormals || this->ComputeCurvature;
-    const bool facesOnlyFinest = !sharpFeatures && !this->ProjectToLimit && !limitGeometry;
-    subd::IndexArray baseOffsets =
-      subd::CopyOnThreads(screened.Offsets.begin(), screened.Offsets.end(), &vtkSubDPointDataInterpolation::SMPFor);
-    subd::IndexArray baseVertices =
-      subd::CopyOnThreads(screened.Vertices.begin(), screened.Vertices.end(), &vtkSubDPointDataInterpolation::SMPFor);
-    subd::MeshTopology topology = subd::MeshTopology::Build(static_cast<subd::Index>(numPoints),
-      std::move(baseOffsets), std::move(baseVertices), &vtkSubDPointDataInterpolation::SMPFor);
-    const std::string nonManifold = vtkSubDNonManifoldWarning(topology, faceIsGhost);
-    cache.FaceGhostLayer =
-      faceIsGhost.empty() ? std::vector<std::uint8_t>() : vtkSubDGhostLayers(topology, faceIsGhost, outputGhostLevels);
-    // A piece's crease lines on its seams are also in the neighbouring piece: one must own each.
-    // Doo-Sabin's and midpoint's faces are in that order already (above): their rank is their index.
-    std::vector<subd::Index> faceRank;
-    if (!faceIsGhost.empty() && (features.Any() || this->AutomaticCreases))
-    {
-      if (this->MakesFacesFromSeveralFaces())
-      {
-        faceRank.resize(faceCells.size());
-        std::iota(faceRank.begin(), faceRank.end(), 0);
-      }
-      else
-      {
-        faceRank = vtkSubDFaceRanksAlikeInEveryPiece(input, screened, faceCells);
-      }
-    }
-    if (!nonManifold.empty())
-    {
-      vtkWarningMacro(<< nonManifold << ".");
-    }
-
-    bool someBaseVertexUnused = false;
-    for (subd::Index v = 0; v < topology.GetNumVertices() && !someBaseVertexUnused; ++v)
-    {
-      someBaseVertexUnused = topology.GetVertexFaces(v).empty();
-    }
-
-    // Size guard: predict the finest level and the peak memory before allocating anything.
-    const subd::MeshCounts baseCounts{ static_cast<double>(topology.GetNumFaces()),
-      static_cast<double>(topology.GetNumEdges()), static_cast<double>(numPoints),
-      static_cast<double>(topology.GetNumFaceCorners()),
-      static_cast<double>(topology.GetNumBoundaryEdges() + topology.GetNumNonManifoldEdges()) };
-    subd::MeshCounts counts = baseCounts;
-    for (int l = 0; l < this->NumberOfSubdivisions; ++l)
-    {
-      counts = scheme->PredictChildCounts(counts);
-    }
-    subd::RefinementRequest request;
-    request.Base = baseCounts;
-    request.Levels = this->NumberOfSubdivisions;
-    request.Finest = facesOnlyFinest ? subd::ChildTopology::FacesOnly : subd::ChildTopology::Full;
-    request.Rows = subd::LevelRows::Written;
-    int maxComponents = 3;
-    vtkPointData* inPD = input->GetPointData();
-    for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
-    {
-      if (vtkDataArray* array = inPD->GetArray(a))
-      {
-        request.OutputBytesPerPoint += array->GetNumberOfComponents() * array->GetDataTypeSize();
-        maxComponents = std::max(maxComponents, array->GetNumberOfComponents());
-      }
-    }
-    request.ScratchBytesPerPoint = 8.0 * maxComponents; // one array at a time, in double
-    const double indexLimit = 2147483647.0; // the kernel's and the output's 32-bit indices
-    if (std::max({ counts.Corners, counts.Vertices, counts.Edges }) > indexLimit)
-    {
-      vtkErrorMacro("Refusing " << this->NumberOfSubdivisions << " subdivision level(s): the output "
-                                << "would have about " << counts.Faces << " faces and " << counts.Vertices
-                                << " points, more corners or points than 32-bit indices can number (2^31 - 1).");
-      return fail();
-    }
-
-    const double MiB = 1024.0 * 1024.0;
-    const double limit = this->MaximumMemory * MiB;
-    const double bytes = subd::EstimatePeakBytes(*scheme, request);
-    if (bytes > limit)
-    {
-      vtkErrorMacro("Refusing " << this->NumberOfSubdivisions << " subdivision level(s): the output "
-                                << "would have about " << counts.Faces << " faces and " << counts.Vertices
-                                << " points and need about " << bytes / MiB << " MiB, more than MaximumMemory ("
-                                << this->MaximumMemory << " MiB).");
-      return fail();
-    }
-    const subd::BaseTags tags = features.ToBaseTags(topology, input->GetPoints(),
-      this->AutomaticCreases ? this->FeatureAngle : 0.0,
-      static_cast<subd::CreaseMethod>(this->CreaseMethod), cache.UnmatchedSegments);
-    // Ghost line cells are passed through by the piece that owns them.
-    std::vector<subd::Index>& unmatched = cache.UnmatchedSegments;
-    unmatched.erase(std::remove_if(unmatched.begin(), unmatched.end(),
-                      [&](subd::Index segment) { return vtkSubDIsGhostCell(input, features.SegmentCell[segment]); }),
-      unmatched.end());
-    if (!cache.UnmatchedSegments.empty())
-    {
-      const subd::Index first = cache.UnmatchedSegments[0];
-      vtkWarningMacro(<< cache.UnmatchedSegments.size() << " crease line segment(s) are not edges of "
-                      << "the surface and are passed through unchanged; the first is ("
-                      << features.SegmentPoints[2 * first] << ", " << features.SegmentPoints[2 * first + 1]
-                      << ") in line cell " << features.SegmentCell[first] << ".");
-    }
-    subd::Level base = subd::MakeBaseLevel(std::move(topology), tags,
-      scheme->EffectiveBoundaryRule(static_cast<subd::BoundaryRule>(this->BoundaryRule)));
-    cache.WritesDepth = scheme->DependsOnDepth();
-    base.Depth = cache.WritesDepth ? inputDepth : 0;
-    if (!subd::Refine(*scheme, std::move(base), this->NumberOfSubdivisions, cache.Hierarchy, refineProgress,
-          request.Finest, subd::LevelRows::Written))
-    {
-      return aborted();
-    }
-    if (this->ProjectToLimit)
-    {
-      // The limit masks read the finest points: one more stencil table after the levels,
-      // so that points and point data are projected alike, and cached alike.
-      subd::StencilTable limit;
-      std::string limitError;
-      if (!scheme->BuildLimitStencils(cache.Hierarchy.Finest, limit, limitError))
-      {
-        vtkErrorMacro(<< "ProjectToLimit: " << limitError << ".");
-        return fail();
-      }
-      cache.Hierarchy.Stencils.push_back(std::move(limit));
-    }
-    std::string evaluationError;
-    cache.LimitTangents = subd::StencilTable();
-    if (limitGeometry && !subd::LimitEvaluator(*scheme, cache.Hierarchy.Finest).IsValid(evaluationError))
-    {
-      // Without exact derivatives, normals can still come from tangent masks; curvature not.
-      // Catmull-Clark and Loop report the evaluator's reason (e.g. a vertex of too high a
-      // valence), the other schemes why their tangent masks do not apply.
-      std::string tangentError;
-      if (this->ComputeCurvature ||
-        !scheme->BuildLimitTangentStencils(cache.Hierarchy.Finest, cache.LimitTangents, tangentError))
-      {
-        const std::string name = scheme->GetName();
-        const bool exactScheme = name == "catmull-clark" || name == "loop";
-        vtkErrorMacro(<< (this->ComputeCurvature ? "ComputeCurvature" : "ComputeLimitNormals") << ": "
-                      << (exactScheme || tangentError.empty() ? evaluationError : tangentError) << ".");
-        return fail();
-      }
-    }
-    ++this->NumberOfStencilBuilds;
-    cache.SeamLineCopies = faceRank.empty()
-      ? std::vector<std::uint8_t>()
-      : vtkSubDSeamLineCopies(cache.Hierarchy.Finest, cache.FaceGhostLayer, faceRank);
-    cache.FaceIsGhost = std::move(faceIsGhost);
-    cache.OutputGhostLevels = outputGhostLevels;
-    cache.SelectOutput(someBaseVertexUnused);
-    cache.NumInputPoints = numPoints;
-    cache.InputDepth = inputDepth;
-    cache.Offsets = std::move(screened.Offsets);
-    cache.Vertices = std::move(screened.Vertices);
-    cache.KeptFaces = std::move(screened.KeptFaces);
-    cache.Features = std::move(features);
-    cache.FilterMTime = this->GetMTime();
-    cache.Valid = true;
+    return Status::Aborted;
   }
-  else
+  if (!this->AddLimitTables())
   {
-    refineProgress(1.0);
+    return Status::Failed;
   }
+  ++this->NumberOfStencilBuilds;
+  cache.SeamLineCopies = faceRank.empty() ? std::vector<std::uint8_t>()
+                                          : vtkSubDSeamLineCopies(cache.Hierarchy.Finest, cache.FaceGhostLayer, faceRank);
+  cache.FaceIsGhost = std::move(mesh.FaceIsGhost);
+  cache.OutputGhostLevels = outputGhostLevels;
+  cache.SelectOutput(someBaseVertexUnused);
+  cache.NumInputPoints = mesh.NumPoints;
+  cache.InputDepth = mesh.Depth;
+  cache.Offsets = std::move(mesh.Screened.Offsets);
+  cache.Vertices = std::move(mesh.Screened.Vertices);
+  cache.KeptFaces = std::move(mesh.Screened.KeptFaces);
+  cache.Features = std::move(mesh.Features);
+  cache.FilterMTime = this->GetMTime();
+  cache.Valid = true;
+  return Status::Done;
+}
 
-  const subd::Hierarchy& hierarchy = cache.Hierarchy;
-  const subd::Level& finest = hierarchy.Finest;
+vtkSubDSurfaceFilter::Status vtkSubDSurfaceFilter::WriteOutput(
+  vtkPolyData* input, const vtkInputMesh& mesh, bool reuse, vtkPolyData* output)
+{
+  vtkInternals& cache = *this->Internals;
   // Only re-applications keep the scratch levels (the intermediate levels' values) for the
   // next update: the first update of a topology, which may be the only one, frees its own
   // before the output faces are made.
   subd::EvaluationScratch<double> updateScratch;
-  vtkSubDPointDataInterpolation interpolation(hierarchy, vtkSubDPointDataInterpolation::SMPFor,
+  vtkSubDPointDataInterpolation interpolation(cache.Hierarchy, vtkSubDPointDataInterpolation::SMPFor,
     cache.CompactPoints ? &cache.FinestPointOfOutput : nullptr, reuse ? &cache.Scratch : &updateScratch);
+  const Status points = this->WritePoints(input, interpolation, output);
+  if (points != Status::Done)
+  {
+    return points;
+  }
+  std::vector<std::pair<vtkDataArray*, vtkDataArray*>> interpolated;
+  if (!this->InterpolatePointData(input, interpolation, output, interpolated))
+  {
+    return Status::Aborted;
+  }
 
-  // Points.
+  // Sharp features out: decayed corner sharpness, crease lines (before the faces in VTK's
+  // cell order) and the line segments passed through.
+  vtkSubDOutputPointMap pointMap{ [&cache](subd::Index v) { return cache.OutputPoint(v); },
+    [&cache](vtkIdType o) {
+      return cache.CompactPoints ? cache.FinestPointOfOutput[o] : static_cast<subd::Index>(o);
+    } };
+  vtkSubDSeamLines seams{ cache.SeamLineCopies, cache.OutputGhostLevels > 0, {} };
+  const std::vector<float> lineSharpness = vtkSubDWriteSharpFeatures(cache.Features, cache.UnmatchedSegments,
+    cache.Hierarchy.Finest, pointMap, input, interpolated, output, cache.SeamLineCopies.empty() ? nullptr : &seams);
+
+  // Faces, straight into offsets/connectivity; they depend on the topology only: re-applied
+  // stencils reuse them.
+  if (!cache.OutputFaces)
+  {
+    updateScratch = subd::EvaluationScratch<double>();
+    cache.OutputFaces = this->MakeOutputFaces();
+  }
+  output->SetPolys(cache.OutputFaces);
+  this->AddCellData(input, mesh, lineSharpness, output);
+  if (cache.WritesDepth)
+  {
+    // How many steps made the output, so that a later refinement continues them.
+    vtkNew<vtkIntArray> depth;
+    depth->SetName(DepthArrayName);
+    depth->InsertNextValue(cache.Hierarchy.Finest.Depth);
+    output->GetFieldData()->AddArray(depth);
+  }
+  cache.AddGhostArrays(output, static_cast<vtkIdType>(lineSharpness.size()), seams.LineIsCopy);
+  return Status::Done;
+}
+
+vtkSubDSurfaceFilter::Status vtkSubDSurfaceFilter::WritePoints(
+  vtkPolyData* input, vtkSubDPointDataInterpolation& interpolation, vtkPolyData* output)
+{
+  vtkInternals& cache = *this->Internals;
+  const vtkIdType numPoints = input->GetNumberOfPoints();
   // Double input points are read where they are; others are converted once.
   vtkSmartPointer<vtkDoubleArray> basePoints = vtkDoubleArray::FastDownCast(input->GetPoints()->GetData());
   if (!basePoints || basePoints->GetNumberOfComponents() != 3)
@@ -634,19 +768,11 @@ int vtkSubDSurfaceFilter::Execute(
   }
   vtkNew<vtkPoints> outPoints;
   outPoints->SetDataType(precision == DOUBLE_PRECISION ? VTK_DOUBLE : VTK_FLOAT);
-  const int numArrays = input->GetPointData()->GetNumberOfArrays();
-  auto evaluateProgress = [this, numArrays](int step) {
-    return [this, numArrays, step](double fraction) {
-      this->UpdateProgress(0.5 + 0.5 * (step + fraction) / (numArrays + 1));
-      return !this->GetAbortExecute();
-    };
-  };
-  vtkSmartPointer<vtkDataArray> outCoords =
-    interpolation.Interpolate(basePoints, outPoints->GetDataType(), false, evaluateProgress(0),
-      cache.TakeRecyclableCoords());
+  vtkSmartPointer<vtkDataArray> outCoords = interpolation.Interpolate(
+    basePoints, outPoints->GetDataType(), false, this->EvaluationProgress(input, 0), cache.TakeRecyclableCoords());
   if (!outCoords)
   {
-    return aborted();
+    return Status::Aborted;
   }
   cache.LastCoords = outCoords;
   outPoints->SetData(outCoords);
@@ -654,14 +780,27 @@ int vtkSubDSurfaceFilter::Execute(
   if ((this->ComputeLimitNormals || this->ComputeCurvature) &&
     !this->AddLimitGeometry(basePoints->GetPointer(0), output->GetPointData()))
   {
-    return fail();
+    return Status::Failed;
   }
+  return Status::Done;
+}
 
-  // Point data: every array, with the same stencils.
+std::function<bool(double)> vtkSubDSurfaceFilter::EvaluationProgress(vtkPolyData* input, int step)
+{
+  const int numArrays = input->GetPointData()->GetNumberOfArrays();
+  return [this, numArrays, step](double fraction) {
+    this->UpdateProgress(0.5 + 0.5 * (step + fraction) / (numArrays + 1));
+    return !this->GetAbortExecute();
+  };
+}
+
+bool vtkSubDSurfaceFilter::InterpolatePointData(vtkPolyData* input, vtkSubDPointDataInterpolation& interpolation,
+  vtkPolyData* output, std::vector<std::pair<vtkDataArray*, vtkDataArray*>>& interpolated)
+{
+  const vtkInternals& cache = *this->Internals;
   vtkPointData* inPD = input->GetPointData();
   vtkPointData* outPD = output->GetPointData();
-  std::vector<std::pair<vtkDataArray*, vtkDataArray*>> interpolated;
-  for (int a = 0; a < numArrays; ++a)
+  for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
   {
     vtkAbstractArray* abstractArray = inPD->GetAbstractArray(a);
     vtkDataArray* array = vtkDataArray::SafeDownCast(abstractArray);
@@ -671,18 +810,17 @@ int vtkSubDSurfaceFilter::Execute(
                       << "' is not numeric and cannot be interpolated; it is not passed on.");
       continue;
     }
-    if (array == vtkSubDNamedArray(inPD, cache.Features.Names.CornerSharpness))
+    // Corner sharpness is not interpolated: it is decayed on the vertices it belongs to
+    // (vtkSubDWriteSharpFeatures); the ghost flags of the input's piece mean nothing for the
+    // output's points.
+    if (array == vtkSubDNamedArray(inPD, cache.Features.Names.CornerSharpness) || array == input->GetPointGhostArray())
     {
-      continue; // not interpolated: decayed on the vertices it belongs to (below)
+      continue;
     }
-    if (array == input->GetPointGhostArray())
-    {
-      continue; // bit flags of the input's piece, meaningless for the output's points
-    }
-    if (array->GetNumberOfTuples() != numPoints)
+    if (array->GetNumberOfTuples() != input->GetNumberOfPoints())
     {
       vtkWarningMacro(<< "Point-data array '" << (array->GetName() ? array->GetName() : "")
-                      << "' has " << array->GetNumberOfTuples() << " tuples for " << numPoints
+                      << "' has " << array->GetNumberOfTuples() << " tuples for " << input->GetNumberOfPoints()
                       << " points; it is not passed on.");
       continue;
     }
@@ -693,10 +831,10 @@ int vtkSubDSurfaceFilter::Execute(
       continue; // replaced by the limit normals
     }
     vtkSmartPointer<vtkDataArray> out = interpolation.Interpolate(
-      array, array->GetDataType(), attribute == vtkDataSetAttributes::NORMALS, evaluateProgress(a + 1));
+      array, array->GetDataType(), attribute == vtkDataSetAttributes::NORMALS, this->EvaluationProgress(input, a + 1));
     if (!out)
     {
-      return aborted();
+      return false;
     }
     outPD->AddArray(out);
     interpolated.emplace_back(array, out);
@@ -705,42 +843,28 @@ int vtkSubDSurfaceFilter::Execute(
       outPD->SetActiveAttribute(outPD->GetNumberOfArrays() - 1, attribute);
     }
   }
+  return true;
+}
 
-  // Sharp features out: decayed corner sharpness, crease lines (before the faces in VTK's
-  // cell order) and the line segments passed through.
-  vtkSubDOutputPointMap pointMap{ [&cache](subd::Index v) { return cache.OutputPoint(v); },
-    [&cache](vtkIdType o) {
-      return cache.CompactPoints ? cache.FinestPointOfOutput[o] : static_cast<subd::Index>(o);
-    } };
-  vtkSubDSeamLines seams{ cache.SeamLineCopies, cache.OutputGhostLevels > 0, {} };
-  const std::vector<float> lineSharpness = vtkSubDWriteSharpFeatures(cache.Features, cache.UnmatchedSegments, finest,
-    pointMap, input, interpolated, output, cache.SeamLineCopies.empty() ? nullptr : &seams);
+void vtkSubDSurfaceFilter::AddCellData(
+  vtkPolyData* input, const vtkInputMesh& mesh, const std::vector<float>& lineSharpness, vtkPolyData* output)
+{
+  const vtkInternals& cache = *this->Internals;
   const vtkIdType numLines = static_cast<vtkIdType>(lineSharpness.size());
-
-  // Faces, straight into offsets/connectivity.
-  // The faces depend on the topology only: re-applied stencils reuse them.
-  if (!cache.OutputFaces)
-  {
-    updateScratch = subd::EvaluationScratch<double>();
-    cache.OutputFaces = this->MakeOutputFaces();
-  }
-  output->SetPolys(cache.OutputFaces);
   const vtkIdType numOut = cache.GetNumberOfOutputFaces();
-
-  // Cell data: each face inherits its input cell's; lines get zeros, and their sharpness.
+  // Each face inherits its input cell's; lines get zeros, and their sharpness.
   if (input->GetCellData()->GetNumberOfArrays() == 0 && !this->GenerateParentCellIds && numLines == 0)
   {
-    cache.AddGhostArrays(output, numLines, seams.LineIsCopy);
-    this->UpdateProgress(1.0);
-    return 1;
+    return;
   }
   vtkNew<vtkIdList> sourceCells, targetCells;
   sourceCells->SetNumberOfIds(numOut);
   targetCells->SetNumberOfIds(numOut);
+  const subd::Level& finest = cache.Hierarchy.Finest;
   for (vtkIdType c = 0; c < numOut; ++c)
   {
     const subd::Index baseFace = finest.GetFaceOrigin(cache.FinestFace(c));
-    sourceCells->SetId(c, faces.CellIdOf(cache.KeptFaces[baseFace], numPolys));
+    sourceCells->SetId(c, mesh.Faces.CellIdOf(cache.KeptFaces[baseFace], mesh.NumPolys));
     targetCells->SetId(c, numLines + c);
   }
   vtkCellData* inCD = input->GetCellData();
@@ -778,16 +902,6 @@ int vtkSubDSurfaceFilter::Execute(
     std::copy(sourceCells->GetPointer(0), sourceCells->GetPointer(0) + numOut, parents->GetPointer(numLines));
     outCD->AddArray(parents);
   }
-  if (cache.WritesDepth)
-  {
-    vtkNew<vtkIntArray> depth;
-    depth->SetName(DepthArrayName);
-    depth->InsertNextValue(finest.Depth);
-    output->GetFieldData()->AddArray(depth);
-  }
-  cache.AddGhostArrays(output, numLines, seams.LineIsCopy);
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 bool vtkSubDSurfaceFilter::AddLimitGeometry(const double* basePoints, vtkPointData* outPD)

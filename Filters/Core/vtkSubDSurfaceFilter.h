@@ -82,15 +82,22 @@
 #include "vtkPolyDataAlgorithm.h"
 #include "vtkSmartPointer.h" // MakeOutputFaces
 
-#include <vector> // AddTangentMaskNormals
+#include <functional> // EvaluationProgress
+#include <utility>    // InterpolatePointData
+#include <vector>     // AddTangentMaskNormals
 
 namespace subd
 {
 class Scheme;
+class MeshTopology;
+struct BaseTags;
 }
 class vtkCellArray;
+class vtkDataArray;
 class vtkPointData;
+class vtkSubDPointDataInterpolation;
 struct vtkSubDFeatureArrayNames;
+struct vtkSubDPieceRequest;
 
 class SUBDFILTERS_EXPORT vtkSubDSurfaceFilter : public vtkPolyDataAlgorithm
 {
@@ -287,7 +294,8 @@ protected:
   /// Passes the requested piece upstream, with GetRequiredGhostLevels() ghost levels (plus those
   /// asked of the output) when the mesh is split into several pieces.
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-  /// RequestData's work; RequestData runs it and turns running out of memory into an error.
+  /// RequestData's work, a recipe of the steps below; RequestData runs it and turns running
+  /// out of memory into an error.
   int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
 
   /// The subclass's scheme; called when the stencils must be (re)built. `allTriangles` tells
@@ -331,6 +339,40 @@ protected:
 private:
   vtkSubDSurfaceFilter(const vtkSubDSurfaceFilter&) = delete;
   void operator=(const vtkSubDSurfaceFilter&) = delete;
+
+  /// How a step ended: an abort (AbortExecute) is not a failure.
+  enum class Status
+  {
+    Done,
+    Failed,
+    Aborted
+  };
+  struct vtkInputMesh;
+  /// Input mesh: the points checked, the polygons screened (and triangulated where the scheme
+  /// needs triangles), each kept face's input cell, ghost faces, sharp features.
+  bool ReadInputMesh(vtkPolyData* input, const vtkSubDPieceRequest& request, vtkInputMesh& mesh);
+  bool ReadInputPoints(vtkPolyData* input);
+  bool ScreenInputFaces(vtkPolyData* input, vtkInputMesh& mesh);
+  /// Whether the cached refinement fits this input (only its points or data changed).
+  bool CanReuseRefinement(const vtkInputMesh& mesh, int outputGhostLevels);
+  /// Refinement: topology, size guard, base tags, the levels, limit tables; cached.
+  Status BuildRefinement(vtkPolyData* input, vtkInputMesh& mesh, int outputGhostLevels);
+  /// The size guard: refuses (with an error) a refinement whose output or peak memory would
+  /// be too large; `fullFinest`: the finest level keeps its full topology.
+  bool FitsTheMemoryBudget(
+    const subd::Scheme& scheme, const subd::MeshTopology& topology, vtkPointData* inPD, bool fullFinest);
+  void ReadBaseTags(
+    vtkPolyData* input, const vtkInputMesh& mesh, const subd::MeshTopology& topology, subd::BaseTags& tags);
+  bool AddLimitTables();
+  /// Output mesh: points, point data, sharp features, faces, cell data.
+  Status WriteOutput(vtkPolyData* input, const vtkInputMesh& mesh, bool reuse, vtkPolyData* output);
+  Status WritePoints(vtkPolyData* input, vtkSubDPointDataInterpolation& interpolation, vtkPolyData* output);
+  bool InterpolatePointData(vtkPolyData* input, vtkSubDPointDataInterpolation& interpolation, vtkPolyData* output,
+    std::vector<std::pair<vtkDataArray*, vtkDataArray*>>& interpolated);
+  void AddCellData(
+    vtkPolyData* input, const vtkInputMesh& mesh, const std::vector<float>& lineSharpness, vtkPolyData* output);
+  /// The progress of evaluating the points (step 0) or the point-data array step - 1.
+  std::function<bool(double)> EvaluationProgress(vtkPolyData* input, int step);
 
   class vtkInternals;
   vtkInternals* Internals;

@@ -685,3 +685,25 @@ TYPED_TEST(AnySurfaceFilter, PrintSelfNamesOptions)
   EXPECT_NE(os.str().find("NumberOfSubdivisions: 1"), std::string::npos);
 }
 
+
+// sqrt(3) refines a boundary every second step: an output records how many steps made it
+// ("SubDDepth"), also without cell data or crease lines, so that two one-level filters on an
+// open mesh equal one two-level filter.
+TEST(Sqrt3Filter, ChainedLevelsContinueTheBoundarySteps)
+{
+  vtkSmartPointer<vtkPolyData> input = subdtest::ToPolyData(subdtest::Grid(4, 3, false, false).Triangulated());
+  auto subdivide = [](vtkPolyData* mesh, int levels) {
+    vtkNew<vtkSubDSqrt3Filter> filter;
+    filter->SetInputData(mesh);
+    filter->SetNumberOfSubdivisions(levels);
+    filter->Update();
+    return vtkSmartPointer<vtkPolyData>(filter->GetOutput());
+  };
+  vtkSmartPointer<vtkPolyData> once = subdivide(input, 2);
+  vtkSmartPointer<vtkPolyData> first = subdivide(input, 1);
+  ASSERT_NE(first->GetFieldData()->GetArray("SubDDepth"), nullptr);
+  vtkSmartPointer<vtkPolyData> chained = subdivide(first, 1);
+  ASSERT_GT(once->GetNumberOfPolys(), 0);
+  EXPECT_EQ(subdtest::Faces(once), subdtest::Faces(chained));
+  EXPECT_EQ(subdtest::Coordinates(once), subdtest::Coordinates(chained));
+}
