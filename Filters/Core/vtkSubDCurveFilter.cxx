@@ -24,6 +24,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <string>
 #include <vector>
@@ -114,6 +115,73 @@ vtkSmartPointer<vtkDataArray> Concatenate(vtkDataArray* input, vtkDataArray* cur
   out->InsertTuples(shift, curve->GetNumberOfTuples(), 0, curve);
   return out;
 }
+
+// The output's cells in VTK's order (verts, lines, polys, strips), each with its input cell's
+// data: the input's verts, then the refined curves (single points as verts), then its
+// polygons and strips, passed through.
+void WriteCells(vtkPolyData* input, const std::vector<vtkIdType>& lineCells, const subd::CurvePieces& finest,
+  const std::vector<subd::Index>& firstPiece, vtkIdType shift, vtkPolyData* output)
+{
+  vtkNew<vtkCellArray> outVerts, outLines;
+  outVerts->DeepCopy(input->GetVerts());
+  std::vector<bool> isVertex;
+  OutputCells(finest, firstPiece, shift, outLines, outVerts, isVertex);
+  const vtkIdType numVerts = input->GetNumberOfVerts(), numInputLines = input->GetNumberOfLines();
+  const vtkIdType numOtherCells = input->GetNumberOfPolys() + input->GetNumberOfStrips();
+  vtkNew<vtkIdList> sources;
+  for (vtkIdType c = 0; c < numVerts; ++c)
+  {
+    sources->InsertNextId(c);
+  }
+  for (bool vertices : { true, false })
+  {
+    for (size_t line = 0; line < lineCells.size(); ++line)
+    {
+      if (isVertex[line] == vertices)
+      {
+        sources->InsertNextId(lineCells[line]);
+      }
+    }
+  }
+  for (vtkIdType c = 0; c < numOtherCells; ++c)
+  {
+    sources->InsertNextId(numVerts + numInputLines + c);
+  }
+  vtkCellData* inCD = input->GetCellData();
+  vtkCellData* outCD = output->GetCellData();
+  outCD->CopyAllocate(inCD, sources->GetNumberOfIds());
+  for (vtkIdType c = 0; c < sources->GetNumberOfIds(); ++c)
+  {
+    outCD->CopyData(inCD, sources->GetId(c), c);
+  }
+  if (vtkUnsignedCharArray* inputMarks = input->GetCellGhostArray())
+  {
+    // A piece's ghost cells stay ghosts (CopyData leaves the ghost array out).
+    vtkNew<vtkUnsignedCharArray> marks;
+    marks->SetName(vtkDataSetAttributes::GhostArrayName());
+    marks->SetNumberOfTuples(sources->GetNumberOfIds());
+    for (vtkIdType c = 0; c < sources->GetNumberOfIds(); ++c)
+    {
+      marks->SetValue(c, inputMarks->GetValue(sources->GetId(c)));
+    }
+    outCD->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+    outCD->AddArray(marks);
+  }
+  if (outVerts->GetNumberOfCells() > 0)
+  {
+    output->SetVerts(outVerts);
+  }
+  output->SetLines(outLines);
+  if (input->GetNumberOfPolys() > 0)
+  {
+    output->SetPolys(input->GetPolys());
+  }
+  if (input->GetNumberOfStrips() > 0)
+  {
+    output->SetStrips(input->GetStrips());
+  }
+  vtkSubDMarkGhostPoints(output); // a piece's ghost lines (asked for downstream) keep their mark
+}
 }
 
 vtkSubDCurveFilter::vtkSubDCurveFilter()
@@ -147,22 +215,8 @@ int vtkSubDCurveFilter::Execute(
     this->SetErrorCode(vtkErrorCode::UserError);
     return 0;
   };
-
-  // Checked before anything passes through: a non-finite point is an error, lines or not.
-  const vtkIdType badPoint = input && input->GetNumberOfPoints() > 0 ? vtkSubDFirstNonFinitePoint(input->GetPoints()) : -1;
-  if (badPoint >= 0)
+  if (!this->CheckInput(input))
   {
-    double p[3];
-    input->GetPoint(badPoint, p);
-    vtkErrorMacro("Point " << badPoint << " has a non-finite coordinate (" << p[0] << ", " << p[1] << ", "
-                           << p[2] << "): the curves cannot be subdivided.");
-    return fail();
-  }
-  // Cells are checked too, also those that only pass through.
-  const vtkIdType badCell = input ? vtkSubDFirstCellOutsidePoints(input) : -1;
-  if (badCell >= 0)
-  {
-    vtkErrorMacro("Cell " << badCell << " refers to a point id outside 0.." << input->GetNumberOfPoints() - 1 << ".");
     return fail();
   }
   if (!input || input->GetNumberOfLines() == 0)
@@ -175,17 +229,11 @@ int vtkSubDCurveFilter::Execute(
     }
     return 1;
   }
-  const vtkIdType numPoints = input->GetNumberOfPoints();
-  if (numPoints >= static_cast<vtkIdType>(std::numeric_limits<subd::Index>::max() / 4))
-  {
-    vtkErrorMacro("Input has " << numPoints << " points; at most "
-                               << std::numeric_limits<subd::Index>::max() / 4 << " are supported.");
-    return fail();
-  }
   const vtkSubDInputLines lines = vtkSubDReadInputLines(input, this->Closed);
   if (lines.FirstBadCell >= 0)
   {
-    vtkErrorMacro("Cell " << lines.FirstBadCell << " refers to a point id outside 0.." << numPoints - 1 << ".");
+    vtkErrorMacro("Cell " << lines.FirstBadCell << " refers to a point id outside 0.." << input->GetNumberOfPoints() - 1
+                          << ".");
     return fail();
   }
   if (lines.Empty > 0)
@@ -205,9 +253,71 @@ int vtkSubDCurveFilter::Execute(
   std::vector<subd::Index> firstPiece;
   subd::SplitAtCorners(
     subd::CurveLines{ &lines.Offsets, &lines.Ids, &lines.Closed, &corners }, pieces, firstPiece);
+  if (!this->FitsTheMemoryBudget(subd::PredictCurvePoints(rules, pieces, this->NumberOfSubdivisions), input))
+  {
+    return fail();
+  }
+  subd::Hierarchy hierarchy;
+  subd::CurvePieces finest;
+  if (!subd::RefineCurves(rules, static_cast<subd::Index>(input->GetNumberOfPoints()), pieces,
+        this->NumberOfSubdivisions, hierarchy, finest, this->Progress(0.0, 0.4)))
+  {
+    output->Initialize();
+    return 1; // aborted: empty output, not an error
+  }
+  // Points: the input's points first when other cells use them.
+  const bool keepInputPoints = input->GetNumberOfVerts() + input->GetNumberOfPolys() + input->GetNumberOfStrips() > 0;
+  const vtkIdType shift = keepInputPoints ? input->GetNumberOfPoints() : 0;
+  const std::vector<double> curvePoints = this->WritePoints(input, rules, finest, hierarchy, shift, output);
+  this->UpdateProgress(0.5);
+  if (!this->InterpolatePointData(input, hierarchy, finest.NumAnchors, shift, output))
+  {
+    output->Initialize();
+    return 1; // aborted
+  }
+  if (this->ComputeTangents)
+  {
+    const subd::Index numCurvePoints = static_cast<subd::Index>(curvePoints.size() / 3);
+    output->GetPointData()->SetTangents(UnitTangents(
+      subd::CurveTangentStencils(rules, finest, numCurvePoints), finest, curvePoints, numCurvePoints, shift));
+  }
+  WriteCells(input, lines.CellIds, finest, firstPiece, shift, output);
+  this->UpdateProgress(1.0);
+  return 1;
+}
 
-  // Size guard: 3 doubles per point, plus the point data, before anything large exists.
-  const double predicted = subd::PredictCurvePoints(rules, pieces, this->NumberOfSubdivisions);
+bool vtkSubDCurveFilter::CheckInput(vtkPolyData* input)
+{
+  // Checked before anything passes through: a non-finite point is an error, lines or not.
+  const vtkIdType badPoint = input && input->GetNumberOfPoints() > 0 ? vtkSubDFirstNonFinitePoint(input->GetPoints()) : -1;
+  if (badPoint >= 0)
+  {
+    double p[3];
+    input->GetPoint(badPoint, p);
+    vtkErrorMacro("Point " << badPoint << " has a non-finite coordinate (" << p[0] << ", " << p[1] << ", "
+                           << p[2] << "): the curves cannot be subdivided.");
+    return false;
+  }
+  // Cells are checked too, also those that only pass through.
+  const vtkIdType badCell = input ? vtkSubDFirstCellOutsidePoints(input) : -1;
+  if (badCell >= 0)
+  {
+    vtkErrorMacro("Cell " << badCell << " refers to a point id outside 0.." << input->GetNumberOfPoints() - 1 << ".");
+    return false;
+  }
+  const vtkIdType numPoints = input ? input->GetNumberOfPoints() : 0;
+  if (numPoints >= static_cast<vtkIdType>(std::numeric_limits<subd::Index>::max() / 4))
+  {
+    vtkErrorMacro("Input has " << numPoints << " points; at most "
+                               << std::numeric_limits<subd::Index>::max() / 4 << " are supported.");
+    return false;
+  }
+  return true;
+}
+
+bool vtkSubDCurveFilter::FitsTheMemoryBudget(double predictedPoints, vtkPolyData* input)
+{
+  // 3 doubles per point, plus the point data, before anything large exists.
   double bytesPerPoint = 3.0 * sizeof(double) + (this->ComputeTangents ? 24.0 : 0.0);
   for (int a = 0; a < input->GetPointData()->GetNumberOfArrays(); ++a)
   {
@@ -216,48 +326,43 @@ int vtkSubDCurveFilter::Execute(
       bytesPerPoint += array->GetNumberOfComponents() * sizeof(double);
     }
   }
-  if (predicted >= std::numeric_limits<subd::Index>::max() / 2 ||
-    predicted * bytesPerPoint > this->MaximumMemory * 1024.0 * 1024.0)
+  if (predictedPoints >= std::numeric_limits<subd::Index>::max() / 2 ||
+    predictedPoints * bytesPerPoint > this->MaximumMemory * 1024.0 * 1024.0)
   {
-    vtkErrorMacro("Refusing " << this->NumberOfSubdivisions << " level(s): about " << predicted
-                              << " output points would need " << predicted * bytesPerPoint / (1024.0 * 1024.0)
+    vtkErrorMacro("Refusing " << this->NumberOfSubdivisions << " level(s): about " << predictedPoints
+                              << " output points would need " << predictedPoints * bytesPerPoint / (1024.0 * 1024.0)
                               << " MiB, above MaximumMemory (" << this->MaximumMemory << " MiB).");
-    return fail();
+    return false;
   }
+  return true;
+}
 
-  auto progress = [this](double first, double span) {
-    return [this, first, span](double fraction) {
-      this->UpdateProgress(first + span * fraction);
-      return !this->GetAbortExecute();
-    };
+std::function<bool(double)> vtkSubDCurveFilter::Progress(double first, double span)
+{
+  return [this, first, span](double fraction) {
+    this->UpdateProgress(first + span * fraction);
+    return !this->GetAbortExecute();
   };
-  subd::Hierarchy hierarchy;
-  subd::CurvePieces finest;
-  if (!subd::RefineCurves(rules, static_cast<subd::Index>(numPoints), pieces, this->NumberOfSubdivisions, hierarchy,
-        finest, progress(0.0, 0.4)))
-  {
-    output->Initialize();
-    return 1; // aborted: empty output, not an error
-  }
+}
+
+std::vector<double> vtkSubDCurveFilter::WritePoints(vtkPolyData* input, const subd::CurveRules& rules,
+  const subd::CurvePieces& finest, subd::Hierarchy& hierarchy, vtkIdType shift, vtkPolyData* output)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
   const int levelTables = hierarchy.GetNumStencilTables();
   const subd::Index numCurvePoints = hierarchy.GetNumFinestPoints();
   if (this->ProjectToLimit)
   {
     hierarchy.Stencils.push_back(subd::CurveLimitStencils(rules, finest, numCurvePoints));
   }
-
-  // Points: the input's points first when other cells use them.
-  const bool keepInputPoints =
-    input->GetNumberOfVerts() + input->GetNumberOfPolys() + input->GetNumberOfStrips() > 0;
-  const vtkIdType shift = keepInputPoints ? numPoints : 0;
   std::vector<double> basePoints(static_cast<size_t>(numPoints) * 3);
   for (vtkIdType i = 0; i < numPoints; ++i)
   {
     input->GetPoint(i, basePoints.data() + 3 * i);
   }
   std::vector<double> curvePoints(static_cast<size_t>(numCurvePoints) * 3);
-  hierarchy.Evaluate(basePoints.data(), 3, curvePoints.data(), vtkSubDPointDataInterpolation::SMPFor, nullptr,
-    levelTables);
+  hierarchy.Evaluate(
+    basePoints.data(), 3, curvePoints.data(), vtkSubDPointDataInterpolation::SMPFor, nullptr, levelTables);
   int precision = this->OutputPointsPrecision;
   if (precision == DEFAULT_PRECISION)
   {
@@ -270,22 +375,25 @@ int vtkSubDCurveFilter::Execute(
   {
     outPoints->SetPoint(i, basePoints.data() + 3 * i);
   }
-  const double* finalPoints = curvePoints.data();
   std::vector<double> limitPoints;
   if (this->ProjectToLimit)
   {
     limitPoints.resize(curvePoints.size());
     hierarchy.Stencils.back().Apply(curvePoints.data(), limitPoints.data(), 3);
-    finalPoints = limitPoints.data();
   }
+  const double* finalPoints = this->ProjectToLimit ? limitPoints.data() : curvePoints.data();
   for (vtkIdType i = 0; i < numCurvePoints; ++i)
   {
     outPoints->SetPoint(shift + i, finalPoints + 3 * i);
   }
   output->SetPoints(outPoints);
-  this->UpdateProgress(0.5);
+  return curvePoints;
+}
 
-  // Point data: every array with the same stencils.
+bool vtkSubDCurveFilter::InterpolatePointData(
+  vtkPolyData* input, const subd::Hierarchy& hierarchy, std::int32_t numAnchors, vtkIdType shift, vtkPolyData* output)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
   vtkPointData* inPD = input->GetPointData();
   vtkPointData* outPD = output->GetPointData();
   vtkSubDPointDataInterpolation interpolation(hierarchy, vtkSubDPointDataInterpolation::SMPFor, nullptr);
@@ -308,16 +416,15 @@ int vtkSubDCurveFilter::Execute(
     }
     const int attribute = inPD->IsArrayAnAttribute(a);
     vtkSmartPointer<vtkDataArray> curve = interpolation.Interpolate(array, array->GetDataType(),
-      attribute == vtkDataSetAttributes::NORMALS, progress(0.5 + 0.4 * a / numArrays, 0.4 / numArrays));
+      attribute == vtkDataSetAttributes::NORMALS, this->Progress(0.5 + 0.4 * a / numArrays, 0.4 / numArrays));
     if (!curve)
     {
-      output->Initialize();
-      return 1; // aborted
+      return false;
     }
     if (name == "CornerSharpness")
     {
       // Corners and ends keep theirs (they are anchors); new points are smooth.
-      for (vtkIdType i = finest.NumAnchors; i < numCurvePoints; ++i)
+      for (vtkIdType i = numAnchors; i < curve->GetNumberOfTuples(); ++i)
       {
         curve->SetComponent(i, 0, 0.0);
       }
@@ -328,74 +435,7 @@ int vtkSubDCurveFilter::Execute(
       outPD->SetActiveAttribute(outPD->GetNumberOfArrays() - 1, attribute);
     }
   }
-  if (this->ComputeTangents)
-  {
-    outPD->SetTangents(UnitTangents(
-      subd::CurveTangentStencils(rules, finest, numCurvePoints), finest, curvePoints, numCurvePoints, shift));
-  }
-
-  // Cells in VTK's order (verts, lines, polys, strips), each with its input cell's data.
-  vtkNew<vtkCellArray> outVerts, outLines;
-  outVerts->DeepCopy(input->GetVerts());
-  std::vector<bool> isVertex;
-  OutputCells(finest, firstPiece, shift, outLines, outVerts, isVertex);
-  vtkCellData* inCD = input->GetCellData();
-  vtkCellData* outCD = output->GetCellData();
-  const vtkIdType numVerts = input->GetNumberOfVerts(), numInputLines = input->GetNumberOfLines();
-  const vtkIdType numOtherCells = input->GetNumberOfPolys() + input->GetNumberOfStrips();
-  vtkNew<vtkIdList> sources;
-  for (vtkIdType c = 0; c < numVerts; ++c)
-  {
-    sources->InsertNextId(c);
-  }
-  for (bool vertices : { true, false })
-  {
-    for (size_t line = 0; line < lines.CellIds.size(); ++line)
-    {
-      if (isVertex[line] == vertices)
-      {
-        sources->InsertNextId(lines.CellIds[line]);
-      }
-    }
-  }
-  for (vtkIdType c = 0; c < numOtherCells; ++c)
-  {
-    sources->InsertNextId(numVerts + numInputLines + c);
-  }
-  outCD->CopyAllocate(inCD, sources->GetNumberOfIds());
-  for (vtkIdType c = 0; c < sources->GetNumberOfIds(); ++c)
-  {
-    outCD->CopyData(inCD, sources->GetId(c), c);
-  }
-  if (vtkUnsignedCharArray* inputMarks = input->GetCellGhostArray())
-  {
-    // A piece's ghost cells stay ghosts (CopyData leaves the ghost array out).
-    vtkNew<vtkUnsignedCharArray> marks;
-    marks->SetName(vtkDataSetAttributes::GhostArrayName());
-    marks->SetNumberOfTuples(sources->GetNumberOfIds());
-    for (vtkIdType c = 0; c < sources->GetNumberOfIds(); ++c)
-    {
-      marks->SetValue(c, inputMarks->GetValue(sources->GetId(c)));
-    }
-    outCD->RemoveArray(vtkDataSetAttributes::GhostArrayName());
-    outCD->AddArray(marks);
-  }
-  if (outVerts->GetNumberOfCells() > 0)
-  {
-    output->SetVerts(outVerts);
-  }
-  output->SetLines(outLines);
-  if (input->GetNumberOfPolys() > 0)
-  {
-    output->SetPolys(input->GetPolys());
-  }
-  if (input->GetNumberOfStrips() > 0)
-  {
-    output->SetStrips(input->GetStrips());
-  }
-  vtkSubDMarkGhostPoints(output); // a piece's ghost lines (asked for downstream) keep their mark
-  this->UpdateProgress(1.0);
-  return 1;
+  return true;
 }
 
 void vtkSubDCurveFilter::PrintSelf(ostream& os, vtkIndent indent)

@@ -65,6 +65,17 @@
 #include "SubDFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <cstdint>    // InterpolatePointData
+#include <functional> // Progress
+#include <vector>     // WritePoints
+
+namespace subd
+{
+struct CurveRules;
+struct CurvePieces;
+struct Hierarchy;
+}
+
 class SUBDFILTERS_EXPORT vtkSubDCurveFilter : public vtkPolyDataAlgorithm
 {
 public:
@@ -171,6 +182,19 @@ protected:
   double MaximumMemory; // half the physical memory (vtkSubDMemoryBudget.h)
 
 private:
+  /// Non-finite points, cells past the points, too many points: an error, false.
+  bool CheckInput(vtkPolyData* input);
+  /// The size guard: false, with an error, when the output would not fit MaximumMemory.
+  bool FitsTheMemoryBudget(double predictedPoints, vtkPolyData* input);
+  /// Progress from `first` over `span` of the whole; false asks the work to stop.
+  std::function<bool(double)> Progress(double first, double span);
+  /// The output points (the input's first, where other cells use them, then the curves',
+  /// projected to the limit where asked); returns the curves' points before the projection.
+  std::vector<double> WritePoints(vtkPolyData* input, const subd::CurveRules& rules, const subd::CurvePieces& finest,
+    subd::Hierarchy& hierarchy, vtkIdType shift, vtkPolyData* output);
+  /// Every point-data array with the same stencils; false if aborted.
+  bool InterpolatePointData(vtkPolyData* input, const subd::Hierarchy& hierarchy, std::int32_t numAnchors,
+    vtkIdType shift, vtkPolyData* output);
   vtkSubDCurveFilter(const vtkSubDCurveFilter&) = delete;
   void operator=(const vtkSubDCurveFilter&) = delete;
 };

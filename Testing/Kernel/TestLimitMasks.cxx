@@ -10,7 +10,7 @@
 //  - Tangent planes: the refined neighbourhood's own plane approaches the mask's plane.
 #include "SubDDualLimit.h"
 #include "SubDDualSplit.h"
-#include "SubDMidpointSplit.h"
+#include "SubDMidpointRules.h"
 #include "SubDRingTangents.h"
 #include "SubDScheme.h"
 #include "SubDSqrt3Limit.h"

@@ -216,7 +216,7 @@ public:
   bool UsesBoundaryRule() const override { return false; }
 };
 
-/// Peters-Reif midpoint ("simplest") subdivision, boundaries kept (SubDMidpointSplit.h).
+/// Peters-Reif midpoint ("simplest") subdivision, boundaries kept (SubDMidpointRules.h).
 class SUBDKERNEL_EXPORT MidpointScheme : public JointRefinementScheme
 {
 public:

@@ -2,7 +2,7 @@
 
 #include "SubDDooSabinRules.h"
 #include "SubDDualSplit.h"
-#include "SubDMidpointSplit.h"
+#include "SubDMidpointRules.h"
 #include "SubDRingTangents.h"
 
 namespace subd

@@ -26,8 +26,8 @@
 // (ChildEdgeSharpness), a kept vertex its vertex sharpness less one.
 // Non-manifold vertices get no V-face (the surface opens there), nor do smooth vertices of
 // two faces (whose V-face would have two sides): the two F-faces share an edge instead.
-#ifndef SubDMidpointSplit_h
-#define SubDMidpointSplit_h
+#ifndef SubDMidpointRules_h
+#define SubDMidpointRules_h
 
 #include "SubDLevel.h"
 #include "SubDStencilTable.h"

@@ -7,7 +7,7 @@
 #include "SubDDualSplit.h"
 #include "SubDLinearRules.h"
 #include "SubDLoopRules.h"
-#include "SubDMidpointSplit.h"
+#include "SubDMidpointRules.h"
 #include "SubDQuadSplit.h"
 #include "SubDRowWriting.h"
 #include "SubDSqrt3Limit.h"

@@ -1,4 +1,4 @@
-#include "SubDMidpointSplit.h"
+#include "SubDMidpointRules.h"
 
 #include <algorithm>
 #include <limits>
