@@ -1,20 +1,25 @@
 // subd-mpi: subdivision of a mesh split over MPI ranks, each rank one piece.
 //
-//   mpirun -np N subd-mpi [--scheme NAME] [--levels L] [--boundary RULE] [--limit]
-//                         [--builtin CAGE | INPUT] OUTPUT.pvtp
+//   mpirun -np N subd-mpi [INPUT] [subd's surface options] [--threads T] [--output FILE.pvtp]
+//
+// The command line is subd's (SubDCommandLine, Program::SubdMpi): the surface options under the
+// same names and defaults, creases from the input as subd reads them, --threads of its own;
+// subd's pictures, curve options and --interpolate are refused by name.
 //
 // Every rank reads the input (or builds the built-in cage) and keeps its piece: a run of
 // polygons in Z order of their centroids, so that pieces are compact patches of the surface
 // (vtkExtractPolyDataPiece cuts runs of cell ids, and a file's cell order is often scattered),
-// plus the layers of ghost cells the scheme needs (vtkSubDSurfaceFilter::GetRequiredGhostLevels). It subdivides the piece, which outputs the
-// children of its own cells only, and writes them as OUTPUT_<rank>.vtp beside OUTPUT.pvtp,
-// which rank 0 writes and which names every piece: ParaView or vtkXMLPPolyDataReader read
-// them as one mesh, equal to the serial `subd` output. Rank 0 prints a summary.
+// plus the layers of ghost cells the scheme needs (vtkSubDSurfaceFilter::GetRequiredGhostLevels).
+// It subdivides the piece, which outputs the children of its own cells only, and writes them
+// as FILE_<rank>.vtp beside FILE.pvtp, which rank 0 writes and which names every piece:
+// ParaView or vtkXMLPPolyDataReader read them as one mesh, equal to the serial `subd` output
+// for the same options. Rank 0 prints a summary.
 //
 // Memory: each rank holds the whole input while cutting out its piece, then only its piece
-// and its output (see Documentation in README, "MPI"): the subdivided levels, which are what
-// grows, are split across ranks.
+// and its output (see docs/pieces-and-mpi.md): the subdivided levels, which are what grows,
+// are split across ranks.
 #include "SubDBuiltinCages.h"
+#include "SubDCommandLine.h"
 #include "SubDMeshIO.h"
 #include "SubDMessageCollector.h"
 #include "SubDSchemeRegistry.h"
@@ -34,6 +39,7 @@
 #include "vtkPolyData.h"
 #include "vtkSMPTools.h"
 #include "vtkSubDSurfaceFilter.h"
+#include "vtkVersion.h"
 #include "vtkXMLPPolyDataWriter.h"
 
 #include <chrono>
@@ -49,127 +55,6 @@
 
 namespace
 {
-const char* const Usage =
-  "usage: mpirun -np N subd-mpi [--scheme NAME] [--levels L] [--boundary RULE] [--limit]\n"
-  "                             [--threads T] [--builtin CAGE | INPUT] OUTPUT.pvtp\n"
-  "  --scheme NAME     a surface scheme of `subd --help` (default catmull-clark)\n"
-  "  --levels L        subdivision levels (default 2)\n"
-  "  --boundary RULE   edge-only (default), edge-and-corner or none\n"
-  "  --limit           move the output points to the limit surface\n"
-  "  --threads T       threads per rank (default: the cores shared by the ranks on a node)\n"
-  "  --builtin CAGE    subdivide a built-in cage instead of a file (default cube)\n"
-  "Each rank writes its piece as OUTPUT_<rank>.vtp; rank 0 writes OUTPUT.pvtp naming them.\n";
-
-struct Arguments
-{
-  std::string Scheme = "catmull-clark";
-  subdapp::SchemeOptions Options;
-  std::string Builtin = "cube";
-  std::string Input, Output;
-  int Threads = 0; // 0: the node's cores over its ranks
-  bool Help = false;
-};
-
-bool Parse(int argc, char* argv[], Arguments& args, std::string& error)
-{
-  std::vector<std::string> positional;
-  for (int i = 1; i < argc; ++i)
-  {
-    const std::string a = argv[i];
-    auto value = [&](std::string& out) {
-      if (i + 1 >= argc)
-      {
-        error = a + " needs a value";
-        return false;
-      }
-      out = argv[++i];
-      return true;
-    };
-    // The value of option `a` as an integer in [lo, hi].
-    auto integer = [&](const std::string& text, long lo, long hi, int& out) {
-      char* end = nullptr;
-      const long number = std::strtol(text.c_str(), &end, 10);
-      if (text.empty() || *end != '\0' || number < lo || number > hi)
-      {
-        error = a + " wants an integer from " + std::to_string(lo) + " to " + std::to_string(hi) + ", not '" + text + "'";
-        return false;
-      }
-      out = static_cast<int>(number);
-      return true;
-    };
-    std::string v;
-    if (a == "-h" || a == "--help")
-    {
-      args.Help = true;
-    }
-    else if (a == "--scheme")
-    {
-      if (!value(args.Scheme))
-        return false;
-    }
-    else if (a == "--builtin")
-    {
-      if (!value(args.Builtin))
-        return false;
-    }
-    else if (a == "--levels")
-    {
-      if (!value(v) || !integer(v, 0, 30, args.Options.Levels))
-        return false;
-    }
-    else if (a == "--boundary")
-    {
-      if (!value(v))
-        return false;
-      const char* rules[] = { "none", "edge-only", "edge-and-corner" };
-      int rule = -1;
-      for (int r = 0; r < 3; ++r)
-        rule = v == rules[r] ? r : rule;
-      if (rule < 0)
-      {
-        error = "--boundary wants none, edge-only or edge-and-corner, not '" + v + "'";
-        return false;
-      }
-      args.Options.BoundaryRule = rule;
-    }
-    else if (a == "--threads")
-    {
-      if (!value(v) || !integer(v, 1, 1024, args.Threads))
-        return false;
-    }
-    else if (a == "--limit")
-    {
-      args.Options.ProjectToLimit = true;
-    }
-    else if (!a.empty() && a[0] == '-')
-    {
-      error = "unknown option " + a;
-      return false;
-    }
-    else
-    {
-      positional.push_back(a);
-    }
-  }
-  if (args.Help)
-  {
-    return true;
-  }
-  if (positional.empty() || positional.size() > 2)
-  {
-    error = "give the output file (and optionally an input file before it)";
-    return false;
-  }
-  args.Output = positional.back();
-  args.Input = positional.size() == 2 ? positional[0] : "";
-  if (subdapp::LowerExtension(args.Output) != ".pvtp")
-  {
-    error = "the output must be a .pvtp file (one piece per rank), not '" + args.Output + "'";
-    return false;
-  }
-  return true;
-}
-
 // Threads for this rank: the node's cores shared among the ranks on it (Open MPI tells their
 // number), so that ranks on one machine do not oversubscribe its cores.
 int DefaultThreads()
@@ -198,12 +83,12 @@ std::uint64_t MortonKey(const double p[3], const double lo[3], const double scal
   return key;
 }
 
-// `mesh` with its polygons in Z order of their centroids (verts, lines and strips as they are,
-// cell data following its cells) and each cell's id in `mesh` as the cell-data array
-// `globalIdName`, so that pieces can tell faces apart the same way whatever the order.
 // The cell-data array that carries the input's cell ids through the pieces.
 const char* const GlobalIdName = "SubDGlobalCellIds";
 
+// `mesh` with its polygons in Z order of their centroids (verts, lines and strips as they are,
+// cell data following its cells) and each cell's id in `mesh` as the cell-data array
+// `globalIdName`, so that pieces can tell faces apart the same way whatever the order.
 vtkSmartPointer<vtkPolyData> OrderPolygonsSpatially(vtkPolyData* mesh, const char* globalIdName)
 {
   double bounds[6];
@@ -304,6 +189,131 @@ vtkSmartPointer<vtkPolyData> ExtractPiece(vtkPolyData* mesh, int rank, int numRa
   piece->GetCellData()->SetGlobalIds(piece->GetCellData()->GetArray(GlobalIdName));
   return piece;
 }
+
+// The ranks of this run. Every rank decides alike (the same arguments, the same input), so
+// all end with the same status.
+struct Ranks
+{
+  vtkMPIController* Controller;
+  int Rank;
+  int Count;
+
+  int Finish(int status)
+  {
+    this->Controller->Finalize();
+    return status;
+  }
+  int Fail(const std::string& message, int status)
+  {
+    if (this->Rank == 0)
+    {
+      std::cerr << "subd-mpi: " << message << "\n";
+    }
+    return this->Finish(status);
+  }
+  /// Whether any rank failed; every rank must ask.
+  bool AnyFailed(bool failed)
+  {
+    int mine = failed ? 1 : 0, any = 0;
+    this->Controller->AllReduce(&mine, &any, 1, vtkCommunicator::MAX_OP);
+    return any != 0;
+  }
+};
+
+// This rank's piece of `mesh` (released once the piece is cut out) subdivided with the scheme
+// and options of `cmd`: the children of the piece's own cells, as the serial output holds
+// them, or nullptr when any rank failed (its messages printed). `pieceFaces`: the input faces
+// the piece held, ghost cells included.
+vtkSmartPointer<vtkPolyData> SubdividePiece(
+  const subdapp::CommandLine& cmd, vtkSmartPointer<vtkPolyData>& mesh, Ranks& ranks, long long& pieceFaces)
+{
+  vtkSmartPointer<vtkPolyDataAlgorithm> algorithm = subdapp::FindScheme(cmd.Scheme)->Make(cmd.Options);
+  vtkSubDSurfaceFilter* filter = vtkSubDSurfaceFilter::SafeDownCast(algorithm); // a surface scheme
+  // At level 0 the filter asks for no ghost cells, but its limit points, normals and curvature
+  // read the stencils of one level, and a crease line needs the faces on both of its sides: the
+  // layers one level needs.
+  filter->SetNumberOfSubdivisions(std::max(1, cmd.Options.Levels));
+  const int ghostLevels = filter->GetRequiredGhostLevels();
+  filter->SetNumberOfSubdivisions(cmd.Options.Levels);
+  vtkSmartPointer<vtkPolyData> piece = ExtractPiece(mesh, ranks.Rank, ranks.Count, ghostLevels);
+  mesh = nullptr; // only the piece is kept
+  pieceFaces = piece->GetNumberOfPolys();
+  subdapp::MessageCollector messages;
+  messages.Watch(filter);
+  filter->SetInputData(piece);
+  filter->UpdatePiece(ranks.Rank, ranks.Count, 0);
+  const std::string prefix = "subd-mpi: rank " + std::to_string(ranks.Rank) + ": ";
+  subdapp::PrintMessageLines(prefix, messages.Warnings, "warning");
+  subdapp::PrintMessageLines(prefix, messages.Errors, "error");
+  const bool failed = filter->GetErrorCode() != 0 || !messages.Errors.empty();
+  if (ranks.AnyFailed(failed))
+  {
+    std::cerr << prefix << (failed ? "subdivision failed" : "stopping") << "\n";
+    return nullptr;
+  }
+  // The output as the serial one: without the ids the pieces agreed by.
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  result->ShallowCopy(filter->GetOutput());
+  result->GetCellData()->RemoveArray(GlobalIdName);
+  return result;
+}
+
+// Writes this rank's piece of the output as a .vtp (raw appended arrays as subd writes them,
+// or zlib-compressed) and, on rank 0, the .pvtp `path` naming every piece. Every rank must
+// call it; false when any rank failed (its messages printed).
+bool WritePieces(vtkPolyData* result, const std::string& path, bool compress, Ranks& ranks)
+{
+  vtkNew<vtkXMLPPolyDataWriter> writer;
+  subdapp::MessageCollector messages;
+  messages.Watch(writer);
+  writer->SetController(ranks.Controller);
+  writer->SetInputData(result);
+  writer->SetFileName(path.c_str());
+  writer->SetNumberOfPieces(ranks.Count);
+  writer->SetStartPiece(ranks.Rank);
+  writer->SetEndPiece(ranks.Rank);
+  writer->SetDataModeToAppended();
+  writer->EncodeAppendedDataOff(); // raw bytes: encoding costs more than writing
+  if (compress)
+  {
+    writer->SetCompressorTypeToZLib();
+  }
+  else
+  {
+    writer->SetCompressorTypeToNone();
+  }
+  const bool failed = writer->Write() != 1 || !messages.Errors.empty();
+  subdapp::PrintMessageLines("subd-mpi: rank " + std::to_string(ranks.Rank) + ": ", messages.Errors, "error");
+  return !ranks.AnyFailed(failed);
+}
+
+// Rank 0's summary line (unless --quiet): the faces and points of all pieces, the slowest
+// rank's times (`seconds`: piece and subdivision, then with writing), the largest rank's peak
+// memory. Every rank must call it.
+void PrintSummary(const subdapp::CommandLine& cmd, const std::string& path, vtkPolyData* result,
+  long long pieceFaces, const double seconds[2], Ranks& ranks)
+{
+  if (cmd.Quiet)
+  {
+    return;
+  }
+  long long counts[3] = { result->GetNumberOfPolys(), result->GetNumberOfPoints(), pieceFaces };
+  long long totals[3] = { 0, 0, 0 };
+  ranks.Controller->Reduce(counts, totals, 3, vtkCommunicator::SUM_OP, 0);
+  struct rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  const double mine[3] = { seconds[0], seconds[1], usage.ru_maxrss / 1024.0 };
+  double worst[3] = { 0, 0, 0 };
+  ranks.Controller->Reduce(mine, worst, 3, vtkCommunicator::MAX_OP, 0);
+  if (ranks.Rank == 0)
+  {
+    std::printf("%s: %s, %d level(s) on %d ranks: %lld faces (%lld points, seams counted in each piece); "
+                "pieces held %lld input faces with ghosts; piece and subdivision %.3f s, with writing %.3f s "
+                "(slowest rank); peak memory %.1f MiB (largest rank)\n",
+      path.c_str(), cmd.Scheme.c_str(), cmd.Options.Levels, ranks.Count, totals[0], totals[1], totals[2], worst[0],
+      worst[1], worst[2]);
+  }
+}
 }
 
 int main(int argc, char* argv[])
@@ -314,114 +324,58 @@ int main(int argc, char* argv[])
   vtkNew<vtkMPIController> controller;
   controller->Initialize(&argc, &argv);
   vtkMultiProcessController::SetGlobalController(controller);
-  const int rank = controller->GetLocalProcessId();
-  const int numRanks = controller->GetNumberOfProcesses();
-  // Every rank decides alike (same arguments, same input), so all return the same status.
-  auto finish = [&](int status) {
-    controller->Finalize();
-    return status;
-  };
-  auto fail = [&](const std::string& message, int status) {
-    if (rank == 0)
-    {
-      std::cerr << "subd-mpi: " << message << "\n";
-    }
-    return finish(status);
-  };
+  Ranks ranks{ controller, controller->GetLocalProcessId(), controller->GetNumberOfProcesses() };
 
-  Arguments args;
+  subdapp::CommandLine cmd;
   std::string error;
-  if (!Parse(argc, argv, args, error))
+  if (!subdapp::ParseCommandLine(argc, argv, cmd, error, subdapp::Program::SubdMpi))
   {
-    return fail(error + " (see --help)", 2);
+    return ranks.Fail(error, 2);
   }
-  if (args.Help)
+  for (const std::string& warning : cmd.Warnings)
   {
-    if (rank == 0)
-      std::cout << Usage;
-    return finish(0);
+    if (ranks.Rank == 0)
+    {
+      std::cerr << "subd-mpi: warning: " << warning << "\n";
+    }
   }
-  const subdapp::SchemeEntry* entry = subdapp::FindScheme(args.Scheme);
-  if (!entry || entry->Curve)
+  if (cmd.Help || cmd.Version)
   {
-    return fail("'" + args.Scheme + "' is not a surface scheme (see subd --help)", 2);
+    if (ranks.Rank == 0)
+    {
+      std::cout << (cmd.Help ? subdapp::UsageText(subdapp::Program::SubdMpi)
+                             : std::string("subd-mpi " SUBD_VERSION " (VTK ") + vtkVersion::GetVTKVersion() + ")\n");
+    }
+    return ranks.Finish(0);
   }
   vtkSmartPointer<vtkPolyData> mesh =
-    args.Input.empty() ? subdapp::MakeBuiltinCage(args.Builtin) : subdapp::ReadMesh(args.Input, error);
-  if (!mesh)
+    cmd.Input.empty() ? subdapp::MakeBuiltinCage(cmd.Builtin) : subdapp::ReadMesh(cmd.Input, error);
+  if (ranks.AnyFailed(!mesh))
   {
-    return fail(args.Input.empty() ? "no built-in cage named '" + args.Builtin + "'" : error, 1);
+    return ranks.Fail(error.empty() ? "a rank could not read " + cmd.Input : error, 1);
   }
+  const std::string output = cmd.Output.empty() ? subdapp::DefaultOutputPath(cmd) : cmd.Output;
 
-  const int threads = args.Threads > 0 ? args.Threads : DefaultThreads();
+  const int threads = cmd.Threads > 0 ? cmd.Threads : DefaultThreads();
   if (threads == 1)
   {
     vtkSMPTools::SetBackend("Sequential"); // no thread pool at all (TBB would warn about one of 0)
   }
   vtkSMPTools::Initialize(threads);
   const auto start = std::chrono::steady_clock::now();
-  vtkSmartPointer<vtkPolyDataAlgorithm> algorithm = entry->Make(args.Options);
-  vtkSubDSurfaceFilter* filter = vtkSubDSurfaceFilter::SafeDownCast(algorithm);
-  vtkSmartPointer<vtkPolyData> piece = ExtractPiece(mesh, rank, numRanks, filter->GetRequiredGhostLevels());
-  mesh = nullptr; // only the piece is kept
-  subdapp::MessageCollector messages;
-  messages.Watch(filter);
-  filter->SetInputData(piece);
-  filter->UpdatePiece(rank, numRanks, 0);
-  const std::string prefix = "subd-mpi: rank " + std::to_string(rank) + ": ";
-  subdapp::PrintMessageLines(prefix, messages.Warnings, "warning");
-  subdapp::PrintMessageLines(prefix, messages.Errors, "error");
-  int failed = filter->GetErrorCode() != 0 || !messages.Errors.empty() ? 1 : 0;
-  int anyFailed = 0;
-  controller->AllReduce(&failed, &anyFailed, 1, vtkCommunicator::MAX_OP);
-  if (anyFailed)
+  auto elapsed = [&start]() { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  long long pieceFaces = 0;
+  vtkSmartPointer<vtkPolyData> result = SubdividePiece(cmd, mesh, ranks, pieceFaces);
+  if (!result)
   {
-    std::cerr << "subd-mpi: rank " << rank << ": " << (failed ? "subdivision failed" : "stopping") << "\n";
-    return finish(1);
+    return ranks.Finish(1);
   }
-
-  const double subdivideSeconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  vtkNew<vtkXMLPPolyDataWriter> writer;
-  writer->SetController(controller);
-  // The output as the serial one: without the ids the pieces agreed by.
-  vtkNew<vtkPolyData> result;
-  result->ShallowCopy(filter->GetOutput());
-  result->GetCellData()->RemoveArray(GlobalIdName);
-  writer->SetInputData(result);
-  writer->SetFileName(args.Output.c_str());
-  writer->SetNumberOfPieces(numRanks);
-  writer->SetStartPiece(rank);
-  writer->SetEndPiece(rank);
-  writer->SetDataModeToAppended();
-  writer->EncodeAppendedDataOff(); // raw bytes: compressing and encoding cost more than writing
-  writer->SetCompressorTypeToNone();
-  failed = writer->Write() == 1 ? 0 : 1;
-  controller->AllReduce(&failed, &anyFailed, 1, vtkCommunicator::MAX_OP);
-  if (anyFailed)
+  double seconds[2] = { elapsed(), 0.0 };
+  if (!WritePieces(result, output, cmd.Compress, ranks))
   {
-    return fail("cannot write " + args.Output, 1);
+    return ranks.Fail("cannot write " + output, 1);
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-
-  long long counts[3] = { filter->GetOutput()->GetNumberOfPolys(), filter->GetOutput()->GetNumberOfPoints(),
-    piece->GetNumberOfPolys() };
-  long long totals[3] = { 0, 0, 0 };
-  controller->Reduce(counts, totals, 3, vtkCommunicator::SUM_OP, 0);
-  struct rusage usage;
-  getrusage(RUSAGE_SELF, &usage);
-  // Slowest rank's times, largest rank's peak memory (MiB).
-  const double mine[3] = { subdivideSeconds, seconds, usage.ru_maxrss / 1024.0 };
-  double worst[3] = { 0, 0, 0 };
-  controller->Reduce(mine, worst, 3, vtkCommunicator::MAX_OP, 0);
-  if (rank == 0)
-  {
-    std::printf("%s: %s, %d level(s) on %d ranks: %lld faces (%lld points, seams counted in each piece); "
-                "pieces held %lld input faces with ghosts; piece and subdivision %.3f s, with writing %.3f s "
-                "(slowest rank); peak memory %.1f MiB (largest rank)\n",
-      args.Output.c_str(), entry->Name.c_str(), args.Options.Levels, numRanks, totals[0], totals[1], totals[2],
-      worst[0], worst[1], worst[2]);
-  }
-  return finish(0);
+  seconds[1] = elapsed();
+  PrintSummary(cmd, output, result, pieceFaces, seconds, ranks);
+  return ranks.Finish(0);
 }

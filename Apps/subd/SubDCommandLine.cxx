@@ -4,11 +4,10 @@
 #include "SubDBuiltinCages.h"
 #include "SubDMeshIO.h"
 
-#include "vtkSubDScene.h"
-
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <iterator>
 #include <sstream>
 
 namespace subdapp
@@ -87,10 +86,97 @@ bool ParseBoundary(const std::string& text, int& rule)
   }
   return true;
 }
+
+bool IsOption(const std::string& arg)
+{
+  return !arg.empty() && arg[0] == '-';
 }
 
-std::string UsageText()
+// Which program takes which option. subd takes every option of ParseCommandLine but the
+// MpiOnly ones; subd-mpi takes those marked Both or MpiOnly and refuses any other by name,
+// saying why for the options of subd it leaves out on purpose.
+enum class Use
 {
+  Both,
+  MpiOnly,
+  SubdOnly
+};
+struct OptionUse
+{
+  const char* Name;
+  Use Programs;
+  const char* WhyNotMpi; ///< SubdOnly: why subd-mpi does not take it
+};
+const char* const PictureReason = "pictures are drawn by subd (open the .pvtp in ParaView, or run subd --image)";
+const char* const CurveReason = "subd-mpi refines surfaces; the curve schemes run in subd";
+const OptionUse OptionUses[] = {
+  { "-h", Use::Both, nullptr }, { "--help", Use::Both, nullptr }, { "--version", Use::Both, nullptr },
+  { "-q", Use::Both, nullptr }, { "--quiet", Use::Both, nullptr }, { "--scheme", Use::Both, nullptr },
+  { "--levels", Use::Both, nullptr }, { "--boundary", Use::Both, nullptr }, { "--tension", Use::Both, nullptr },
+  { "--crease-method", Use::Both, nullptr }, { "--feature-angle", Use::Both, nullptr },
+  { "--limit", Use::Both, nullptr }, { "--normals", Use::Both, nullptr }, { "--curvature", Use::Both, nullptr },
+  { "--builtin", Use::Both, nullptr }, { "-o", Use::Both, nullptr }, { "--output", Use::Both, nullptr },
+  { "--compress", Use::Both, nullptr }, { "--threads", Use::MpiOnly, nullptr },
+  { "--image", Use::SubdOnly, PictureReason }, { "--compare", Use::SubdOnly, PictureReason },
+  { "--color", Use::SubdOnly, PictureReason }, { "--view-size", Use::SubdOnly, PictureReason },
+  { "--no-cage", Use::SubdOnly, PictureReason }, { "--tangents", Use::SubdOnly, CurveReason },
+  { "--closed", Use::SubdOnly, CurveReason },
+  { "--interpolate", Use::SubdOnly,
+    "its solve couples every point of the mesh (write the cage with subd --interpolate --levels 0, "
+    "then subdivide that with subd-mpi)" },
+};
+
+// Whether `program` takes the option `arg`; else false with `error` naming it. For subd, an
+// option no program knows is left to ParseCommandLine ("unknown option").
+bool Takes(Program program, const std::string& arg, std::string& error)
+{
+  const OptionUse* end = std::end(OptionUses);
+  const OptionUse* use =
+    std::find_if(std::begin(OptionUses), end, [&arg](const OptionUse& entry) { return arg == entry.Name; });
+  if (program == Program::Subd)
+  {
+    if (use != end && use->Programs == Use::MpiOnly)
+    {
+      error = arg + " is an option of subd-mpi, not of subd (see --help)";
+      return false;
+    }
+    return true;
+  }
+  if (use != end && use->Programs != Use::SubdOnly)
+  {
+    return true;
+  }
+  error = use != end ? arg + " is an option of subd only: " + use->WhyNotMpi
+                     : "unknown option '" + arg + "' (see --help)";
+  return false;
+}
+
+// The help texts and the parsing steps, defined after ParseCommandLine.
+std::string SchemeOptionsHelp(Program program);
+std::string InputAndOutputHelp(Program program);
+std::string GeneralHelp();
+std::string MpiUsageText();
+
+// The outcome of a group of options' parser for one argument.
+enum class Parsed
+{
+  NotHere, ///< not one of the group's options
+  Done,
+  Failed ///< `error` says why
+};
+Parsed ParseSchemeOption(ArgumentReader& arguments, CommandLine& cmd, std::string& error);
+Parsed ParsePictureOption(ArgumentReader& arguments, CommandLine& cmd, std::string& error);
+bool TakeFileName(const std::string& arg, CommandLine& cmd, std::string& positionalOutput, std::string& error);
+bool TakePositionalOutput(const std::string& positionalOutput, CommandLine& cmd, std::string& error);
+bool CheckCombinations(CommandLine& cmd, std::string& error);
+}
+
+std::string UsageText(Program program)
+{
+  if (program == Program::SubdMpi)
+  {
+    return MpiUsageText();
+  }
   std::ostringstream out;
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
          "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--normals]\n"
@@ -104,32 +190,7 @@ std::string UsageText()
          "built-in control cage (or curve) is used.\n"
          "\n"
          "options:\n"
-         "  --scheme NAME      subdivision scheme (default catmull-clark):\n";
-  for (const SchemeEntry& entry : Schemes())
-  {
-    out << "                       " << entry.Name << ": " << entry.Summary << "\n";
-  }
-  out << "  --levels N         number of subdivision levels, 0..30 (default 2)\n"
-         "  --boundary RULE    boundary interpolation, OpenSubdiv's meanings (default edge-only):\n"
-         "                       none: faces at the boundary become holes (shape, not output)\n"
-         "                       edge-only: boundary edges are sharp creases\n"
-         "                       edge-and-corner: also pin vertices that have a single face\n"
-         "  --tension W        butterfly tension in [-0.0625, 0.0625] (default 0: 8-point butterfly);\n"
-         "                     four-point tension in [0, 0.125] (default 0.0625: reproduces cubics)\n"
-         "  --crease-method M  how semi-sharp creases decay (default uniform):\n"
-         "                       uniform: one unit of sharpness per level\n"
-         "                       chaikin: averaged along the crease first (OpenSubdiv's Chaikin)\n"
-         "  --feature-angle D  edges whose faces meet at more than D degrees become sharp creases\n"
-         "  --limit            move the output points (and point data) to the limit surface\n"
-         "                     (catmull-clark and loop: OpenSubdiv's limit masks; sqrt3, doo-sabin,\n"
-         "                     midpoint: their closed-form limit points; linear and butterfly\n"
-         "                     interpolate: their points are on the limit already)\n"
-         "  --normals          add the exact normals of the limit surface (point data \"Normals\";\n"
-         "                     sqrt3, doo-sabin, midpoint: at smooth vertices only)\n"
-         "  --curvature        add the limit surface's curvature from its exact derivatives:\n"
-         "                     Mean_Curvature, Gauss_Curvature, Maximum_/Minimum_Curvature and\n"
-         "                     their directions (catmull-clark and loop); --image then colours\n"
-         "                     the main scheme's view with it instead of the discrete curvature\n"
+      << SchemeOptionsHelp(Program::Subd) <<
          "  --tangents         curves: add the unit tangents of the limit curve (point data \"Tangents\")\n"
          "  --closed           curves: every polyline is closed (otherwise only those whose last\n"
          "                     point repeats the first); a point with \"CornerSharpness\" >= 10 is\n"
@@ -139,27 +200,7 @@ std::string UsageText()
          "                     \"Interpolate\" is non-zero - then subdivide that cage (catmull-clark,\n"
          "                     loop, doo-sabin, chaikin, bspline; --levels 0 writes the cage itself)\n"
          "\n"
-         "Creases come with the input: in .vtp/.vtk as line cells with the cell array\n"
-         "\"Sharpness\" (0 smooth .. 10 infinitely sharp), \"CornerSharpness\" point data and\n"
-         "\"Hole\" cell data; in .obj as OpenSubdiv's tags (t crease, t corner, t hole). The\n"
-         "output carries the refined creases the same way (.obj, .vtp and .vtk keep them).\n"
-         "\n"
-         "  --builtin NAME     built-in cage when there is no INPUT:";
-  for (const std::string& name : BuiltinCageNames())
-  {
-    out << " " << name;
-  }
-  out << " (default " << BuiltinCageNames().front() << ");\n"
-         "                     curves:";
-  for (const std::string& name : BuiltinCurveNames())
-  {
-    out << " " << name;
-  }
-  out << " (default " << BuiltinCurveNames().front() << ")\n"
-         "  -o, --output FILE  output file (default <input>-<scheme>-L<levels>.vtp; with --image,\n"
-         "                     no mesh is written unless --output is given)\n"
-         "  --compress         .vtp: compress the arrays (zlib): about a third smaller, written\n"
-         "                     ~15x slower; without it they are raw binary, written at disk speed\n"
+      << InputAndOutputHelp(Program::Subd) <<
          "\n"
          "Pictures (rendered offscreen: no display server needed):\n"
          "  --image FILE.png   render the result: curvature colours, control cage, creases\n"
@@ -169,21 +210,32 @@ std::string UsageText()
          "                     discrete curvature, or the limit's with --curvature (default mean)\n"
          "  --view-size WxH    pixels per view, 64..4096 each (default 500x500)\n"
          "  --no-cage          do not overlay the control cage\n"
-         "  -q, --quiet        no summary line\n"
-         "  -h, --help         this text\n"
-         "  --version          the program's version\n"
-         "\n"
-         "Exit status: 0 on success, 1 when the work failed, 2 on a usage error.\n";
+      << GeneralHelp();
   return out.str();
 }
 
-bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& error)
+bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& error, Program program)
 {
+  cmd.Tool = program;
+  std::string positionalOutput; // subd-mpi's old command line: the output after the input
   for (ArgumentReader arguments(argc, argv); arguments.Next();)
   {
     const std::string arg = arguments.Current();
     auto value = [&](std::string& out) { return arguments.Value(out, error); };
-    std::string text;
+    if (IsOption(arg) && !Takes(program, arg, error))
+    {
+      return false;
+    }
+    Parsed parsed = ParseSchemeOption(arguments, cmd, error);
+    parsed = parsed == Parsed::NotHere ? ParsePictureOption(arguments, cmd, error) : parsed;
+    if (parsed == Parsed::Failed)
+    {
+      return false;
+    }
+    if (parsed == Parsed::Done)
+    {
+      continue;
+    }
     if (arg == "-h" || arg == "--help")
     {
       cmd.Help = true;
@@ -195,89 +247,6 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     else if (arg == "-q" || arg == "--quiet")
     {
       cmd.Quiet = true;
-    }
-    else if (arg == "--scheme")
-    {
-      if (!value(cmd.Scheme))
-      {
-        return false;
-      }
-      if (!FindScheme(cmd.Scheme))
-      {
-        error = "unknown scheme '" + cmd.Scheme + "' (known:";
-        for (const SchemeEntry& entry : Schemes())
-        {
-          error += " " + entry.Name;
-        }
-        error += ")";
-        return false;
-      }
-    }
-    else if (arg == "--levels")
-    {
-      if (!value(text))
-      {
-        return false;
-      }
-      if (!ParseInt(text, cmd.Options.Levels) || cmd.Options.Levels < 0 || cmd.Options.Levels > 30)
-      {
-        error = "--levels wants an integer in 0..30, not '" + text + "'";
-        return false;
-      }
-    }
-    else if (arg == "--boundary")
-    {
-      cmd.SurfaceOptions.push_back(arg);
-      if (!value(text))
-      {
-        return false;
-      }
-      if (!ParseBoundary(text, cmd.Options.BoundaryRule))
-      {
-        error = "--boundary wants none, edge-only or edge-and-corner, not '" + text + "'";
-        return false;
-      }
-    }
-    else if (arg == "--tension")
-    {
-      if (!value(text))
-      {
-        return false;
-      }
-      if (!ParseDouble(text, cmd.Options.Tension))
-      {
-        error = "--tension wants a number, not '" + text + "'";
-        return false;
-      }
-      cmd.Options.TensionGiven = true;
-    }
-    else if (arg == "--crease-method")
-    {
-      cmd.SurfaceOptions.push_back(arg);
-      if (!value(text))
-      {
-        return false;
-      }
-      if (text != "uniform" && text != "chaikin")
-      {
-        error = "--crease-method wants uniform or chaikin, not '" + text + "'";
-        return false;
-      }
-      cmd.Options.CreaseMethod = text == "chaikin" ? 1 : 0;
-    }
-    else if (arg == "--feature-angle")
-    {
-      cmd.SurfaceOptions.push_back(arg);
-      if (!value(text))
-      {
-        return false;
-      }
-      if (!ParseDouble(text, cmd.Options.FeatureAngle) || cmd.Options.FeatureAngle <= 0.0 ||
-        cmd.Options.FeatureAngle > 180.0)
-      {
-        error = "--feature-angle wants degrees in (0, 180], not '" + text + "'";
-        return false;
-      }
     }
     else if (arg == "--builtin")
     {
@@ -295,56 +264,6 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     {
       if (!value(cmd.Output))
       {
-        return false;
-      }
-    }
-    else if (arg == "--image")
-    {
-      if (!value(cmd.Image))
-      {
-        return false;
-      }
-      if (LowerExtension(cmd.Image) != ".png")
-      {
-        error = "--image writes PNG files: '" + cmd.Image + "' does not end in .png";
-        return false;
-      }
-    }
-    else if (arg == "--compare")
-    {
-      if (!value(text))
-      {
-        return false;
-      }
-      if (!ParseSchemeList(text, cmd.Compare, error))
-      {
-        return false;
-      }
-    }
-    else if (arg == "--color")
-    {
-      if (!value(cmd.Color))
-      {
-        return false;
-      }
-      if (vtkSubDScene::ColoringFromName(cmd.Color.c_str()) < 0)
-      {
-        error = "--color wants none, mean, gaussian, k1 or k2, not '" + cmd.Color + "'";
-        return false;
-      }
-    }
-    else if (arg == "--view-size")
-    {
-      if (!value(text))
-      {
-        return false;
-      }
-      const auto x = text.find('x');
-      if (x == std::string::npos || !ParseInt(text.substr(0, x), cmd.ViewSize[0]) ||
-        !ParseInt(text.substr(x + 1), cmd.ViewSize[1]) || cmd.ViewSize[0] < 64 || cmd.ViewSize[1] < 64 ||
-        cmd.ViewSize[0] > 4096 || cmd.ViewSize[1] > 4096)
-      {
-        error = "--view-size wants WxH with each in 64..4096, not '" + text + "'";
         return false;
       }
     }
@@ -389,16 +308,348 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
       error = "unknown option '" + arg + "' (see --help)";
       return false;
     }
-    else if (cmd.Input.empty())
+    else if (!TakeFileName(arg, cmd, positionalOutput, error))
     {
-      cmd.Input = arg;
-    }
-    else
-    {
-      error = "more than one input file ('" + cmd.Input + "', '" + arg + "')";
       return false;
     }
   }
+  return TakePositionalOutput(positionalOutput, cmd, error) && CheckCombinations(cmd, error);
+}
+
+namespace
+{
+// The help of the scheme and its settings, shared by subd and subd-mpi (surface schemes).
+std::string SchemeOptionsHelp(Program program)
+{
+  const bool subd = program == Program::Subd;
+  std::ostringstream out;
+  out << "  --scheme NAME      subdivision scheme (default catmull-clark):\n";
+  for (const SchemeEntry& entry : Schemes())
+  {
+    if (subd || !entry.Curve)
+    {
+      out << "                       " << entry.Name << ": " << entry.Summary << "\n";
+    }
+  }
+  out << "  --levels N         number of subdivision levels, 0..30 (default 2)\n"
+         "  --boundary RULE    boundary interpolation, OpenSubdiv's meanings (default edge-only):\n"
+         "                       none: faces at the boundary become holes (shape, not output)\n"
+         "                       edge-only: boundary edges are sharp creases\n"
+         "                       edge-and-corner: also pin vertices that have a single face\n"
+         "  --tension W        butterfly tension in [-0.0625, 0.0625] (default 0: 8-point butterfly)"
+      << (subd ? ";\n                     four-point tension in [0, 0.125] (default 0.0625: reproduces cubics)\n"
+               : "\n")
+      << "  --crease-method M  how semi-sharp creases decay (default uniform):\n"
+         "                       uniform: one unit of sharpness per level\n"
+         "                       chaikin: averaged along the crease first (OpenSubdiv's Chaikin)\n"
+         "  --feature-angle D  edges whose faces meet at more than D degrees become sharp creases\n"
+         "  --limit            move the output points (and point data) to the limit surface\n"
+         "                     (catmull-clark and loop: OpenSubdiv's limit masks; sqrt3, doo-sabin,\n"
+         "                     midpoint: their closed-form limit points; linear and butterfly\n"
+         "                     interpolate: their points are on the limit already)\n"
+         "  --normals          add the exact normals of the limit surface (point data \"Normals\";\n"
+         "                     sqrt3, doo-sabin, midpoint: at smooth vertices only)\n"
+         "  --curvature        add the limit surface's curvature from its exact derivatives:\n"
+         "                     Mean_Curvature, Gauss_Curvature, Maximum_/Minimum_Curvature and\n"
+         "                     their directions (catmull-clark and loop)"
+      << (subd ? "; --image then colours\n                     the main scheme's view with it instead of the discrete curvature\n"
+               : "\n");
+  return out.str();
+}
+
+// The help of the input's creases, the built-in cages and the output, shared by both programs.
+std::string InputAndOutputHelp(Program program)
+{
+  const bool subd = program == Program::Subd;
+  std::ostringstream out;
+  out << "Creases come with the input: in .vtp/.vtk as line cells with the cell array\n"
+         "\"Sharpness\" (0 smooth .. 10 infinitely sharp), \"CornerSharpness\" point data and\n"
+         "\"Hole\" cell data; in .obj as OpenSubdiv's tags (t crease, t corner, t hole). The\n"
+         "output carries the refined creases the same way (.obj, .vtp and .vtk keep them).\n"
+         "\n"
+         "  --builtin NAME     built-in cage when there is no INPUT:";
+  for (const std::string& name : BuiltinCageNames())
+  {
+    out << " " << name;
+  }
+  out << " (default " << BuiltinCageNames().front() << (subd ? ");\n" : ")\n");
+  if (subd)
+  {
+    out << "                     curves:";
+    for (const std::string& name : BuiltinCurveNames())
+    {
+      out << " " << name;
+    }
+    out << " (default " << BuiltinCurveNames().front() << ")\n"
+        << "  -o, --output FILE  output file (default <input>-<scheme>-L<levels>.vtp; with --image,\n"
+           "                     no mesh is written unless --output is given)\n"
+           "  --compress         .vtp: compress the arrays (zlib): about a third smaller, written\n"
+           "                     ~15x slower; without it they are raw binary, written at disk speed\n";
+  }
+  else
+  {
+    out << "  -o, --output FILE  the .pvtp to write (default <input>-<scheme>-L<levels>.pvtp); each\n"
+           "                     rank writes its piece beside it as FILE_<rank>.vtp\n"
+           "  --compress         compress the pieces' arrays (zlib): about a third smaller, written\n"
+           "                     ~15x slower; without it they are raw binary, written at disk speed\n";
+  }
+  return out.str();
+}
+
+// The general options and the exit status, the same in both programs.
+std::string GeneralHelp()
+{
+  return "  -q, --quiet        no summary line\n"
+         "  -h, --help         this text\n"
+         "  --version          the program's version\n"
+         "\n"
+         "Exit status: 0 on success, 1 when the work failed, 2 on a usage error.\n";
+}
+
+// subd-mpi's help: the options it shares with subd, in subd's words, and its own.
+std::string MpiUsageText()
+{
+  std::ostringstream out;
+  out << "usage: mpirun -np N subd-mpi [INPUT] [--scheme NAME] [--levels N] [--boundary RULE]\n"
+         "                     [--tension W] [--crease-method METHOD] [--feature-angle DEG]\n"
+         "                     [--limit] [--normals] [--curvature] [--output FILE.pvtp]\n"
+         "                     [--compress] [--threads T]\n"
+         "\n"
+         "Subdivides the polygon mesh INPUT ("
+      << SupportedExtensions()
+      << ") or a built-in\n"
+         "cage on N MPI ranks, with the surface schemes and options of subd. Every rank reads\n"
+         "the input, keeps its piece (and the ghost cells the scheme needs), subdivides it and\n"
+         "writes it as FILE_<rank>.vtp; rank 0 writes FILE.pvtp, which names the pieces:\n"
+         "ParaView opens it as one mesh, subd's output for the same options.\n"
+         "\n"
+         "options:\n"
+      << SchemeOptionsHelp(Program::SubdMpi) << "\n"
+      << InputAndOutputHelp(Program::SubdMpi)
+      << "  --threads T        threads per rank, 1..1024 (default: the node's cores shared among\n"
+         "                     the ranks on it)\n"
+      << GeneralHelp() << "\nRefused, as subd's only (pictures, curves, interpolation):\n ";
+  for (const OptionUse& use : OptionUses)
+  {
+    if (use.Programs == Use::SubdOnly)
+    {
+      out << " " << use.Name;
+    }
+  }
+  out << "\n"
+         "Deprecated: the output named after the input without --output (subd-mpi's first\n"
+         "command line); it still works, with a warning.\n";
+  return out.str();
+}
+
+std::string UnknownSchemeError(const std::string& name)
+{
+  std::string error = "unknown scheme '" + name + "' (known:";
+  for (const SchemeEntry& entry : Schemes())
+  {
+    error += " " + entry.Name;
+  }
+  return error + ")";
+}
+
+// The scheme and its settings (and subd-mpi's threads): the options both programs share.
+Parsed ParseSchemeOption(ArgumentReader& arguments, CommandLine& cmd, std::string& error)
+{
+  const std::string arg = arguments.Current();
+  auto value = [&](std::string& out) { return arguments.Value(out, error); };
+  auto fail = [&error](const std::string& message) {
+    error = message;
+    return Parsed::Failed;
+  };
+  std::string text;
+  if (arg == "--scheme")
+  {
+    if (!value(cmd.Scheme))
+    {
+      return Parsed::Failed;
+    }
+    if (!FindScheme(cmd.Scheme))
+    {
+      return fail(UnknownSchemeError(cmd.Scheme));
+    }
+  }
+  else if (arg == "--levels" || arg == "--threads")
+  {
+    const bool levels = arg == "--levels";
+    int& number = levels ? cmd.Options.Levels : cmd.Threads;
+    const int low = levels ? 0 : 1, high = levels ? 30 : 1024;
+    if (!value(text))
+    {
+      return Parsed::Failed;
+    }
+    if (!ParseInt(text, number) || number < low || number > high)
+    {
+      return fail(arg + " wants an integer in " + std::to_string(low) + ".." + std::to_string(high) + ", not '" +
+        text + "'");
+    }
+  }
+  else if (arg == "--boundary")
+  {
+    cmd.SurfaceOptions.push_back(arg);
+    if (!value(text))
+    {
+      return Parsed::Failed;
+    }
+    if (!ParseBoundary(text, cmd.Options.BoundaryRule))
+    {
+      return fail("--boundary wants none, edge-only or edge-and-corner, not '" + text + "'");
+    }
+  }
+  else if (arg == "--tension")
+  {
+    if (!value(text))
+    {
+      return Parsed::Failed;
+    }
+    if (!ParseDouble(text, cmd.Options.Tension))
+    {
+      return fail("--tension wants a number, not '" + text + "'");
+    }
+    cmd.Options.TensionGiven = true;
+  }
+  else if (arg == "--crease-method")
+  {
+    cmd.SurfaceOptions.push_back(arg);
+    if (!value(text))
+    {
+      return Parsed::Failed;
+    }
+    if (text != "uniform" && text != "chaikin")
+    {
+      return fail("--crease-method wants uniform or chaikin, not '" + text + "'");
+    }
+    cmd.Options.CreaseMethod = text == "chaikin" ? 1 : 0;
+  }
+  else if (arg == "--feature-angle")
+  {
+    cmd.SurfaceOptions.push_back(arg);
+    if (!value(text))
+    {
+      return Parsed::Failed;
+    }
+    if (!ParseDouble(text, cmd.Options.FeatureAngle) || cmd.Options.FeatureAngle <= 0.0 ||
+      cmd.Options.FeatureAngle > 180.0)
+    {
+      return fail("--feature-angle wants degrees in (0, 180], not '" + text + "'");
+    }
+  }
+  else
+  {
+    return Parsed::NotHere;
+  }
+  return Parsed::Done;
+}
+
+// subd's pictures: --image, --compare, --color (its name checked by CheckImageOptions, which
+// knows the renderer's colourings), --view-size.
+Parsed ParsePictureOption(ArgumentReader& arguments, CommandLine& cmd, std::string& error)
+{
+  const std::string arg = arguments.Current();
+  auto value = [&](std::string& out) { return arguments.Value(out, error); };
+  std::string text;
+  if (arg == "--image")
+  {
+    if (!value(cmd.Image))
+    {
+      return Parsed::Failed;
+    }
+    if (LowerExtension(cmd.Image) != ".png")
+    {
+      error = "--image writes PNG files: '" + cmd.Image + "' does not end in .png";
+      return Parsed::Failed;
+    }
+  }
+  else if (arg == "--compare")
+  {
+    if (!value(text) || !ParseSchemeList(text, cmd.Compare, error))
+    {
+      return Parsed::Failed;
+    }
+  }
+  else if (arg == "--color")
+  {
+    if (!value(cmd.Color))
+    {
+      return Parsed::Failed;
+    }
+  }
+  else if (arg == "--view-size")
+  {
+    if (!value(text))
+    {
+      return Parsed::Failed;
+    }
+    const auto x = text.find('x');
+    if (x == std::string::npos || !ParseInt(text.substr(0, x), cmd.ViewSize[0]) ||
+      !ParseInt(text.substr(x + 1), cmd.ViewSize[1]) || cmd.ViewSize[0] < 64 || cmd.ViewSize[1] < 64 ||
+      cmd.ViewSize[0] > 4096 || cmd.ViewSize[1] > 4096)
+    {
+      error = "--view-size wants WxH with each in 64..4096, not '" + text + "'";
+      return Parsed::Failed;
+    }
+  }
+  else
+  {
+    return Parsed::NotHere;
+  }
+  return Parsed::Done;
+}
+
+// A file name on the command line: the input. For subd-mpi, a .pvtp (which no program reads)
+// is the output named the way its old command line did, after the input: `positionalOutput`.
+bool TakeFileName(const std::string& arg, CommandLine& cmd, std::string& positionalOutput, std::string& error)
+{
+  const bool mpi = cmd.Tool == Program::SubdMpi;
+  if (mpi && LowerExtension(arg) == ".pvtp")
+  {
+    if (!positionalOutput.empty())
+    {
+      error = "more than one output ('" + positionalOutput + "', '" + arg + "')";
+      return false;
+    }
+    positionalOutput = arg;
+    return true;
+  }
+  if (cmd.Input.empty())
+  {
+    cmd.Input = arg;
+    return true;
+  }
+  error = "more than one input file ('" + cmd.Input + "', '" + arg + "')";
+  if (mpi)
+  {
+    error += "; the output is given with --output FILE.pvtp";
+  }
+  return false;
+}
+
+// subd-mpi's output named by a file name (its old command line): taken, with a deprecation
+// warning, unless --output names one too.
+bool TakePositionalOutput(const std::string& positionalOutput, CommandLine& cmd, std::string& error)
+{
+  if (positionalOutput.empty())
+  {
+    return true;
+  }
+  if (!cmd.Output.empty())
+  {
+    error = "two outputs: --output " + cmd.Output + " and " + positionalOutput;
+    return false;
+  }
+  cmd.Output = positionalOutput;
+  cmd.Warnings.push_back("the output as a file name after the input is deprecated: use --output " + positionalOutput);
+  return true;
+}
+
+// --compare: only with --image; "all" becomes the schemes of the main scheme's kind, which every
+// compared scheme must be.
+bool CheckCompare(CommandLine& cmd, std::string& error)
+{
   if (!cmd.Compare.empty() && cmd.Image.empty())
   {
     error = "--compare draws a picture: give --image FILE.png too";
@@ -424,6 +675,61 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
       return false;
     }
   }
+  return true;
+}
+
+// subd-mpi: a surface scheme, and a .pvtp to write (one piece per rank).
+bool CheckMpi(const CommandLine& cmd, std::string& error)
+{
+  if (FindScheme(cmd.Scheme)->Curve)
+  {
+    error = "'" + cmd.Scheme + "' is not a surface scheme: subd-mpi refines surfaces (curves: subd)";
+    return false;
+  }
+  if (!cmd.Output.empty() && LowerExtension(cmd.Output) != ".pvtp")
+  {
+    error = "the output must be a .pvtp file (one piece per rank), not '" + cmd.Output + "'";
+    return false;
+  }
+  return true;
+}
+
+// --tension: for butterfly or four-point (the main scheme or a compared one), in its range.
+bool CheckTension(const CommandLine& cmd, std::string& error)
+{
+  if (!cmd.Options.TensionGiven)
+  {
+    return true;
+  }
+  const bool butterfly = cmd.Scheme == "butterfly" ||
+    std::find(cmd.Compare.begin(), cmd.Compare.end(), std::string("butterfly")) != cmd.Compare.end();
+  const bool fourPoint = cmd.Scheme == "four-point" ||
+    std::find(cmd.Compare.begin(), cmd.Compare.end(), std::string("four-point")) != cmd.Compare.end();
+  const double low = butterfly ? -0.0625 : 0.0, high = butterfly ? 0.0625 : 0.125;
+  if (!butterfly && !fourPoint)
+  {
+    error = "--tension applies to the butterfly and four-point schemes only";
+    return false;
+  }
+  if (cmd.Options.Tension < low || cmd.Options.Tension > high)
+  {
+    std::ostringstream message;
+    message << "--tension wants a number in [" << low << ", " << high << "] for the "
+            << (butterfly ? "butterfly" : "four-point") << " scheme, not " << cmd.Options.Tension;
+    error = message.str();
+    return false;
+  }
+  return true;
+}
+
+// The options together: what one asks of another, and the built-in cage (or curve) by default.
+bool CheckCombinations(CommandLine& cmd, std::string& error)
+{
+  if ((cmd.Tool == Program::SubdMpi && !CheckMpi(cmd, error)) || !CheckCompare(cmd, error))
+  {
+    return false;
+  }
+  const bool curve = FindScheme(cmd.Scheme)->Curve;
   const SchemeEntry* scheme = FindScheme(cmd.Scheme);
   if (cmd.Interpolate && scheme->InterpolationScheme < 0)
   {
@@ -436,7 +742,8 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
             "the creases it adds)";
     return false;
   }
-  if (cmd.Compress && !cmd.Output.empty() && LowerExtension(cmd.Output) != ".vtp")
+  const char* compressible = cmd.Tool == Program::SubdMpi ? ".pvtp" : ".vtp"; // subd-mpi: its .vtp pieces
+  if (cmd.Compress && !cmd.Output.empty() && LowerExtension(cmd.Output) != compressible)
   {
     error = "--compress applies to .vtp output, not to '" + cmd.Output + "'";
     return false;
@@ -452,26 +759,9 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     error = misplaced.front() + " applies to " + (curve ? "surface" : "curve") + " schemes, not to " + cmd.Scheme;
     return false;
   }
-  if (cmd.Options.TensionGiven)
+  if (!CheckTension(cmd, error))
   {
-    const bool butterfly = cmd.Scheme == "butterfly" ||
-      std::find(cmd.Compare.begin(), cmd.Compare.end(), std::string("butterfly")) != cmd.Compare.end();
-    const bool fourPoint = cmd.Scheme == "four-point" ||
-      std::find(cmd.Compare.begin(), cmd.Compare.end(), std::string("four-point")) != cmd.Compare.end();
-    const double low = butterfly ? -0.0625 : 0.0, high = butterfly ? 0.0625 : 0.125;
-    if (!butterfly && !fourPoint)
-    {
-      error = "--tension applies to the butterfly and four-point schemes only";
-      return false;
-    }
-    if (cmd.Options.Tension < low || cmd.Options.Tension > high)
-    {
-      std::ostringstream message;
-      message << "--tension wants a number in [" << low << ", " << high << "] for the "
-              << (butterfly ? "butterfly" : "four-point") << " scheme, not " << cmd.Options.Tension;
-      error = message.str();
-      return false;
-    }
+    return false;
   }
   if (!cmd.Input.empty() && !cmd.Builtin.empty())
   {
@@ -483,6 +773,7 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     cmd.Builtin = curve ? BuiltinCurveNames().front() : BuiltinCageNames().front();
   }
   return true;
+}
 }
 
 std::string DefaultOutputPath(const CommandLine& cmd)
@@ -502,7 +793,8 @@ std::string DefaultOutputPath(const CommandLine& cmd)
       stem = stem.substr(0, dot);
     }
   }
-  return stem + "-" + cmd.Scheme + "-L" + std::to_string(cmd.Options.Levels) + ".vtp";
+  return stem + "-" + cmd.Scheme + "-L" + std::to_string(cmd.Options.Levels) +
+    (cmd.Tool == Program::SubdMpi ? ".pvtp" : ".vtp");
 }
 
 bool WritesMesh(const CommandLine& cmd)

@@ -1,4 +1,6 @@
-// subd: command-line parsing.
+// subd and subd-mpi: their one command line. The options, their help text and defaults are
+// here (SubDCommandLine.cxx) for both programs; subd-mpi takes the surface options of subd
+// under the same names, plus --threads, and refuses the others by name.
 #ifndef SubDCommandLine_h
 #define SubDCommandLine_h
 
@@ -8,8 +10,16 @@
 
 namespace subdapp
 {
+/// The program whose command line is parsed.
+enum class Program
+{
+  Subd,   ///< subd: every option
+  SubdMpi ///< subd-mpi: the surface options, --threads; the output is a .pvtp
+};
+
 struct CommandLine
 {
+  Program Tool = Program::Subd; ///< set by ParseCommandLine
   std::string Input;   ///< empty: use Builtin
   std::string Builtin; ///< built-in cage name
   std::string Output;  ///< empty: derived from input and scheme
@@ -27,17 +37,21 @@ struct CommandLine
   bool Quiet = false;
   bool Help = false;
   bool Version = false;
+  int Threads = 0;                   ///< subd-mpi --threads: per rank (0: the node's cores over its ranks)
+  std::vector<std::string> Warnings; ///< usage that still works but is deprecated, to print
 };
 
-/// Parses argv. On a usage error returns false and sets `error`.
-bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& error);
+/// Parses argv for `program`. On a usage error returns false and sets `error`.
+bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& error,
+  Program program = Program::Subd);
 
-std::string UsageText();
+/// The --help text of `program`.
+std::string UsageText(Program program = Program::Subd);
 
 /// True when a mesh file is written: always, except with --image and no --output.
 bool WritesMesh(const CommandLine& cmd);
 
-/// Output path when none was given: "<input stem>-<scheme>-L<levels>.vtp".
+/// Output path when none was given: "<input stem>-<scheme>-L<levels>.vtp" (subd-mpi: .pvtp).
 std::string DefaultOutputPath(const CommandLine& cmd);
 }
 

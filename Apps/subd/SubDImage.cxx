@@ -21,6 +21,16 @@ std::string TitleOf(const std::string& scheme, int levels)
 }
 }
 
+bool CheckImageOptions(const CommandLine& cmd, std::string& error)
+{
+  if (vtkSubDScene::ColoringFromName(cmd.Color.c_str()) < 0)
+  {
+    error = "--color wants none, mean, gaussian, k1 or k2, not '" + cmd.Color + "'";
+    return false;
+  }
+  return true;
+}
+
 bool RenderImage(const CommandLine& cmd, vtkPolyData* cage, vtkPolyData* result, std::string& warnings,
   std::string& error)
 {

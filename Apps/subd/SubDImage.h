@@ -11,6 +11,9 @@ class vtkPolyData;
 
 namespace subdapp
 {
+/// Whether the picture options name what the renderer knows (--color); else false with `error`.
+bool CheckImageOptions(const CommandLine& cmd, std::string& error);
+
 /// Renders `result` (the subdivision of `cage` by cmd.Scheme), or with cmd.Compare each of
 /// those schemes applied to `cage`, to cmd.Image. Returns false and sets `error` on failure;
 /// warnings of the compared schemes' filters are appended to `warnings`.

@@ -77,7 +77,7 @@ int main(int argc, char* argv[])
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF); // messages come through outputWindow
   subdapp::CommandLine cmd;
   std::string error;
-  if (!subdapp::ParseCommandLine(argc, argv, cmd, error))
+  if (!subdapp::ParseCommandLine(argc, argv, cmd, error) || !subdapp::CheckImageOptions(cmd, error))
   {
     std::cerr << "subd: " << error << "\n";
     return 2;

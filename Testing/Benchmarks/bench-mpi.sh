@@ -17,8 +17,8 @@ base=""
 for n in "${ranks[@]}"; do
   best="" line=""
   for run in 1 2 3; do
-    summary=$(mpirun --allow-run-as-root --oversubscribe -np "$n" "$subd_mpi" --scheme "$scheme" \
-      --levels "$levels" "$mesh" "$out/pieces.pvtp" 2>/dev/null)
+    summary=$(mpirun --allow-run-as-root --oversubscribe -np "$n" "$subd_mpi" "$mesh" --scheme "$scheme" \
+      --levels "$levels" --output "$out/pieces.pvtp" 2>/dev/null)
     t=$(sed -n 's/.*piece and subdivision \([0-9.]*\) s.*/\1/p' <<<"$summary")
     if [ -z "$best" ] || awk "BEGIN{exit !($t < $best)}"; then best=$t line=$summary; fi
   done

@@ -55,7 +55,8 @@ inline Corner CornerOf(vtkPolyData* mesh, vtkIdType point)
   return c;
 }
 
-/// Whether two corners hold as many values, equal to `tolerance`.
+/// Whether two corners hold as many values, equal to `tolerance`: the coordinates absolutely,
+/// the point data relative to their size where it exceeds 1 (curvature can be large).
 inline bool SameCorner(const Corner& a, const Corner& b, double tolerance)
 {
   if (a.size() != b.size())
@@ -64,7 +65,8 @@ inline bool SameCorner(const Corner& a, const Corner& b, double tolerance)
   }
   for (size_t i = 0; i < a.size(); ++i)
   {
-    if (std::abs(a[i] - b[i]) > tolerance)
+    const double scale = i < 3 ? 1.0 : std::max(1.0, std::abs(a[i]));
+    if (std::abs(a[i] - b[i]) > tolerance * scale)
     {
       return false;
     }
@@ -97,6 +99,34 @@ inline bool CoordinatesLess(const Corner& a, const Corner& b)
 inline bool FaceLess(const Face& a, const Face& b)
 {
   return std::lexicographical_compare(a.begin(), a.end(), b.begin(), b.end(), CoordinatesLess);
+}
+
+/// What value `index` of a corner of `mesh` (CornerOf) is: a coordinate, or a component of a
+/// point-data array.
+inline std::string CornerValueName(vtkPolyData* mesh, size_t index)
+{
+  if (index < 3)
+  {
+    return std::string("coordinate ") + "xyz"[index];
+  }
+  size_t first = 3;
+  vtkPointData* pd = mesh->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    if (!array || (array->GetName() && std::string(array->GetName()) == "vtkGhostType"))
+    {
+      continue;
+    }
+    const size_t components = static_cast<size_t>(array->GetNumberOfComponents());
+    if (index < first + components)
+    {
+      return std::string("point data \"") + (array->GetName() ? array->GetName() : "") + "\" component " +
+        std::to_string(index - first);
+    }
+    first += components;
+  }
+  return "value " + std::to_string(index) + " (beyond the point data)";
 }
 
 /// The faces of `mesh`, canonical and sorted; with `byInputCell`, grouped by the input cell
@@ -221,7 +251,20 @@ inline std::vector<Corner> Lines(const std::vector<vtkPolyData*>& meshes, double
       lines.push_back(a);
     }
   }
-  std::sort(lines.begin(), lines.end());
+  // Ends rounded as CoordinatesLess does, then sharpness: round-off (a coordinate of 1e-17
+  // in one piece, -1e-17 in another) must not change the order.
+  std::sort(lines.begin(), lines.end(), [](const Corner& a, const Corner& b) {
+    const Corner endsA(a.begin() + 3, a.end()), endsB(b.begin() + 3, b.end());
+    if (CoordinatesLess(a, b) || CoordinatesLess(b, a))
+    {
+      return CoordinatesLess(a, b);
+    }
+    if (CoordinatesLess(endsA, endsB) || CoordinatesLess(endsB, endsA))
+    {
+      return CoordinatesLess(endsA, endsB);
+    }
+    return a[6] < b[6];
+  });
   lines.erase(std::unique(lines.begin(), lines.end(),
                 [tolerance](const Corner& a, const Corner& b) { return SameCorner(a, b, tolerance); }),
     lines.end());
@@ -282,6 +325,18 @@ inline std::string ComparePieces(
         why << "input cell " << group.first << ", face " << f << " (" << b.size() << " corners, serially "
             << a.size() << "): corner " << k << " is (" << b[k][0] << ", " << b[k][1] << ", " << b[k][2]
             << "), serially (" << a[k][0] << ", " << a[k][1] << ", " << a[k][2] << ")";
+        if (a[k].size() != b[k].size())
+        {
+          why << "; " << b[k].size() << " values at the corner, serially " << a[k].size();
+        }
+        for (size_t v = 3; v < std::min(a[k].size(), b[k].size()); ++v)
+        {
+          if (std::abs(a[k][v] - b[k][v]) > tolerance * std::max(1.0, std::abs(a[k][v])))
+          {
+            why << "; its " << CornerValueName(serial, v) << " is " << b[k][v] << ", serially " << a[k][v];
+            break;
+          }
+        }
         return why.str();
       }
     }
