@@ -272,42 +272,6 @@ TEST(MeshTopology, TriangleSplitChildEqualsSearchedTopology)
   }
 }
 
-// The triangle split's edges inside faces numbered in closed form (NumberChildEdges without
-// storing them) are the numbers the stored table gives, for every key, and the stored halves
-// are the same; the table is a third of the size.
-TEST(MeshTopology, TriangleSplitInteriorEdgesNumberedInClosedForm)
-{
-  std::vector<subdtest::TestMesh> meshes = subdtest::TriangleMeshes();
-  meshes.push_back(TagFixtures().back());
-  Index compared = 0;
-  for (const subdtest::TestMesh& mesh : meshes)
-  {
-    const MeshTopology topo = Build(mesh);
-    if (topo.GetNumNonManifoldEdges() > 0 || std::any_of(mesh.Offsets.begin() + 1, mesh.Offsets.end(),
-                                                  [&](Index o) { return o % 3 != 0; }))
-    {
-      continue; // triangles only
-    }
-    const subd::Level base = subd::MakeBaseLevel(topo, subd::BaseTags(), subd::BoundaryRule::EdgeOnly);
-    for (const MeshTopology& level : { topo, subd::SplitTriangles(base, subd::ChildTopology::Full).Topology })
-    {
-      const subd::TriangleSplitShape shape{ level };
-      const subd::ChildEdgeNumbering full = subd::NumberChildEdges(shape, subdtest::ThreeThreadFor);
-      const subd::ChildEdgeNumbering compact = subd::NumberChildEdges(shape, subdtest::ThreeThreadFor, false);
-      ASSERT_EQ(compact.FirstEdgeOfFace, full.FirstEdgeOfFace) << mesh.Name;
-      ASSERT_EQ(compact.EdgeOfKey.size(), 2 * static_cast<size_t>(level.GetNumEdges())) << mesh.Name;
-      ASSERT_EQ(full.EdgeOfKey.size(), compact.EdgeOfKey.size() + 3 * static_cast<size_t>(level.GetNumFaces()));
-      for (Index key = 0; key < static_cast<Index>(full.EdgeOfKey.size()); ++key)
-      {
-        ASSERT_EQ(compact.GetEdge(key), full.EdgeOfKey[key]) << mesh.Name << " key " << key;
-        ASSERT_EQ(full.GetEdge(key), full.EdgeOfKey[key]);
-        ++compared;
-      }
-    }
-  }
-  EXPECT_GT(compared, 1000);
-}
-
 // The dual split's child, in closed form where it applies (closed manifold parents: the
 // cube, the torus, the triangulated meshes, every level below them) and through the general
 // builder elsewhere, equals the general builder's on the same faces.

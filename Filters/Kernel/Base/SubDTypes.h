@@ -19,9 +19,8 @@ namespace subd
 using Index = std::int32_t;
 constexpr Index InvalidIndex = -1;
 
-/// Inlines a function the compiler would call: the row writers' per-row evaluation
-/// (ApplySmoothRow), whose call costs as much as a small row (Catmull-Clark re-applied at
-/// level 3: 10 % faster inlined).
+/// Inlines a function the compiler would call: the row writers' per-row masks
+/// (VisitSmoothRow), whose call costs as much as a small row.
 #if defined(__GNUC__) || defined(__clang__)
 #define SUBD_ALWAYS_INLINE __attribute__((always_inline)) inline
 #else

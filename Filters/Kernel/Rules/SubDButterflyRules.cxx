@@ -273,7 +273,6 @@ void ButterflyRowWriter::AddCreaseRule(Index e, double scale, Row& row) const
 void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
 {
   const MeshTopology& topo = this->Topology;
-  const double w = this->Tension;
   const Index a0 = topo.GetEdgeVertices(e)[0], a1 = topo.GetEdgeVertices(e)[1];
   const IndexSpan ef = topo.GetEdgeFaces(e);
   const bool ring0 = this->HasRing(a0), ring1 = this->HasRing(a1);
@@ -281,18 +280,19 @@ void ButterflyRowWriter::AddSmoothRule(Index e, Row& smooth) const
   const bool butterfly = (regular0 && regular1) || (!ring0 && regular1) || (!ring1 && regular0) || (!ring0 && !ring1);
   if (butterfly)
   {
+    const ButterflyWeights weight(this->Tension);
     const Index b[2] = { topo.GetTriangleThirdVertex(ef[0], a0, a1), topo.GetTriangleThirdVertex(ef[1], a0, a1) };
-    smooth.Add(a0, 0.5 - w);
-    smooth.Add(a1, 0.5 - w);
-    smooth.Add(b[0], 0.125 + 2.0 * w);
-    smooth.Add(b[1], 0.125 + 2.0 * w);
+    smooth.Add(a0, weight.End);
+    smooth.Add(a1, weight.End);
+    smooth.Add(b[0], weight.Opposite);
+    smooth.Add(b[1], weight.Opposite);
     for (int side = 0; side < 2; ++side)
     {
-      this->AddWing(a0, b[side], a1, ef[side], -0.0625 - w, smooth);
-      this->AddWing(a1, b[side], a0, ef[side], -0.0625 - w, smooth);
+      this->AddWing(a0, b[side], a1, ef[side], weight.Wing, smooth);
+      this->AddWing(a1, b[side], a0, ef[side], weight.Wing, smooth);
     }
-    this->AddTip(a0, a1, w, smooth);
-    this->AddTip(a1, a0, w, smooth);
+    this->AddTip(a0, a1, weight.Tip, smooth);
+    this->AddTip(a1, a0, weight.Tip, smooth);
     return;
   }
   int ends = 0;
@@ -354,7 +354,6 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
   }
   // AddSmoothRule's butterfly, entry by entry: with nothing sharp, every wing is across an
   // edge of one of the two triangles (FaceAcross) and every tip in its end's ring.
-  const double w = this->Tension;
   Index b[2], wings[2][2];
   for (int side = 0; side < 2; ++side)
   {
@@ -375,19 +374,20 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
     sources[size] = source;
     weights[size++] = weight;
   };
-  add(a0, 0.5 - w);
-  add(a1, 0.5 - w);
-  add(b[0], 0.125 + 2.0 * w);
-  add(b[1], 0.125 + 2.0 * w);
+  const ButterflyWeights weight(this->Tension);
+  add(a0, weight.End);
+  add(a1, weight.End);
+  add(b[0], weight.Opposite);
+  add(b[1], weight.Opposite);
   for (int side = 0; side < 2; ++side)
   {
-    add(wings[side][0], -0.0625 - w);
-    add(wings[side][1], -0.0625 - w);
+    add(wings[side][0], weight.Wing);
+    add(wings[side][1], weight.Wing);
   }
-  if (w != 0.0)
+  if (weight.Tip != 0.0)
   {
-    add(this->RingFrom(a0, a1, 3), w);
-    add(this->RingFrom(a1, a0, 3), w);
+    add(this->RingFrom(a0, a1, 3), weight.Tip);
+    add(this->RingFrom(a1, a0, 3), weight.Tip);
   }
   // WriteRow merges repeated points (tiny closed meshes): leave those rows to it.
   bool repeated = false;
@@ -399,22 +399,6 @@ Index ButterflyRowWriter::RegularButterflyRow(Index e, Index* sources, double* w
     }
   }
   return repeated ? 0 : size;
-}
-
-bool ButterflyRowWriter::IsSmoothRow(Index row) const
-{
-  const MeshTopology& topo = this->Topology;
-  if (row >= topo.GetNumEdges())
-  {
-    return true;
-  }
-  if (topo.GetEdgeFaces(row).size() != 2 || topo.GetEdgeTag(row).NonManifold || this->Parent.EdgeSharpness[row] != 0.0f)
-  {
-    return false;
-  }
-  const std::uint8_t kind0 = this->RingKinds[topo.GetEdgeVertices(row)[0]];
-  const std::uint8_t kind1 = this->RingKinds[topo.GetEdgeVertices(row)[1]];
-  return (kind0 == SmoothRegularRing && kind1 != NoSmoothRing) || (kind1 == SmoothRegularRing && kind0 != NoSmoothRing);
 }
 
 Index ButterflyRowWriter::WriteRow(Index row, Index* sources, double* weights) const

@@ -33,6 +33,7 @@
 
 #include "SubDLevel.h"
 #include "SubDParallel.h"
+#include "SubDRowWriting.h"
 #include "SubDStencilTable.h"
 
 #include <memory>
@@ -60,11 +61,25 @@ private:
   std::vector<std::vector<double>> Weights; // [K][j]
 };
 
+/// The modified butterfly's weights with tension w (0: the 8-point butterfly; 1/16 makes it
+/// the 10-point one): on each end of the edge, on each vertex opposite it, on each of the four
+/// wings, on each of the two tips.
+struct ButterflyWeights
+{
+  double End, Opposite, Wing, Tip;
+  explicit ButterflyWeights(double w)
+    : End(0.5 - w)
+    , Opposite(0.125 + 2.0 * w)
+    , Wing(-0.0625 - w)
+    , Tip(w)
+  {
+  }
+};
+
 /// Zorin's stencil of the extraordinary interior vertex `vertex` of valence K for its edge to
 /// ring point `start` (K when not in the ring: from 0): put(ring(k), s_j) for the ring's
 /// points from `start` on, counter-clockwise, then put(vertex, 1 - sum of the s_j). `table`
-/// holds the s_j of valence K, or is null. The one order both ButterflyRowWriter and the rows
-/// written two levels down (SubDGrandchildRows.h) sum in.
+/// holds the s_j of valence K, or is null.
 template <typename Ring, typename Put>
 void PutButterflyExtraordinaryStencil(Index vertex, Index K, Index start, const double* table, Ring&& ring, Put&& put)
 {
@@ -81,8 +96,7 @@ void PutButterflyExtraordinaryStencil(Index vertex, Index K, Index start, const 
 /// Per corner i of each triangle of `topo`: 4 h + p for the triangle h across the triangle's
 /// edge i (from corner i to i + 1), that edge being h's edge p; InvalidIndex where the edge
 /// has not two distinct faces. The vertex across (the butterfly's wing) is h's corner p + 2
-/// (TriangleVertexAcross). Shared by ButterflyRowWriter and the rows written from its level
-/// two levels down (SubDGrandchildRows.h). Requires every face to be a triangle.
+/// (TriangleVertexAcross). Requires every face to be a triangle.
 SUBDKERNEL_EXPORT std::shared_ptr<const IndexArray> MakeTriangleFaceAcross(
   const MeshTopology& topo, const ParallelFor& parallelFor);
 
@@ -101,7 +115,7 @@ SUBDKERNEL_EXPORT StencilTable BuildButterflyStencils(
 /// The same rows written one at a time (SubDRowWriting.h), rows numbered like the triangle
 /// split's child points: edge points, then the vertex points (copies). Made once, in
 /// parallel, with the writer: the triangle across each triangle edge (MakeTriangleFaceAcross,
-/// for the butterfly's wings; GetFaceAcross shares it), and the ordered rings of the vertices
+/// for the butterfly's wings), and the ordered rings of the vertices
 /// whose rules walk them (the extraordinary ones; all with tension, for the tips). Requires
 /// every face of `parent` to be a triangle.
 class SUBDKERNEL_EXPORT ButterflyRowWriter
@@ -115,19 +129,11 @@ public:
   /// buffers before blending it into the row.
   Index GetMaxRowSize() const { return 2 * this->RowBound; }
   Index WriteRow(Index row, Index* sources, double* weights) const;
-  /// Whether row `row` is one the rows written two levels down (SubDGrandchildRows.h, without
-  /// tension) write from the grandparent: a vertex point (a copy), or the edge point of an
-  /// edge with two triangles and no sharpness whose ends both have a smooth ring, one at
-  /// least of valence 6 (the 8-point butterfly, or Zorin's stencil of the other end).
-  bool IsSmoothRow(Index row) const;
-  /// The triangle across each corner's edge (MakeTriangleFaceAcross), for the rows written
-  /// two levels down from the same level.
-  const std::shared_ptr<const IndexArray>& GetFaceAcross() const { return this->FaceAcross; }
   /// Vertex points (copies of the parent's vertices), the edge points of the regular
   /// butterfly (RegularButterflyRow) and those of Zorin's stencil at an edge's one
-  /// extraordinary end (OneExtraordinaryEnd); the other edge points are written.
-  template <typename T>
-  bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+  /// extraordinary end (OneExtraordinaryEnd); false for the other edge points.
+  template <typename Entries>
+  bool VisitSmoothRow(Index row, Entries& entries) const;
   /// Asks for the topology RegularButterflyRow reads for `row` (SubDRowWriting.h): its ends'
   /// ring kinds and its two triangles' corners, edges and FaceAcross entries.
   template <typename T>
@@ -215,8 +221,7 @@ private:
   ButterflyWeightTable ExtraordinaryWeights;
   // The vertices with exactly two sharp edges (boundary edges are sharp), in increasing
   // order, each with the other ends of those edges in the order of its edges: what the
-  // crease rule reads, kept so that the lists of edges around the vertices need not be
-  // (Scheme::GrandchildReadsVertexEdgeLists).
+  // crease rule reads.
   struct CreaseVertex
   {
     Index Vertex;
@@ -258,43 +263,38 @@ inline void ButterflyRowWriter::PrefetchRow(Index row, const T*, const T*) const
   }
 }
 
-template <typename T>
-inline bool ButterflyRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
+template <typename Entries>
+inline bool ButterflyRowWriter::VisitSmoothRow(Index row, Entries& entries) const
 {
   const Index numEdges = this->Topology.GetNumEdges();
-  PointSum point;
-  if (row < numEdges)
+  if (row >= numEdges)
   {
-    Index sources[10];
-    double weights[10];
-    const Index size = this->RegularButterflyRow(row, sources, weights);
-    if (size == 0)
-    {
-      // Zorin's stencil of the one extraordinary end, summed in the order AddSmoothRule
-      // appends it: the same bits as the written row.
-      const Index v = this->OneExtraordinaryEnd(row);
-      if (v == InvalidIndex)
-      {
-        return false;
-      }
-      const Index* ev = this->Topology.GetEdgeVertices(row);
-      const Index K = this->RingValence(v);
-      const Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
-      PutButterflyExtraordinaryStencil(v, K, this->RingStart(v, ev[0] == v ? ev[1] : ev[0]),
-        this->ExtraordinaryWeights.Get(K), [ring](Index k) { return ring[k]; },
-        [&point, parents](Index source, double weight) { point.Add(weight, parents + 3 * static_cast<size_t>(source)); });
-      point.Store(dst);
-      return true;
-    }
-    for (Index k = 0; k < size; ++k)
-    {
-      point.Add(weights[k], parents + 3 * static_cast<size_t>(sources[k]));
-    }
-    point.Store(dst);
+    CopyMask(row - numEdges, entries);
     return true;
   }
-  point.Add(1.0, parents + 3 * static_cast<size_t>(row - numEdges));
-  point.Store(dst);
+  Index sources[10];
+  double weights[10];
+  const Index size = this->RegularButterflyRow(row, sources, weights);
+  for (Index k = 0; k < size; ++k)
+  {
+    entries.Parent(sources[k], weights[k]);
+  }
+  if (size > 0)
+  {
+    return true;
+  }
+  // Zorin's stencil of the one extraordinary end, in the order AddSmoothRule appends it.
+  const Index v = this->OneExtraordinaryEnd(row);
+  if (v == InvalidIndex)
+  {
+    return false;
+  }
+  const Index* ev = this->Topology.GetEdgeVertices(row);
+  const Index K = this->RingValence(v);
+  const Index* ring = this->RingNeighbours.data() + this->RingOffsets[v];
+  PutButterflyExtraordinaryStencil(v, K, this->RingStart(v, ev[0] == v ? ev[1] : ev[0]),
+    this->ExtraordinaryWeights.Get(K), [ring](Index k) { return ring[k]; },
+    [&entries](Index source, double weight) { entries.Parent(source, weight); });
   return true;
 }
 }

@@ -1,6 +1,5 @@
 #include "SubDCatmullClarkRules.h"
 #include "SubDCrease.h"
-#include "SubDRowWriting.h"
 
 #include <algorithm>
 
@@ -34,21 +33,14 @@ CatmullClarkRowWriter::CatmullClarkRowWriter(const Level& parent, const Parallel
 
 Index CatmullClarkRowWriter::WriteRow(Index row, Index* sources, double* weights) const
 {
-  const Index numFaces = this->Number.NumFaces;
-  if (row < numFaces)
+  RowEntries entries{ sources, weights, this->GetNumParents() };
+  if (this->VisitSmoothRow(row, entries))
   {
-    const IndexSpan fv = this->Topology.GetFaceVertices(row);
-    const double w = 1.0 / fv.size();
-    for (Index j = 0; j < fv.size(); ++j)
-    {
-      sources[j] = fv[j];
-      weights[j] = w;
-    }
-    return fv.size();
+    return entries.Size;
   }
   if (row < this->Number.VertexPoint(0))
   {
-    return this->WriteEdgeRow(row - numFaces, sources, weights);
+    return this->WriteEdgeRow(row - this->Number.NumFaces, sources, weights);
   }
   return this->WriteVertexRow(row - this->Number.VertexPoint(0), sources, weights);
 }
@@ -58,8 +50,8 @@ Index CatmullClarkRowWriter::WriteEdgeRow(Index e, Index* sources, double* weigh
   // Sources >= numParents name child points of this level: here the face points.
   const Index numParents = this->GetNumParents();
   const float creaseWeight = EdgeCreaseWeight(this->Parent, e);
-  WritePrimalEdgeRow(this->Topology.GetEdgeVertices(e), creaseWeight, 0.25, 0.25, sources, weights,
-    [&](Index* sides) {
+  WritePrimalEdgeRow(this->Topology.GetEdgeVertices(e), creaseWeight, CatmullClarkEdgeEndWeight,
+    CatmullClarkEdgeFaceWeight, sources, weights, [&](Index* sides) {
       const IndexSpan ef = this->Topology.GetEdgeFaces(e);
       sides[0] = numParents + this->Number.FacePoint(ef[0]);
       sides[1] = numParents + this->Number.FacePoint(ef[1]);
@@ -70,33 +62,14 @@ Index CatmullClarkRowWriter::WriteEdgeRow(Index e, Index* sources, double* weigh
 Index CatmullClarkRowWriter::WriteVertexRow(Index v, Index* sources, double* weights) const
 {
   const MeshTopology& topo = this->Topology;
-  const Index numParents = this->GetNumParents();
   const IndexSpan edges = topo.GetVertexEdges(v);
   const IndexSpan faces = topo.GetVertexFaces(v);
   const Index smoothSize = 1 + 2 * faces.size();
-  if (this->SmoothVertex[v])
-  {
-    // Every edge point around v follows the smooth rule: the form that reads them.
-    return WriteCatmullClarkSmoothVertexRow(
-      v, edges.size(), faces.size(), [&](Index i) { return numParents + this->Number.EdgePoint(edges[i]); },
-      [&](Index i) { return numParents + this->Number.FacePoint(faces[i]); }, sources, weights);
-  }
   const VertexRulePlan plan = PlanVertexRule(this->Parent, v);
   WritePrimalVertexRow(topo, plan, v, smoothSize, sources, weights, [&](Index* src, double* wts) {
-    src[0] = v;
-    const double n = faces.size();
-    const double ringWeight = 1.0 / (n * n);
-    wts[0] = (n - 2.0) / n;
-    for (Index i = 0; i < edges.size(); ++i)
-    {
-      src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
-      wts[1 + i] = ringWeight;
-    }
-    for (Index i = 0; i < faces.size(); ++i)
-    {
-      src[1 + edges.size() + i] = numParents + this->Number.FacePoint(faces[i]);
-      wts[1 + edges.size() + i] = ringWeight;
-    }
+    RowEntries ring{ src, wts, this->GetNumParents() };
+    CatmullClarkRingVertexMask(
+      topo, v, edges, faces.size(), [&](Index i) { return this->Number.FacePoint(faces[i]); }, ring);
   });
   return PrimalVertexRowSize(plan, smoothSize);
 }

@@ -23,37 +23,69 @@
 
 #include "SubDLevel.h"
 #include "SubDQuadSplit.h"
+#include "SubDRowWriting.h"
 #include "SubDStencilTable.h"
 
 namespace subd
 {
 SUBDKERNEL_EXPORT StencilTable BuildCatmullClarkStencils(const Level& parent);
 
-/// The smooth vertex row of point v from the new edge and face points (the form that reads
-/// them): (n-3)/n v + 4/n^2 sum(E_i) - 1/n^2 sum(F_i), n faces; edgeSource(i) and
-/// faceSource(i) name the i-th edge and face point as sources. Returns the row's size.
-template <typename EdgeSource, typename FaceSource>
-Index WriteCatmullClarkSmoothVertexRow(Index v, Index numEdges, Index numFaces, EdgeSource&& edgeSource,
-  FaceSource&& faceSource, Index* sources, double* weights)
+/// Catmull-Clark's smooth edge weights (on each end, on each face point); the crease rule
+/// blends them with the midpoint (WritePrimalEdgeRow).
+constexpr double CatmullClarkEdgeEndWeight = 0.25;
+constexpr double CatmullClarkEdgeFaceWeight = 0.25;
+
+/// The smooth edge point of an edge with ends `ends` and face points `facePoints` (children).
+template <typename Entries>
+void CatmullClarkSmoothEdgeMask(const Index* ends, const Index* facePoints, Entries& entries)
+{
+  entries.Parent(ends[0], CatmullClarkEdgeEndWeight);
+  entries.Parent(ends[1], CatmullClarkEdgeEndWeight);
+  entries.Child(facePoints[0], CatmullClarkEdgeFaceWeight);
+  entries.Child(facePoints[1], CatmullClarkEdgeFaceWeight);
+}
+
+/// The smooth vertex point of v from the new edge and face points around it (the form that
+/// reads them): (n-3)/n v + 4/n^2 sum(E_i) - 1/n^2 sum(F_i), n faces; edgePoint(i) and
+/// facePoint(i) name the i-th of each.
+template <typename EdgePoint, typename FacePoint, typename Entries>
+void CatmullClarkSmoothVertexMask(
+  Index v, Index numEdges, Index numFaces, EdgePoint&& edgePoint, FacePoint&& facePoint, Entries& entries)
 {
   const double n = numFaces;
-  sources[0] = v;
-  weights[0] = (n - 3.0) / n;
+  entries.Parent(v, (n - 3.0) / n);
   for (Index i = 0; i < numEdges; ++i)
   {
-    sources[1 + i] = edgeSource(i);
-    weights[1 + i] = 4.0 / (n * n);
+    entries.Child(edgePoint(i), 4.0 / (n * n));
   }
   for (Index i = 0; i < numFaces; ++i)
   {
-    sources[1 + numEdges + i] = faceSource(i);
-    weights[1 + numEdges + i] = -1.0 / (n * n);
+    entries.Child(facePoint(i), -1.0 / (n * n));
   }
-  return 1 + numEdges + numFaces;
 }
 
-/// The same rows written one at a time (SubDRowWriting.h), each vertex's rule planned as its
-/// row is written: what BuildCatmullClarkStencils stores, and what the finest level applies
+/// The same vertex point from the parent's ring (the form a crease's semi-sharp transition
+/// blends with the crease rule, WritePrimalVertexRow): (n-2)/n v + 1/n^2 sum(e_i) + 1/n^2
+/// sum(F_i), e_i the far ends of v's edges.
+template <typename FacePoint, typename Entries>
+void CatmullClarkRingVertexMask(
+  const MeshTopology& topo, Index v, IndexSpan edges, Index numFaces, FacePoint&& facePoint, Entries& entries)
+{
+  const double n = numFaces;
+  const double ringWeight = 1.0 / (n * n);
+  entries.Parent(v, (n - 2.0) / n);
+  for (Index e : edges)
+  {
+    entries.Parent(topo.GetOtherEndpoint(e, v), ringWeight);
+  }
+  for (Index i = 0; i < numFaces; ++i)
+  {
+    entries.Child(facePoint(i), ringWeight);
+  }
+}
+
+/// The rows written one at a time (SubDRowWriting.h), each vertex's rule planned as its row
+/// is written: what BuildCatmullClarkStencils stores, and what the finest level applies
 /// without storing.
 class SUBDKERNEL_EXPORT CatmullClarkRowWriter
 {
@@ -67,23 +99,13 @@ public:
   }
   Index GetMaxRowSize() const { return this->MaxRowSize; }
   Index WriteRow(Index row, Index* sources, double* weights) const;
-  template <typename T>
-  bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
-  /// Asks for the points ApplySmoothRow reads for `row` (SubDRowWriting.h).
+  /// Face points, smooth edges (two faces, not sharp), vertices with a closed fan and nothing
+  /// sharp at or around them (FindSmoothClosedVertices): their masks; false for other rows.
+  template <typename Entries>
+  bool VisitSmoothRow(Index row, Entries& entries) const;
+  /// Asks for the points VisitSmoothRow reads for `row` (SubDRowWriting.h).
   template <typename T>
   void PrefetchRow(Index row, const T* parents, const T* children) const;
-  /// True for the rows ApplySmoothRow evaluates: face points, smooth edges (two faces, not
-  /// sharp), vertices with a closed fan and nothing sharp at or around them.
-  bool IsSmoothRow(Index row) const
-  {
-    if (row < this->Number.NumFaces)
-    {
-      return true;
-    }
-    const Index firstVertexPoint = this->Number.VertexPoint(0);
-    return row < firstVertexPoint ? IsSmoothEdge(this->Parent, row - this->Number.NumFaces)
-                                  : this->SmoothVertex[row - firstVertexPoint] != 0;
-  }
 
 private:
   Index WriteEdgeRow(Index e, Index* sources, double* weights) const;
@@ -133,56 +155,38 @@ inline void CatmullClarkRowWriter::PrefetchRow(Index row, const T* parents, cons
   }
 }
 
-// Face points always; edge points of smooth edges; vertex points of vertices with nothing
-// sharp at or around them and a closed fan (PlanVertexRule's smooth case), from the edge
-// points. Sources and weights in WriteRow's order.
-template <typename T>
-SUBD_ALWAYS_INLINE bool CatmullClarkRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
+template <typename Entries>
+SUBD_ALWAYS_INLINE bool CatmullClarkRowWriter::VisitSmoothRow(Index row, Entries& entries) const
 {
   const MeshTopology& topo = this->Topology;
-  if (!this->IsSmoothRow(row))
-  {
-    return false;
-  }
-  PointSum point;
   if (row < this->Number.NumFaces)
   {
-    const IndexSpan fv = topo.GetFaceVertices(row);
-    const double w = 1.0 / fv.size();
-    for (Index v : fv)
-    {
-      point.Add(w, parents + 3 * static_cast<size_t>(v));
-    }
-    point.Store(dst);
+    CentroidMask(topo.GetFaceVertices(row), entries);
     return true;
   }
   const Index firstVertexPoint = this->Number.VertexPoint(0);
   if (row < firstVertexPoint)
   {
     const Index e = row - this->Number.NumFaces;
+    if (!IsSmoothEdge(this->Parent, e))
+    {
+      return false;
+    }
     const IndexSpan ef = topo.GetEdgeFaces(e);
-    const Index* ev = topo.GetEdgeVertices(e);
-    point.Add(0.25, parents + 3 * static_cast<size_t>(ev[0]));
-    point.Add(0.25, parents + 3 * static_cast<size_t>(ev[1]));
-    point.Add(0.25, children + 3 * static_cast<size_t>(this->Number.FacePoint(ef[0])));
-    point.Add(0.25, children + 3 * static_cast<size_t>(this->Number.FacePoint(ef[1])));
-    point.Store(dst);
+    const Index facePoints[2] = { this->Number.FacePoint(ef[0]), this->Number.FacePoint(ef[1]) };
+    CatmullClarkSmoothEdgeMask(topo.GetEdgeVertices(e), facePoints, entries);
     return true;
   }
   const Index v = row - firstVertexPoint;
+  if (!this->SmoothVertex[v])
+  {
+    return false;
+  }
   const IndexSpan edges = topo.GetVertexEdges(v);
   const IndexSpan faces = topo.GetVertexFaces(v);
-  const double n = faces.size();
-  point.Add((n - 3.0) / n, parents + 3 * static_cast<size_t>(v));
-  for (Index e : edges)
-  {
-    point.Add(4.0 / (n * n), children + 3 * static_cast<size_t>(this->Number.EdgePoint(e)));
-  }
-  for (Index f : faces)
-  {
-    point.Add(-1.0 / (n * n), children + 3 * static_cast<size_t>(this->Number.FacePoint(f)));
-  }
-  point.Store(dst);
+  CatmullClarkSmoothVertexMask(
+    v, edges.size(), faces.size(), [&](Index i) { return this->Number.EdgePoint(edges[i]); },
+    [&](Index i) { return this->Number.FacePoint(faces[i]); }, entries);
   return true;
 }
 }

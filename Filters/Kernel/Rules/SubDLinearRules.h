@@ -10,6 +10,7 @@
 #define SubDLinearRules_h
 
 #include "SubDLevel.h"
+#include "SubDRowWriting.h"
 #include "SubDStencilTable.h"
 
 namespace subd
@@ -29,10 +30,15 @@ public:
   Index GetNumRows() const { return this->FirstVertexRow + this->Topology.GetNumVertices(); }
   std::vector<Index> GetBlockEnds() const { return { this->GetNumRows() }; }
   Index GetMaxRowSize() const { return this->MaxRowSize; }
-  Index WriteRow(Index row, Index* sources, double* weights) const;
-  /// Every row is known in closed form.
-  template <typename T>
-  bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
+  Index WriteRow(Index row, Index* sources, double* weights) const
+  {
+    RowEntries entries{ sources, weights, this->GetNumParents() };
+    this->VisitSmoothRow(row, entries);
+    return entries.Size;
+  }
+  /// Every row: a centroid, a midpoint or a copy.
+  template <typename Entries>
+  bool VisitSmoothRow(Index row, Entries& entries) const;
 
 private:
   const MeshTopology& Topology;
@@ -41,30 +47,21 @@ private:
   Index MaxRowSize = 2;
 };
 
-template <typename T>
-SUBD_ALWAYS_INLINE bool LinearRowWriter::ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
+template <typename Entries>
+SUBD_ALWAYS_INLINE bool LinearRowWriter::VisitSmoothRow(Index row, Entries& entries) const
 {
-  PointSum point;
   if (row < this->FirstEdgeRow)
   {
-    const IndexSpan fv = this->Topology.GetFaceVertices(row);
-    const double w = 1.0 / fv.size();
-    for (Index v : fv)
-    {
-      point.Add(w, parents + 3 * static_cast<size_t>(v));
-    }
+    CentroidMask(this->Topology.GetFaceVertices(row), entries);
   }
   else if (row < this->FirstVertexRow)
   {
-    const Index* ev = this->Topology.GetEdgeVertices(row - this->FirstEdgeRow);
-    point.Add(0.5, parents + 3 * static_cast<size_t>(ev[0]));
-    point.Add(0.5, parents + 3 * static_cast<size_t>(ev[1]));
+    MidpointMask(this->Topology.GetEdgeVertices(row - this->FirstEdgeRow), entries);
   }
   else
   {
-    point.Add(1.0, parents + 3 * static_cast<size_t>(row - this->FirstVertexRow));
+    CopyMask(row - this->FirstVertexRow, entries);
   }
-  point.Store(dst);
   return true;
 }
 }

@@ -1,5 +1,4 @@
 #include "SubDLoopRules.h"
-#include "SubDRowWriting.h"
 
 #include <algorithm>
 #include <cmath>
@@ -47,37 +46,30 @@ LoopBetas::LoopBetas()
 
 Index LoopRowWriter::WriteRow(Index row, Index* sources, double* weights) const
 {
+  RowEntries entries{ sources, weights, this->GetNumParents() };
+  if (this->VisitSmoothRow(row, entries))
+  {
+    return entries.Size;
+  }
   const MeshTopology& topo = this->Topology;
   if (row < this->Number.VertexPoint(0))
   {
     const Index e = row;
     const float creaseWeight = EdgeCreaseWeight(this->Parent, e);
-    WritePrimalEdgeRow(topo.GetEdgeVertices(e), creaseWeight, 0.375, 0.125, sources, weights, [&](Index* sides) {
-      const IndexSpan ef = topo.GetEdgeFaces(e);
-      sides[0] = topo.GetTriangleOppositeVertex(ef[0], e);
-      sides[1] = topo.GetTriangleOppositeVertex(ef[1], e);
-    });
+    WritePrimalEdgeRow(topo.GetEdgeVertices(e), creaseWeight, LoopEdgeEndWeight, LoopEdgeOppositeWeight, sources,
+      weights, [&](Index* sides) {
+        const IndexSpan ef = topo.GetEdgeFaces(e);
+        sides[0] = topo.GetTriangleOppositeVertex(ef[0], e);
+        sides[1] = topo.GetTriangleOppositeVertex(ef[1], e);
+      });
     return PrimalEdgeRowSize(creaseWeight);
   }
   const Index v = row - this->Number.VertexPoint(0);
   const IndexSpan edges = topo.GetVertexEdges(v);
-  if (this->SmoothVertex[v])
-  {
-    // Every edge point around v follows the smooth rule: the form that reads them.
-    return WriteLoopSmoothVertexRow(v, edges.size(), this->Beta(edges.size()),
-      [&](Index i) { return this->GetNumParents() + this->Number.EdgePoint(edges[i]); }, sources, weights);
-  }
   const VertexRulePlan plan = PlanVertexRule(this->Parent, v);
   WritePrimalVertexRow(topo, plan, v, 1 + edges.size(), sources, weights, [&](Index* src, double* wts) {
-    const Index n = edges.size();
-    src[0] = v;
-    const double beta = this->Beta(n);
-    wts[0] = 1.0 - n * beta;
-    for (Index i = 0; i < n; ++i)
-    {
-      src[1 + i] = topo.GetOtherEndpoint(edges[i], v);
-      wts[1 + i] = beta;
-    }
+    RowEntries ring{ src, wts, this->GetNumParents() };
+    LoopRingVertexMask(topo, v, edges, this->Beta(edges.size()), ring);
   });
   return PrimalVertexRowSize(plan, 1 + edges.size());
 }

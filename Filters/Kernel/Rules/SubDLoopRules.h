@@ -21,6 +21,7 @@
 #define SubDLoopRules_h
 
 #include "SubDLevel.h"
+#include "SubDRowWriting.h"
 #include "SubDStencilTable.h"
 #include "SubDTriangleSplit.h"
 
@@ -43,20 +44,43 @@ private:
   const std::vector<double>& Table;
 };
 
-/// The smooth vertex row of point v from the new edge points (the form that reads them):
-/// (1 - 8/5 n beta) v + 8/5 beta sum(E_i), n edges; edgeSource(i) names the i-th edge
-/// point as a source. Returns the row's size.
-template <typename EdgeSource>
-Index WriteLoopSmoothVertexRow(Index v, Index n, double beta, EdgeSource&& edgeSource, Index* sources, double* weights)
+/// Loop's smooth edge weights (on each end, on each vertex opposite the edge); the crease
+/// rule blends them with the midpoint (WritePrimalEdgeRow).
+constexpr double LoopEdgeEndWeight = 0.375;
+constexpr double LoopEdgeOppositeWeight = 0.125;
+
+/// The smooth edge point of an edge with ends `ends` and opposite vertices `opposite`.
+template <typename Entries>
+void LoopSmoothEdgeMask(const Index* ends, const Index* opposite, Entries& entries)
 {
-  sources[0] = v;
-  weights[0] = 1.0 - 1.6 * n * beta;
+  entries.Parent(ends[0], LoopEdgeEndWeight);
+  entries.Parent(ends[1], LoopEdgeEndWeight);
+  entries.Parent(opposite[0], LoopEdgeOppositeWeight);
+  entries.Parent(opposite[1], LoopEdgeOppositeWeight);
+}
+
+/// The smooth vertex point of v from the new edge points around it (the form that reads
+/// them): (1 - 8/5 n beta) v + 8/5 beta sum(E_i), n edges; edgePoint(i) names the i-th.
+template <typename EdgePoint, typename Entries>
+void LoopSmoothVertexMask(Index v, Index n, double beta, EdgePoint&& edgePoint, Entries& entries)
+{
+  entries.Parent(v, 1.0 - 1.6 * n * beta);
   for (Index i = 0; i < n; ++i)
   {
-    sources[1 + i] = edgeSource(i);
-    weights[1 + i] = 1.6 * beta;
+    entries.Child(edgePoint(i), 1.6 * beta);
   }
-  return 1 + n;
+}
+
+/// The same vertex point from the parent's ring (the form a crease's semi-sharp transition
+/// blends with the crease rule, WritePrimalVertexRow): (1 - n beta) v + beta sum(v_i).
+template <typename Entries>
+void LoopRingVertexMask(const MeshTopology& topo, Index v, IndexSpan edges, double beta, Entries& entries)
+{
+  entries.Parent(v, 1.0 - edges.size() * beta);
+  for (Index e : edges)
+  {
+    entries.Parent(topo.GetOtherEndpoint(e, v), beta);
+  }
 }
 
 /// Requires every face of `parent` to be a triangle.
@@ -74,22 +98,16 @@ public:
   std::vector<Index> GetBlockEnds() const { return { this->Number.VertexPoint(0), this->GetNumRows() }; }
   Index GetMaxRowSize() const { return this->MaxRowSize; }
   Index WriteRow(Index row, Index* sources, double* weights) const;
-  template <typename T>
-  bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
-  /// Asks for what ApplySmoothRow reads for `row` (SubDRowWriting.h): an edge's end points
+  /// Smooth edges (two faces, not sharp), vertices with a closed fan and nothing sharp at or
+  /// around them (FindSmoothClosedVertices): their masks; false for other rows.
+  template <typename Entries>
+  bool VisitSmoothRow(Index row, Entries& entries) const;
+  /// Asks for what VisitSmoothRow reads for `row` (SubDRowWriting.h): an edge's end points
   /// and its faces' corners (the third vertices are found there), a vertex's edge points.
   template <typename T>
   void PrefetchRow(Index row, const T* parents, const T* children) const;
-  /// True for the rows ApplySmoothRow evaluates: smooth edges (two faces, not sharp),
-  /// vertices with a closed fan and nothing sharp at or around them.
-  bool IsSmoothRow(Index row) const
-  {
-    const Index firstVertexPoint = this->Number.VertexPoint(0);
-    return row < firstVertexPoint ? IsSmoothEdge(this->Parent, row) : this->SmoothVertex[row - firstVertexPoint] != 0;
-  }
 
 private:
-
   const Level& Parent;
   const MeshTopology& Topology;
   TriangleSplitNumbering Number;
@@ -98,9 +116,6 @@ private:
   std::vector<std::uint8_t> SmoothVertex; // FindSmoothClosedVertices
 };
 
-// Edge points of smooth edges; vertex points of vertices with nothing sharp at or around
-// them and a closed fan (PlanVertexRule's smooth case), from the edge points. Sources and
-// weights in WriteRow's order.
 template <typename T>
 inline void LoopRowWriter::PrefetchRow(Index row, const T* parents, const T* children) const
 {
@@ -123,41 +138,34 @@ inline void LoopRowWriter::PrefetchRow(Index row, const T* parents, const T* chi
   }
 }
 
-template <typename T>
-SUBD_ALWAYS_INLINE bool LoopRowWriter::ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const
+template <typename Entries>
+SUBD_ALWAYS_INLINE bool LoopRowWriter::VisitSmoothRow(Index row, Entries& entries) const
 {
-  if (!this->IsSmoothRow(row))
-  {
-    return false;
-  }
   const MeshTopology& topo = this->Topology;
-  PointSum point;
   const Index firstVertexPoint = this->Number.VertexPoint(0);
   if (row < firstVertexPoint)
   {
     const Index e = row;
+    if (!IsSmoothEdge(this->Parent, e))
+    {
+      return false;
+    }
     const IndexSpan ef = topo.GetEdgeFaces(e);
     const Index* ev = topo.GetEdgeVertices(e);
-    point.Add(0.375, parents + 3 * static_cast<size_t>(ev[0]));
-    point.Add(0.375, parents + 3 * static_cast<size_t>(ev[1]));
     // Every face is a triangle: their corners without reading the face offsets.
-    const Index b0 = MeshTopology::ThirdVertex(topo.GetTriangleVertices(ef[0]), ev[0], ev[1]);
-    const Index b1 = MeshTopology::ThirdVertex(topo.GetTriangleVertices(ef[1]), ev[0], ev[1]);
-    point.Add(0.125, parents + 3 * static_cast<size_t>(b0));
-    point.Add(0.125, parents + 3 * static_cast<size_t>(b1));
-    point.Store(dst);
+    const Index opposite[2] = { MeshTopology::ThirdVertex(topo.GetTriangleVertices(ef[0]), ev[0], ev[1]),
+      MeshTopology::ThirdVertex(topo.GetTriangleVertices(ef[1]), ev[0], ev[1]) };
+    LoopSmoothEdgeMask(ev, opposite, entries);
     return true;
   }
   const Index v = row - firstVertexPoint;
-  const IndexSpan edges = topo.GetVertexEdges(v);
-  const Index n = edges.size();
-  const double beta = this->Beta(n);
-  point.Add(1.0 - 1.6 * n * beta, parents + 3 * static_cast<size_t>(v));
-  for (Index e : edges)
+  if (!this->SmoothVertex[v])
   {
-    point.Add(1.6 * beta, children + 3 * static_cast<size_t>(this->Number.EdgePoint(e)));
+    return false;
   }
-  point.Store(dst);
+  const IndexSpan edges = topo.GetVertexEdges(v);
+  LoopSmoothVertexMask(
+    v, edges.size(), this->Beta(edges.size()), [&](Index i) { return this->Number.EdgePoint(edges[i]); }, entries);
   return true;
 }
 }

@@ -7,14 +7,17 @@
 //   std::vector<Index> GetBlockEnds() const; // as StencilTable's blocks
 //   Index GetMaxRowSize() const;            // room WriteRow uses in its buffers (>= any row)
 //   Index WriteRow(Index row, Index* sources, double* weights) const; // returns the size
-//   template <typename T>                   // evaluates a point's row if it is smooth
-//   bool ApplySmoothRow(Index row, const T* parents, const T* children, T* dst) const;
 // and optionally
+//   template <typename Entries>             // the row of a smooth point, if `row` is one
+//   bool VisitSmoothRow(Index row, Entries& entries) const;
 //   template <typename T>                   // asks for the points that row will read
 //   void PrefetchRow(Index row, const T* parents, const T* children) const;
-// ApplySmoothRow evaluates the rows the writer knows in closed form (most of a mesh: away
-// from creases and boundaries) without writing them, summing the same weighted points in
-// the same order as the written row, so that both give the same bits; it returns false for
+// A scheme's masks are functions that give a row's entries to an Entries sink: RowEntries
+// writes them into a row's arrays (a stored table, or a row WriteRow writes), PointEntries
+// sums the weighted points straight away, in the same order, so that both give the same
+// bits. VisitSmoothRow calls them for the rows that need no planning (most of a mesh: away
+// from creases and boundaries), and WriteRow calls VisitSmoothRow for those rows too: each
+// weight is written once. WrittenRows sums the smooth rows through VisitSmoothRow and writes
 // the others.
 // Writing a row costs little next to reading its sources: its weights come from the
 // topology around the row's point, which is small and read in order. Applying rows as they
@@ -32,6 +35,71 @@
 
 namespace subd
 {
+/// A mask's entries written into a row: a point of the parent level is source v, a point of
+/// the level being made (written by an earlier block of rows) source NumParents + p.
+struct RowEntries
+{
+  Index* Sources;
+  double* Weights;
+  Index NumParents;
+  Index Size = 0;
+  void Parent(Index v, double w)
+  {
+    this->Sources[this->Size] = v;
+    this->Weights[this->Size++] = w;
+  }
+  void Child(Index p, double w) { this->Parent(this->NumParents + p, w); }
+};
+
+/// A mask's entries summed as ApplyRow sums a written row (three components, in double).
+template <typename T>
+struct PointEntries
+{
+  const T* Parents;
+  const T* Children;
+  PointSum Sum;
+  void Parent(Index v, double w) { this->Sum.Add(w, this->Parents + 3 * static_cast<size_t>(v)); }
+  void Child(Index p, double w) { this->Sum.Add(w, this->Children + 3 * static_cast<size_t>(p)); }
+};
+
+/// The masks several schemes share: a face's centroid (Catmull-Clark's face points, the
+/// bilinear scheme's, sqrt(3)'s), an edge's midpoint (the crease rule, the linear schemes',
+/// the midpoint scheme's), a copy (interpolating schemes' vertex points, corners).
+template <typename Entries>
+void CentroidMask(IndexSpan corners, Entries& entries)
+{
+  const double w = 1.0 / corners.size();
+  for (Index v : corners)
+  {
+    entries.Parent(v, w);
+  }
+}
+
+template <typename Entries>
+void MidpointMask(const Index* ends, Entries& entries)
+{
+  entries.Parent(ends[0], 0.5);
+  entries.Parent(ends[1], 0.5);
+}
+
+template <typename Entries>
+void CopyMask(Index v, Entries& entries)
+{
+  entries.Parent(v, 1.0);
+}
+
+/// Whether a row writer has VisitSmoothRow(row, entries) (see above).
+template <typename Writer, typename = void>
+struct HasVisitSmoothRow : std::false_type
+{
+};
+template <typename Writer>
+struct HasVisitSmoothRow<Writer,
+  std::void_t<decltype(std::declval<const Writer&>().VisitSmoothRow(Index(), std::declval<RowEntries&>()))>>
+  : std::true_type
+{
+};
+
 /// The rows of `writer` in a table; `expectedEntries` (a guess) spares reallocations.
 template <typename Writer>
 StencilTable WriteStencilTable(const Writer& writer, size_t expectedEntries)
@@ -135,9 +203,14 @@ private:
         }
       }
       T* dst = children + static_cast<size_t>(row) * components;
-      if (components == 3 && this->RowWriter.ApplySmoothRow(row, parents, children, dst))
+      if constexpr (HasVisitSmoothRow<Writer>::value)
       {
-        continue;
+        PointEntries<T> entries{ parents, children, {} };
+        if (components == 3 && this->RowWriter.VisitSmoothRow(row, entries))
+        {
+          entries.Sum.Store(dst);
+          continue;
+        }
       }
       const Index size = this->RowWriter.WriteRow(row, sources.data(), weights.data());
       ApplyRow(sources.data(), weights.data(), size, numParents, parents, children, components, sum.data(), dst);

@@ -331,60 +331,44 @@ public:
 
   Index WriteRow(Index row, Index* src, double* wts) const
   {
-    auto write = [&](std::initializer_list<std::pair<Index, double>> entries) {
-      Index size = 0;
-      for (const auto& entry : entries)
-      {
-        src[size] = entry.first;
-        wts[size++] = entry.second;
-      }
-      return size;
-    };
-    if (row < this->FirstVertexPoint)
+    RowEntries entries{ src, wts, this->NumVertices };
+    if (this->VisitSmoothRow(row, entries))
     {
-      const IndexSpan fv = this->Topo.GetFaceVertices(this->CentroidFace.empty() ? row : this->CentroidFace[row]);
-      return write({ { fv[0], 1.0 / 3.0 }, { fv[1], 1.0 / 3.0 }, { fv[2], 1.0 / 3.0 } });
+      return entries.Size;
     }
     if (row < this->FirstTrisectionPoint)
     {
       const Index v = row - this->FirstVertexPoint;
-      if (this->Rules[v] == Sqrt3VertexRule::Relax)
-      {
-        Index size = 0;
-        this->VisitRelaxedRow(v, [&](Index w, double weight) {
-          src[size] = w;
-          wts[size++] = weight;
-        });
-        return size;
-      }
       if (this->Rules[v] == Sqrt3VertexRule::Curve)
       {
         const std::array<Index, 2>& ends = this->CurveEnds[this->CurveSlot[v]];
-        return write({ { ends[0], 4.0 / 27.0 }, { v, 19.0 / 27.0 }, { ends[1], 4.0 / 27.0 } });
+        entries.Parent(ends[0], 4.0 / 27.0);
+        entries.Parent(v, 19.0 / 27.0);
+        entries.Parent(ends[1], 4.0 / 27.0);
       }
-      return write({ { v, 1.0 } });
+      else
+      {
+        CopyMask(v, entries);
+      }
+      return entries.Size;
     }
     // a, b, p, q: the trisected edge's ends and their neighbours along the curve.
     const std::array<Index, 4>& t = this->Trisections[(row - this->FirstTrisectionPoint) / 2];
-    return (row - this->FirstTrisectionPoint) % 2 == 0
-      ? write({ { t[2], 1.0 / 27.0 }, { t[0], 16.0 / 27.0 }, { t[1], 10.0 / 27.0 } })
-      : write({ { t[0], 10.0 / 27.0 }, { t[1], 16.0 / 27.0 }, { t[3], 1.0 / 27.0 } });
+    const bool nearA = (row - this->FirstTrisectionPoint) % 2 == 0;
+    entries.Parent(nearA ? t[2] : t[0], nearA ? 1.0 / 27.0 : 10.0 / 27.0);
+    entries.Parent(nearA ? t[0] : t[1], 16.0 / 27.0);
+    entries.Parent(nearA ? t[1] : t[3], nearA ? 10.0 / 27.0 : 1.0 / 27.0);
+    return entries.Size;
   }
 
-  // Centroids and relaxed vertices, summed as ApplyRow sums WriteRow's row.
-  template <typename T>
-  bool ApplySmoothRow(Index row, const T* parents, const T*, T* dst) const
+  // Centroids and relaxed vertices: Kobbelt's masks; false for the curve rules and fixed
+  // vertices.
+  template <typename Entries>
+  bool VisitSmoothRow(Index row, Entries& entries) const
   {
-    auto point = [parents](Index v) { return parents + 3 * static_cast<size_t>(v); };
-    PointSum sum;
     if (row < this->FirstVertexPoint)
     {
-      const IndexSpan fv = this->Topo.GetFaceVertices(this->CentroidFace.empty() ? row : this->CentroidFace[row]);
-      for (Index k = 0; k < 3; ++k)
-      {
-        sum.Add(1.0 / 3.0, point(fv[k]));
-      }
-      sum.Store(dst);
+      CentroidMask(this->Topo.GetFaceVertices(this->CentroidFace.empty() ? row : this->CentroidFace[row]), entries);
       return true;
     }
     const Index v = row - this->FirstVertexPoint;
@@ -392,8 +376,7 @@ public:
     {
       return false;
     }
-    this->VisitRelaxedRow(v, [&](Index w, double weight) { sum.Add(weight, point(w)); });
-    sum.Store(dst);
+    this->VisitRelaxedRow(v, [&](Index w, double weight) { entries.Parent(w, weight); });
     return true;
   }
 

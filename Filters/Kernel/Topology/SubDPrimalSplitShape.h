@@ -7,8 +7,8 @@
 // edges by first meeting, walking the child faces and their corners in order; a half of
 // parent edge e is first met in the first face of e, an edge inside a face in that face.
 // Counting each parent face's new edges and summing the counts gives every parent face the
-// first number of its edges (NumberChildEdges). Shared by the child topology
-// (SubDPrimalChildTopology.h) and by the rows written two levels down (SubDGrandchildRows.h).
+// first number of its edges (NumberChildEdges). Read by the child topology
+// (SubDPrimalChildTopology.h).
 #ifndef SubDPrimalSplitShape_h
 #define SubDPrimalSplitShape_h
 
@@ -27,37 +27,13 @@ namespace subd
 {
 /// The child edges' numbers: FirstEdgeOfFace[f] is the first number of the edges first met
 /// among face f's children (F + 1 entries, the last the number of child edges); GetEdge(key)
-/// the number of the edge of each key. EdgeOfKey holds every key's, or for the triangle
-/// split (NumberChildEdges without the edges inside faces) the halves' only: the edges
-/// inside a triangle are numbered in closed form from the face's first number and which of
-/// its edges' halves it meets first (FirstMetHalves), which keeps a rows source written two
-/// levels down (SubDGrandchildRows.h) 3 indices per triangle smaller.
+/// the number of the edge of each key.
 struct ChildEdgeNumbering
 {
   IndexArray FirstEdgeOfFace;
   IndexArray EdgeOfKey;
-  LevelArray<std::uint8_t> FirstMetHalves; // per triangle, bit i: its edge i is first met in it
 
-  Index GetEdge(Index key) const
-  {
-    const Index stored = static_cast<Index>(this->EdgeOfKey.size());
-    if (key < stored)
-    {
-      return this->EdgeOfKey[key];
-    }
-    const Index inside = key - stored, f = inside / 3;
-    return this->FirstEdgeOfFace[f] + TriangleInteriorEdgeOffset(this->FirstMetHalves[f], inside - 3 * f);
-  }
-  /// Where the edge inside a triangle opposite its child j's corner comes among the edges
-  /// first met in the triangle (TriangleSplitShape::VisitCorners's order): after the halves
-  /// and inside edges met before it, `met` telling which edges' halves are met there.
-  static Index TriangleInteriorEdgeOffset(std::uint8_t met, Index j)
-  {
-    const Index m0 = met & 1, m1 = (met >> 1) & 1, m2 = (met >> 2) & 1;
-    // Child 0: half of edge 0 at v0, inside 0, half of edge 2 at v0; child 1: half of edge 1,
-    // inside 1, half of edge 0; child 2: half of edge 2, inside 2, half of edge 1.
-    return j == 0 ? m0 : (j == 1 ? m0 + m2 + m1 + 1 : 2 * m0 + m1 + 2 * m2 + 2);
-  }
+  Index GetEdge(Index key) const { return this->EdgeOfKey[key]; }
 };
 
 // Walking the faces in order, an edge is first met in the first of its faces (they are
@@ -346,13 +322,10 @@ void WriteChildPointRelations(const Shape& shape, const ChildEdgeNumbering& numb
   SortShortList(edges, edges + numEdges);
 }
 
-/// Numbers the child edges of `shape`'s split. Without `storeInteriorEdges` (the triangle
-/// split only), EdgeOfKey keeps the halves' numbers and FirstMetHalves the rest.
+/// Numbers the child edges of `shape`'s split.
 template <typename Shape>
-ChildEdgeNumbering NumberChildEdges(const Shape& shape, const ParallelFor& parallelFor, bool storeInteriorEdges = true)
+ChildEdgeNumbering NumberChildEdges(const Shape& shape, const ParallelFor& parallelFor)
 {
-  constexpr bool triangles = std::is_same_v<Shape, TriangleSplitShape>;
-  const bool compact = triangles && !storeInteriorEdges;
   const Index numFaces = shape.Parent.GetNumFaces();
   ChildEdgeNumbering numbering;
   IndexArray& firstEdgeOfFace = numbering.FirstEdgeOfFace;
@@ -367,36 +340,17 @@ ChildEdgeNumbering NumberChildEdges(const Shape& shape, const ParallelFor& paral
     }
   });
   std::partial_sum(firstEdgeOfFace.begin(), firstEdgeOfFace.end(), firstEdgeOfFace.begin());
-  const Index halves = 2 * shape.NumEdges;
-  numbering.EdgeOfKey.resize(static_cast<size_t>(compact ? halves : halves + shape.GetNumInteriorEdges()));
-  numbering.FirstMetHalves.resize(compact ? static_cast<size_t>(numFaces) : 0);
+  numbering.EdgeOfKey.resize(static_cast<size_t>(2 * shape.NumEdges + shape.GetNumInteriorEdges()));
   parallelFor(0, numFaces, [&](Index begin, Index end) {
     for (Index f = begin; f < end; ++f)
     {
       Index next = firstEdgeOfFace[f];
-      std::uint8_t met = 0;
-      shape.VisitCorners(f, [&](Index corner, Index key, bool isNew) {
-        if (!isNew)
-        {
-          return;
-        }
-        if (!compact)
+      shape.VisitCorners(f, [&](Index, Index key, bool isNew) {
+        if (isNew)
         {
           numbering.EdgeOfKey[key] = next++;
-          return;
         }
-        if (key < halves)
-        {
-          numbering.EdgeOfKey[key] = next;
-          // Child j's corner 0 starts the half of edge j: edge j is first met in f.
-          met |= static_cast<std::uint8_t>(corner % 3 == 0 ? 1 << ((corner / 3) % 4) : 0);
-        }
-        ++next;
       });
-      if (compact)
-      {
-        numbering.FirstMetHalves[f] = met;
-      }
     }
   });
   return numbering;
