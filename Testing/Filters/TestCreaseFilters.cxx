@@ -281,33 +281,21 @@ std::array<double, 3> ClosedQuadraticBSpline(const std::vector<std::array<double
   return c;
 }
 
-// Refines a torus with an infinitely sharp crease ring by `levels` levels and compares the
-// crease with `curve` of the ring's polygon: each ring edge must have become `pieces`
-// crease edges, and `sample(points, j)` turns the ordered crease polygon into the curve
-// point at t = j / pieces (up to the start and direction of the walk).
-template <typename Filter, typename Curve, typename Sample>
-void CheckCreaseFollowsCurve(bool triangles, int levels, size_t pieces, Curve&& curve, Sample&& sample)
+// Walks the crease lines of `out`, which must form one closed ring of
+// control.size() * `pieces` segments, and compares it with `curve` of the control polygon:
+// `sample(points, j)` turns the ordered crease polygon into the curve point at
+// t = j / pieces (up to the start and direction of the walk).
+template <typename Curve, typename Sample>
+void CheckCreaseRing(vtkPolyData* out, const std::vector<std::array<double, 3>>& control, size_t pieces,
+  Curve&& curve, Sample&& sample)
 {
-  const subdtest::TestMesh torus = Torus(triangles);
-  vtkSmartPointer<vtkPolyData> input = ToPolyData(torus);
-  std::vector<std::array<vtkIdType, 2>> ring;
-  std::vector<std::array<double, 3>> control;
-  for (int i = 0; i < 6; ++i)
-  {
-    ring.push_back({ TorusVertex(i, 2), TorusVertex(i + 1, 2) });
-    control.push_back({ torus.Points[3 * TorusVertex(i, 2)], torus.Points[3 * TorusVertex(i, 2) + 1],
-      torus.Points[3 * TorusVertex(i, 2) + 2] });
-  }
-  AddCreases(input, ring, {}); // no Sharpness array: infinitely sharp
-  vtkSmartPointer<vtkPolyData> out = Subdivide<Filter>(input, levels);
-  // Walk the crease lines around the ring.
   std::map<vtkIdType, std::vector<vtkIdType>> next;
   for (const auto& line : CreaseLines(out))
   {
     next[line.first.first].push_back(line.first.second);
     next[line.first.second].push_back(line.first.first);
   }
-  const size_t count = 6 * pieces;
+  const size_t count = control.size() * pieces;
   ASSERT_EQ(next.size(), count);
   std::vector<vtkIdType> order{ next.begin()->first };
   while (order.size() < count)
@@ -336,6 +324,26 @@ void CheckCreaseFollowsCurve(bool triangles, int levels, size_t pieces, Curve&& 
       best = std::min(best, worst);
     }
   EXPECT_LE(best, 1e-12);
+}
+
+// Refines a torus with an infinitely sharp crease ring by `levels` levels and compares the
+// crease with `curve` of the ring's polygon (CheckCreaseRing): each ring edge must have
+// become `pieces` crease edges.
+template <typename Filter, typename Curve, typename Sample>
+void CheckCreaseFollowsCurve(bool triangles, int levels, size_t pieces, Curve&& curve, Sample&& sample)
+{
+  const subdtest::TestMesh torus = Torus(triangles);
+  vtkSmartPointer<vtkPolyData> input = ToPolyData(torus);
+  std::vector<std::array<vtkIdType, 2>> ring;
+  std::vector<std::array<double, 3>> control;
+  for (int i = 0; i < 6; ++i)
+  {
+    ring.push_back({ TorusVertex(i, 2), TorusVertex(i + 1, 2) });
+    control.push_back({ torus.Points[3 * TorusVertex(i, 2)], torus.Points[3 * TorusVertex(i, 2) + 1],
+      torus.Points[3 * TorusVertex(i, 2) + 2] });
+  }
+  AddCreases(input, ring, {}); // no Sharpness array: infinitely sharp
+  CheckCreaseRing(Subdivide<Filter>(input, levels), control, pieces, curve, sample);
 }
 
 // The limit mask (1 4 1)/6 of the level-k polygon of a cubic B-spline.
@@ -376,6 +384,38 @@ TEST(CreaseClosedForm, InfinitelySharpCreaseIsTheCubicBSplineOfItsPolylineSqrt3)
 TEST(CreaseClosedForm, InfinitelySharpCreaseIsTheQuadraticBSplineOfItsPolylineDooSabin)
 {
   CheckCreaseFollowsCurve<vtkSubDDooSabinFilter>(false, 3, 8, ClosedQuadraticBSpline, Midpoint);
+}
+
+// A crease loop around one face of a cube turns at every vertex with that face alone inside
+// the turn: the face's corner there gives Chaikin's two points, one on each crease edge, so
+// the loop is cut like any other crease and no cage corner of it stays in the output.
+TEST(CreaseClosedForm, CreaseLoopAroundOneFaceIsTheQuadraticBSplineOfItsSquareDooSabin)
+{
+  const subdtest::TestMesh cube = subdtest::Cube();
+  vtkSmartPointer<vtkPolyData> input = ToPolyData(cube);
+  const vtkIdType top[] = { 4, 5, 6, 7 };
+  std::vector<std::array<vtkIdType, 2>> loop;
+  std::vector<std::array<double, 3>> control;
+  for (int i = 0; i < 4; ++i)
+  {
+    loop.push_back({ top[i], top[(i + 1) % 4] });
+    control.push_back({ cube.Points[3 * top[i]], cube.Points[3 * top[i] + 1], cube.Points[3 * top[i] + 2] });
+  }
+  AddCreases(input, loop, {}); // infinitely sharp
+  for (int levels = 1; levels <= 4; ++levels)
+  {
+    SCOPED_TRACE("levels " + std::to_string(levels));
+    vtkSmartPointer<vtkPolyData> out = Subdivide<vtkSubDDooSabinFilter>(input, levels);
+    CheckCreaseRing(out, control, size_t{ 1 } << levels, ClosedQuadraticBSpline, Midpoint);
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      double p[3];
+      out->GetPoint(i, p);
+      for (const auto& corner : control)
+        EXPECT_GT(std::abs(p[0] - corner[0]) + std::abs(p[1] - corner[1]) + std::abs(p[2] - corner[2]), 1e-9)
+          << "point " << i << " is a corner of the loop";
+    }
+  }
 }
 
 // The midpoint scheme keeps crease vertices and splits crease edges at their midpoints: the

@@ -84,6 +84,8 @@ TEST(DualSplit, ThreadsGiveTheSerialPointsFacesAndRows)
         EXPECT_EQ(serial.CornerOfPoint, threaded.CornerOfPoint);
         EXPECT_EQ(serial.IsCornerVertex, threaded.IsCornerVertex);
         EXPECT_EQ(serial.PinsEveryCorner, threaded.PinsEveryCorner);
+        EXPECT_EQ(serial.TurnCorners, threaded.TurnCorners);
+        EXPECT_EQ(serial.PointBeforeTurnCorner, threaded.PointBeforeTurnCorner);
         EXPECT_EQ(serial.Unwelded, threaded.Unwelded);
         EXPECT_EQ(serial.NumPoints, threaded.NumPoints);
         const subd::StencilTable rows = subd::BuildDooSabinStencils(level, serial);

@@ -1,11 +1,13 @@
 // Regression images of every scheme on four cages (a cube, a creased cube, an open grid, an
 // icosahedron) at levels 1 and 3, with mean-curvature colouring, the cage overlaid and the
-// creases highlighted; plus Gaussian and plain colouring and the comparison grid. Rendered
-// offscreen with OSMesa (this program links libOSMesa first), DISPLAY unset.
+// creases highlighted; plus Gaussian and plain colouring, the comparison grid, and the size of
+// the faces behind one of the pictures (Doo-Sabin's creased cube). Rendered offscreen with
+// OSMesa (this program links libOSMesa first), DISPLAY unset.
 #include "SubDBuiltinCages.h"
 #include "SubDImageTestSupport.h"
 
 #include "vtkCellArray.h"
+#include "vtkMath.h"
 #include "vtkPlatonicSolidSource.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
@@ -22,6 +24,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <tuple>
@@ -153,6 +157,54 @@ TEST(SceneImage, ComparisonGrid)
   EXPECT_EQ(size[0], 600); // 7 views: 3 x 3 grid
   EXPECT_EQ(size[1], 600);
   subdtest::CompareWithBaseline(scene->GetRenderWindow(), "scene_compare_all");
+}
+
+// The largest distance between two corners of a polygon of `mesh`, over its polygons.
+double LargestFaceDiameter(vtkPolyData* mesh)
+{
+  double largest = 0.0;
+  vtkIdType n;
+  const vtkIdType* ids;
+  vtkCellArray* polys = mesh->GetPolys();
+  for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+    for (vtkIdType i = 0; i < n; ++i)
+      for (vtkIdType j = i + 1; j < n; ++j)
+      {
+        double p[3], q[3];
+        mesh->GetPoint(ids[i], p);
+        mesh->GetPoint(ids[j], q);
+        largest = std::max(largest, std::sqrt(vtkMath::Distance2BetweenPoints(p, q)));
+      }
+  return largest;
+}
+
+// What doo-sabin_creased-cube_L3.png shows: the crease loop around the top face is cut at its
+// corners like the rest of the crease, so none of them stays an output point, and no face is
+// left as large as a cage face (the top face and the two side faces at the sharp corner were,
+// the loop's corners pinned: the cage face's diagonal across). The largest faces left run
+// from the sharp corner (every corner point there is the corner itself) up to the crease,
+// whose Chaikin points barely move: they shrink only once the loop's sharpness is used up.
+TEST(SceneImage, DooSabinCreasedCubeKeepsNoCageFace)
+{
+  vtkSmartPointer<vtkPolyData> cage = Cage("creased-cube");
+  double p[3], q[3]; // the cage's edge length: every edge of the cube is as long
+  vtkIdType n;
+  const vtkIdType* ids;
+  cage->GetPolys()->GetCellAtId(0, n, ids);
+  cage->GetPoint(ids[0], p);
+  cage->GetPoint(ids[1], q);
+  const double edge = std::sqrt(vtkMath::Distance2BetweenPoints(p, q));
+  vtkSmartPointer<vtkPolyData> surface = Subdivide(AllSchemes()[3], cage, 3);
+  EXPECT_LE(LargestFaceDiameter(surface), 0.85 * std::sqrt(2.0) * edge);
+  for (vtkIdType loopCorner : { 4, 5, 6, 7 })
+  {
+    cage->GetPoint(loopCorner, p);
+    for (vtkIdType i = 0; i < surface->GetNumberOfPoints(); ++i)
+    {
+      surface->GetPoint(i, q);
+      EXPECT_GT(vtkMath::Distance2BetweenPoints(p, q), 1e-18) << "loop corner " << loopCorner << " is point " << i;
+    }
+  }
 }
 
 // A scene with no view is an error, not a crash.

@@ -124,6 +124,8 @@ MeshCounts DooSabinScheme::PredictChildCounts(const MeshCounts& parent) const
 {
   // Upper bounds (a closed mesh): a point per corner; F-, E- and V-faces; the corners of
   // F-faces (H), E-faces (4E) and V-faces (H); edges: those of the F- and V-faces (H each).
+  // A crease turn's second point (SubDDualSplit.h) is welded across its edge, and its extra
+  // F-face corner and edge stand for its corner's, which is in no V-face (a sector of one).
   MeshCounts child;
   child.Vertices = parent.Corners;
   child.Faces = parent.Faces + parent.Edges + parent.Vertices;

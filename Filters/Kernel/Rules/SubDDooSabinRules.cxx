@@ -68,8 +68,10 @@ private:
 
 // The boundary row of corner `j` of face f at vertex v, if one of the face's two edges at v
 // is a crease (or boundary) edge or v pins every corner: the vertex itself at a corner
-// vertex, else Chaikin's 3/4, 1/4 (or 1/2, 1/2 next to a corner vertex). Returns the number
-// of entries written (0: interior).
+// vertex, else Chaikin's 3/4, 1/4 (or 1/2, 1/2 next to a corner vertex) along that edge, the
+// outgoing one if both are (a turn corner: the row of its first point, DualPoints::
+// TurnCorners; its second point's row is that of the corner across its incoming edge).
+// Returns the number of entries written (0: interior).
 Index BoundaryCornerRow(const Level& level, const DualPoints& points, const CornersBeforeSharpEdges& sharp, Index f,
   Index j, Index* src, double* wts)
 {
@@ -86,7 +88,7 @@ Index BoundaryCornerRow(const Level& level, const DualPoints& points, const Corn
     return 0;
   }
   src[0] = v;
-  if ((outgoing && incoming) || isCorner[v])
+  if (isCorner[v])
   {
     wts[0] = 1.0;
     return 1;

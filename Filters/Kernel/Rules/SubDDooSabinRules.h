@@ -16,10 +16,12 @@
 //
 // Creases are treated like boundaries (DeRose et al.'s "boundary rule along sharp edges"):
 // the corners next to a sharp edge take Chaikin's rule along it, so an infinitely sharp
-// crease converges to the uniform quadratic B-spline of its polyline; pinned vertices
-// (corner vertices, SubDDualSplit.h: sharp vertices, three or more sharp edges) are
-// interpolated. Semi-sharp edges are creases while their sharpness is positive and lose one
-// unit per level (no fractional blend: the dual scheme has no edge point to blend).
+// crease converges to the uniform quadratic B-spline of its polyline, where it turns around a
+// single face too (that face's corner gives a point on each crease edge, SubDDualSplit.h);
+// pinned vertices (corner vertices, SubDDualSplit.h: sharp vertices, three or more sharp
+// edges) are interpolated. Semi-sharp edges are creases while their sharpness is positive
+// and lose one unit per level (no fractional blend: the dual scheme has no edge point to
+// blend).
 // Rows are numbered like the child points (SubDDualSplit.h) and read parent points only.
 #ifndef SubDDooSabinRules_h
 #define SubDDooSabinRules_h

@@ -106,13 +106,12 @@ bool BuildDooSabinLimitStencils(const Level& level, bool tangents, StencilTable&
     {
       return Fail(level, v, "Doo-Sabin", tangents, error);
     }
-    // A crease vertex: its two child points on the crease, next to its two crease edges.
+    // A crease vertex: its two child points on the crease, on its two crease edges.
     for (Index e : topo.GetVertexEdges(v))
     {
       if (ActsAsBoundary(level, e))
       {
-        const Index f = topo.GetEdgeFaces(e)[0];
-        rows.AddRow(children, childOfCorner(f, topo.FindCorner(v, f)), 0.5);
+        rows.AddRow(children, DualPointOnEdge(topo, points, topo.GetEdgeFaces(e)[0], v, e), 0.5);
       }
     }
     rows.EndRow();

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 #include <numeric>
+#include <stdexcept>
 
 namespace subd
 {
@@ -66,23 +67,60 @@ bool IsCornerVertexWith(const Level& level, Index v, EdgeTest&& actsAsBoundary)
     const auto edges = CornerEdges(topo, faces[i], corners[i]);
     if (actsAsBoundary(edges.first) && actsAsBoundary(edges.second))
     {
-      return true;
+      // A face inside the crease's turn. At an interior manifold vertex both edges have a
+      // face across, whose points on them the face's two points are welded to (TurnCorners).
+      const VertexTag tag = topo.GetVertexTag(v);
+      return tag.Boundary || tag.NonManifold;
     }
   }
   return false;
 }
 
-// The welded numbering (creases or corner vertices): union-find over the corners, each
-// point represented by its first corner.
-void NumberWeldedPoints(const Level& level, DualPoints& points)
+// DualPoints::TurnCorners: the corners, at vertices that are not corner vertices, whose two
+// edges both act as boundaries (in order: ascending).
+IndexArray FindTurnCorners(const MeshTopology& topo, const DualPoints& points)
+{
+  const std::vector<std::uint8_t>& acts = points.EdgeActsAsBoundary;
+  IndexArray turnCorners;
+  for (Index f = 0; f < topo.GetNumFaces(); ++f)
+  {
+    const IndexSpan fv = topo.GetFaceVertices(f);
+    const IndexSpan fe = topo.GetFaceEdges(f);
+    const Index n = fv.size();
+    for (Index j = 0; j < n; ++j)
+    {
+      if (!points.IsCornerVertex[fv[j]] && acts[fe[j]] && acts[fe[(j + n - 1) % n]])
+      {
+        turnCorners.push_back(topo.GetFaceOffset(f) + j);
+      }
+    }
+  }
+  return turnCorners;
+}
+
+// The union-find slot of the point of face f's corner at v on f's edge e: the corner, or for
+// the incoming edge of a turn corner, its second point's slot (after all corners).
+Index SlotOnEdge(const MeshTopology& topo, const IndexArray& turnCorners, Index f, Index v, Index e)
+{
+  const Index j = topo.FindCorner(v, f);
+  const Index corner = topo.GetFaceOffset(f) + j;
+  if (turnCorners.empty() || topo.GetFaceEdges(f)[j] == e)
+  {
+    return corner;
+  }
+  const auto at = std::lower_bound(turnCorners.begin(), turnCorners.end(), corner);
+  return at != turnCorners.end() && *at == corner
+    ? topo.GetNumFaceCorners() + static_cast<Index>(at - turnCorners.begin())
+    : corner;
+}
+
+// Unites the slots (corners, then the turn corners' second points) that are one point:
+// across each sharp interior edge the two faces' points on it at each end, and at a corner
+// vertex every corner next to a crease edge (the vertex itself).
+void UniteWeldedSlots(const Level& level, const DualPoints& points, std::vector<Index>& parent)
 {
   const MeshTopology& topo = level.Topology;
-  const Index numCorners = topo.GetNumFaceCorners();
   const std::vector<std::uint8_t>& acts = points.EdgeActsAsBoundary;
-  std::vector<Index> parent(static_cast<size_t>(numCorners));
-  std::iota(parent.begin(), parent.end(), 0);
-  auto corner = [&topo](Index f, Index v) { return topo.GetFaceOffset(f) + topo.FindCorner(v, f); };
-  // Across each sharp interior edge, the two faces' corners at each end are one point.
   for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
     const IndexSpan ef = topo.GetEdgeFaces(e);
@@ -93,10 +131,10 @@ void NumberWeldedPoints(const Level& level, DualPoints& points)
     for (int k = 0; k < 2; ++k)
     {
       const Index v = topo.GetEdgeVertices(e)[k];
-      Unite(parent, corner(ef[0], v), corner(ef[1], v));
+      Unite(parent, SlotOnEdge(topo, points.TurnCorners, ef[0], v, e),
+        SlotOnEdge(topo, points.TurnCorners, ef[1], v, e));
     }
   }
-  // At a corner vertex every corner next to a crease edge is the vertex itself.
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
     if (!points.IsCornerVertex[v])
@@ -117,6 +155,20 @@ void NumberWeldedPoints(const Level& level, DualPoints& points)
       }
     }
   }
+}
+
+// The welded numbering (creases or corner vertices): union-find over the slots, each point
+// represented by its first slot, always a corner (a turn corner's second point is welded to
+// the point across its incoming edge, a corner's or another turn corner's first point).
+void NumberWeldedPoints(const Level& level, DualPoints& points)
+{
+  const MeshTopology& topo = level.Topology;
+  const Index numCorners = topo.GetNumFaceCorners();
+  points.TurnCorners = FindTurnCorners(topo, points);
+  const Index numTurns = static_cast<Index>(points.TurnCorners.size());
+  std::vector<Index> parent(static_cast<size_t>(numCorners + numTurns));
+  std::iota(parent.begin(), parent.end(), 0);
+  UniteWeldedSlots(level, points, parent);
   points.PointOfCorner.resize(static_cast<size_t>(numCorners));
   points.CornerOfPoint.clear();
   for (Index c = 0; c < numCorners; ++c)
@@ -132,8 +184,18 @@ void NumberWeldedPoints(const Level& level, DualPoints& points)
       points.PointOfCorner[c] = points.PointOfCorner[root]; // root < c: numbered already
     }
   }
+  points.PointBeforeTurnCorner.resize(static_cast<size_t>(numTurns));
+  for (Index k = 0; k < numTurns; ++k)
+  {
+    const Index root = Find(parent, numCorners + k);
+    if (root >= numCorners)
+    {
+      throw std::logic_error("NumberDualPoints: a crease turn's point is welded to no corner");
+    }
+    points.PointBeforeTurnCorner[k] = points.PointOfCorner[root];
+  }
   points.NumPoints = static_cast<Index>(points.CornerOfPoint.size());
-  points.Unwelded = points.CornerOfPoint.size() == points.PointOfCorner.size();
+  points.Unwelded = points.CornerOfPoint.size() == points.PointOfCorner.size() && numTurns == 0;
   if (points.Unwelded)
   {
     IndexArray().swap(points.PointOfCorner);
@@ -145,6 +207,13 @@ void NumberWeldedPoints(const Level& level, DualPoints& points)
 bool IsDualCornerVertex(const Level& level, Index v)
 {
   return IsCornerVertexWith(level, v, [&level](Index e) { return ActsAsBoundary(level, e); });
+}
+
+Index DualPointOnEdge(const MeshTopology& topo, const DualPoints& points, Index f, Index v, Index e)
+{
+  const Index j = topo.FindCorner(v, f);
+  const Index corner = topo.GetFaceOffset(f) + j;
+  return topo.GetFaceEdges(f)[j] == e ? points.PointOf(corner) : points.PointBefore(corner);
 }
 
 DualPoints NumberDualPoints(const Level& level, const ParallelFor& parallelFor)
@@ -231,12 +300,18 @@ private:
     return this->Points.PointOf(this->Topo.GetFaceOffset(f) + corner);
   }
 
-  // F-face: the corner points of face f.
+  // F-face: the corner points of face f, both points of a turn corner in order (the one on
+  // the edge entering the corner first).
   void WriteFaceFace(Index f, FaceBlock& out) const
   {
     const size_t first = out.BeginFace();
     for (Index j = 0; j < this->Topo.GetFaceSize(f); ++j)
     {
+      const Index before = this->Points.PointBefore(this->Topo.GetFaceOffset(f) + j);
+      if (before != this->CornerPoint(f, j))
+      {
+        out.Vertices.push_back(before);
+      }
       out.Vertices.push_back(this->CornerPoint(f, j));
     }
     out.EndFaceWithoutRepeats(first, this->Parent.FaceOrigin[f], this->Parent.FaceIsHole[f]);
@@ -325,21 +400,23 @@ private:
 };
 
 // The sharpness the child inherits: the child edge between the two welded points of a sharp
-// edge, and, at a vertex on a crease, between the points of its two crease edges.
+// edge, and, at a vertex on a crease (a turn included), between the points of its two crease
+// edges.
 void InheritDualSharpness(const Level& parent, const DualPoints& points, Level& child)
 {
   const MeshTopology& topo = parent.Topology;
   const MeshTopology& childTopo = child.Topology;
   auto pointAt = [&](Index f, Index v) { return points.PointOf(topo.GetFaceOffset(f) + topo.FindCorner(v, f)); };
+  // The point at v on crease edge e.
+  auto pointOn = [&](Index e, Index v) { return DualPointOnEdge(topo, points, topo.GetEdgeFaces(e)[0], v, e); };
   for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
     if (!IsSharp(parent.EdgeSharpness[e]) || topo.GetEdgeFaces(e).empty())
     {
       continue;
     }
-    const Index f = topo.GetEdgeFaces(e)[0];
     const Index* ev = topo.GetEdgeVertices(e);
-    const Index segment = childTopo.FindEdge(pointAt(f, ev[0]), pointAt(f, ev[1]));
+    const Index segment = childTopo.FindEdge(pointOn(e, ev[0]), pointOn(e, ev[1]));
     if (segment != InvalidIndex)
     {
       child.EdgeSharpness[segment] = DecaySharpness(parent.EdgeSharpness[e]);
@@ -363,7 +440,7 @@ void InheritDualSharpness(const Level& parent, const DualPoints& points, Level& 
     {
       if (IsSharp(parent.EdgeSharpness[e]) && found < 2 && !topo.GetEdgeFaces(e).empty())
       {
-        ends[found++] = pointAt(topo.GetEdgeFaces(e)[0], v);
+        ends[found++] = pointOn(e, v);
         sharpness = std::min(sharpness, DecaySharpness(parent.EdgeSharpness[e]));
       }
     }
