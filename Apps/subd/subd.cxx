@@ -68,6 +68,103 @@ void PrintMessages(const std::string& lines, const char* kind)
 {
   subdapp::PrintMessageLines("subd: ", lines, kind);
 }
+
+// The input mesh, or the built-in cage; null (the reason printed) if it cannot be read.
+vtkSmartPointer<vtkPolyData> ReadInput(const subdapp::CommandLine& cmd, std::string& inputName)
+{
+  if (cmd.Input.empty())
+  {
+    inputName = "built-in " + cmd.Builtin;
+    return subdapp::MakeBuiltinCage(cmd.Builtin);
+  }
+  inputName = cmd.Input;
+  std::string error;
+  vtkSmartPointer<vtkPolyData> input = subdapp::ReadMesh(cmd.Input, error);
+  if (!input)
+  {
+    std::cerr << "subd: " << error << "\n";
+  }
+  return input;
+}
+
+// 0 if `output` may be written, else the exit code (the reason printed).
+int CheckOutput(const subdapp::CommandLine& cmd, const std::string& output)
+{
+  if (!cmd.Input.empty() && SameFile(cmd.Input, output))
+  {
+    std::cerr << "subd: refusing to overwrite the input file '" << cmd.Input << "'\n";
+    return 1;
+  }
+  if (subdapp::WritesMesh(cmd) && (subdapp::LowerExtension(output).empty() ||
+    std::string(subdapp::SupportedExtensions()).find(subdapp::LowerExtension(output)) == std::string::npos))
+  {
+    std::cerr << "subd: cannot write '" << output << "': unknown output type (supported: "
+              << subdapp::SupportedExtensions() << ")\n";
+    return 2;
+  }
+  return 0;
+}
+
+// Runs `filter` on `cage` with a progress bar; its output, or null (the messages printed).
+vtkPolyData* Subdivide(vtkPolyDataAlgorithm* filter, vtkPolyData* cage)
+{
+  subdapp::MessageCollector messages;
+  messages.Watch(filter);
+  ProgressBar progress;
+  vtkNew<vtkCallbackCommand> progressCallback;
+  progressCallback->SetClientData(&progress);
+  progressCallback->SetCallback(&ProgressBar::OnProgress);
+  filter->AddObserver(vtkCommand::ProgressEvent, progressCallback);
+  filter->SetInputData(cage);
+  filter->Update();
+  progress.Finish();
+  PrintMessages(messages.Warnings, "warning");
+  vtkPolyData* result = filter->GetOutput();
+  if (!messages.Errors.empty() || filter->GetErrorCode() != 0 || result->GetNumberOfCells() == 0)
+  {
+    PrintMessages(messages.Errors.empty() ? "subdivision produced no output\n" : messages.Errors, "error");
+    return nullptr;
+  }
+  return result;
+}
+
+// The one-line summary: input, interpolation, scheme and levels, output, time, files.
+void PrintSummary(const subdapp::CommandLine& cmd, const subdapp::SchemeEntry& scheme, const std::string& inputName,
+  vtkPolyData* input, const subdapp::InterpolationResult& interpolation, vtkPolyData* result, double seconds,
+  const std::string& output)
+{
+  std::cout << "subd: " << inputName << " (" << input->GetNumberOfPoints() << " points, "
+            << (scheme.Curve ? input->GetNumberOfLines() : input->GetNumberOfPolys() + input->GetNumberOfStrips())
+            << (scheme.Curve ? " curves) -> " : " faces) -> ");
+  if (cmd.Interpolate)
+  {
+    std::cout << "interpolating " << (scheme.Curve ? "polygons" : "cage") << " through " << interpolation.NumTagged
+              << " points (residual " << interpolation.Residual << ") -> ";
+  }
+  std::cout << cmd.Scheme << ", " << cmd.Options.Levels << " level(s) -> " << result->GetNumberOfPoints() << " points, ";
+  if (scheme.Curve)
+  {
+    std::cout << result->GetNumberOfLines() << " curves";
+  }
+  else
+  {
+    std::cout << result->GetNumberOfPolys() << " faces";
+    if (result->GetNumberOfLines() > 0)
+    {
+      std::cout << ", " << result->GetNumberOfLines() << " crease edges";
+    }
+  }
+  std::cout << " in " << seconds << " s";
+  if (subdapp::WritesMesh(cmd))
+  {
+    std::cout << " -> " << output;
+  }
+  if (!cmd.Image.empty())
+  {
+    std::cout << " -> image " << cmd.Image;
+  }
+  std::cout << "\n";
+}
 }
 
 int main(int argc, char* argv[])
@@ -93,37 +190,17 @@ int main(int argc, char* argv[])
     return 0;
   }
 
-  vtkSmartPointer<vtkPolyData> input;
   std::string inputName;
-  if (cmd.Input.empty())
+  vtkSmartPointer<vtkPolyData> input = ReadInput(cmd, inputName);
+  if (!input)
   {
-    input = subdapp::MakeBuiltinCage(cmd.Builtin);
-    inputName = "built-in " + cmd.Builtin;
-  }
-  else
-  {
-    input = subdapp::ReadMesh(cmd.Input, error);
-    inputName = cmd.Input;
-    if (!input)
-    {
-      std::cerr << "subd: " << error << "\n";
-      return 1;
-    }
-  }
-  const std::string output = cmd.Output.empty() ? subdapp::DefaultOutputPath(cmd) : cmd.Output;
-  if (!cmd.Input.empty() && SameFile(cmd.Input, output))
-  {
-    std::cerr << "subd: refusing to overwrite the input file '" << cmd.Input << "'\n";
     return 1;
   }
-  if (subdapp::WritesMesh(cmd) && (subdapp::LowerExtension(output).empty() ||
-    std::string(subdapp::SupportedExtensions()).find(subdapp::LowerExtension(output)) == std::string::npos))
+  const std::string output = cmd.Output.empty() ? subdapp::DefaultOutputPath(cmd) : cmd.Output;
+  if (const int code = CheckOutput(cmd, output))
   {
-    std::cerr << "subd: cannot write '" << output << "': unknown output type (supported: "
-              << subdapp::SupportedExtensions() << ")\n";
-    return 2;
+    return code;
   }
-
   const subdapp::SchemeEntry* scheme = subdapp::FindScheme(cmd.Scheme);
   const Clock::time_point start = Clock::now();
   vtkSmartPointer<vtkPolyData> cage = input;
@@ -141,22 +218,10 @@ int main(int argc, char* argv[])
     cage = interpolation.Cage;
   }
   vtkSmartPointer<vtkPolyDataAlgorithm> filter = scheme->Make(cmd.Options);
-  subdapp::MessageCollector messages;
-  messages.Watch(filter);
-  ProgressBar progress;
-  vtkNew<vtkCallbackCommand> progressCallback;
-  progressCallback->SetClientData(&progress);
-  progressCallback->SetCallback(&ProgressBar::OnProgress);
-  filter->AddObserver(vtkCommand::ProgressEvent, progressCallback);
-  filter->SetInputData(cage);
-  filter->Update();
+  vtkPolyData* result = Subdivide(filter, cage);
   const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
-  progress.Finish();
-  PrintMessages(messages.Warnings, "warning");
-  vtkPolyData* result = filter->GetOutput();
-  if (!messages.Errors.empty() || filter->GetErrorCode() != 0 || result->GetNumberOfCells() == 0)
+  if (!result)
   {
-    PrintMessages(messages.Errors.empty() ? "subdivision produced no output\n" : messages.Errors, "error");
     return 1;
   }
   if (subdapp::WritesMesh(cmd) && !subdapp::WriteMesh(result, output, error, cmd.Compress))
@@ -177,40 +242,7 @@ int main(int argc, char* argv[])
   }
   if (!cmd.Quiet)
   {
-    std::cout << "subd: " << inputName << " (" << input->GetNumberOfPoints() << " points, "
-              << (scheme->Curve ? input->GetNumberOfLines() : input->GetNumberOfPolys() + input->GetNumberOfStrips())
-              << (scheme->Curve ? " curves) -> " : " faces) -> ");
-    if (cmd.Interpolate)
-    {
-      std::cout << "interpolating " << (scheme->Curve ? "polygons" : "cage") << " through " << interpolation.NumTagged
-                << " points (residual " << interpolation.Residual << ") -> ";
-    }
-    if (scheme->Curve)
-    {
-      std::cout << cmd.Scheme << ", " << cmd.Options.Levels
-                << " level(s) -> " << result->GetNumberOfPoints() << " points, " << result->GetNumberOfLines()
-                << " curves";
-    }
-    else
-    {
-      std::cout << cmd.Scheme << ", "
-                << cmd.Options.Levels << " level(s) -> " << result->GetNumberOfPoints() << " points, "
-                << result->GetNumberOfPolys() << " faces";
-      if (result->GetNumberOfLines() > 0)
-      {
-        std::cout << ", " << result->GetNumberOfLines() << " crease edges";
-      }
-    }
-    std::cout << " in " << seconds << " s";
-    if (subdapp::WritesMesh(cmd))
-    {
-      std::cout << " -> " << output;
-    }
-    if (!cmd.Image.empty())
-    {
-      std::cout << " -> image " << cmd.Image;
-    }
-    std::cout << "\n";
+    PrintSummary(cmd, *scheme, inputName, input, interpolation, result, seconds, output);
   }
   return 0;
 }

@@ -67,17 +67,6 @@ vtkSmartPointer<vtkTypeInt32Array> vtkSubDAdoptVector(subd::IndexArray&& values)
   return array;
 }
 
-vtkSmartPointer<vtkDoubleArray> vtkSubDNewDoubleArray(int components, vtkIdType tuples)
-{
-  auto array = vtkSmartPointer<vtkDoubleArray>::New();
-  array->SetNumberOfComponents(components);
-  if (tuples > 0 && components > 0)
-  {
-    Adopt(array.Get(), subd::LevelArray<double>(static_cast<size_t>(tuples) * static_cast<size_t>(components)));
-  }
-  return array;
-}
-
 std::size_t vtkSubDNumberOfAdoptedVectors()
 {
   AdoptedVectors& registry = Registry();

@@ -172,6 +172,55 @@ bool ReadGrid(vtkPointSet* input, subd::QuadGrid& grid, std::string& error)
   }
   return true;
 }
+
+// Refuses, before anything large exists, a net and surface that would need more than half
+// the physical memory: the fit's banded normal matrix (49 doubles per control point), the
+// net and the evaluated surface. Returns the reason, or nothing.
+std::string SizeGuard(subd::Index D, subd::Index E, size_t K, int samplesPerSpan)
+{
+  const double numSamples =
+    (static_cast<double>(D - 3) * samplesPerSpan + 1) * (static_cast<double>(E - 3) * samplesPerSpan + 1);
+  const double bytes = 8.0 * (static_cast<double>(D) * E * (49.0 + K) + numSamples * (K + 3.0));
+  if (bytes <= vtkSubDDefaultMemoryBudget() * 1024.0 * 1024.0)
+  {
+    return std::string();
+  }
+  return "refusing: about " + std::to_string(static_cast<long long>(numSamples)) + " surface samples and a net of " +
+    std::to_string(static_cast<long long>(D) * E) + " points need " +
+    std::to_string(static_cast<long long>(bytes / (1024.0 * 1024.0))) +
+    " MiB, above half the physical memory; lower SamplesPerSpan or NumberOfControlPoints";
+}
+
+// The surface of the D x E net `control`, samplesPerSpan samples per knot span, with unit
+// normals from the exact derivatives.
+void EvaluateSurface(const std::vector<double>& control, subd::Index D, subd::Index E, const CarriedArrays& carried,
+  int samplesPerSpan, vtkPolyData* surface)
+{
+  const size_t K = static_cast<size_t>(carried.Components);
+  const vtkIdType Ns = static_cast<vtkIdType>(D - 3) * samplesPerSpan + 1;
+  const vtkIdType Nt = static_cast<vtkIdType>(E - 3) * samplesPerSpan + 1;
+  std::vector<double> samples(static_cast<size_t>(Ns * Nt) * K);
+  vtkNew<vtkDoubleArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(Ns * Nt);
+  std::vector<double> ds(K), dt(K);
+  for (vtkIdType b = 0; b < Nt; ++b)
+  {
+    for (vtkIdType a = 0; a < Ns; ++a)
+    {
+      const vtkIdType p = a + b * Ns;
+      subd::EvaluateBicubic(control, D, E, carried.Components, static_cast<double>(a) / samplesPerSpan,
+        static_cast<double>(b) / samplesPerSpan, &samples[p * K], ds.data(), dt.data());
+      double normal[3];
+      vtkMath::Cross(ds.data(), dt.data(), normal);
+      vtkMath::Normalize(normal);
+      normals->SetTypedTuple(p, normal);
+    }
+  }
+  carried.MakeLattice(Ns, Nt, samples, surface);
+  surface->GetPointData()->SetNormals(normals);
+}
 }
 
 vtkSubDBSplineSurfaceFilter::vtkSubDBSplineSurfaceFilter()
@@ -280,17 +329,10 @@ int vtkSubDBSplineSurfaceFilter::Execute(
   }
   const subd::Index D = this->Mode == MODE_INTERPOLATE_GRID ? grid.P + 2 : this->NumberOfControlPoints[0];
   const subd::Index E = this->Mode == MODE_INTERPOLATE_GRID ? grid.Q + 2 : this->NumberOfControlPoints[1];
-  // Size guard before anything large exists: the fit's banded normal matrix (49 doubles per
-  // control point), the net and the evaluated surface.
-  const double numSamples =
-    (static_cast<double>(D - 3) * this->SamplesPerSpan + 1) * (static_cast<double>(E - 3) * this->SamplesPerSpan + 1);
-  const double bytes = 8.0 * (static_cast<double>(D) * E * (49.0 + K) + numSamples * (K + 3.0));
-  if (bytes > vtkSubDDefaultMemoryBudget() * 1024.0 * 1024.0)
+  error = SizeGuard(D, E, K, this->SamplesPerSpan);
+  if (!error.empty())
   {
-    return fail("refusing: about " + std::to_string(static_cast<long long>(numSamples)) + " surface samples and a net of " +
-      std::to_string(static_cast<long long>(D) * E) + " points need " +
-      std::to_string(static_cast<long long>(bytes / (1024.0 * 1024.0))) +
-      " MiB, above half the physical memory; lower SamplesPerSpan or NumberOfControlPoints");
+    return fail(error);
   }
   std::vector<double> control;
   if (this->Mode == MODE_INTERPOLATE_GRID)
@@ -324,30 +366,7 @@ int vtkSubDBSplineSurfaceFilter::Execute(
 
   carried.MakeLattice(D, E, control, net);
 
-  // The evaluated surface, with unit normals from the exact derivatives.
-  const vtkIdType Ns = static_cast<vtkIdType>(D - 3) * this->SamplesPerSpan + 1;
-  const vtkIdType Nt = static_cast<vtkIdType>(E - 3) * this->SamplesPerSpan + 1;
-  std::vector<double> samples(static_cast<size_t>(Ns * Nt) * K);
-  vtkNew<vtkDoubleArray> normals;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(Ns * Nt);
-  std::vector<double> ds(K), dt(K);
-  for (vtkIdType b = 0; b < Nt; ++b)
-  {
-    for (vtkIdType a = 0; a < Ns; ++a)
-    {
-      const vtkIdType p = a + b * Ns;
-      subd::EvaluateBicubic(control, D, E, carried.Components, static_cast<double>(a) / this->SamplesPerSpan,
-        static_cast<double>(b) / this->SamplesPerSpan, &samples[p * K], ds.data(), dt.data());
-      double normal[3];
-      vtkMath::Cross(ds.data(), dt.data(), normal);
-      vtkMath::Normalize(normal);
-      normals->SetTypedTuple(p, normal);
-    }
-  }
-  carried.MakeLattice(Ns, Nt, samples, surface);
-  surface->GetPointData()->SetNormals(normals);
+  EvaluateSurface(control, D, E, carried, this->SamplesPerSpan, surface);
   return 1;
 }
 

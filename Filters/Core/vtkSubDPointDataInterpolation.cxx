@@ -1,5 +1,4 @@
 #include "vtkSubDPointDataInterpolation.h"
-#include "vtkSubDAdoptedArray.h"
 
 #include "vtkDoubleArray.h"
 #include "vtkSMPTools.h"
@@ -91,19 +90,9 @@ vtkSmartPointer<vtkDataArray> vtkSubDPointDataInterpolation::Interpolate(
     recycled->GetNumberOfComponents() == components && recycled->GetNumberOfTuples() == numOut;
   // Evaluate straight into a double output when nothing needs converting.
   const bool direct = outputType == VTK_DOUBLE && !this->Selection && !normalize;
-  vtkSmartPointer<vtkDataArray> out;
-  if (recycle)
-  {
-    out = recycled;
-  }
-  else if (direct)
-  {
-    out = vtkSubDNewDoubleArray(components, numOut); // the kernel's allocator: huge pages
-  }
-  else
-  {
-    out = vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(outputType));
-  }
+  vtkSmartPointer<vtkDataArray> out = recycle
+    ? vtkSmartPointer<vtkDataArray>(recycled)
+    : vtkSmartPointer<vtkDataArray>::Take(vtkDataArray::CreateDataArray(outputType));
   out->SetName(base->GetName());
   out->SetNumberOfComponents(components);
   for (int c = 0; c < components; ++c)

@@ -154,12 +154,16 @@ bool BuildVertexLimitRows(const Scheme& scheme, const Level& level, std::vector<
   return true;
 }
 
-bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<char>& tagged,
-  const std::vector<double>& targets, double tolerance, InterpolationSolver method, std::vector<double>& points,
-  InterpolationReport& report, std::string& error)
+namespace
 {
-  points.clear();
-  report = InterpolationReport();
+using RowMatrix = Eigen::SparseMatrix<double, Eigen::RowMajor>;
+using Solve = std::function<bool(const Eigen::MatrixXd&, const Eigen::MatrixXd*, Eigen::MatrixXd&)>;
+
+// The system: a tagged vertex's limit row equals its target, an untagged vertex stays.
+bool AssembleSystem(const std::vector<SparseRow>& rows, const std::vector<char>& tagged,
+  const std::vector<double>& targets, InterpolationReport& report, RowMatrix& matrix, Eigen::MatrixXd& rhs,
+  std::string& error)
+{
   const Index n = static_cast<Index>(tagged.size());
   std::vector<Eigen::Triplet<double>> entries;
   for (Index v = 0; v < n; ++v)
@@ -180,21 +184,65 @@ bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<ch
       entries.emplace_back(v, rows[v].Points[k], rows[v].Weights[k]);
     }
   }
-  Eigen::SparseMatrix<double, Eigen::RowMajor> matrix(n, n);
+  matrix.resize(n, n);
   matrix.setFromTriplets(entries.begin(), entries.end());
   matrix.makeCompressed();
   report.NumNonZeros = static_cast<size_t>(matrix.nonZeros());
-  Eigen::MatrixXd rhs(n, 3);
+  rhs.resize(n, 3);
   for (Index v = 0; v < n; ++v)
   {
     rhs.row(v) << targets[3 * v], targets[3 * v + 1], targets[3 * v + 2];
   }
+  return true;
+}
 
+// A lower bound of the condition number, from a solve with a pseudo-random right-hand side:
+// round-off hides an exactly singular matrix from the factorisation (a closed cube's
+// Catmull-Clark limit masks annihilate the alternating +1/-1 vertex pattern), and consistent
+// targets (the cube's own corners) even give a tiny residual, with an arbitrary multiple of
+// that pattern added; the random solve exposes the tiny pivot. Infinite where the solve fails
+// (`probed` false: the iterative solver does not converge).
+double EstimateCondition(const RowMatrix& matrix, const Solve& solve, bool& probed)
+{
+  const Index n = static_cast<Index>(matrix.rows());
+  Eigen::MatrixXd probe(n, 1);
+  std::uint64_t state = 0x9E3779B97F4A7C15ull;
+  for (Index v = 0; v < n; ++v)
+  {
+    state = state * 6364136223846793005ull + 1442695040888963407ull;
+    probe(v, 0) = static_cast<double>(state >> 11) * 0x1.0p-52 - 1.0; // in [-1, 1)
+  }
+  Eigen::MatrixXd response;
+  probed = solve(probe, nullptr, response);
+  double matrixNorm = 0.0;
+  for (Index v = 0; v < n; ++v)
+  {
+    matrixNorm = std::max(matrixNorm, matrix.row(v).cwiseAbs().sum());
+  }
+  return probed && response.allFinite()
+    ? matrixNorm * response.cwiseAbs().maxCoeff() / std::max(probe.cwiseAbs().maxCoeff(), 1e-300)
+    : HUGE_VAL;
+}
+}
+
+bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<char>& tagged,
+  const std::vector<double>& targets, double tolerance, InterpolationSolver method, std::vector<double>& points,
+  InterpolationReport& report, std::string& error)
+{
+  points.clear();
+  report = InterpolationReport();
+  const Index n = static_cast<Index>(tagged.size());
+  RowMatrix matrix;
+  Eigen::MatrixXd rhs;
+  if (!AssembleSystem(rows, tagged, targets, report, matrix, rhs, error))
+  {
+    return false;
+  }
   // solve(b, guess, x): false when the solver failed on b. The iterative solver starts from
   // `guess` when there is one (the targets: a cage is near its limit surface).
-  std::function<bool(const Eigen::MatrixXd&, const Eigen::MatrixXd*, Eigen::MatrixXd&)> solve;
+  Solve solve;
   Eigen::SparseLU<Eigen::SparseMatrix<double>, Eigen::COLAMDOrdering<int>> direct;
-  Eigen::BiCGSTAB<Eigen::SparseMatrix<double, Eigen::RowMajor>, Eigen::DiagonalPreconditioner<double>> iterative;
+  Eigen::BiCGSTAB<RowMatrix, Eigen::DiagonalPreconditioner<double>> iterative;
   report.Iterative = method == InterpolationSolver::Iterative ||
     (method == InterpolationSolver::Automatic && n > kDirectSolverLimit);
   if (!report.Iterative)
@@ -233,29 +281,8 @@ bool SolveInterpolation(const std::vector<SparseRow>& rows, const std::vector<ch
       return true;
     };
   }
-
-  // Condition estimate: round-off hides an exactly singular matrix from the factorisation
-  // (a closed cube's Catmull-Clark limit masks annihilate the alternating +1/-1 vertex
-  // pattern), and consistent targets (the cube's own corners) even give a tiny residual, with
-  // an arbitrary multiple of that pattern added. A solve with a pseudo-random right-hand side
-  // exposes the tiny pivot (or makes the iterative solver fail to converge).
-  Eigen::MatrixXd probe(n, 1);
-  std::uint64_t state = 0x9E3779B97F4A7C15ull;
-  for (Index v = 0; v < n; ++v)
-  {
-    state = state * 6364136223846793005ull + 1442695040888963407ull;
-    probe(v, 0) = static_cast<double>(state >> 11) * 0x1.0p-52 - 1.0; // in [-1, 1)
-  }
-  Eigen::MatrixXd response;
-  const bool probed = solve(probe, nullptr, response);
-  double matrixNorm = 0.0;
-  for (Index v = 0; v < n; ++v)
-  {
-    matrixNorm = std::max(matrixNorm, matrix.row(v).cwiseAbs().sum());
-  }
-  report.Condition = probed && response.allFinite()
-    ? matrixNorm * response.cwiseAbs().maxCoeff() / std::max(probe.cwiseAbs().maxCoeff(), 1e-300)
-    : HUGE_VAL;
+  bool probed = false;
+  report.Condition = EstimateCondition(matrix, solve, probed);
   if (!(report.Condition <= kMaximumInterpolationCondition))
   {
     char number[64];

@@ -59,26 +59,13 @@ Eigen::MatrixXd Projector(const Eigen::EigenSolver<Eigen::MatrixXd>& right,
   const ComplexMatrix gram = L.transpose() * R;
   return (R * gram.inverse() * L.transpose()).real();
 }
-}
 
-bool ComputeVertexLimit(const Scheme& scheme, const Level& level, Index face, Index corner, VertexLimit& out,
-  std::string& error)
+// The sector's faces as a level of their own: v (point 0), then the other corners of the
+// sector's faces (`points`, in the level's numbering). v keeps its rule there: a corner is
+// pinned by vertex sharpness (the sector may hold fewer of its sharp edges).
+Level SectorLevel(const Level& level, Index v, const std::vector<Index>& sector, std::vector<Index>& points)
 {
   const MeshTopology& topo = level.Topology;
-  const Index faceSize = topo.GetFaceSize(face);
-  const bool quads = faceSize == 4;
-  const Index v = topo.GetFaceVertices(face)[corner];
-  const std::vector<Index> sector = SectorFaces(level, face, corner);
-  if (sector.empty() || !IsStableCorner(level, face, corner, faceSize))
-  {
-    error = "vertex " + std::to_string(v) + " cannot be analysed (semi-sharp features not decayed)";
-    return false;
-  }
-
-  // The neighbourhood: v, then the other corners of the sector's faces, and the sector as a
-  // mesh of its own. v keeps its rule there: a corner is pinned by vertex sharpness (the
-  // sector may hold fewer of its sharp edges).
-  std::vector<Index>& points = out.Points;
   points.assign(1, v);
   std::vector<Index> offsets{ 0 }, vertices;
   for (Index g : sector)
@@ -118,49 +105,78 @@ bool ComputeVertexLimit(const Scheme& scheme, const Level& level, Index face, In
   }
   mini.FaceIsHole.assign(sector.size(), 0);
   mini.FaceOrigin.assign(sector.size(), 0);
+  return mini;
+}
 
-  // S: the child of each neighbourhood point in terms of the neighbourhood.
+// S, the subdivision matrix of the sector level: row p is the child of point p (v's vertex
+// point, a spoke's edge point, a diagonal corner's face point) in terms of the points. False
+// where a point has no child in the sector (not closed under refinement).
+bool SubdivisionMatrix(const Scheme& scheme, const Level& mini, bool quads, Eigen::MatrixXd& S)
+{
   const StencilTable stencils = scheme.BuildStencils(mini);
-  const Index numChildren = stencils.GetNumRows();
-  Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(n, n);
-  Eigen::MatrixXd children(n, numChildren); // column-major: column c = child c's weights
-  stencils.Apply(identity.data(), children.data(), static_cast<int>(n));
   const MeshTopology& mt = mini.Topology;
+  const Index n = mt.GetNumVertices();
+  Eigen::MatrixXd identity = Eigen::MatrixXd::Identity(n, n);
+  Eigen::MatrixXd children(n, stencils.GetNumRows()); // column-major: column c = child c's weights
+  stencils.Apply(identity.data(), children.data(), static_cast<int>(n));
   const Index numFaces = mt.GetNumFaces(), numEdges = mt.GetNumEdges();
+  const QuadSplitNumbering quadPoints{ numFaces, numEdges };
+  const TriangleSplitNumbering trianglePoints{ numEdges };
   auto childOf = [&](Index p) -> Index {
     if (p == 0)
     {
-      return quads ? QuadSplitNumbering{ numFaces, numEdges }.VertexPoint(0)
-                   : TriangleSplitNumbering{ numEdges }.VertexPoint(0);
+      return quads ? quadPoints.VertexPoint(0) : trianglePoints.VertexPoint(0);
     }
     const Index spoke = mt.FindEdge(0, p);
     if (spoke != InvalidIndex)
     {
-      return quads ? QuadSplitNumbering{ numFaces, numEdges }.EdgePoint(spoke)
-                   : TriangleSplitNumbering{ numEdges }.EdgePoint(spoke);
+      return quads ? quadPoints.EdgePoint(spoke) : trianglePoints.EdgePoint(spoke);
     }
     for (Index g = 0; g < numFaces; ++g) // a diagonal corner: its face's point
     {
       const IndexSpan gv = mt.GetFaceVertices(g);
       if (std::find(gv.begin(), gv.end(), p) != gv.end())
       {
-        return QuadSplitNumbering{ numFaces, numEdges }.FacePoint(g);
+        return quadPoints.FacePoint(g);
       }
     }
     return InvalidIndex;
   };
-  Eigen::MatrixXd S(n, n);
+  S.resize(n, n);
   for (Index p = 0; p < n; ++p)
   {
     const Index c = childOf(p);
     if (c == InvalidIndex)
     {
-      error = "vertex " + std::to_string(v) + ": its neighbourhood is not closed under refinement";
       return false;
     }
     S.row(p) = children.col(c).transpose();
   }
+  return true;
+}
+}
 
+bool ComputeVertexLimit(const Scheme& scheme, const Level& level, Index face, Index corner, VertexLimit& out,
+  std::string& error)
+{
+  const MeshTopology& topo = level.Topology;
+  const Index faceSize = topo.GetFaceSize(face);
+  const Index v = topo.GetFaceVertices(face)[corner];
+  const std::vector<Index> sector = SectorFaces(level, face, corner);
+  if (sector.empty() || !IsStableCorner(level, face, corner, faceSize))
+  {
+    error = "vertex " + std::to_string(v) + " cannot be analysed (semi-sharp features not decayed)";
+    return false;
+  }
+  std::vector<Index>& points = out.Points;
+  const Level mini = SectorLevel(level, v, sector, points);
+  const Index n = static_cast<Index>(points.size());
+  Eigen::MatrixXd S;
+  if (!SubdivisionMatrix(scheme, mini, faceSize == 4, S))
+  {
+    error = "vertex " + std::to_string(v) + ": its neighbourhood is not closed under refinement";
+    return false;
+  }
   const Eigen::EigenSolver<Eigen::MatrixXd> right(S), left(S.transpose());
   if (right.info() != Eigen::Success || left.info() != Eigen::Success)
   {

@@ -22,6 +22,7 @@
 #define SubDCatmullClarkRules_h
 
 #include "SubDLevel.h"
+#include "SubDPrimalRules.h"
 #include "SubDQuadSplit.h"
 #include "SubDRowWriting.h"
 #include "SubDStencilTable.h"

@@ -19,52 +19,12 @@ double DooSabinWeight(Index n, Index d)
 
 namespace
 {
-// The corners whose outgoing edge (corner j's edge runs to corner j + 1) acts as a boundary
-// (DualPoints::EdgeActsAsBoundary), a bit per corner: what the boundary rows read of the
-// faces' edges, kept instead of them (4 bytes per corner of the level), which the written
-// rows would otherwise keep for as long as their level. Empty on a smooth closed level.
-class CornersBeforeSharpEdges
+// Whether the edge leaving corner `corner` (corner j's edge runs to corner j + 1) acts as a
+// boundary (DualPoints::EdgeActsAsBoundary).
+bool ActsAsBoundaryAfter(const MeshTopology& topo, const DualPoints& points, Index corner)
 {
-public:
-  CornersBeforeSharpEdges(const MeshTopology& topo, const std::vector<std::uint8_t>& actsAsBoundary)
-  {
-    if (std::none_of(actsAsBoundary.begin(), actsAsBoundary.end(), [](std::uint8_t a) { return a != 0; }))
-    {
-      return;
-    }
-    this->Bits.assign((static_cast<size_t>(topo.GetNumFaceCorners()) + 63) / 64, 0);
-    for (Index f = 0; f < topo.GetNumFaces(); ++f)
-    {
-      const IndexSpan fe = topo.GetFaceEdges(f);
-      for (Index j = 0; j < fe.size(); ++j)
-      {
-        const size_t corner = static_cast<size_t>(topo.GetFaceOffset(f) + j);
-        this->Bits[corner / 64] |= static_cast<std::uint64_t>(actsAsBoundary[fe[j]] != 0) << (corner % 64);
-      }
-    }
-  }
-  bool Contains(Index corner) const
-  {
-    return !this->Bits.empty() && (this->Bits[static_cast<size_t>(corner) / 64] >> (corner % 64) & 1u) != 0;
-  }
-  /// Whether a corner in [first, end) is one.
-  bool AnyIn(Index first, Index end) const
-  {
-    if (this->Bits.empty())
-    {
-      return false;
-    }
-    bool any = false;
-    for (Index c = first; c < end; ++c)
-    {
-      any |= this->Contains(c);
-    }
-    return any;
-  }
-
-private:
-  std::vector<std::uint64_t> Bits;
-};
+  return points.EdgeActsAsBoundary[topo.GetFaceEdgeArray()[corner]] != 0;
+}
 
 // The boundary row of corner `j` of face f at vertex v, if one of the face's two edges at v
 // is a crease (or boundary) edge or v pins every corner: the vertex itself at a corner
@@ -72,8 +32,7 @@ private:
 // outgoing one if both are (a turn corner: the row of its first point, DualPoints::
 // TurnCorners; its second point's row is that of the corner across its incoming edge).
 // Returns the number of entries written (0: interior).
-Index BoundaryCornerRow(const Level& level, const DualPoints& points, const CornersBeforeSharpEdges& sharp, Index f,
-  Index j, Index* src, double* wts)
+Index BoundaryCornerRow(const Level& level, const DualPoints& points, Index f, Index j, Index* src, double* wts)
 {
   const MeshTopology& topo = level.Topology;
   const std::vector<std::uint8_t>& isCorner = points.IsCornerVertex;
@@ -81,8 +40,8 @@ Index BoundaryCornerRow(const Level& level, const DualPoints& points, const Corn
   const Index first = topo.GetFaceOffset(f);
   const Index n = fv.size();
   const Index v = fv[j];
-  const bool outgoing = sharp.Contains(first + j);
-  const bool incoming = sharp.Contains(first + (j + n - 1) % n);
+  const bool outgoing = ActsAsBoundaryAfter(topo, points, first + j);
+  const bool incoming = ActsAsBoundaryAfter(topo, points, first + (j + n - 1) % n);
   if (!outgoing && !incoming && !points.PinsEveryCorner[v])
   {
     return 0;
@@ -133,10 +92,10 @@ private:
 
 // Writes the row of corner i of face f: its boundary row, else the face's vertices with
 // alpha_n. Returns the row's size (at most the face's size, and 2 on a boundary).
-Index WriteCornerRow(const Level& parent, const DualPoints& points, const CornersBeforeSharpEdges& sharp,
-  const DooSabinWeightTable& weights, Index f, Index i, Index* src, double* wts)
+Index WriteCornerRow(const Level& parent, const DualPoints& points, const DooSabinWeightTable& weights, Index f,
+  Index i, Index* src, double* wts)
 {
-  const Index boundary = BoundaryCornerRow(parent, points, sharp, f, i, src, wts);
+  const Index boundary = BoundaryCornerRow(parent, points, f, i, src, wts);
   if (boundary > 0)
   {
     return boundary;
@@ -154,8 +113,8 @@ Index FaceOfCorner(const MeshTopology& topo, Index corner)
   return static_cast<Index>(std::upper_bound(offsets.begin(), offsets.end(), corner) - offsets.begin()) - 1;
 }
 
-// BuildDooSabinStencils' rows written as they are applied: from the parent's faces' corners,
-// the dual numbering and the corners before sharp edges only.
+// BuildDooSabinStencils' rows written as they are applied (WriteCornerRow, the one writer of
+// both), from the parent and its dual numbering.
 class DooSabinWrittenRows final : public RowSourceWithApply<DooSabinWrittenRows>
 {
   friend class RowSourceWithApply<DooSabinWrittenRows>;
@@ -164,9 +123,7 @@ public:
   DooSabinWrittenRows(std::shared_ptr<const Level> parent, const ParallelFor& parallelFor)
     : Parent(std::move(parent))
     , Points(NumberDualPoints(*this->Parent, parallelFor))
-    , Sharp(this->Parent->Topology, this->Points.EdgeActsAsBoundary)
   {
-    std::vector<std::uint8_t>().swap(this->Points.EdgeActsAsBoundary); // read through Sharp
     const MeshTopology& topo = this->Parent->Topology;
     for (Index f = 0; f < topo.GetNumFaces(); ++f)
     {
@@ -191,7 +148,7 @@ private:
     std::vector<double> wts(src.size()), sum(static_cast<size_t>(components));
     auto applyCorner = [&](Index f, Index corner, Index row) {
       const Index size =
-        WriteCornerRow(*this->Parent, this->Points, this->Sharp, this->Weights, f, corner - topo.GetFaceOffset(f),
+        WriteCornerRow(*this->Parent, this->Points, this->Weights, f, corner - topo.GetFaceOffset(f),
           src.data(), wts.data());
       ApplyRow(src.data(), wts.data(), size, numParents, parents, children, components, sum.data(),
         children + static_cast<size_t>(row) * components);
@@ -239,17 +196,19 @@ private:
   bool HasInteriorCorners(Index f) const
   {
     const MeshTopology& topo = this->Parent->Topology;
-    if (this->Sharp.AnyIn(topo.GetFaceOffset(f), topo.GetFaceOffset(f + 1)))
+    for (Index corner = topo.GetFaceOffset(f); corner < topo.GetFaceOffset(f + 1); ++corner)
     {
-      return false;
+      if (ActsAsBoundaryAfter(topo, this->Points, corner))
+      {
+        return false;
+      }
     }
     const IndexSpan fv = topo.GetFaceVertices(f);
     return std::none_of(fv.begin(), fv.end(), [this](Index v) { return this->Points.PinsEveryCorner[v] != 0; });
   }
 
   std::shared_ptr<const Level> Parent;
-  DualPoints Points; // without EdgeActsAsBoundary: Sharp has what the rows read of it
-  CornersBeforeSharpEdges Sharp;
+  DualPoints Points;
   DooSabinWeightTable Weights;
   Index MaxRowSize = 2; // a boundary row's size, at least
 };
@@ -261,7 +220,6 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
   const Index numFaces = topo.GetNumFaces();
   // Welded corners have equal rows; each point takes its first corner's.
   auto ownsRow = [&points](Index corner) { return points.CornerOf(points.PointOf(corner)) == corner; };
-  const CornersBeforeSharpEdges sharp(topo, points.EdgeActsAsBoundary);
   StencilTable table(topo.GetNumVertices());
   table.ReserveRows(points.NumPoints);
   parallelFor(0, numFaces, [&](Index begin, Index end) {
@@ -275,7 +233,7 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
         {
           Index scratchSource[2];
           double scratchWeight[2];
-          const Index boundary = BoundaryCornerRow(parent, points, sharp, f, j, scratchSource, scratchWeight);
+          const Index boundary = BoundaryCornerRow(parent, points, f, j, scratchSource, scratchWeight);
           table.SetRowSize(points.PointOf(corner), boundary > 0 ? boundary : n);
         }
       }
@@ -293,7 +251,7 @@ StencilTable BuildDooSabinStencils(const Level& parent, const DualPoints& points
         {
           const Index point = points.PointOf(corner);
           WriteCornerRow(
-            parent, points, sharp, weights, f, i, table.GetMutableSources(point), table.GetMutableWeights(point));
+            parent, points, weights, f, i, table.GetMutableSources(point), table.GetMutableWeights(point));
         }
       }
     }

@@ -21,6 +21,7 @@
 #define SubDLoopRules_h
 
 #include "SubDLevel.h"
+#include "SubDPrimalRules.h"
 #include "SubDRowWriting.h"
 #include "SubDStencilTable.h"
 #include "SubDTriangleSplit.h"

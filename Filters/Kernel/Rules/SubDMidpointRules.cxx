@@ -1,4 +1,5 @@
 #include "SubDMidpointRules.h"
+#include "SubDRowWriting.h"
 
 #include <algorithm>
 #include <limits>
@@ -30,39 +31,6 @@ bool MidpointKeepsVertex(const Level& level, Index v)
 
 namespace
 {
-void WriteStencils(const MeshTopology& topo, const std::vector<Index>& keptPoint, Index numChildPoints,
-  StencilTable& table)
-{
-  const Index numEdges = topo.GetNumEdges();
-  table = StencilTable(topo.GetNumVertices());
-  table.ReserveRows(numChildPoints);
-  for (Index e = 0; e < numEdges; ++e)
-  {
-    table.SetRowSize(e, 2);
-  }
-  for (Index r = numEdges; r < numChildPoints; ++r)
-  {
-    table.SetRowSize(r, 1);
-  }
-  table.FinalizeSizes();
-  for (Index e = 0; e < numEdges; ++e)
-  {
-    const Index* ev = topo.GetEdgeVertices(e);
-    table.GetMutableSources(e)[0] = ev[0];
-    table.GetMutableSources(e)[1] = ev[1];
-    table.GetMutableWeights(e)[0] = table.GetMutableWeights(e)[1] = 0.5;
-  }
-  for (Index v = 0; v < topo.GetNumVertices(); ++v)
-  {
-    if (keptPoint[v] != InvalidIndex)
-    {
-      *table.GetMutableSources(keptPoint[v]) = v;
-      *table.GetMutableWeights(keptPoint[v]) = 1.0;
-    }
-  }
-  table.EndBlock(numChildPoints);
-}
-
 // The halves of each sharp edge next to a kept end, and the kept vertices, inherit their
 // sharpness one level down.
 void InheritMidpointSharpness(const Level& parent, const std::vector<Index>& keptPoint, Level& child)
@@ -193,12 +161,12 @@ void AddVertexFaces(const Level& parent, const std::vector<Index>& keptPoint, st
 namespace
 {
 // The child point of each vertex the split keeps (else InvalidIndex), numbered after the
-// midpoints in vertex order; `numChildPoints` counts them all.
-std::vector<Index> NumberKeptPoints(const Level& parent, Index& numChildPoints)
+// midpoints in vertex order.
+std::vector<Index> NumberKeptPoints(const Level& parent)
 {
   const MeshTopology& topo = parent.Topology;
   std::vector<Index> keptPoint(static_cast<size_t>(topo.GetNumVertices()), InvalidIndex);
-  numChildPoints = topo.GetNumEdges();
+  Index numChildPoints = topo.GetNumEdges();
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
     if (MidpointKeepsVertex(parent, v))
@@ -209,18 +177,14 @@ std::vector<Index> NumberKeptPoints(const Level& parent, Index& numChildPoints)
   return keptPoint;
 }
 
-// WriteStencils' rows written as they are applied, from the parent's edges' ends and the
-// kept vertices only.
-class MidpointWrittenRows final : public RowSourceWithApply<MidpointWrittenRows>
+// The rows, one at a time (SubDRowWriting.h): the edges' midpoints, then the kept vertices'
+// copies.
+class MidpointRowWriter
 {
-  friend class RowSourceWithApply<MidpointWrittenRows>;
-
 public:
-  explicit MidpointWrittenRows(std::shared_ptr<const Level> parent)
-    : Parent(std::move(parent))
+  MidpointRowWriter(const Level& parent, const std::vector<Index>& keptPoint)
+    : Topology(parent.Topology)
   {
-    Index numChildPoints = 0;
-    const std::vector<Index> keptPoint = NumberKeptPoints(*this->Parent, numChildPoints);
     for (Index v = 0; v < static_cast<Index>(keptPoint.size()); ++v)
     {
       if (keptPoint[v] != InvalidIndex)
@@ -229,38 +193,37 @@ public:
       }
     }
   }
-  Index GetNumParents() const override { return this->Parent->Topology.GetNumVertices(); }
-  Index GetNumRows() const override
+  explicit MidpointRowWriter(const Level& parent)
+    : MidpointRowWriter(parent, NumberKeptPoints(parent))
   {
-    return this->Parent->Topology.GetNumEdges() + static_cast<Index>(this->KeptVertices.size());
   }
-  std::vector<Index> GetBlockEnds() const override { return { this->GetNumRows() }; }
+  Index GetNumParents() const { return this->Topology.GetNumVertices(); }
+  Index GetNumRows() const { return this->Topology.GetNumEdges() + static_cast<Index>(this->KeptVertices.size()); }
+  std::vector<Index> GetBlockEnds() const { return { this->GetNumRows() }; }
+  Index GetMaxRowSize() const { return 2; }
+  Index WriteRow(Index row, Index* sources, double* weights) const
+  {
+    RowEntries entries{ sources, weights, this->GetNumParents() };
+    this->VisitSmoothRow(row, entries);
+    return entries.Size;
+  }
+  template <typename Entries>
+  bool VisitSmoothRow(Index row, Entries& entries) const
+  {
+    const Index numEdges = this->Topology.GetNumEdges();
+    if (row < numEdges)
+    {
+      MidpointMask(this->Topology.GetEdgeVertices(row), entries);
+    }
+    else
+    {
+      CopyMask(this->KeptVertices[row - numEdges], entries);
+    }
+    return true;
+  }
 
 private:
-  template <typename T>
-  void Apply(const T* parents, T* children, int components, Index begin, Index end) const
-  {
-    const MeshTopology& topo = this->Parent->Topology;
-    const Index numEdges = topo.GetNumEdges();
-    std::vector<double> sum(static_cast<size_t>(components));
-    const double halves[2] = { 0.5, 0.5 }, one = 1.0;
-    for (Index row = begin; row < end; ++row)
-    {
-      T* dst = children + static_cast<size_t>(row) * components;
-      if (row < numEdges)
-      {
-        ApplyRow(topo.GetEdgeVertices(row), halves, 2, topo.GetNumVertices(), parents, children, components,
-          sum.data(), dst);
-      }
-      else
-      {
-        ApplyRow(&this->KeptVertices[row - numEdges], &one, 1, topo.GetNumVertices(), parents, children,
-          components, sum.data(), dst);
-      }
-    }
-  }
-
-  std::shared_ptr<const Level> Parent;
+  const MeshTopology& Topology;
   std::vector<Index> KeptVertices; // the vertex of each kept point
 };
 
@@ -314,23 +277,24 @@ Level SplitWithKeptPoints(const Level& parent, const std::vector<Index>& keptPoi
 
 LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
-  Index numChildPoints = 0;
-  const std::vector<Index> keptPoint = NumberKeptPoints(parent, numChildPoints);
+  const std::vector<Index> keptPoint = NumberKeptPoints(parent);
+  const MidpointRowWriter writer(parent, keptPoint);
   LevelRefinement result;
-  WriteStencils(parent.Topology, keptPoint, numChildPoints, result.Stencils);
-  result.Child = SplitWithKeptPoints(parent, keptPoint, numChildPoints, depth, parallelFor);
+  result.Stencils = WriteStencilTable(writer, 2 * static_cast<size_t>(writer.GetNumRows()));
+  result.Child = SplitWithKeptPoints(parent, keptPoint, writer.GetNumRows(), depth, parallelFor);
   return result;
 }
 
 Level SplitMidpoint(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
-  Index numChildPoints = 0;
-  const std::vector<Index> keptPoint = NumberKeptPoints(parent, numChildPoints);
-  return SplitWithKeptPoints(parent, keptPoint, numChildPoints, depth, parallelFor);
+  const std::vector<Index> keptPoint = NumberKeptPoints(parent);
+  const Index numKept = static_cast<Index>(
+    std::count_if(keptPoint.begin(), keptPoint.end(), [](Index point) { return point != InvalidIndex; }));
+  return SplitWithKeptPoints(parent, keptPoint, parent.Topology.GetNumEdges() + numKept, depth, parallelFor);
 }
 
 std::shared_ptr<const RowSource> MakeMidpointRowSource(std::shared_ptr<const Level> parent)
 {
-  return std::make_shared<MidpointWrittenRows>(std::move(parent));
+  return std::make_shared<WrittenRows<MidpointRowWriter>>(std::move(parent));
 }
 }

@@ -24,122 +24,151 @@ bool DualChildTopology::Applies(const Level& parent, const DualPoints& points)
   return !parent.HasSharpFeatures();
 }
 
-MeshTopology DualChildTopology::OfDualSplit(
-  const MeshTopology& parent, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
+// What every part of the child is written from: the parent, the child's faces, and each
+// parent corner's face; child edge c (c < corners) is the F-face edge from corner c to the
+// next, the edges across parent edge e follow (see the header).
+struct DualChildTopology::Split
 {
-  const Index numCorners = parent.GetNumFaceCorners(); // child points, and F-face edges
-  const Index numFaces = parent.GetNumFaces();
-  const Index numEdges = parent.GetNumEdges();
-  const Index numVertices = parent.GetNumVertices();
-  const Index firstEFace = numFaces, firstVFace = numFaces + numEdges;
-  const IndexArray& parentOffsets = parent.GetFaceOffsetArray();
-  const IndexArray& parentVertices = parent.GetFaceVertexArray();
-  const IndexArray& parentEdges = parent.GetFaceEdgeArray();
+  const MeshTopology& Parent;
+  const IndexArray& ChildOffsets;
+  const IndexArray& ChildVertices;
+  const ParallelFor& Parallel;
+  Index NumCorners, NumFaces, NumEdges, NumVertices;
+  Index FirstEFace, FirstVFace;
+  IndexArray FaceOfCorner;
 
-  MeshTopology child = MeshTopology::BuildFacesOnly(numCorners, std::move(offsets), std::move(vertices));
-  const IndexArray& childOffsets = child.FaceOffsets;
-  const IndexArray& childVertices = child.FaceVertices;
-  // The parent face of each corner, and the corner before it in that face.
-  IndexArray faceOfCorner(static_cast<size_t>(numCorners));
-  parallelFor(0, numFaces, [&](Index begin, Index end) {
-    for (Index f = begin; f < end; ++f)
+  Split(const MeshTopology& parent, const MeshTopology& child, const ParallelFor& parallelFor)
+    : Parent(parent)
+    , ChildOffsets(child.GetFaceOffsetArray())
+    , ChildVertices(child.GetFaceVertexArray())
+    , Parallel(parallelFor)
+    , NumCorners(parent.GetNumFaceCorners())
+    , NumFaces(parent.GetNumFaces())
+    , NumEdges(parent.GetNumEdges())
+    , NumVertices(parent.GetNumVertices())
+    , FirstEFace(NumFaces)
+    , FirstVFace(NumFaces + NumEdges)
+    , FaceOfCorner(static_cast<size_t>(NumCorners))
+  {
+    const IndexArray& offsets = parent.GetFaceOffsetArray();
+    parallelFor(0, this->NumFaces, [&](Index begin, Index end) {
+      for (Index f = begin; f < end; ++f)
+      {
+        std::fill(this->FaceOfCorner.begin() + offsets[f], this->FaceOfCorner.begin() + offsets[f + 1], f);
+      }
+    });
+  }
+  Index Next(Index c) const
+  {
+    const Index f = this->FaceOfCorner[c];
+    return c + 1 == this->Parent.GetFaceOffset(f + 1) ? this->Parent.GetFaceOffset(f) : c + 1;
+  }
+  Index Previous(Index c) const
+  {
+    const Index f = this->FaceOfCorner[c];
+    return c == this->Parent.GetFaceOffset(f) ? this->Parent.GetFaceOffset(f + 1) - 1 : c - 1;
+  }
+  // The child edge across parent edge e at its end v.
+  Index Across(Index e, Index v) const
+  {
+    return this->NumCorners + 2 * e + (this->Parent.GetEdgeVertices(e)[0] == v ? 0 : 1);
+  }
+  // The corner of child face `face` at point c.
+  Index CornerIn(Index face, Index c) const
+  {
+    Index k = 0;
+    while (this->ChildVertices[this->ChildOffsets[face] + k] != c)
     {
-      std::fill(faceOfCorner.begin() + parentOffsets[f], faceOfCorner.begin() + parentOffsets[f + 1], f);
+      ++k;
     }
-  });
-  auto next = [&](Index c) {
-    const Index f = faceOfCorner[c];
-    return c + 1 == parentOffsets[f + 1] ? parentOffsets[f] : c + 1;
-  };
-  auto previous = [&](Index c) {
-    const Index f = faceOfCorner[c];
-    return c == parentOffsets[f] ? parentOffsets[f + 1] - 1 : c - 1;
-  };
-  // The child edge across parent edge e at its end v (see the header).
-  auto across = [&](Index e, Index v) { return numCorners + 2 * e + (parent.GetEdgeVertices(e)[0] == v ? 0 : 1); };
+    return k;
+  }
+};
 
-  // Face edges.
-  child.FaceEdges.resize(childVertices.size());
+void DualChildTopology::WriteFaceEdges(const Split& split, MeshTopology& child)
+{
+  const IndexArray& parentEdges = split.Parent.GetFaceEdgeArray();
+  child.FaceEdges.resize(split.ChildVertices.size());
   IndexArray& faceEdges = child.FaceEdges;
-  parallelFor(0, numCorners, [&](Index begin, Index end) {
+  split.Parallel(0, split.NumCorners, [&](Index begin, Index end) {
     for (Index c = begin; c < end; ++c)
     {
       faceEdges[c] = c; // F-face corners are numbered like the parent's corners
     }
   });
-  parallelFor(0, numEdges, [&](Index begin, Index end) {
+  split.Parallel(0, split.NumEdges, [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e)
     {
-      const Index* q = childVertices.data() + childOffsets[firstEFace + e];
-      Index* edges = faceEdges.data() + childOffsets[firstEFace + e];
+      const Index* q = split.ChildVertices.data() + split.ChildOffsets[split.FirstEFace + e];
+      Index* edges = faceEdges.data() + split.ChildOffsets[split.FirstEFace + e];
       // (q0, q1) and (q2, q3) are F-face edges of the parent corners q1 and q3.
       edges[0] = q[1];
-      edges[1] = numCorners + 2 * e;
+      edges[1] = split.NumCorners + 2 * e;
       edges[2] = q[3];
-      edges[3] = numCorners + 2 * e + 1;
+      edges[3] = split.NumCorners + 2 * e + 1;
     }
   });
-  parallelFor(0, numVertices, [&](Index begin, Index end) {
+  split.Parallel(0, split.NumVertices, [&](Index begin, Index end) {
     for (Index v = begin; v < end; ++v)
     {
       // A V-face's corner c is followed by the corner across the edge entering v at c.
-      for (Index h = childOffsets[firstVFace + v]; h < childOffsets[firstVFace + v + 1]; ++h)
+      for (Index h = split.ChildOffsets[split.FirstVFace + v]; h < split.ChildOffsets[split.FirstVFace + v + 1]; ++h)
       {
-        faceEdges[h] = across(parentEdges[previous(childVertices[h])], v);
+        faceEdges[h] = split.Across(parentEdges[split.Previous(split.ChildVertices[h])], v);
       }
     }
   });
+}
 
-  // Edges: their ends and their two faces (in increasing order).
-  const Index numChildEdges = numCorners + 2 * numEdges;
+void DualChildTopology::WriteEdges(const Split& split, MeshTopology& child)
+{
+  const IndexArray& parentEdges = split.Parent.GetFaceEdgeArray();
+  const Index numChildEdges = split.NumCorners + 2 * split.NumEdges;
   child.EdgeVertices.resize(2 * static_cast<size_t>(numChildEdges));
   child.EdgeFaces.resize(2 * static_cast<size_t>(numChildEdges));
-  parallelFor(0, numCorners, [&](Index begin, Index end) {
+  split.Parallel(0, split.NumCorners, [&](Index begin, Index end) {
     for (Index c = begin; c < end; ++c)
     {
       child.EdgeVertices[2 * c] = c;
-      child.EdgeVertices[2 * c + 1] = next(c);
-      child.EdgeFaces[2 * c] = faceOfCorner[c];
-      child.EdgeFaces[2 * c + 1] = firstEFace + parentEdges[c];
+      child.EdgeVertices[2 * c + 1] = split.Next(c);
+      child.EdgeFaces[2 * c] = split.FaceOfCorner[c];
+      child.EdgeFaces[2 * c + 1] = split.FirstEFace + parentEdges[c];
     }
   });
-  parallelFor(0, numEdges, [&](Index begin, Index end) {
+  split.Parallel(0, split.NumEdges, [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e)
     {
-      const Index* q = childVertices.data() + childOffsets[firstEFace + e];
-      const Index* ev = parent.GetEdgeVertices(e);
-      Index* ends = child.EdgeVertices.data() + 2 * static_cast<size_t>(numCorners + 2 * e);
-      Index* faces = child.EdgeFaces.data() + 2 * static_cast<size_t>(numCorners + 2 * e);
+      const Index* q = split.ChildVertices.data() + split.ChildOffsets[split.FirstEFace + e];
+      const Index* ev = split.Parent.GetEdgeVertices(e);
+      Index* ends = child.EdgeVertices.data() + 2 * static_cast<size_t>(split.NumCorners + 2 * e);
+      Index* faces = child.EdgeFaces.data() + 2 * static_cast<size_t>(split.NumCorners + 2 * e);
       ends[0] = q[1];
       ends[1] = q[2];
       ends[2] = q[3];
       ends[3] = q[0];
-      faces[0] = firstEFace + e;
-      faces[1] = firstVFace + ev[0];
-      faces[2] = firstEFace + e;
-      faces[3] = firstVFace + ev[1];
+      faces[0] = split.FirstEFace + e;
+      faces[1] = split.FirstVFace + ev[0];
+      faces[2] = split.FirstEFace + e;
+      faces[3] = split.FirstVFace + ev[1];
     }
   });
-  FillStrided(child.EdgeFaceOffsets, numChildEdges, 2, parallelFor);
+  FillStrided(child.EdgeFaceOffsets, numChildEdges, 2, split.Parallel);
+}
 
-  // Points: four faces (F-face, two E-faces, V-face: already in increasing order by block)
-  // with the point's corner in each, and four edges.
-  child.VertexFaces.resize(4 * static_cast<size_t>(numCorners));
+void DualChildTopology::WritePointRelations(const Split& split, MeshTopology& child)
+{
+  // Four faces (F-face, two E-faces, V-face: already in increasing order by block) with the
+  // point's corner in each, and four edges.
+  const IndexArray& parentVertices = split.Parent.GetFaceVertexArray();
+  const IndexArray& parentEdges = split.Parent.GetFaceEdgeArray();
+  child.VertexFaces.resize(4 * static_cast<size_t>(split.NumCorners));
   child.VertexFaceCorners.resize(child.VertexFaces.size());
   child.VertexEdges.resize(child.VertexFaces.size());
-  auto cornerIn = [&](Index face, Index c) {
-    Index k = 0;
-    while (childVertices[childOffsets[face] + k] != c)
-    {
-      ++k;
-    }
-    return k;
-  };
-  parallelFor(0, numCorners, [&](Index begin, Index end) {
+  split.Parallel(0, split.NumCorners, [&](Index begin, Index end) {
     for (Index c = begin; c < end; ++c)
     {
-      const Index f = faceOfCorner[c], v = parentVertices[c];
-      Index leaving = parentEdges[c], entering = parentEdges[previous(c)];
+      const Index f = split.FaceOfCorner[c], v = parentVertices[c];
+      Index leaving = parentEdges[c], entering = parentEdges[split.Previous(c)];
       if (leaving > entering)
       {
         std::swap(leaving, entering);
@@ -147,25 +176,35 @@ MeshTopology DualChildTopology::OfDualSplit(
       Index* faces = child.VertexFaces.data() + 4 * static_cast<size_t>(c);
       Index* corners = child.VertexFaceCorners.data() + 4 * static_cast<size_t>(c);
       faces[0] = f;
-      faces[1] = firstEFace + leaving;
-      faces[2] = firstEFace + entering;
-      faces[3] = firstVFace + v;
-      corners[0] = c - parentOffsets[f];
+      faces[1] = split.FirstEFace + leaving;
+      faces[2] = split.FirstEFace + entering;
+      faces[3] = split.FirstVFace + v;
+      corners[0] = c - split.Parent.GetFaceOffset(f);
       for (int k = 1; k < 4; ++k)
       {
-        corners[k] = cornerIn(faces[k], c);
+        corners[k] = split.CornerIn(faces[k], c);
       }
       Index* edges = child.VertexEdges.data() + 4 * static_cast<size_t>(c);
-      edges[0] = std::min(previous(c), c);
-      edges[1] = std::max(previous(c), c);
-      edges[2] = std::min(across(leaving, v), across(entering, v));
-      edges[3] = std::max(across(leaving, v), across(entering, v));
+      edges[0] = std::min(split.Previous(c), c);
+      edges[1] = std::max(split.Previous(c), c);
+      edges[2] = std::min(split.Across(leaving, v), split.Across(entering, v));
+      edges[3] = std::max(split.Across(leaving, v), split.Across(entering, v));
     }
   });
-  FillStrided(child.VertexFaceOffsets, numCorners, 4, parallelFor);
-  FillStrided(child.VertexEdgeOffsets, numCorners, 4, parallelFor);
+  FillStrided(child.VertexFaceOffsets, split.NumCorners, 4, split.Parallel);
+  FillStrided(child.VertexEdgeOffsets, split.NumCorners, 4, split.Parallel);
+}
 
-  child.EdgeTags.assign(static_cast<size_t>(numChildEdges), EdgeTag{ 0, 0 });
+MeshTopology DualChildTopology::OfDualSplit(
+  const MeshTopology& parent, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
+{
+  const Index numCorners = parent.GetNumFaceCorners(); // child points, and F-face edges
+  MeshTopology child = MeshTopology::BuildFacesOnly(numCorners, std::move(offsets), std::move(vertices));
+  const Split split(parent, child, parallelFor);
+  WriteFaceEdges(split, child);
+  WriteEdges(split, child);
+  WritePointRelations(split, child);
+  child.EdgeTags.assign(static_cast<size_t>(child.GetNumEdges()), EdgeTag{ 0, 0 });
   child.VertexTags.assign(static_cast<size_t>(numCorners), VertexTag{ 0, 0 });
   child.NumNonManifoldEdges = 0;
   child.NumNonManifoldVertices = 0;

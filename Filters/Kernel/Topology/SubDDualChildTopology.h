@@ -37,6 +37,15 @@ public:
   /// Applies().
   static MeshTopology OfDualSplit(const MeshTopology& parent, IndexArray offsets, IndexArray vertices,
     const ParallelFor& parallelFor);
+
+private:
+  struct Split;
+  /// Each child face's edges.
+  static void WriteFaceEdges(const Split& split, MeshTopology& child);
+  /// Each child edge's ends and two faces.
+  static void WriteEdges(const Split& split, MeshTopology& child);
+  /// The faces (with the point's corner in each) and edges around each child point.
+  static void WritePointRelations(const Split& split, MeshTopology& child);
 };
 }
 

@@ -63,6 +63,86 @@ bool IsCleanFace(Index numVertices, const IdType* vertices, IdType begin, IdType
   return clean;
 }
 
+// Screens and copies every face on threads in one pass, for the common mesh that needs no
+// repair; false (s partly written) as soon as a face is out of [first, last) or not clean.
+template <typename IdType>
+bool CopyCleanFaces(Index numVertices, Index numFaces, const IdType* offsets, const IdType* vertices, IdType first,
+  IdType last, const ParallelFor& parallelFor, FaceScreening& s)
+{
+  s.Offsets.resize(static_cast<size_t>(numFaces) + 1);
+  s.Vertices.resize(static_cast<size_t>(last - first));
+  s.KeptFaces.resize(static_cast<size_t>(numFaces));
+  s.Offsets[0] = 0;
+  std::atomic<bool> allClean{ true };
+  parallelFor(0, numFaces, [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
+    {
+      const IdType b = offsets[f], e = offsets[f + 1];
+      if (!(first <= b && b <= e && e <= last) || !IsCleanFace(numVertices, vertices, b, e))
+      {
+        allClean = false;
+        return;
+      }
+      s.Offsets[f + 1] = static_cast<Index>(e - offsets[0]);
+      for (IdType k = b; k < e; ++k)
+      {
+        s.Vertices[static_cast<size_t>(k - offsets[0])] = static_cast<Index>(vertices[k]);
+      }
+      s.KeptFaces[f] = f;
+    }
+  });
+  return allClean;
+}
+
+// Face f (corners [begin, end)) of the repair pass: appended with its repeated consecutive
+// corners collapsed, or counted as out of range or dropped.
+template <typename IdType>
+void ScreenFace(Index f, Index numVertices, const IdType* vertices, IdType begin, IdType end, FaceScreening& s,
+  std::vector<Index>& scratch)
+{
+  auto drop = [&s, f]() {
+    s.FirstDroppedFace = s.NumDropped == 0 ? f : s.FirstDroppedFace;
+    ++s.NumDropped;
+  };
+  for (IdType k = begin; k < end; ++k)
+  {
+    if (vertices[k] < 0 || vertices[k] >= static_cast<IdType>(numVertices))
+    {
+      if (s.NumOutOfRange++ == 0)
+      {
+        s.FirstOutOfRangeFace = f;
+        s.FirstOutOfRangeId = static_cast<Index>(vertices[k] < 0 ? -1 : vertices[k]);
+      }
+      return;
+    }
+  }
+  const size_t start = s.Vertices.size();
+  for (IdType k = begin; k < end; ++k)
+  {
+    const Index v = static_cast<Index>(vertices[k]);
+    if (s.Vertices.size() > start && s.Vertices.back() == v)
+    {
+      ++s.NumCollapsedCorners;
+      continue;
+    }
+    s.Vertices.push_back(v);
+  }
+  while (s.Vertices.size() > start + 1 && s.Vertices.back() == s.Vertices[start])
+  {
+    s.Vertices.pop_back();
+    ++s.NumCollapsedCorners;
+  }
+  const Index n = static_cast<Index>(s.Vertices.size() - start);
+  if (n < 3 || HasRepeatedVertex(s.Vertices.data() + start, n, scratch))
+  {
+    s.Vertices.resize(start);
+    drop();
+    return;
+  }
+  s.Offsets.push_back(static_cast<Index>(s.Vertices.size()));
+  s.KeptFaces.push_back(f);
+}
+
 template <typename IdType>
 FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offsets, const IdType* vertices,
   const ParallelFor& parallelFor)
@@ -71,38 +151,7 @@ FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offse
   // A face whose corners are not within [offsets[0], offsets[numFaces]) (offsets that go
   // down: a corrupt cell array) is dropped unread.
   const IdType first = offsets[0], last = std::max(offsets[0], offsets[numFaces]);
-  auto withinCorners = [first, last](IdType begin, IdType end) {
-    return first <= begin && begin <= end && end <= last;
-  };
-  // Most meshes need no repair: every face checked and copied in one pass on threads (the
-  // loop below appends one face at a time); the copy is dropped if a face needs repair.
-  s.Offsets.resize(static_cast<size_t>(numFaces) + 1);
-  s.Vertices.resize(static_cast<size_t>(last - first));
-  s.KeptFaces.resize(static_cast<size_t>(numFaces));
-  s.Offsets[0] = 0;
-  std::atomic<bool> allClean{ true };
-  parallelFor(0, numFaces, [&](Index begin, Index end) {
-    bool clean = true;
-    for (Index f = begin; f < end && clean; ++f)
-    {
-      clean = withinCorners(offsets[f], offsets[f + 1]) && IsCleanFace(numVertices, vertices, offsets[f], offsets[f + 1]);
-      if (!clean)
-      {
-        break;
-      }
-      s.Offsets[f + 1] = static_cast<Index>(offsets[f + 1] - offsets[0]);
-      for (IdType k = offsets[f]; k < offsets[f + 1]; ++k)
-      {
-        s.Vertices[static_cast<size_t>(k - offsets[0])] = static_cast<Index>(vertices[k]);
-      }
-      s.KeptFaces[f] = f;
-    }
-    if (!clean)
-    {
-      allClean = false;
-    }
-  });
-  if (allClean)
+  if (CopyCleanFaces(numVertices, numFaces, offsets, vertices, first, last, parallelFor, s))
   {
     return s;
   }
@@ -114,78 +163,13 @@ FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offse
   for (Index f = 0; f < numFaces; ++f)
   {
     const IdType begin = offsets[f], end = offsets[f + 1];
-    if (!withinCorners(begin, end))
+    if (first <= begin && begin <= end && end <= last)
     {
-      if (s.NumDropped == 0)
-      {
-        s.FirstDroppedFace = f;
-      }
-      ++s.NumDropped;
+      ScreenFace(f, numVertices, vertices, begin, end, s, scratch);
       continue;
     }
-    if (end - begin == 3)
-    {
-      // Most faces: a triangle of three distinct vertices in range, kept as it is.
-      const IdType a = vertices[begin], b = vertices[begin + 1], c = vertices[begin + 2];
-      const IdType n = static_cast<IdType>(numVertices);
-      if (a >= 0 && a < n && b >= 0 && b < n && c >= 0 && c < n && a != b && b != c && c != a)
-      {
-        s.Vertices.push_back(static_cast<Index>(a));
-        s.Vertices.push_back(static_cast<Index>(b));
-        s.Vertices.push_back(static_cast<Index>(c));
-        s.Offsets.push_back(static_cast<Index>(s.Vertices.size()));
-        s.KeptFaces.push_back(f);
-        continue;
-      }
-    }
-    bool inRange = true;
-    for (IdType k = begin; k < end; ++k)
-    {
-      if (vertices[k] < 0 || vertices[k] >= static_cast<IdType>(numVertices))
-      {
-        if (s.NumOutOfRange == 0)
-        {
-          s.FirstOutOfRangeFace = f;
-          s.FirstOutOfRangeId = static_cast<Index>(vertices[k] < 0 ? -1 : vertices[k]);
-        }
-        inRange = false;
-        break;
-      }
-    }
-    if (!inRange)
-    {
-      ++s.NumOutOfRange;
-      continue;
-    }
-    const size_t start = s.Vertices.size();
-    for (IdType k = begin; k < end; ++k)
-    {
-      const Index v = static_cast<Index>(vertices[k]);
-      if (s.Vertices.size() > start && s.Vertices.back() == v)
-      {
-        ++s.NumCollapsedCorners;
-        continue;
-      }
-      s.Vertices.push_back(v);
-    }
-    while (s.Vertices.size() > start + 1 && s.Vertices.back() == s.Vertices[start])
-    {
-      s.Vertices.pop_back();
-      ++s.NumCollapsedCorners;
-    }
-    const Index n = static_cast<Index>(s.Vertices.size() - start);
-    if (n < 3 || HasRepeatedVertex(s.Vertices.data() + start, n, scratch))
-    {
-      s.Vertices.resize(start);
-      if (s.NumDropped == 0)
-      {
-        s.FirstDroppedFace = f;
-      }
-      ++s.NumDropped;
-      continue;
-    }
-    s.Offsets.push_back(static_cast<Index>(s.Vertices.size()));
-    s.KeptFaces.push_back(f);
+    s.FirstDroppedFace = s.NumDropped == 0 ? f : s.FirstDroppedFace;
+    ++s.NumDropped;
   }
   return s;
 }

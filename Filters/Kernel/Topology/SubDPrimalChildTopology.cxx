@@ -13,68 +13,69 @@ struct PrimalChildAssembly
   template <typename Shape>
   static MeshTopology Assemble(const Shape& shape, IndexArray offsets, IndexArray vertices,
     const ParallelFor& parallelFor);
+  /// Each edge's ends and tags (each new one from the child face that meets it first), each
+  /// face's edges.
+  template <typename Shape>
+  static void WriteEdges(const Shape& shape, const ChildEdgeNumbering& numbering, MeshTopology& child,
+    const ParallelFor& parallelFor);
+  /// Each edge's faces: a half's are the children of its parent edge's faces at its vertex;
+  /// an edge inside a face has the two children on either side.
+  template <typename Shape>
+  static void WriteEdgeFaces(const Shape& shape, const ChildEdgeNumbering& numbering, MeshTopology& child,
+    const ParallelFor& parallelFor);
+  /// The faces and edges around each point, and its tags, by the kind of point: face points
+  /// are interior, edge points take their edge's tags, vertex points their vertex's.
+  template <typename Shape>
+  static void WriteVertexRelations(const Shape& shape, const ChildEdgeNumbering& numbering, MeshTopology& child,
+    const ParallelFor& parallelFor);
 };
 
 template <typename Shape>
-MeshTopology PrimalChildAssembly::Assemble(
-  const Shape& shape, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
+void PrimalChildAssembly::WriteEdges(
+  const Shape& shape, const ChildEdgeNumbering& numbering, MeshTopology& child, const ParallelFor& parallelFor)
 {
   const MeshTopology& parent = shape.Parent;
-  const Index numFaces = parent.GetNumFaces();
   const Index numEdges = parent.GetNumEdges();
-  const Index numVertices = parent.GetNumVertices();
-  const Index firstEdgePoint = shape.GetNumFacePoints();
-  const Index firstVertexPoint = firstEdgePoint + numEdges;
   const Index numChildEdges = 2 * numEdges + shape.GetNumInteriorEdges();
-  const Index numChildVertices = firstVertexPoint + numVertices;
-  MeshTopology child = MeshTopology::BuildFacesOnly(numChildVertices, std::move(offsets), std::move(vertices));
-  auto forEachFace = [&](auto&& perFace) {
-    parallelFor(0, numFaces, [&](Index begin, Index end) {
-      for (Index f = begin; f < end; ++f)
-      {
-        perFace(f);
-      }
-    });
-  };
-
-  // Edges: numbered by first meeting (NumberChildEdges); each new one takes its ends from
-  // the child face that meets it first.
-  const ChildEdgeNumbering numbering = NumberChildEdges(shape, parallelFor);
-  const IndexArray& firstEdgeOfFace = numbering.FirstEdgeOfFace;
-  const IndexArray& edgeOfKey = numbering.EdgeOfKey; // every key's (stored)
   child.EdgeVertices.resize(2 * static_cast<size_t>(numChildEdges));
   child.EdgeTags.resize(static_cast<size_t>(numChildEdges));
   child.EdgeFaceOffsets.resize(static_cast<size_t>(numChildEdges) + 1); // counts of every edge below
   child.EdgeFaceOffsets[0] = 0;
   constexpr Index size = Shape::ChildFaceSize;
-  forEachFace([&](Index f) {
-    Index next = firstEdgeOfFace[f];
-    shape.VisitCorners(f, [&](Index corner, Index key, bool isNew) {
-      if (!isNew)
-      {
-        return;
-      }
-      const Index edge = next++;
-      const Index following = corner % size == size - 1 ? corner - (size - 1) : corner + 1;
-      child.EdgeVertices[2 * static_cast<size_t>(edge)] = child.FaceVertices[corner];
-      child.EdgeVertices[2 * static_cast<size_t>(edge) + 1] = child.FaceVertices[following];
-      const bool half = key < 2 * numEdges;
-      child.EdgeTags[edge] = half ? parent.GetEdgeTag(key / 2) : EdgeTag{ 0, 0 };
-      child.EdgeFaceOffsets[edge + 1] = half ? parent.GetEdgeFaces(key / 2).size() : 2;
-    });
-  });
   child.FaceEdges.resize(child.FaceVertices.size());
-  forEachFace([&](Index f) {
-    shape.VisitCorners(f, [&](Index corner, Index key, bool) { child.FaceEdges[corner] = edgeOfKey[key]; });
+  parallelFor(0, parent.GetNumFaces(), [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
+    {
+      Index next = numbering.FirstEdgeOfFace[f];
+      shape.VisitCorners(f, [&](Index corner, Index key, bool isNew) {
+        child.FaceEdges[corner] = numbering.EdgeOfKey[key];
+        if (!isNew)
+        {
+          return;
+        }
+        const Index edge = next++;
+        const Index following = corner % size == size - 1 ? corner - (size - 1) : corner + 1;
+        child.EdgeVertices[2 * static_cast<size_t>(edge)] = child.FaceVertices[corner];
+        child.EdgeVertices[2 * static_cast<size_t>(edge) + 1] = child.FaceVertices[following];
+        const bool half = key < 2 * numEdges;
+        child.EdgeTags[edge] = half ? parent.GetEdgeTag(key / 2) : EdgeTag{ 0, 0 };
+        child.EdgeFaceOffsets[edge + 1] = half ? parent.GetEdgeFaces(key / 2).size() : 2;
+      });
+    }
   });
   child.NumNonManifoldEdges = 2 * parent.GetNumNonManifoldEdges();
   child.NumBoundaryEdges = 2 * parent.GetNumBoundaryEdges();
+}
 
-  // Edge faces: a half's are the children of its parent edge's faces at its vertex; an edge
-  // inside a face has the two children on either side.
+template <typename Shape>
+void PrimalChildAssembly::WriteEdgeFaces(
+  const Shape& shape, const ChildEdgeNumbering& numbering, MeshTopology& child, const ParallelFor& parallelFor)
+{
+  const MeshTopology& parent = shape.Parent;
+  const IndexArray& edgeOfKey = numbering.EdgeOfKey;
   std::partial_sum(child.EdgeFaceOffsets.begin(), child.EdgeFaceOffsets.end(), child.EdgeFaceOffsets.begin());
   child.EdgeFaces.resize(static_cast<size_t>(child.EdgeFaceOffsets.back()));
-  parallelFor(0, numEdges, [&](Index begin, Index end) {
+  parallelFor(0, parent.GetNumEdges(), [&](Index begin, Index end) {
     for (Index e = begin; e < end; ++e)
     {
       const IndexSpan faces = parent.GetEdgeFaces(e);
@@ -93,22 +94,31 @@ MeshTopology PrimalChildAssembly::Assemble(
       }
     }
   });
-  forEachFace([&](Index f) {
-    shape.VisitInteriorEdges(f, [&](Index key, Index a, Index b) {
-      Index* out = child.EdgeFaces.data() + child.EdgeFaceOffsets[edgeOfKey[key]];
-      out[0] = a;
-      out[1] = b;
-    });
+  parallelFor(0, parent.GetNumFaces(), [&](Index begin, Index end) {
+    for (Index f = begin; f < end; ++f)
+    {
+      shape.VisitInteriorEdges(f, [&](Index key, Index a, Index b) {
+        Index* out = child.EdgeFaces.data() + child.EdgeFaceOffsets[edgeOfKey[key]];
+        out[0] = a;
+        out[1] = b;
+      });
+    }
   });
+}
 
-  // Vertex relations, by the kind of point: face points, edge points, vertex points.
+template <typename Shape>
+void PrimalChildAssembly::WriteVertexRelations(
+  const Shape& shape, const ChildEdgeNumbering& numbering, MeshTopology& child, const ParallelFor& parallelFor)
+{
+  const MeshTopology& parent = shape.Parent;
+  const Index firstEdgePoint = shape.GetNumFacePoints();
+  const Index firstVertexPoint = firstEdgePoint + parent.GetNumEdges();
+  const Index numChildVertices = child.GetNumVertices();
   const size_t numSlots = static_cast<size_t>(numChildVertices) + 1;
   child.VertexFaceOffsets.resize(numSlots); // counts of every point below
   child.VertexEdgeOffsets.resize(numSlots);
   child.VertexFaceOffsets[0] = child.VertexEdgeOffsets[0] = 0;
   child.VertexTags.resize(static_cast<size_t>(numChildVertices));
-  // Counts at [point + 1], and the tags: face points are interior, edge points take their
-  // edge's, vertex points their vertex's.
   parallelFor(0, numChildVertices, [&](Index begin, Index end) {
     for (Index point = begin; point < end; ++point)
     {
@@ -158,7 +168,20 @@ MeshTopology PrimalChildAssembly::Assemble(
         child.VertexEdges.data() + child.VertexEdgeOffsets[point], numFaces, numEdges);
     }
   });
+}
 
+template <typename Shape>
+MeshTopology PrimalChildAssembly::Assemble(
+  const Shape& shape, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor)
+{
+  const MeshTopology& parent = shape.Parent;
+  const Index numChildVertices = shape.GetNumFacePoints() + parent.GetNumEdges() + parent.GetNumVertices();
+  MeshTopology child = MeshTopology::BuildFacesOnly(numChildVertices, std::move(offsets), std::move(vertices));
+  // Edges numbered by first meeting (NumberChildEdges).
+  const ChildEdgeNumbering numbering = NumberChildEdges(shape, parallelFor);
+  WriteEdges(shape, numbering, child, parallelFor);
+  WriteEdgeFaces(shape, numbering, child, parallelFor);
+  WriteVertexRelations(shape, numbering, child, parallelFor);
   return child;
 }
 

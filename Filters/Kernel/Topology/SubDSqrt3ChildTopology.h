@@ -33,6 +33,15 @@ public:
   /// old edge, in edge order). Requires Applies().
   static MeshTopology OfSqrt3Step(
     const MeshTopology& parent, IndexArray offsets, IndexArray vertices, const ParallelFor& parallelFor);
+
+private:
+  struct EdgeNames;
+  /// Numbers the child edges (ends, triangles) and writes each triangle's edges.
+  static void NumberEdges(const MeshTopology& parent, MeshTopology& child, EdgeNames& names,
+    const ParallelFor& parallelFor);
+  /// The faces and edges around each child point, and their offsets.
+  static void WriteVertexLists(const MeshTopology& parent, const EdgeNames& names, MeshTopology& child,
+    const ParallelFor& parallelFor);
 };
 }
 
