@@ -80,250 +80,324 @@ std::string ExplorerUsage()
   return out.str();
 }
 
+namespace
+{
+// The outcome of a group of options' parser for one argument.
+enum class Parsed
+{
+  NotHere, ///< not one of the group's options
+  Done,
+  Failed ///< `error` says why
+};
+
+// `ok` as a Parsed: Done, or Failed (with `error` set).
+Parsed DoneIf(bool ok)
+{
+  return ok ? Parsed::Done : Parsed::Failed;
+}
+
+// Parses the comma-separated scheme names `text` into `schemes`; false with `error` at an
+// unknown one.
+bool ParseSchemes(const std::string& text, std::vector<std::string>& schemes, std::string& error)
+{
+  schemes.clear();
+  std::istringstream in(text);
+  std::string name;
+  while (std::getline(in, name, ','))
+  {
+    if (!subdapp::FindScheme(name))
+    {
+      error = "unknown scheme '" + name + "'";
+      return false;
+    }
+    schemes.push_back(name);
+  }
+  return true;
+}
+
+// Parses the value `text` of `arg` (--crease A-B=S or --corner V=S) into `edit`; false with
+// `error` when it is malformed.
+bool ParseSharpnessEdit(
+  const std::string& arg, const std::string& text, ExplorerOptions::SharpnessEdit& edit, std::string& error)
+{
+  const char* ids = ReadVertexIds(text.c_str(), edit.A, edit.B);
+  const bool shapeOk = ids && *ids == '=' && (arg == "--corner") == (edit.B < 0);
+  char* end = nullptr;
+  if (shapeOk)
+  {
+    edit.Sharpness = std::strtod(ids + 1, &end);
+  }
+  if (!shapeOk || *end != '\0' || end == ids + 1 || !(edit.Sharpness >= 0.0))
+  {
+    error = arg + (arg == "--crease" ? " wants A-B=S (two vertex ids and a sharpness >= 0), not '"
+                                     : " wants V=S (a vertex id and a sharpness >= 0), not '") + text + "'";
+    return false;
+  }
+  return true;
+}
+
+// The options of what is subdivided and shown: --builtin, --views, --schemes, --levels,
+// --limit.
+Parsed ParseSceneOption(ArgumentReader& arguments, ExplorerOptions& options, std::string& error)
+{
+  const std::string arg = arguments.Current();
+  std::string text;
+  if (arg == "--builtin")
+  {
+    if (!arguments.Value(options.Builtin, error))
+    {
+      return Parsed::Failed;
+    }
+    if (!subdapp::MakeBuiltinCage(options.Builtin))
+    {
+      error = "unknown built-in cage '" + options.Builtin + "'";
+      return Parsed::Failed;
+    }
+    return Parsed::Done;
+  }
+  if (arg == "--views")
+  {
+    if (!arguments.Value(text, error))
+    {
+      return Parsed::Failed;
+    }
+    if (text != "1" && text != "2" && text != "4")
+    {
+      error = "--views wants 1, 2 or 4, not '" + text + "'";
+      return Parsed::Failed;
+    }
+    options.Views = std::atoi(text.c_str());
+    return Parsed::Done;
+  }
+  if (arg == "--schemes")
+  {
+    return DoneIf(arguments.Value(text, error) && ParseSchemes(text, options.Schemes, error));
+  }
+  if (arg == "--levels")
+  {
+    return DoneIf(arguments.Value(text, error) &&
+      IntegerIn(text, 0, 8, "--levels wants an integer in 0..8", options.Levels, error));
+  }
+  if (arg == "--limit")
+  {
+    options.Limit = true;
+    return Parsed::Done;
+  }
+  return Parsed::NotHere;
+}
+
+// The options of how the views look: --color, --colormap, --range, --percentile,
+// --cage-opacity, --no-cage, --wireframe, --size.
+Parsed ParseLookOption(ArgumentReader& arguments, ExplorerOptions& options, std::string& error)
+{
+  const std::string arg = arguments.Current();
+  std::string text;
+  auto fail = [&error](const std::string& message) {
+    error = message;
+    return Parsed::Failed;
+  };
+  if (arg == "--color")
+  {
+    if (!arguments.Value(options.Color, error))
+    {
+      return Parsed::Failed;
+    }
+    return vtkSubDScene::ColoringFromName(options.Color.c_str()) < 0
+      ? fail("--color wants none, mean, gaussian, k1 or k2, not '" + options.Color + "'")
+      : Parsed::Done;
+  }
+  if (arg == "--colormap")
+  {
+    if (!arguments.Value(options.ColorMap, error))
+    {
+      return Parsed::Failed;
+    }
+    return vtkSubDScene::ColorMapFromName(options.ColorMap.c_str()) < 0
+      ? fail("--colormap wants cool-to-warm, rainbow, black-body or grayscale, not '" + options.ColorMap + "'")
+      : Parsed::Done;
+  }
+  if (arg == "--range")
+  {
+    if (!arguments.Value(text, error))
+    {
+      return Parsed::Failed;
+    }
+    if (text != "symmetric" && text != "percentile")
+    {
+      return fail("--range wants symmetric or percentile, not '" + text + "'");
+    }
+    options.RangeSymmetric = text == "symmetric";
+    return Parsed::Done;
+  }
+  if (arg == "--percentile")
+  {
+    return DoneIf(arguments.Value(text, error) &&
+      IntegerIn(text, 50, 100, "--percentile wants an integer in 50..100", options.RangePercentile, error));
+  }
+  if (arg == "--cage-opacity")
+  {
+    if (!arguments.Value(text, error))
+    {
+      return Parsed::Failed;
+    }
+    char* end = nullptr;
+    options.CageOpacity = std::strtod(text.c_str(), &end);
+    if (text.empty() || *end != '\0' || !(options.CageOpacity >= 0.0 && options.CageOpacity <= 1.0))
+    {
+      return fail("--cage-opacity wants a number in [0, 1], not '" + text + "'");
+    }
+    return Parsed::Done;
+  }
+  if (arg == "--no-cage")
+  {
+    options.Cage = false;
+    return Parsed::Done;
+  }
+  if (arg == "--wireframe")
+  {
+    options.Wireframe = true;
+    return Parsed::Done;
+  }
+  if (arg == "--size")
+  {
+    if (!arguments.Value(text, error))
+    {
+      return Parsed::Failed;
+    }
+    const auto x = text.find('x');
+    options.Width = x == std::string::npos ? 0 : std::atoi(text.substr(0, x).c_str());
+    options.Height = x == std::string::npos ? 0 : std::atoi(text.substr(x + 1).c_str());
+    if (options.Width < 200 || options.Height < 200 || options.Width > 8192 || options.Height > 8192)
+    {
+      return fail("--size wants WxH, each in 200..8192, not '" + text + "'");
+    }
+    return Parsed::Done;
+  }
+  return Parsed::NotHere;
+}
+
+// The options that edit the cage: --crease, --corner, --select, --export-cage.
+Parsed ParseEditOption(ArgumentReader& arguments, ExplorerOptions& options, std::string& error)
+{
+  const std::string arg = arguments.Current();
+  std::string text;
+  if (arg == "--crease" || arg == "--corner")
+  {
+    ExplorerOptions::SharpnessEdit edit;
+    if (!arguments.Value(text, error) || !ParseSharpnessEdit(arg, text, edit, error))
+    {
+      return Parsed::Failed;
+    }
+    options.Edits.push_back(edit);
+    return Parsed::Done;
+  }
+  if (arg == "--select")
+  {
+    if (!arguments.Value(text, error))
+    {
+      return Parsed::Failed;
+    }
+    const char* end = ReadVertexIds(text.c_str(), options.SelectA, options.SelectB);
+    if (!end || *end != '\0')
+    {
+      error = "--select wants A-B (an edge's two vertex ids) or V (a vertex id), not '" + text + "'";
+      return Parsed::Failed;
+    }
+    return Parsed::Done;
+  }
+  if (arg == "--export-cage")
+  {
+    return DoneIf(arguments.Value(options.ExportCage, error));
+  }
+  return Parsed::NotHere;
+}
+
+// The options of scripted and remembered use: --help, --screenshot, --window-shot, --quit,
+// --cancel-after, --time-edits, --settings, --no-settings, --print-state.
+Parsed ParseRunOption(ArgumentReader& arguments, ExplorerOptions& options, std::string& error)
+{
+  const std::string arg = arguments.Current();
+  std::string text;
+  if (arg == "-h" || arg == "--help")
+  {
+    options.Help = true;
+    return Parsed::Done;
+  }
+  if (arg == "--quit")
+  {
+    options.Quit = true;
+    return Parsed::Done;
+  }
+  if (arg == "--no-settings")
+  {
+    options.NoSettings = true;
+    return Parsed::Done;
+  }
+  if (arg == "--print-state")
+  {
+    options.PrintState = true;
+    return Parsed::Done;
+  }
+  if (arg == "--screenshot" || arg == "--window-shot")
+  {
+    return DoneIf(arguments.Value(arg == "--screenshot" ? options.Screenshot : options.WindowShot, error));
+  }
+  if (arg == "--cancel-after")
+  {
+    return DoneIf(arguments.Value(text, error) &&
+      IntegerIn(text, 0, 600000, "--cancel-after wants milliseconds in 0..600000", options.CancelAfter, error));
+  }
+  if (arg == "--time-edits")
+  {
+    return DoneIf(arguments.Value(text, error) &&
+      IntegerIn(text, 1, 1000, "--time-edits wants an integer in 1..1000", options.TimeEdits, error));
+  }
+  if (arg == "--settings")
+  {
+    return DoneIf(arguments.Value(options.SettingsFile, error));
+  }
+  return Parsed::NotHere;
+}
+
+// A word that is no option: the file to load (one only); false with `error` otherwise.
+bool TakeFileName(const std::string& arg, ExplorerOptions& options, std::string& error)
+{
+  if (!arg.empty() && arg[0] == '-')
+  {
+    error = "unknown option '" + arg + "'";
+    return false;
+  }
+  if (!options.Load.empty())
+  {
+    error = "more than one file ('" + options.Load + "', '" + arg + "')";
+    return false;
+  }
+  options.Load = arg;
+  return true;
+}
+}
+
 bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std::string& error)
 {
   for (ArgumentReader arguments(argc, argv); arguments.Next();)
   {
     const std::string arg = arguments.Current();
-    auto value = [&](std::string& out) { return arguments.Value(out, error); };
-    std::string text;
     options.Given.insert(arg);
-    if (arg == "-h" || arg == "--help")
+    Parsed parsed = ParseSceneOption(arguments, options, error);
+    if (parsed == Parsed::NotHere)
     {
-      options.Help = true;
+      parsed = ParseLookOption(arguments, options, error);
     }
-    else if (arg == "--builtin")
+    if (parsed == Parsed::NotHere)
     {
-      if (!value(options.Builtin))
-      {
-        return false;
-      }
-      if (!subdapp::MakeBuiltinCage(options.Builtin))
-      {
-        error = "unknown built-in cage '" + options.Builtin + "'";
-        return false;
-      }
+      parsed = ParseEditOption(arguments, options, error);
     }
-    else if (arg == "--views")
+    if (parsed == Parsed::NotHere)
     {
-      if (!value(text))
-      {
-        return false;
-      }
-      if (text != "1" && text != "2" && text != "4")
-      {
-        error = "--views wants 1, 2 or 4, not '" + text + "'";
-        return false;
-      }
-      options.Views = std::atoi(text.c_str());
+      parsed = ParseRunOption(arguments, options, error);
     }
-    else if (arg == "--schemes")
+    if (parsed == Parsed::Failed || (parsed == Parsed::NotHere && !TakeFileName(arg, options, error)))
     {
-      if (!value(text))
-      {
-        return false;
-      }
-      options.Schemes.clear();
-      std::istringstream in(text);
-      std::string name;
-      while (std::getline(in, name, ','))
-      {
-        if (!subdapp::FindScheme(name))
-        {
-          error = "unknown scheme '" + name + "'";
-          return false;
-        }
-        options.Schemes.push_back(name);
-      }
-    }
-    else if (arg == "--levels")
-    {
-      if (!value(text) || !IntegerIn(text, 0, 8, "--levels wants an integer in 0..8", options.Levels, error))
-      {
-        return false;
-      }
-    }
-    else if (arg == "--cancel-after")
-    {
-      if (!value(text) ||
-        !IntegerIn(text, 0, 600000, "--cancel-after wants milliseconds in 0..600000", options.CancelAfter, error))
-      {
-        return false;
-      }
-    }
-    else if (arg == "--crease" || arg == "--corner")
-    {
-      if (!value(text))
-      {
-        return false;
-      }
-      ExplorerOptions::SharpnessEdit edit;
-      const char* ids = ReadVertexIds(text.c_str(), edit.A, edit.B);
-      const bool shapeOk = ids && *ids == '=' && (arg == "--corner") == (edit.B < 0);
-      char* end = nullptr;
-      if (shapeOk)
-      {
-        edit.Sharpness = std::strtod(ids + 1, &end);
-      }
-      if (!shapeOk || *end != '\0' || end == ids + 1 || !(edit.Sharpness >= 0.0))
-      {
-        error = arg + (arg == "--crease" ? " wants A-B=S (two vertex ids and a sharpness >= 0), not '"
-                                         : " wants V=S (a vertex id and a sharpness >= 0), not '") + text + "'";
-        return false;
-      }
-      options.Edits.push_back(edit);
-    }
-    else if (arg == "--export-cage")
-    {
-      if (!value(options.ExportCage))
-      {
-        return false;
-      }
-    }
-    else if (arg == "--select")
-    {
-      if (!value(text))
-      {
-        return false;
-      }
-      const char* end = ReadVertexIds(text.c_str(), options.SelectA, options.SelectB);
-      if (!end || *end != '\0')
-      {
-        error = "--select wants A-B (an edge's two vertex ids) or V (a vertex id), not '" + text + "'";
-        return false;
-      }
-    }
-    else if (arg == "--color")
-    {
-      if (!value(options.Color))
-      {
-        return false;
-      }
-      if (vtkSubDScene::ColoringFromName(options.Color.c_str()) < 0)
-      {
-        error = "--color wants none, mean, gaussian, k1 or k2, not '" + options.Color + "'";
-        return false;
-      }
-    }
-    else if (arg == "--colormap")
-    {
-      if (!value(options.ColorMap))
-      {
-        return false;
-      }
-      if (vtkSubDScene::ColorMapFromName(options.ColorMap.c_str()) < 0)
-      {
-        error = "--colormap wants cool-to-warm, rainbow, black-body or grayscale, not '" + options.ColorMap + "'";
-        return false;
-      }
-    }
-    else if (arg == "--range")
-    {
-      if (!value(text))
-      {
-        return false;
-      }
-      if (text != "symmetric" && text != "percentile")
-      {
-        error = "--range wants symmetric or percentile, not '" + text + "'";
-        return false;
-      }
-      options.RangeSymmetric = text == "symmetric";
-    }
-    else if (arg == "--percentile")
-    {
-      if (!value(text) ||
-        !IntegerIn(text, 50, 100, "--percentile wants an integer in 50..100", options.RangePercentile, error))
-      {
-        return false;
-      }
-    }
-    else if (arg == "--cage-opacity")
-    {
-      if (!value(text))
-      {
-        return false;
-      }
-      char* end = nullptr;
-      options.CageOpacity = std::strtod(text.c_str(), &end);
-      if (text.empty() || *end != '\0' || !(options.CageOpacity >= 0.0 && options.CageOpacity <= 1.0))
-      {
-        error = "--cage-opacity wants a number in [0, 1], not '" + text + "'";
-        return false;
-      }
-    }
-    else if (arg == "--time-edits")
-    {
-      if (!value(text) || !IntegerIn(text, 1, 1000, "--time-edits wants an integer in 1..1000", options.TimeEdits, error))
-      {
-        return false;
-      }
-    }
-    else if (arg == "--settings")
-    {
-      if (!value(options.SettingsFile))
-      {
-        return false;
-      }
-    }
-    else if (arg == "--no-settings")
-    {
-      options.NoSettings = true;
-    }
-    else if (arg == "--print-state")
-    {
-      options.PrintState = true;
-    }
-    else if (arg == "--wireframe")
-    {
-      options.Wireframe = true;
-    }
-    else if (arg == "--size")
-    {
-      if (!value(text))
-      {
-        return false;
-      }
-      const auto x = text.find('x');
-      options.Width = x == std::string::npos ? 0 : std::atoi(text.substr(0, x).c_str());
-      options.Height = x == std::string::npos ? 0 : std::atoi(text.substr(x + 1).c_str());
-      if (options.Width < 200 || options.Height < 200 || options.Width > 8192 || options.Height > 8192)
-      {
-        error = "--size wants WxH, each in 200..8192, not '" + text + "'";
-        return false;
-      }
-    }
-    else if (arg == "--screenshot" || arg == "--window-shot")
-    {
-      if (!value(arg == "--screenshot" ? options.Screenshot : options.WindowShot))
-      {
-        return false;
-      }
-    }
-    else if (arg == "--no-cage")
-    {
-      options.Cage = false;
-    }
-    else if (arg == "--limit")
-    {
-      options.Limit = true;
-    }
-    else if (arg == "--quit")
-    {
-      options.Quit = true;
-    }
-    else if (!arg.empty() && arg[0] == '-')
-    {
-      error = "unknown option '" + arg + "'";
-      return false;
-    }
-    else if (options.Load.empty())
-    {
-      options.Load = arg;
-    }
-    else
-    {
-      error = "more than one file ('" + options.Load + "', '" + arg + "')";
       return false;
     }
   }

@@ -134,7 +134,21 @@ QWidget* ExplorerWindow::BuildControls()
 {
   auto* panel = new QWidget;
   auto* layout = new QVBoxLayout(panel);
+  layout->addWidget(this->BuildGlobalControls());
+  layout->addWidget(this->BuildCreaseControls());
+  for (int v = 0; v < MaxViews; ++v)
+  {
+    layout->addWidget(this->BuildViewControls(v));
+    this->ConnectViewControls(v);
+  }
+  layout->addStretch(1);
+  this->ConnectGlobalControls();
+  this->SetViewCount(1);
+  return panel;
+}
 
+QGroupBox* ExplorerWindow::BuildGlobalControls()
+{
   auto* global = new QGroupBox("All views");
   auto* form = new QFormLayout(global);
   this->CageLabel = new QLabel;
@@ -191,8 +205,11 @@ QWidget* ExplorerWindow::BuildControls()
   form->addRow(cageRow);
   this->ShowWireframe = new QCheckBox("Refined wireframe (W)");
   form->addRow(this->ShowWireframe);
-  layout->addWidget(global);
+  return global;
+}
 
+QGroupBox* ExplorerWindow::BuildCreaseControls()
+{
   auto* creases = new QGroupBox("Creases");
   auto* creaseForm = new QFormLayout(creases);
   this->SelectionLabel = new QLabel("Ctrl+click an edge or a vertex of the cage");
@@ -213,85 +230,91 @@ QWidget* ExplorerWindow::BuildControls()
     if (!this->SetSharpness(this->SelectedA, this->SelectedB, value, error))
       this->statusBar()->showMessage(error, 8000);
   });
-  layout->addWidget(creases);
+  return creases;
+}
 
-  for (int v = 0; v < MaxViews; ++v)
+QGroupBox* ExplorerWindow::BuildViewControls(int v)
+{
+  ViewControls& view = this->Views[v];
+  view.Box = new QGroupBox(QString("View %1").arg(v + 1));
+  auto* viewForm = new QFormLayout(view.Box);
+  view.Scheme = new QComboBox;
+  for (const subdapp::SchemeEntry& entry : subdapp::Schemes())
   {
-    ViewControls& view = this->Views[v];
-    view.Box = new QGroupBox(QString("View %1").arg(v + 1));
-    auto* viewForm = new QFormLayout(view.Box);
-    view.Scheme = new QComboBox;
-    for (const subdapp::SchemeEntry& entry : subdapp::Schemes())
-    {
-      view.Scheme->addItem(QString::fromStdString(entry.Name));
-      view.Scheme->setItemData(view.Scheme->count() - 1, QString::fromStdString(entry.Summary), Qt::ToolTipRole);
-    }
-    view.Scheme->setCurrentText(DefaultSchemes[v]);
-    viewForm->addRow("Scheme", view.Scheme);
-    view.Boundary = new QComboBox;
-    view.Boundary->addItems({ "none", "edge-only", "edge-and-corner" });
-    view.Boundary->setCurrentIndex(1);
-    viewForm->addRow("Boundary", view.Boundary);
-    view.Tension = new QDoubleSpinBox;
-    view.Tension->setDecimals(4);
-    view.Tension->setSingleStep(0.005);
-    view.Tension->setToolTip("butterfly: [-0.0625, 0.0625], four-point: [0, 0.125]");
-    viewForm->addRow("Tension", view.Tension);
-    view.CreaseMethod = new QComboBox;
-    view.CreaseMethod->addItems({ "uniform", "chaikin" });
-    view.CreaseMethod->setToolTip("How semi-sharp creases decay: one unit per level, or averaged along the "
-                                  "crease first (OpenSubdiv's Chaikin)");
-    viewForm->addRow("Creases", view.CreaseMethod);
-    view.Limit = new QCheckBox("Limit: project, exact curvature (L)");
-    view.Limit->setToolTip("Move the points to the limit surface where the scheme has limit masks; Catmull-Clark "
-                           "and Loop also colour by the limit's exact curvature");
-    viewForm->addRow(view.Limit);
-    view.Statistics = new QLabel;
-    view.Statistics->setWordWrap(true);
-    view.Statistics->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    viewForm->addRow(view.Statistics);
-    layout->addWidget(view.Box);
-
-    auto schemeChanged = [this, v]() {
-      ViewControls& changed = this->Views[v];
-      const std::string scheme = changed.Scheme->currentText().toStdString();
-      const bool fourPoint = scheme == "four-point";
-      const bool updating = this->Updating;
-      this->Updating = true;
-      changed.Tension->setEnabled(scheme == "butterfly" || fourPoint);
-      changed.Tension->setRange(fourPoint ? 0.0 : -0.0625, fourPoint ? 0.125 : 0.0625);
-      changed.Tension->setValue(fourPoint ? 0.0625 : 0.0);
-      const subdapp::SchemeEntry* entry = subdapp::FindScheme(scheme);
-      changed.Boundary->setEnabled(!entry->Curve);
-      changed.CreaseMethod->setEnabled(!entry->Curve);
-      changed.Limit->setEnabled(entry->LimitPositions);
-      this->Updating = updating;
-      if (!this->Updating)
-      {
-        this->UpdateViews();
-      }
-    };
-    connect(view.Scheme, &QComboBox::currentTextChanged, this, schemeChanged);
-    schemeChanged();
-    connect(view.Boundary, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this]() {
-      if (!this->Updating)
-        this->UpdateViews();
-    });
-    connect(view.Tension, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this]() {
-      if (!this->Updating)
-        this->UpdateViews();
-    });
-    connect(view.CreaseMethod, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this]() {
-      if (!this->Updating)
-        this->UpdateViews();
-    });
-    connect(view.Limit, &QCheckBox::toggled, this, [this]() {
-      if (!this->Updating)
-        this->UpdateViews();
-    });
+    view.Scheme->addItem(QString::fromStdString(entry.Name));
+    view.Scheme->setItemData(view.Scheme->count() - 1, QString::fromStdString(entry.Summary), Qt::ToolTipRole);
   }
-  layout->addStretch(1);
+  view.Scheme->setCurrentText(DefaultSchemes[v]);
+  viewForm->addRow("Scheme", view.Scheme);
+  view.Boundary = new QComboBox;
+  view.Boundary->addItems({ "none", "edge-only", "edge-and-corner" });
+  view.Boundary->setCurrentIndex(1);
+  viewForm->addRow("Boundary", view.Boundary);
+  view.Tension = new QDoubleSpinBox;
+  view.Tension->setDecimals(4);
+  view.Tension->setSingleStep(0.005);
+  view.Tension->setToolTip("butterfly: [-0.0625, 0.0625], four-point: [0, 0.125]");
+  viewForm->addRow("Tension", view.Tension);
+  view.CreaseMethod = new QComboBox;
+  view.CreaseMethod->addItems({ "uniform", "chaikin" });
+  view.CreaseMethod->setToolTip("How semi-sharp creases decay: one unit per level, or averaged along the "
+                                "crease first (OpenSubdiv's Chaikin)");
+  viewForm->addRow("Creases", view.CreaseMethod);
+  view.Limit = new QCheckBox("Limit: project, exact curvature (L)");
+  view.Limit->setToolTip("Move the points to the limit surface where the scheme has limit masks; Catmull-Clark "
+                         "and Loop also colour by the limit's exact curvature");
+  viewForm->addRow(view.Limit);
+  view.Statistics = new QLabel;
+  view.Statistics->setWordWrap(true);
+  view.Statistics->setTextInteractionFlags(Qt::TextSelectableByMouse);
+  viewForm->addRow(view.Statistics);
+  return view.Box;
+}
 
+void ExplorerWindow::ConnectViewControls(int v)
+{
+  ViewControls& view = this->Views[v];
+  auto schemeChanged = [this, v]() {
+    ViewControls& changed = this->Views[v];
+    const std::string scheme = changed.Scheme->currentText().toStdString();
+    const bool fourPoint = scheme == "four-point";
+    const bool updating = this->Updating;
+    this->Updating = true;
+    changed.Tension->setEnabled(scheme == "butterfly" || fourPoint);
+    changed.Tension->setRange(fourPoint ? 0.0 : -0.0625, fourPoint ? 0.125 : 0.0625);
+    changed.Tension->setValue(fourPoint ? 0.0625 : 0.0);
+    const subdapp::SchemeEntry* entry = subdapp::FindScheme(scheme);
+    changed.Boundary->setEnabled(!entry->Curve);
+    changed.CreaseMethod->setEnabled(!entry->Curve);
+    changed.Limit->setEnabled(entry->LimitPositions);
+    this->Updating = updating;
+    if (!this->Updating)
+    {
+      this->UpdateViews();
+    }
+  };
+  connect(view.Scheme, &QComboBox::currentTextChanged, this, schemeChanged);
+  schemeChanged();
+  connect(view.Boundary, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this]() {
+    if (!this->Updating)
+      this->UpdateViews();
+  });
+  connect(view.Tension, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this, [this]() {
+    if (!this->Updating)
+      this->UpdateViews();
+  });
+  connect(view.CreaseMethod, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this]() {
+    if (!this->Updating)
+      this->UpdateViews();
+  });
+  connect(view.Limit, &QCheckBox::toggled, this, [this]() {
+    if (!this->Updating)
+      this->UpdateViews();
+  });
+}
+
+void ExplorerWindow::ConnectGlobalControls()
+{
   connect(this->Layout, QOverload<int>::of(&QComboBox::currentIndexChanged), this,
     [this](int index) { this->SetViewCount(index == 0 ? 1 : (index == 1 ? 2 : 4)); });
   connect(this->LevelSlider, &QSlider::valueChanged, this, [this](int level) {
@@ -315,8 +338,6 @@ QWidget* ExplorerWindow::BuildControls()
       this->SetCageOpacity(value / 100.0);
   });
   connect(this->ShowWireframe, &QCheckBox::toggled, this, [this](bool show) { this->SetShowWireframe(show); });
-  this->SetViewCount(1);
-  return panel;
 }
 
 void ExplorerWindow::BuildMenus()

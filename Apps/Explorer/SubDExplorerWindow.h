@@ -133,7 +133,18 @@ private:
   };
 
   void BuildMenus();
+  /// The control panel: the groups below, connected, for one view.
   QWidget* BuildControls();
+  /// The "All views" group: cage, layout, level, colouring, range and overlay controls.
+  QGroupBox* BuildGlobalControls();
+  /// The "Creases" group: the selected cage element and its sharpness (connected).
+  QGroupBox* BuildCreaseControls();
+  /// The group of view v: scheme, boundary, tension, crease method, limit, statistics.
+  QGroupBox* BuildViewControls(int v);
+  /// Connects view v's controls to the updates they trigger.
+  void ConnectViewControls(int v);
+  /// Connects the "All views" controls to the updates they trigger.
+  void ConnectGlobalControls();
   void SetCage(vtkSmartPointer<vtkPolyData> cage, const QString& name);
   subdapp::SchemeOptions ViewOptions(int view) const;
   void ApplyResult(int view, const UpdateJob::ViewResult& result);

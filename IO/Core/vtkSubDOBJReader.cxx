@@ -184,141 +184,169 @@ std::string ParseTag(std::istringstream& in, OBJContents& contents)
   }
   return "";
 }
+
+// Reads `v x y z` (the words after the keyword) into `contents`; a problem, or "".
+std::string ParseVertex(LineWords& words, OBJContents& contents)
+{
+  const char *first, *last;
+  double xyz[3];
+  for (double& c : xyz)
+  {
+    if (!words.Next(first, last) || !ParseFiniteDouble(first, last, c))
+    {
+      return "a vertex needs 3 finite coordinates";
+    }
+  }
+  contents.Points.insert(contents.Points.end(), xyz, xyz + 3);
+  return "";
 }
 
-bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
+// Reads the corners of an `f` (face) or `l` (polyline) element into `contents`, using
+// `element` as scratch; a problem, or "".
+std::string ParseElement(LineWords& words, bool face, OBJContents& contents, std::vector<long>& element)
 {
-  long lineNumber = 0;
-  auto fail = [&](const std::string& what) { return this->Fail(lineNumber, what); };
-
-  OBJContents contents;
-  std::string line;
-  std::vector<long> element;
-  while (std::getline(file, line))
-  {
-    ++lineNumber;
-    const auto hash = line.find('#');
-    if (hash != std::string::npos)
-    {
-      line.erase(hash);
-    }
-    LineWords words(line);
-    const char *keyword, *keywordEnd, *first, *last;
-    if (!words.Next(keyword, keywordEnd))
-    {
-      continue;
-    }
-    if (IsWord(keyword, keywordEnd, "v"))
-    {
-      double xyz[3];
-      for (double& c : xyz)
-      {
-        if (!words.Next(first, last) || !ParseFiniteDouble(first, last, c))
-        {
-          return fail("a vertex needs 3 finite coordinates");
-        }
-      }
-      contents.Points.insert(contents.Points.end(), xyz, xyz + 3);
-    }
-    else if (IsWord(keyword, keywordEnd, "f") || IsWord(keyword, keywordEnd, "l"))
-    {
-      const bool face = *keyword == 'f';
-      element.clear();
-      const long numPoints = static_cast<long>(contents.Points.size() / 3);
-      while (words.Next(first, last))
-      {
-        long index;
-        if (!ObjIndex(first, std::find(first, last, '/'), numPoints, index))
-        {
-          return fail("'" + std::string(first, last) + "' is not a vertex index");
-        }
-        element.push_back(index);
-      }
-      if (element.size() < (face ? 3u : 2u))
-      {
-        return fail(face ? "a face needs at least 3 vertices" : "a line needs at least 2 vertices");
-      }
-      if (face)
-      {
-        contents.FaceCorners.insert(contents.FaceCorners.end(), element.begin(), element.end());
-        contents.FaceOffsets.push_back(static_cast<vtkIdType>(contents.FaceCorners.size()));
-      }
-      else
-      {
-        contents.Polylines.push_back(element);
-      }
-    }
-    else if (IsWord(keyword, keywordEnd, "t"))
-    {
-      std::istringstream in(words.Rest()); // tags are few: parsed as a stream
-      const std::string problem = ParseTag(in, contents);
-      if (!problem.empty())
-      {
-        return fail(problem);
-      }
-    }
-    // vt, vn, vp, g, o, s, usemtl, mtllib and the like carry nothing SubD uses.
-  }
-
-  // Check indices, then build the cells.
+  const char *first, *last;
+  element.clear();
   const long numPoints = static_cast<long>(contents.Points.size() / 3);
-  if (numPoints == 0)
+  while (words.Next(first, last))
   {
-    lineNumber = 0;
-    return fail("no vertices");
+    long index;
+    if (!ObjIndex(first, std::find(first, last, '/'), numPoints, index))
+    {
+      return "'" + std::string(first, last) + "' is not a vertex index";
+    }
+    element.push_back(index);
   }
-  // Cell c of `what`, the vertices [first, last): false (with `error`) if one does not exist.
-  auto checkCell = [numPoints](size_t c, const auto* first, const auto* last, const char* what, std::string& error) {
-    for (; first != last; ++first)
+  if (element.size() < (face ? 3u : 2u))
+  {
+    return face ? "a face needs at least 3 vertices" : "a line needs at least 2 vertices";
+  }
+  if (face)
+  {
+    contents.FaceCorners.insert(contents.FaceCorners.end(), element.begin(), element.end());
+    contents.FaceOffsets.push_back(static_cast<vtkIdType>(contents.FaceCorners.size()));
+  }
+  else
+  {
+    contents.Polylines.push_back(element);
+  }
+  return "";
+}
+
+// Reads one line of the file (comment included) into `contents`; a problem, or "".
+std::string ParseLine(std::string& line, OBJContents& contents, std::vector<long>& element)
+{
+  const auto hash = line.find('#');
+  if (hash != std::string::npos)
+  {
+    line.erase(hash);
+  }
+  LineWords words(line);
+  const char *keyword, *keywordEnd;
+  if (!words.Next(keyword, keywordEnd))
+  {
+    return "";
+  }
+  if (IsWord(keyword, keywordEnd, "v"))
+  {
+    return ParseVertex(words, contents);
+  }
+  if (IsWord(keyword, keywordEnd, "f") || IsWord(keyword, keywordEnd, "l"))
+  {
+    return ParseElement(words, *keyword == 'f', contents, element);
+  }
+  if (IsWord(keyword, keywordEnd, "t"))
+  {
+    std::istringstream in(words.Rest()); // tags are few: parsed as a stream
+    return ParseTag(in, contents);
+  }
+  // vt, vn, vp, g, o, s, usemtl, mtllib and the like carry nothing SubD uses.
+  return "";
+}
+
+// Cell c of `what`, the vertices [first, last): false (with `error`) if one does not exist.
+template <typename Index>
+bool CheckCell(long numPoints, size_t c, const Index* first, const Index* last, const char* what, std::string& error)
+{
+  for (; first != last; ++first)
+  {
+    if (*first < 0 || *first >= numPoints)
     {
-      if (*first < 0 || *first >= numPoints)
-      {
-        error = std::string(what) + " " + std::to_string(c) + " uses vertex " + std::to_string(*first) +
-          " but the file has " + std::to_string(numPoints) + " vertices";
-        return false;
-      }
+      error = std::string(what) + " " + std::to_string(c) + " uses vertex " + std::to_string(*first) +
+        " but the file has " + std::to_string(numPoints) + " vertices";
+      return false;
     }
-    return true;
-  };
-  auto checkAll = [&checkCell](const std::vector<std::vector<long>>& cells, const char* what, std::string& error) {
-    for (size_t c = 0; c < cells.size(); ++c)
+  }
+  return true;
+}
+
+// Every cell of `cells` (named `what`): false (with `error`) at the first with a missing vertex.
+bool CheckCells(long numPoints, const std::vector<std::vector<long>>& cells, const char* what, std::string& error)
+{
+  for (size_t c = 0; c < cells.size(); ++c)
+  {
+    if (!CheckCell(numPoints, c, cells[c].data(), cells[c].data() + cells[c].size(), what, error))
     {
-      if (!checkCell(c, cells[c].data(), cells[c].data() + cells[c].size(), what, error))
-      {
-        return false;
-      }
+      return false;
     }
-    return true;
-  };
+  }
+  return true;
+}
+
+// The first index of the whole file naming a vertex or face it does not have, as an error
+// message; "" when all are in range (`contents` has vertices).
+std::string CheckIndices(const OBJContents& contents)
+{
+  const long numPoints = static_cast<long>(contents.Points.size() / 3);
   std::string error;
-  lineNumber = 0;
   const vtkIdType numFaces = static_cast<vtkIdType>(contents.FaceOffsets.size()) - 1;
   const vtkIdType* corners = contents.FaceCorners.data();
   for (vtkIdType f = 0; f < numFaces && error.empty(); ++f)
   {
-    checkCell(static_cast<size_t>(f), corners + contents.FaceOffsets[f], corners + contents.FaceOffsets[f + 1], "face",
-      error);
+    CheckCell(numPoints, static_cast<size_t>(f), corners + contents.FaceOffsets[f],
+      corners + contents.FaceOffsets[f + 1], "face", error);
   }
-  if (!error.empty() || !checkAll(contents.Polylines, "line", error) ||
-    !checkAll(contents.CreaseChains, "crease tag", error))
+  if (!error.empty() || !CheckCells(numPoints, contents.Polylines, "line", error) ||
+    !CheckCells(numPoints, contents.CreaseChains, "crease tag", error))
   {
-    return fail(error);
+    return error;
   }
   for (const auto& corner : contents.Corners)
   {
     if (corner.first < 0 || corner.first >= numPoints)
     {
-      return fail("corner tag names vertex " + std::to_string(corner.first) + " of " + std::to_string(numPoints));
+      return "corner tag names vertex " + std::to_string(corner.first) + " of " + std::to_string(numPoints);
     }
   }
   for (long f : contents.Holes)
   {
     if (f < 0 || f >= numFaces)
     {
-      return fail("hole tag names face " + std::to_string(f) + " of " + std::to_string(numFaces));
+      return "hole tag names face " + std::to_string(f) + " of " + std::to_string(numFaces);
     }
   }
+  return "";
+}
 
+// Appends each element of `elements` to `cells` as one cell.
+void ToCells(const std::vector<std::vector<long>>& elements, vtkCellArray* cells)
+{
+  for (const auto& element : elements)
+  {
+    cells->InsertNextCell(static_cast<vtkIdType>(element.size()));
+    for (long v : element)
+    {
+      cells->InsertCellPoint(v);
+    }
+  }
+}
+
+// Sets the output's points, its faces (Polys) and its polylines then crease chains (Lines,
+// only if there are some).
+void BuildGeometry(const OBJContents& contents, vtkPolyData* output)
+{
+  const long numPoints = static_cast<long>(contents.Points.size() / 3);
+  const vtkIdType numFaces = static_cast<vtkIdType>(contents.FaceOffsets.size()) - 1;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(numPoints);
@@ -326,16 +354,6 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
   {
     points->SetPoint(i, &contents.Points[3 * i]);
   }
-  auto toCells = [](const std::vector<std::vector<long>>& elements, vtkCellArray* cells) {
-    for (const auto& element : elements)
-    {
-      cells->InsertNextCell(static_cast<vtkIdType>(element.size()));
-      for (long v : element)
-      {
-        cells->InsertCellPoint(v);
-      }
-    }
-  };
   vtkNew<vtkCellArray> polys, lines;
   {
     vtkNew<vtkIdTypeArray> offsets, connectivity; // the flat lists as they are
@@ -345,18 +363,23 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
     std::copy(contents.FaceCorners.begin(), contents.FaceCorners.end(), connectivity->GetPointer(0));
     polys->SetData(offsets, connectivity);
   }
-  toCells(contents.Polylines, lines);
-  toCells(contents.CreaseChains, lines);
+  ToCells(contents.Polylines, lines);
+  ToCells(contents.CreaseChains, lines);
   output->SetPoints(points);
   output->SetPolys(polys);
   if (lines->GetNumberOfCells() > 0)
   {
     output->SetLines(lines);
   }
+}
 
+// Adds the "Sharpness", "Hole" and "CornerSharpness" arrays the file's tags ask for to the
+// output BuildGeometry made.
+void AddTagArrays(const OBJContents& contents, vtkPolyData* output)
+{
   // Cell order is lines (polylines, then crease tags), then faces.
-  const vtkIdType numLines = lines->GetNumberOfCells();
-  const vtkIdType numCells = numLines + polys->GetNumberOfCells();
+  const vtkIdType numLines = static_cast<vtkIdType>(contents.Polylines.size() + contents.CreaseChains.size());
+  const vtkIdType numCells = numLines + static_cast<vtkIdType>(contents.FaceOffsets.size()) - 1;
   if (!contents.CreaseChains.empty())
   {
     vtkNew<vtkFloatArray> sharpness;
@@ -390,7 +413,7 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
   {
     vtkNew<vtkFloatArray> corners;
     corners->SetName("CornerSharpness");
-    corners->SetNumberOfTuples(numPoints);
+    corners->SetNumberOfTuples(static_cast<vtkIdType>(contents.Points.size() / 3));
     corners->Fill(0.0);
     for (const auto& corner : contents.Corners)
     {
@@ -398,14 +421,49 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
     }
     output->GetPointData()->AddArray(corners);
   }
+}
+
+// The names of `tags`, separated by ", ".
+std::string JoinNames(const std::set<std::string>& tags)
+{
+  std::string names;
+  for (const std::string& name : tags)
+  {
+    names += (names.empty() ? "" : ", ") + name;
+  }
+  return names;
+}
+}
+
+bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
+{
+  OBJContents contents;
+  std::string line;
+  std::vector<long> element;
+  for (long lineNumber = 1; std::getline(file, line); ++lineNumber)
+  {
+    const std::string problem = ParseLine(line, contents, element);
+    if (!problem.empty())
+    {
+      return this->Fail(lineNumber, problem);
+    }
+  }
+  // Indices are checked once the whole file is read, then the cells are built.
+  if (contents.Points.empty())
+  {
+    return this->Fail(0, "no vertices");
+  }
+  const std::string error = CheckIndices(contents);
+  if (!error.empty())
+  {
+    return this->Fail(0, error);
+  }
+  BuildGeometry(contents, output);
+  AddTagArrays(contents, output);
   if (!contents.SkippedTags.empty())
   {
-    std::string names;
-    for (const std::string& name : contents.SkippedTags)
-    {
-      names += (names.empty() ? "" : ", ") + name;
-    }
-    vtkWarningMacro("'" << this->FileName << "': skipped tag(s) SubD does not use: " << names << ".");
+    vtkWarningMacro("'" << this->FileName << "': skipped tag(s) SubD does not use: " << JoinNames(contents.SkippedTags)
+                        << ".");
   }
   return true;
 }

@@ -110,94 +110,87 @@ std::string PropertyName(const char* arrayName, int index)
   }
   return name;
 }
-}
 
-void vtkSubDPLYWriter::WriteFile(vtkPolyData* input, std::ostream& file)
+// Appends the columns of point-data array `a` of `pd` to `columns` as the reader names them
+// (normals, colours, texture coordinates, single components), or its name to `skipped` when
+// PLY has no property form for it.
+void AddPointDataColumns(vtkPointData* pd, int a, std::vector<Column>& columns, std::vector<std::string>& skipped)
 {
-  const vtkIdType numPoints = input->GetNumberOfPoints();
-  if (numPoints > std::numeric_limits<std::int32_t>::max())
+  vtkDataArray* array = pd->GetArray(a);
+  if (!array)
   {
-    vtkErrorMacro(<< numPoints << " points: more than PLY's int vertex indices can name.");
+    skipped.push_back(pd->GetAbstractArray(a)->GetName() ? pd->GetAbstractArray(a)->GetName() : "");
     return;
   }
-  if (input->GetNumberOfLines() + input->GetNumberOfVerts() > 0)
+  const int components = array->GetNumberOfComponents();
+  const int type = WrittenType(array->GetDataType());
+  const char* name = array->GetName() ? array->GetName() : "";
+  if (array == pd->GetNormals() && components == 3)
   {
-    vtkWarningMacro("PLY holds only polygons here: " << input->GetNumberOfLines() << " lines and "
-                                                    << input->GetNumberOfVerts() << " verts are not written.");
+    for (int c = 0; c < 3; ++c)
+    {
+      columns.push_back({ array, c, type, std::string("n") + "xyz"[c] });
+    }
   }
-  if (input->GetCellData()->GetNumberOfArrays() > 0)
+  else if (array->GetDataType() == VTK_UNSIGNED_CHAR && (components == 3 || components == 4) &&
+    (array == pd->GetScalars() || std::strcmp(name, "RGB") == 0 || std::strcmp(name, "RGBA") == 0))
   {
-    vtkWarningMacro("Cell data is not written to PLY (" << input->GetCellData()->GetNumberOfArrays()
-                                                        << " array(s)).");
+    const char* channels[] = { "red", "green", "blue", "alpha" };
+    for (int c = 0; c < components; ++c)
+    {
+      columns.push_back({ array, c, type, channels[c] });
+    }
   }
+  else if (array == pd->GetTCoords() && components == 2)
+  {
+    columns.push_back({ array, 0, type, "u" });
+    columns.push_back({ array, 1, type, "v" });
+  }
+  else if (components == 1)
+  {
+    columns.push_back({ array, 0, type, PropertyName(name, a) });
+  }
+  else
+  {
+    skipped.push_back(name);
+  }
+}
 
-  // The vertex element's properties: the points, then the point data as the reader names it.
+// The vertex element's properties: the points, then the point data as the reader names it;
+// the names of the point-data arrays not written go to `skipped`.
+std::vector<Column> VertexColumns(vtkPolyData* input, std::vector<std::string>& skipped)
+{
   std::vector<Column> columns;
-  vtkDataArray* coordinates = numPoints > 0 ? input->GetPoints()->GetData() : nullptr;
+  vtkDataArray* coordinates = input->GetNumberOfPoints() > 0 ? input->GetPoints()->GetData() : nullptr;
   const int pointType = coordinates && coordinates->GetDataType() == VTK_FLOAT ? VTK_FLOAT : VTK_DOUBLE;
   for (int c = 0; c < 3 && coordinates; ++c)
   {
     columns.push_back({ coordinates, c, pointType, std::string(1, "xyz"[c]) });
   }
   vtkPointData* pd = input->GetPointData();
-  std::vector<std::string> skipped;
   for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
   {
-    vtkDataArray* array = pd->GetArray(a);
-    if (!array)
-    {
-      skipped.push_back(pd->GetAbstractArray(a)->GetName() ? pd->GetAbstractArray(a)->GetName() : "");
-      continue;
-    }
-    const int components = array->GetNumberOfComponents();
-    const int type = WrittenType(array->GetDataType());
-    const char* name = array->GetName() ? array->GetName() : "";
-    if (array == pd->GetNormals() && components == 3)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        columns.push_back({ array, c, type, std::string("n") + "xyz"[c] });
-      }
-    }
-    else if (array->GetDataType() == VTK_UNSIGNED_CHAR && (components == 3 || components == 4) &&
-      (array == pd->GetScalars() || std::strcmp(name, "RGB") == 0 || std::strcmp(name, "RGBA") == 0))
-    {
-      const char* channels[] = { "red", "green", "blue", "alpha" };
-      for (int c = 0; c < components; ++c)
-      {
-        columns.push_back({ array, c, type, channels[c] });
-      }
-    }
-    else if (array == pd->GetTCoords() && components == 2)
-    {
-      columns.push_back({ array, 0, type, "u" });
-      columns.push_back({ array, 1, type, "v" });
-    }
-    else if (components == 1)
-    {
-      columns.push_back({ array, 0, type, PropertyName(name, a) });
-    }
-    else
-    {
-      skipped.push_back(name);
-    }
+    AddPointDataColumns(pd, a, columns, skipped);
   }
-  if (!skipped.empty())
+  return columns;
+}
+
+// `names` quoted and separated by ", ".
+std::string QuotedNames(const std::vector<std::string>& names)
+{
+  std::string quoted;
+  for (const std::string& name : names)
   {
-    std::string names;
-    for (const std::string& name : skipped)
-    {
-      names += (names.empty() ? "'" : ", '") + name + "'";
-    }
-    vtkWarningMacro("Point-data array(s) " << names << " have no PLY property form and are not written.");
+    quoted += (quoted.empty() ? "'" : ", '") + name + "'";
   }
+  return quoted;
+}
 
-  vtkCellArray* polys = input->GetPolys();
-  vtkCellArray* strips = input->GetStrips();
-  const vtkIdType numFaces = polys->GetNumberOfCells() + vtkSubDCountStripTriangles(strips);
-  const bool wideCounts = polys->GetMaxCellSize() > 255;
-
-  vtkSubDBufferedOutput out(file);
+// Writes the PLY header: binary in the machine's byte order, the vertex element's `columns`,
+// the face element with its vertex counts as int when `wideCounts`, else uchar.
+void WriteHeader(vtkSubDBufferedOutput& out, vtkIdType numPoints, const std::vector<Column>& columns,
+  vtkIdType numFaces, bool wideCounts)
+{
   out << "ply\nformat " << (subdio::FileScanner::MachineIsBigEndian() ? "binary_big_endian" : "binary_little_endian")
       << " 1.0\ncomment written by SubD\nelement vertex " << numPoints << "\n";
   for (const Column& column : columns)
@@ -206,14 +199,12 @@ void vtkSubDPLYWriter::WriteFile(vtkPolyData* input, std::ostream& file)
   }
   out << "element face " << numFaces << "\nproperty list " << (wideCounts ? "int" : "uchar")
       << " int vertex_indices\nend_header\n";
+}
 
-  // Records made on threads, chunk by chunk, and written in order (vtkSubDFormatInParallel).
-  vtkSubDFormatInParallel(out, numPoints, [&columns](vtkSubDBufferedOutput& record, vtkIdType i) {
-    for (const Column& column : columns)
-    {
-      PutAs(record, column.Type, column.Value(i));
-    }
-  });
+// Writes the face element: the polygons, then the strips' triangles, each as its vertex count
+// (int when `wideCounts`, else uchar) and int vertex indices.
+void WriteFaces(vtkSubDBufferedOutput& out, vtkCellArray* polys, vtkCellArray* strips, bool wideCounts)
+{
   auto putCount = [wideCounts](vtkSubDBufferedOutput& record, vtkIdType n) {
     if (wideCounts)
     {
@@ -237,6 +228,48 @@ void vtkSubDPLYWriter::WriteFile(vtkPolyData* input, std::ostream& file)
     out.Put(static_cast<std::int32_t>(b));
     out.Put(static_cast<std::int32_t>(c));
   });
+}
+}
+
+void vtkSubDPLYWriter::WriteFile(vtkPolyData* input, std::ostream& file)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  if (numPoints > std::numeric_limits<std::int32_t>::max())
+  {
+    vtkErrorMacro(<< numPoints << " points: more than PLY's int vertex indices can name.");
+    return;
+  }
+  if (input->GetNumberOfLines() + input->GetNumberOfVerts() > 0)
+  {
+    vtkWarningMacro("PLY holds only polygons here: " << input->GetNumberOfLines() << " lines and "
+                                                    << input->GetNumberOfVerts() << " verts are not written.");
+  }
+  if (input->GetCellData()->GetNumberOfArrays() > 0)
+  {
+    vtkWarningMacro("Cell data is not written to PLY (" << input->GetCellData()->GetNumberOfArrays()
+                                                        << " array(s)).");
+  }
+  std::vector<std::string> skipped;
+  const std::vector<Column> columns = VertexColumns(input, skipped);
+  if (!skipped.empty())
+  {
+    vtkWarningMacro("Point-data array(s) " << QuotedNames(skipped) << " have no PLY property form and are not written.");
+  }
+
+  vtkCellArray* polys = input->GetPolys();
+  vtkCellArray* strips = input->GetStrips();
+  const vtkIdType numFaces = polys->GetNumberOfCells() + vtkSubDCountStripTriangles(strips);
+  const bool wideCounts = polys->GetMaxCellSize() > 255;
+  vtkSubDBufferedOutput out(file);
+  WriteHeader(out, numPoints, columns, numFaces, wideCounts);
+  // Records made on threads, chunk by chunk, and written in order (vtkSubDFormatInParallel).
+  vtkSubDFormatInParallel(out, numPoints, [&columns](vtkSubDBufferedOutput& record, vtkIdType i) {
+    for (const Column& column : columns)
+    {
+      PutAs(record, column.Type, column.Value(i));
+    }
+  });
+  WriteFaces(out, polys, strips, wideCounts);
 }
 
 void vtkSubDPLYWriter::PrintSelf(ostream& os, vtkIndent indent)

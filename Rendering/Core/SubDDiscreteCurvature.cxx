@@ -12,6 +12,116 @@
 #include <algorithm>
 #include <cmath>
 
+namespace
+{
+// The points of `mesh` as a flat array of coordinates.
+std::vector<double> PointCoordinates(vtkPolyData* mesh)
+{
+  const vtkIdType numPoints = mesh->GetNumberOfPoints();
+  std::vector<double> xyz(static_cast<size_t>(3 * numPoints));
+  for (vtkIdType p = 0; p < numPoints; ++p)
+  {
+    mesh->GetPoints()->GetPoint(p, &xyz[static_cast<size_t>(3 * p)]);
+  }
+  return xyz;
+}
+
+// Per polygon: its unit normal (Newell's, into `normals`); per point (`xyz`): adds its share
+// of each polygon's area to `share` and its corner angles to `angles`.
+void PolygonNormalsAndAngles(const std::vector<double>& xyz, const subdrender::PolygonAdjacency& adjacency,
+  std::vector<double>& normals, std::vector<double>& share, std::vector<double>& angles)
+{
+  const std::vector<vtkIdType>& corners = adjacency.Corners;
+  auto point = [&xyz](vtkIdType p) { return &xyz[static_cast<size_t>(3 * p)]; };
+  for (vtkIdType f = 0; f < adjacency.GetNumberOfPolygons(); ++f)
+  {
+    const vtkIdType first = adjacency.Offsets[f], size = adjacency.Offsets[f + 1] - first;
+    double n[3] = { 0.0, 0.0, 0.0 };
+    for (vtkIdType c = first; c < first + size; ++c)
+    {
+      const double* p = point(corners[c]);
+      const double* q = point(corners[adjacency.Next(f, c)]);
+      n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+      n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+      n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    const double twiceArea = vtkMath::Norm(n);
+    if (twiceArea > 0.0)
+    {
+      vtkMath::MultiplyScalar(n, 1.0 / twiceArea);
+    }
+    std::copy(n, n + 3, &normals[static_cast<size_t>(3 * f)]);
+    for (vtkIdType c = first; c < first + size; ++c)
+    {
+      const vtkIdType previous = c == first ? first + size - 1 : c - 1;
+      const double* p = point(corners[c]);
+      double e1[3], e2[3], cross[3];
+      vtkMath::Subtract(point(corners[adjacency.Next(f, c)]), p, e1);
+      vtkMath::Subtract(point(corners[previous]), p, e2);
+      vtkMath::Cross(e1, e2, cross);
+      angles[static_cast<size_t>(corners[c])] += std::atan2(vtkMath::Norm(cross), vtkMath::Dot(e1, e2));
+      share[static_cast<size_t>(corners[c])] += 0.5 * twiceArea / static_cast<double>(size);
+    }
+  }
+}
+
+// Adds |e| b_e / 4 of each interior edge e (b_e its signed dihedral angle, from the polygon
+// `normals`) to the `bending` of both its ends.
+void AddEdgeBending(const std::vector<double>& xyz, const subdrender::PolygonAdjacency& adjacency,
+  const std::vector<double>& normals, std::vector<double>& bending)
+{
+  const std::vector<vtkIdType>& corners = adjacency.Corners;
+  auto point = [&xyz](vtkIdType p) { return &xyz[static_cast<size_t>(3 * p)]; };
+  for (vtkIdType f = 0; f < adjacency.GetNumberOfPolygons(); ++f)
+  {
+    for (vtkIdType c = adjacency.Offsets[f]; c < adjacency.Offsets[f + 1]; ++c)
+    {
+      const vtkIdType a = corners[c], b = corners[adjacency.Next(f, c)];
+      const vtkIdType g = adjacency.Across[static_cast<size_t>(c)];
+      if (g < f) // each interior edge once (from its lower-numbered polygon); none on the boundary
+      {
+        continue;
+      }
+      const double* n1 = &normals[static_cast<size_t>(3 * f)];
+      const double* n2 = &normals[static_cast<size_t>(3 * g)];
+      double e[3], cross[3];
+      vtkMath::Subtract(point(b), point(a), e);
+      vtkMath::Cross(n1, n2, cross);
+      // Signed dihedral angle: the normals turn about the edge a -> b (f on its left) when
+      // the surface is convex there.
+      const double length = vtkMath::Norm(e);
+      const double beta = length > 0.0 ? std::atan2(vtkMath::Dot(cross, e) / length, vtkMath::Dot(n1, n2)) : 0.0;
+      bending[static_cast<size_t>(a)] += 0.25 * length * beta;
+      bending[static_cast<size_t>(b)] += 0.25 * length * beta;
+    }
+  }
+}
+
+// The curvature `coloring` at a point from its area `share`, corner angle sum and bending
+// (0 without area).
+double PointCurvature(int coloring, double share, double angles, double bending)
+{
+  if (!(share > 0.0))
+  {
+    return 0.0;
+  }
+  const double K = (2.0 * vtkMath::Pi() - angles) / share;
+  const double H = bending / share;
+  const double spread = std::sqrt(std::max(0.0, H * H - K));
+  switch (coloring)
+  {
+    case vtkSubDScene::COLOR_GAUSSIAN_CURVATURE:
+      return K;
+    case vtkSubDScene::COLOR_MAXIMUM_CURVATURE:
+      return H + spread;
+    case vtkSubDScene::COLOR_MINIMUM_CURVATURE:
+      return H - spread;
+    default:
+      return H;
+  }
+}
+}
+
 namespace subdrender
 {
 PolygonAdjacency::PolygonAdjacency(vtkPolyData* mesh)
@@ -85,72 +195,15 @@ PolygonAdjacency::PolygonAdjacency(vtkPolyData* mesh)
 vtkSmartPointer<vtkDoubleArray> DiscreteCurvature(vtkPolyData* mesh, const PolygonAdjacency& adjacency, int coloring)
 {
   const vtkIdType numPoints = mesh->GetNumberOfPoints();
-  const std::vector<vtkIdType>& corners = adjacency.Corners;
-  const vtkIdType numPolygons = adjacency.GetNumberOfPolygons();
-  std::vector<double> xyz(static_cast<size_t>(3 * numPoints));
-  for (vtkIdType p = 0; p < numPoints; ++p)
-  {
-    mesh->GetPoints()->GetPoint(p, &xyz[static_cast<size_t>(3 * p)]);
-  }
-  auto point = [&xyz](vtkIdType p) { return &xyz[static_cast<size_t>(3 * p)]; };
-
+  const std::vector<double> xyz = PointCoordinates(mesh);
   // Per polygon: unit normal (Newell's); per point: area share, angle sum, sum |e| b_e / 4.
-  std::vector<double> normals(static_cast<size_t>(3 * numPolygons));
+  std::vector<double> normals(static_cast<size_t>(3 * adjacency.GetNumberOfPolygons()));
   std::vector<double> share(static_cast<size_t>(numPoints), 0.0), angles(static_cast<size_t>(numPoints), 0.0),
     bending(static_cast<size_t>(numPoints), 0.0);
-  for (vtkIdType f = 0; f < numPolygons; ++f)
+  PolygonNormalsAndAngles(xyz, adjacency, normals, share, angles);
+  if (coloring != vtkSubDScene::COLOR_GAUSSIAN_CURVATURE)
   {
-    const vtkIdType first = adjacency.Offsets[f], size = adjacency.Offsets[f + 1] - first;
-    double n[3] = { 0.0, 0.0, 0.0 };
-    for (vtkIdType c = first; c < first + size; ++c)
-    {
-      const double* p = point(corners[c]);
-      const double* q = point(corners[adjacency.Next(f, c)]);
-      n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-      n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-      n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
-    const double twiceArea = vtkMath::Norm(n);
-    if (twiceArea > 0.0)
-    {
-      vtkMath::MultiplyScalar(n, 1.0 / twiceArea);
-    }
-    std::copy(n, n + 3, &normals[static_cast<size_t>(3 * f)]);
-    for (vtkIdType c = first; c < first + size; ++c)
-    {
-      const vtkIdType previous = c == first ? first + size - 1 : c - 1;
-      const double* p = point(corners[c]);
-      double e1[3], e2[3], cross[3];
-      vtkMath::Subtract(point(corners[adjacency.Next(f, c)]), p, e1);
-      vtkMath::Subtract(point(corners[previous]), p, e2);
-      vtkMath::Cross(e1, e2, cross);
-      angles[static_cast<size_t>(corners[c])] += std::atan2(vtkMath::Norm(cross), vtkMath::Dot(e1, e2));
-      share[static_cast<size_t>(corners[c])] += 0.5 * twiceArea / static_cast<double>(size);
-    }
-  }
-  const bool needMean = coloring != vtkSubDScene::COLOR_GAUSSIAN_CURVATURE;
-  for (vtkIdType f = 0; f < numPolygons && needMean; ++f)
-  {
-    for (vtkIdType c = adjacency.Offsets[f]; c < adjacency.Offsets[f + 1]; ++c)
-    {
-      const vtkIdType a = corners[c], b = corners[adjacency.Next(f, c)];
-      const vtkIdType g = adjacency.Across[static_cast<size_t>(c)];
-      if (g < f) // each interior edge once (from its lower-numbered polygon); none on the boundary
-      {
-        continue;
-      }
-      const double* n1 = &normals[static_cast<size_t>(3 * f)];
-      const double* n2 = &normals[static_cast<size_t>(3 * g)];
-      double e[3], cross[3];
-      vtkMath::Subtract(point(b), point(a), e);
-      vtkMath::Cross(n1, n2, cross);
-      // Signed dihedral angle: the normals turn about the edge a -> b (f on its left) when
-      // the surface is convex there.
-      const double length = vtkMath::Norm(e);
-      const double beta = length > 0.0 ? std::atan2(vtkMath::Dot(cross, e) / length, vtkMath::Dot(n1, n2)) : 0.0;
-      bending[static_cast<size_t>(a)] += 0.25 * length * beta;
-      bending[static_cast<size_t>(b)] += 0.25 * length * beta;
-    }
+    AddEdgeBending(xyz, adjacency, normals, bending);
   }
 
   auto curvature = vtkSmartPointer<vtkDoubleArray>::New();
@@ -158,29 +211,8 @@ vtkSmartPointer<vtkDoubleArray> DiscreteCurvature(vtkPolyData* mesh, const Polyg
   curvature->SetNumberOfTuples(numPoints);
   for (vtkIdType p = 0; p < numPoints; ++p)
   {
-    const double pointShare = share[static_cast<size_t>(p)];
-    double value = 0.0;
-    if (pointShare > 0.0)
-    {
-      const double K = (2.0 * vtkMath::Pi() - angles[static_cast<size_t>(p)]) / pointShare;
-      const double H = bending[static_cast<size_t>(p)] / pointShare;
-      const double spread = std::sqrt(std::max(0.0, H * H - K));
-      switch (coloring)
-      {
-        case vtkSubDScene::COLOR_GAUSSIAN_CURVATURE:
-          value = K;
-          break;
-        case vtkSubDScene::COLOR_MAXIMUM_CURVATURE:
-          value = H + spread;
-          break;
-        case vtkSubDScene::COLOR_MINIMUM_CURVATURE:
-          value = H - spread;
-          break;
-        default:
-          value = H;
-      }
-    }
-    curvature->SetValue(p, value);
+    const size_t i = static_cast<size_t>(p);
+    curvature->SetValue(p, PointCurvature(coloring, share[i], angles[i], bending[i]));
   }
   return curvature;
 }

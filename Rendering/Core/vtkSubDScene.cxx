@@ -245,6 +245,176 @@ vtkRenderWindow* vtkSubDScene::GetRenderWindow()
   return this->Internals->Window;
 }
 
+namespace
+{
+// Prepares the views' surfaces that changed since the last Render() (or whose colouring
+// did), and gathers the interior curvature values of all views and the bounds of their
+// surfaces and cages.
+void PrepareViews(const std::vector<View>& views, int coloring, std::vector<PreparedSurface>& prepared,
+  std::vector<double>& values, vtkBoundingBox& box)
+{
+  prepared.resize(views.size());
+  for (size_t k = 0; k < views.size(); ++k)
+  {
+    const View& view = views[k];
+    PreparedSurface& surface = prepared[k];
+    if (surface.Source != view.Surface || surface.SourceTime != view.Surface->GetMTime() ||
+      surface.Coloring != coloring)
+    {
+      surface = PrepareSurface(view.Surface, coloring);
+    }
+    values.insert(values.end(), surface.Values.begin(), surface.Values.end());
+    double bounds[6];
+    view.Surface->GetBounds(bounds);
+    box.AddBounds(bounds);
+    if (view.Cage && view.Cage->GetNumberOfPoints() > 0)
+    {
+      view.Cage->GetBounds(bounds);
+      box.AddBounds(bounds);
+    }
+  }
+}
+
+// Places the one camera of all views: looking at the centre of `box` from `azimuth` and
+// `elevation` (degrees; at least 70 for a scene of curves only), far enough for the bounding
+// sphere to fit a view of the window's grid of `columns` x `rows`.
+void PlaceCamera(vtkCamera* camera, const vtkBoundingBox& box, const std::vector<View>& views, double azimuthDegrees,
+  double elevationDegrees, vtkRenderWindow* window, int columns, int rows)
+{
+  const double size = box.IsValid() ? box.GetDiagonalLength() : 1.0;
+  double center[3];
+  box.GetCenter(center);
+  const double azimuth = vtkMath::RadiansFromDegrees(azimuthDegrees);
+  // Curves are usually drawn in a plane: a scene of curves only is seen from higher up.
+  bool curvesOnly = true;
+  for (const View& view : views)
+  {
+    curvesOnly = curvesOnly && view.Surface->GetNumberOfPolys() == 0;
+  }
+  const double elevation =
+    vtkMath::RadiansFromDegrees(curvesOnly ? std::max(elevationDegrees, 70.0) : elevationDegrees);
+  const double direction[3] = { std::cos(elevation) * std::sin(azimuth), -std::cos(elevation) * std::cos(azimuth),
+    std::sin(elevation) };
+  camera->SetViewAngle(30.0);
+  // Fit the bounding sphere into the view angle (vertical), and into the width too when a
+  // view is narrower than tall.
+  const int* windowSize = window->GetSize();
+  const double aspect = windowSize[0] > 0 && windowSize[1] > 0
+    ? (static_cast<double>(windowSize[0]) / columns) / (static_cast<double>(windowSize[1]) / rows)
+    : 1.0;
+  const double distance = 0.5 * (size > 0 ? size : 1.0) / std::sin(vtkMath::RadiansFromDegrees(15.0)) * 1.02 *
+    std::max(1.0, 1.0 / aspect);
+  camera->SetFocalPoint(center);
+  camera->SetPosition(
+    center[0] + distance * direction[0], center[1] + distance * direction[1], center[2] + distance * direction[2]);
+  camera->SetViewUp(0.0, 0.0, 1.0);
+}
+
+// The actor of a prepared surface `mesh`: coloured by its active scalars through `table`, or
+// plain for COLOR_NONE.
+vtkSmartPointer<vtkActor> SurfaceActor(vtkPolyData* mesh, int coloring, vtkLookupTable* table)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  auto actor = vtkSmartPointer<vtkActor>::New();
+  actor->SetMapper(mapper);
+  if (coloring == vtkSubDScene::COLOR_NONE)
+  {
+    mapper->ScalarVisibilityOff();
+    actor->GetProperty()->SetColor(SurfaceColor[0], SurfaceColor[1], SurfaceColor[2]);
+  }
+  else
+  {
+    mapper->ScalarVisibilityOn();
+    mapper->SetLookupTable(table);
+    mapper->UseLookupTableScalarRangeOn();
+    mapper->SetScalarModeToUsePointData();
+  }
+  actor->GetProperty()->SetSpecular(0.2);
+  actor->GetProperty()->SetSpecularPower(20.0);
+  return actor;
+}
+
+// A view's title, white at its top left, its font sized for views `viewWidth` pixels wide.
+vtkSmartPointer<vtkTextActor> TitleActor(const std::string& text, int viewWidth)
+{
+  auto title = vtkSmartPointer<vtkTextActor>::New();
+  title->SetInput(text.c_str());
+  title->GetTextProperty()->SetFontSize(std::max(10, std::min(16, viewWidth / 12)));
+  title->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
+  title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
+  title->GetPositionCoordinate()->SetValue(0.02, 0.98);
+  title->GetTextProperty()->SetVerticalJustificationToTop();
+  return title;
+}
+
+// The horizontal scalar bar of `table` at a view's bottom, titled for `coloring`.
+vtkSmartPointer<vtkScalarBarActor> ScalarBarActor(vtkLookupTable* table, int coloring)
+{
+  auto bar = vtkSmartPointer<vtkScalarBarActor>::New();
+  bar->SetLookupTable(table);
+  static const char* const titles[] = { "", "Mean curvature", "Gaussian curvature", "Maximum curvature k1",
+    "Minimum curvature k2" };
+  bar->SetTitle(titles[coloring]);
+  bar->SetOrientationToHorizontal();
+  bar->SetNumberOfLabels(3);
+  bar->SetLabelFormat("%-#6.3g");
+  bar->SetPosition(0.2, 0.01);
+  bar->SetPosition2(0.6, 0.14);
+  bar->UnconstrainedFontSizeOn();
+  bar->GetTitleTextProperty()->SetFontSize(13);
+  bar->GetLabelTextProperty()->SetFontSize(11);
+  return bar;
+}
+}
+
+// Adds the renderer of view k, cell k of the grid of `columns` x `rows`, to `window`: its
+// surface (coloured through `table`) or curve, and the overlays the settings ask for.
+void vtkSubDScene::AddViewRenderer(
+  vtkRenderWindow* window, int k, int columns, int rows, vtkLookupTable* table, const vtkBoundingBox& box)
+{
+  const View& view = this->Internals->Views[k];
+  const double size = box.IsValid() ? box.GetDiagonalLength() : 1.0;
+  vtkSmartPointer<vtkRenderer> renderer = GridRenderer(k, columns, rows);
+  renderer->SetActiveCamera(this->Internals->Camera);
+  renderer->AddActor(SurfaceActor(this->Internals->Prepared[k].Mesh, this->Coloring, table));
+  if (this->ShowWireframe && view.Surface->GetNumberOfPolys() > 0)
+  {
+    renderer->AddActor(subdrender::WireframeActor(view.Surface));
+  }
+  if (this->ShowCage && view.Cage && view.Cage->GetNumberOfPoints() > 0)
+  {
+    this->Internals->CageOverlay.AddCage(renderer, view.Cage, { size, this->CageOpacity });
+  }
+  if (view.Cage && this->CageSelection[0] >= 0)
+  {
+    subdrender::AddCageSelection(renderer, view.Cage, this->CageSelection[0], this->CageSelection[1], size);
+  }
+  if (view.Surface->GetNumberOfPolys() == 0)
+  {
+    // A curve: the refined polylines as tubes.
+    renderer->AddActor(subdrender::TubeActor(subdrender::LinesOf(view.Surface), 0.008 * size, SurfaceColor));
+  }
+  else if (this->ShowCreases)
+  {
+    if (vtkSmartPointer<vtkActor> creases = subdrender::SharpLinesActor(view.Surface, 0.005 * size))
+    {
+      renderer->AddActor(creases);
+    }
+  }
+  if (!view.Title.empty())
+  {
+    renderer->AddActor2D(TitleActor(view.Title, this->ViewSize[0]));
+  }
+  if (this->ShowScalarBar && this->Coloring != COLOR_NONE && view.Surface->GetNumberOfPolys() > 0)
+  {
+    renderer->AddActor2D(ScalarBarActor(table, this->Coloring));
+  }
+  renderer->ResetCameraClippingRange(box.GetMinPoint()[0], box.GetMaxPoint()[0], box.GetMinPoint()[1],
+    box.GetMaxPoint()[1], box.GetMinPoint()[2], box.GetMaxPoint()[2]);
+  window->AddRenderer(renderer);
+}
+
 bool vtkSubDScene::Render()
 {
   const std::vector<View>& views = this->Internals->Views;
@@ -263,151 +433,24 @@ bool vtkSubDScene::Render()
   }
   window->GetRenderers()->RemoveAllItems();
 
-  std::vector<PreparedSurface>& prepared = this->Internals->Prepared;
-  prepared.resize(views.size());
   std::vector<double> values; // interior curvature of every view, for one colour scale
   vtkBoundingBox box;
-  for (size_t k = 0; k < views.size(); ++k)
-  {
-    const View& view = views[k];
-    PreparedSurface& surface = prepared[k];
-    if (surface.Source != view.Surface || surface.SourceTime != view.Surface->GetMTime() ||
-      surface.Coloring != this->Coloring)
-    {
-      surface = PrepareSurface(view.Surface, this->Coloring);
-    }
-    values.insert(values.end(), surface.Values.begin(), surface.Values.end());
-    double bounds[6];
-    view.Surface->GetBounds(bounds);
-    box.AddBounds(bounds);
-    if (view.Cage && view.Cage->GetNumberOfPoints() > 0)
-    {
-      view.Cage->GetBounds(bounds);
-      box.AddBounds(bounds);
-    }
-  }
-  const double size = box.IsValid() ? box.GetDiagonalLength() : 1.0;
+  PrepareViews(views, this->Coloring, this->Internals->Prepared, values, box);
   const std::array<double, 2> range = this->Coloring == COLOR_NONE
     ? std::array<double, 2>{ -1.0, 1.0 }
     : subdrender::ColorRange(values, this->RangeMode == RANGE_SYMMETRIC, this->RangePercentile);
   this->ColorRange[0] = range[0];
   this->ColorRange[1] = range[1];
   vtkSmartPointer<vtkLookupTable> table = subdrender::MakeColorTable(this->ColorMap, range[0], range[1]);
-
-  // One camera for all views, looking at the centre of the union of the bounds.
-  vtkCamera* camera = this->Internals->Camera;
   if (this->AutoResetCamera || !this->Internals->CameraPlaced)
   {
-    double center[3];
-    box.GetCenter(center);
-    const double azimuth = vtkMath::RadiansFromDegrees(this->ViewAzimuth);
-    // Curves are usually drawn in a plane: a scene of curves only is seen from higher up.
-    bool curvesOnly = true;
-    for (const View& view : views)
-    {
-      curvesOnly = curvesOnly && view.Surface->GetNumberOfPolys() == 0;
-    }
-    const double elevation =
-      vtkMath::RadiansFromDegrees(curvesOnly ? std::max(this->ViewElevation, 70.0) : this->ViewElevation);
-    const double direction[3] = { std::cos(elevation) * std::sin(azimuth),
-      -std::cos(elevation) * std::cos(azimuth), std::sin(elevation) };
-    camera->SetViewAngle(30.0);
-    // Fit the bounding sphere into the view angle (vertical), and into the width too when a
-    // view is narrower than tall.
-    const int* windowSize = window->GetSize();
-    const double aspect = windowSize[0] > 0 && windowSize[1] > 0
-      ? (static_cast<double>(windowSize[0]) / columns) / (static_cast<double>(windowSize[1]) / rows)
-      : 1.0;
-    const double distance = 0.5 * (size > 0 ? size : 1.0) / std::sin(vtkMath::RadiansFromDegrees(15.0)) * 1.02 *
-      std::max(1.0, 1.0 / aspect);
-    camera->SetFocalPoint(center);
-    camera->SetPosition(center[0] + distance * direction[0], center[1] + distance * direction[1],
-      center[2] + distance * direction[2]);
-    camera->SetViewUp(0.0, 0.0, 1.0);
+    PlaceCamera(this->Internals->Camera, box, views, this->ViewAzimuth, this->ViewElevation, window, columns, rows);
     this->Internals->CameraPlaced = true;
   }
 
   for (int k = 0; k < n; ++k)
   {
-    const View& view = views[k];
-    vtkSmartPointer<vtkRenderer> renderer = GridRenderer(k, columns, rows);
-    renderer->SetActiveCamera(camera);
-
-    vtkNew<vtkPolyDataMapper> mapper;
-    mapper->SetInputData(prepared[k].Mesh);
-    vtkNew<vtkActor> actor;
-    actor->SetMapper(mapper);
-    if (this->Coloring == COLOR_NONE)
-    {
-      mapper->ScalarVisibilityOff();
-      actor->GetProperty()->SetColor(SurfaceColor[0], SurfaceColor[1], SurfaceColor[2]);
-    }
-    else
-    {
-      mapper->ScalarVisibilityOn();
-      mapper->SetLookupTable(table);
-      mapper->UseLookupTableScalarRangeOn();
-      mapper->SetScalarModeToUsePointData();
-    }
-    actor->GetProperty()->SetSpecular(0.2);
-    actor->GetProperty()->SetSpecularPower(20.0);
-    renderer->AddActor(actor);
-
-    if (this->ShowWireframe && view.Surface->GetNumberOfPolys() > 0)
-    {
-      renderer->AddActor(subdrender::WireframeActor(view.Surface));
-    }
-    if (this->ShowCage && view.Cage && view.Cage->GetNumberOfPoints() > 0)
-    {
-      this->Internals->CageOverlay.AddCage(renderer, view.Cage, { size, this->CageOpacity });
-    }
-    if (view.Cage && this->CageSelection[0] >= 0)
-    {
-      subdrender::AddCageSelection(renderer, view.Cage, this->CageSelection[0], this->CageSelection[1], size);
-    }
-    if (view.Surface->GetNumberOfPolys() == 0)
-    {
-      // A curve: the refined polylines as tubes.
-      renderer->AddActor(subdrender::TubeActor(subdrender::LinesOf(view.Surface), 0.008 * size, SurfaceColor));
-    }
-    else if (this->ShowCreases)
-    {
-      if (vtkSmartPointer<vtkActor> creases = subdrender::SharpLinesActor(view.Surface, 0.005 * size))
-      {
-        renderer->AddActor(creases);
-      }
-    }
-    if (!view.Title.empty())
-    {
-      vtkNew<vtkTextActor> title;
-      title->SetInput(view.Title.c_str());
-      title->GetTextProperty()->SetFontSize(std::max(10, std::min(16, this->ViewSize[0] / 12)));
-      title->GetTextProperty()->SetColor(1.0, 1.0, 1.0);
-      title->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-      title->GetPositionCoordinate()->SetValue(0.02, 0.98);
-      title->GetTextProperty()->SetVerticalJustificationToTop();
-      renderer->AddActor2D(title);
-    }
-    if (this->ShowScalarBar && this->Coloring != COLOR_NONE && view.Surface->GetNumberOfPolys() > 0)
-    {
-      vtkNew<vtkScalarBarActor> bar;
-      bar->SetLookupTable(table);
-      static const char* const titles[] = { "", "Mean curvature", "Gaussian curvature", "Maximum curvature k1",
-        "Minimum curvature k2" };
-      bar->SetTitle(titles[this->Coloring]);
-      bar->SetOrientationToHorizontal();
-      bar->SetNumberOfLabels(3);
-      bar->SetLabelFormat("%-#6.3g");
-      bar->SetPosition(0.2, 0.01);
-      bar->SetPosition2(0.6, 0.14);
-      bar->UnconstrainedFontSizeOn();
-      bar->GetTitleTextProperty()->SetFontSize(13);
-      bar->GetLabelTextProperty()->SetFontSize(11);
-      renderer->AddActor2D(bar);
-    }
-    renderer->ResetCameraClippingRange(box.GetMinPoint()[0], box.GetMaxPoint()[0], box.GetMinPoint()[1],
-      box.GetMaxPoint()[1], box.GetMinPoint()[2], box.GetMaxPoint()[2]);
-    window->AddRenderer(renderer);
+    this->AddViewRenderer(window, k, columns, rows, table, box);
   }
   for (int k = n; k < rows * columns; ++k) // empty cells of the grid
   {

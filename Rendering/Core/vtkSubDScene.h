@@ -45,7 +45,9 @@
 
 #include <memory> // for std::unique_ptr
 
+class vtkBoundingBox;
 class vtkCamera;
+class vtkLookupTable;
 class vtkPolyData;
 class vtkRenderWindow;
 
@@ -268,6 +270,10 @@ private:
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+
+  // Render()'s step for view k: its renderer, in cell k of the grid, added to `window`.
+  void AddViewRenderer(
+    vtkRenderWindow* window, int k, int columns, int rows, vtkLookupTable* table, const vtkBoundingBox& box);
 };
 
 #endif
