@@ -173,6 +173,31 @@ bool ReadGrid(vtkPointSet* input, subd::QuadGrid& grid, std::string& error)
   return true;
 }
 
+// The scattered points' (u, v) parameters: the named point-data array, else the texture
+// coordinates, of 2 components or more and one tuple per point; null, with the reason, if
+// there are none.
+vtkDataArray* FindParameters(vtkPointSet* input, const char* name, std::string& error)
+{
+  vtkDataArray* parameters = name ? input->GetPointData()->GetArray(name) : nullptr;
+  if (!parameters)
+  {
+    parameters = input->GetPointData()->GetTCoords();
+  }
+  if (!parameters || parameters->GetNumberOfComponents() < 2)
+  {
+    error = std::string("the input has no 2-component point-data array \"") + (name ? name : "") +
+      "\" and no texture coordinates: scattered points need (u, v) parameters";
+    return nullptr;
+  }
+  if (parameters->GetNumberOfTuples() != input->GetNumberOfPoints())
+  {
+    error = "the parameter array has " + std::to_string(parameters->GetNumberOfTuples()) + " tuples for " +
+      std::to_string(input->GetNumberOfPoints()) + " points";
+    return nullptr;
+  }
+  return parameters;
+}
+
 // Refuses, before anything large exists, a net and surface that would need more than half
 // the physical memory: the fit's banded normal matrix (49 doubles per control point), the
 // net and the evaluated surface. Returns the reason, or nothing.
@@ -298,30 +323,15 @@ int vtkSubDBSplineSurfaceFilter::Execute(
     return fail("point " + std::to_string(badPoint) + " has a non-finite coordinate");
   }
 
+  std::string error;
   vtkDataArray* parameters = nullptr;
-  if (this->Mode == MODE_APPROXIMATE_SCATTERED)
+  if (this->Mode == MODE_APPROXIMATE_SCATTERED && !(parameters = FindParameters(input, this->ParameterArrayName, error)))
   {
-    parameters = this->ParameterArrayName ? input->GetPointData()->GetArray(this->ParameterArrayName) : nullptr;
-    if (!parameters)
-    {
-      parameters = input->GetPointData()->GetTCoords();
-    }
-    if (!parameters || parameters->GetNumberOfComponents() < 2)
-    {
-      return fail(std::string("the input has no 2-component point-data array \"") +
-        (this->ParameterArrayName ? this->ParameterArrayName : "") +
-        "\" and no texture coordinates: scattered points need (u, v) parameters");
-    }
-  }
-  if (parameters && parameters->GetNumberOfTuples() != input->GetNumberOfPoints())
-  {
-    return fail("the parameter array has " + std::to_string(parameters->GetNumberOfTuples()) + " tuples for " +
-      std::to_string(input->GetNumberOfPoints()) + " points");
+    return fail(error);
   }
   const CarriedArrays carried(input->GetPointData(), input->GetNumberOfPoints(), parameters);
   const size_t K = static_cast<size_t>(carried.Components);
   // The net's size: the grid's plus 2 (interpolation), or as asked (fit).
-  std::string error;
   subd::QuadGrid grid;
   if (this->Mode == MODE_INTERPOLATE_GRID && !ReadGrid(input, grid, error))
   {

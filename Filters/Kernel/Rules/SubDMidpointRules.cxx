@@ -161,20 +161,25 @@ void AddVertexFaces(const Level& parent, const std::vector<Index>& keptPoint, st
 namespace
 {
 // The child point of each vertex the split keeps (else InvalidIndex), numbered after the
-// midpoints in vertex order.
-std::vector<Index> NumberKeptPoints(const Level& parent)
+// midpoints in vertex order, and the number of child points.
+struct KeptPoints
+{
+  std::vector<Index> PointOf;
+  Index NumChildPoints = 0;
+};
+
+KeptPoints NumberKeptPoints(const Level& parent)
 {
   const MeshTopology& topo = parent.Topology;
-  std::vector<Index> keptPoint(static_cast<size_t>(topo.GetNumVertices()), InvalidIndex);
-  Index numChildPoints = topo.GetNumEdges();
+  KeptPoints kept{ std::vector<Index>(static_cast<size_t>(topo.GetNumVertices()), InvalidIndex), topo.GetNumEdges() };
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
     if (MidpointKeepsVertex(parent, v))
     {
-      keptPoint[v] = numChildPoints++;
+      kept.PointOf[v] = kept.NumChildPoints++;
     }
   }
-  return keptPoint;
+  return kept;
 }
 
 // The rows, one at a time (SubDRowWriting.h): the edges' midpoints, then the kept vertices'
@@ -182,12 +187,12 @@ std::vector<Index> NumberKeptPoints(const Level& parent)
 class MidpointRowWriter
 {
 public:
-  MidpointRowWriter(const Level& parent, const std::vector<Index>& keptPoint)
+  MidpointRowWriter(const Level& parent, const KeptPoints& kept)
     : Topology(parent.Topology)
   {
-    for (Index v = 0; v < static_cast<Index>(keptPoint.size()); ++v)
+    for (Index v = 0; v < static_cast<Index>(kept.PointOf.size()); ++v)
     {
-      if (keptPoint[v] != InvalidIndex)
+      if (kept.PointOf[v] != InvalidIndex)
       {
         this->KeptVertices.push_back(v);
       }
@@ -277,20 +282,18 @@ Level SplitWithKeptPoints(const Level& parent, const std::vector<Index>& keptPoi
 
 LevelRefinement RefineMidpoint(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
-  const std::vector<Index> keptPoint = NumberKeptPoints(parent);
-  const MidpointRowWriter writer(parent, keptPoint);
+  const KeptPoints kept = NumberKeptPoints(parent);
+  const MidpointRowWriter writer(parent, kept);
   LevelRefinement result;
   result.Stencils = WriteStencilTable(writer, 2 * static_cast<size_t>(writer.GetNumRows()));
-  result.Child = SplitWithKeptPoints(parent, keptPoint, writer.GetNumRows(), depth, parallelFor);
+  result.Child = SplitWithKeptPoints(parent, kept.PointOf, kept.NumChildPoints, depth, parallelFor);
   return result;
 }
 
 Level SplitMidpoint(const Level& parent, ChildTopology depth, const ParallelFor& parallelFor)
 {
-  const std::vector<Index> keptPoint = NumberKeptPoints(parent);
-  const Index numKept = static_cast<Index>(
-    std::count_if(keptPoint.begin(), keptPoint.end(), [](Index point) { return point != InvalidIndex; }));
-  return SplitWithKeptPoints(parent, keptPoint, parent.Topology.GetNumEdges() + numKept, depth, parallelFor);
+  const KeptPoints kept = NumberKeptPoints(parent);
+  return SplitWithKeptPoints(parent, kept.PointOf, kept.NumChildPoints, depth, parallelFor);
 }
 
 std::shared_ptr<const RowSource> MakeMidpointRowSource(std::shared_ptr<const Level> parent)
