@@ -9,6 +9,7 @@
 #include "SubDRefiner.h"
 #include "SubDRegularPatch.h"
 #include "SubDScheme.h"
+#include "SubDSmoothGrandchild.h"
 #include "vtkSubDAdoptedArray.h"
 #include "vtkSubDInputFaces.h"
 #include "vtkSubDLimitGeometry.h"
@@ -353,6 +354,11 @@ int vtkSubDSurfaceFilter::Execute(
   if (status == Status::Done && !reuse)
   {
     status = this->BuildRefinement(input, mesh, request.OutputGhostLevels);
+  }
+  else if (reuse)
+  {
+    // Applied again: worth the memory of the level the first application did without.
+    subd::BuildLevelBetween(*this->Internals->Scheme, this->Internals->Hierarchy);
   }
   if (status == Status::Done)
   {

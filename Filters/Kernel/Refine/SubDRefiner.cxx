@@ -1,4 +1,5 @@
 #include "SubDRefiner.h"
+#include "SubDSmoothGrandchild.h"
 
 namespace subd
 {
@@ -16,7 +17,17 @@ bool Refine(const Scheme& scheme, Level base, int levels, Hierarchy& out, const 
     auto parent = std::make_shared<const Level>(std::move(current));
     std::shared_ptr<const RowSource> rows =
       levelRows == LevelRows::Written ? scheme.MakeRowSource(parent) : nullptr;
-    if (rows)
+    // The last two levels of a smooth closed mesh at once: the level between, the largest
+    // a faces-only refinement would keep, is never built (SubDSmoothGrandchild.h).
+    if (rows && l + 2 == levels && finest == ChildTopology::FacesOnly && HasSmoothGrandchild(scheme, *parent))
+    {
+      SmoothGrandchild lastTwo = MakeSmoothGrandchild(scheme, parent);
+      out.Stencils.push_back(StencilTable::FromSource(std::move(rows)));
+      out.Stencils.push_back(StencilTable::FromSource(std::move(lastTwo.Rows)));
+      current = std::move(lastTwo.Finest);
+      ++l;
+    }
+    else if (rows)
     {
       current = scheme.Split(*parent, depth);
       out.Stencils.push_back(StencilTable::FromSource(std::move(rows)));

@@ -62,6 +62,17 @@ struct PointEntries
   void Child(Index p, double w) { this->Sum.Add(w, this->Children + 3 * static_cast<size_t>(p)); }
 };
 
+/// A mask's entries asked for ahead of reading them (PrefetchPoint): a row's points, many
+/// rows before it is summed, so that they arrive while the rows between are.
+template <typename T>
+struct PrefetchEntries
+{
+  const T* Parents;
+  const T* Children;
+  void Parent(Index v, double) { PrefetchPoint(this->Parents + 3 * static_cast<size_t>(v)); }
+  void Child(Index p, double) { PrefetchPoint(this->Children + 3 * static_cast<size_t>(p)); }
+};
+
 /// The masks several schemes share: a face's centroid (Catmull-Clark's face points, the
 /// bilinear scheme's, sqrt(3)'s), an edge's midpoint (the crease rule, the linear schemes',
 /// the midpoint scheme's), a copy (interpolating schemes' vertex points, corners).
@@ -195,11 +206,16 @@ private:
     const Index numParents = this->RowWriter.GetNumParents();
     for (Index row = begin; row < end; ++row)
     {
-      if constexpr (HasPrefetchRow<Writer, T>::value)
+      if (components == 3 && end - row > PrefetchDistance) // no overflow near 2^31 rows
       {
-        if (components == 3 && end - row > PrefetchDistance) // no overflow near 2^31 rows
+        if constexpr (HasPrefetchRow<Writer, T>::value)
         {
           this->RowWriter.PrefetchRow(row + PrefetchDistance, parents, children);
+        }
+        else if constexpr (HasVisitSmoothRow<Writer>::value)
+        {
+          PrefetchEntries<T> ahead{ parents, children };
+          this->RowWriter.VisitSmoothRow(row + PrefetchDistance, ahead);
         }
       }
       T* dst = children + static_cast<size_t>(row) * components;

@@ -30,15 +30,22 @@ struct QuadSplitNumbering
   Index VertexPoint(Index v) const { return NumFaces + NumEdges + v; }
 };
 
-/// The corners of the child of face f at its corner j (see above), in `number`'s points.
-inline void GetQuadSplitChild(const MeshTopology& topo, const QuadSplitNumbering& number, Index f, Index j, Index* out)
+/// The corners of the child at corner j of face f, whose n corners and edges are `fv` and
+/// `fe` (see above), in `number`'s points.
+inline void GetQuadSplitChild(
+  const Index* fv, const Index* fe, Index n, const QuadSplitNumbering& number, Index f, Index j, Index* out)
 {
-  const IndexSpan fv = topo.GetFaceVertices(f);
-  const IndexSpan fe = topo.GetFaceEdges(f);
   out[0] = number.VertexPoint(fv[j]);
   out[1] = number.EdgePoint(fe[j]);
   out[2] = number.FacePoint(f);
-  out[3] = number.EdgePoint(fe[j == 0 ? fv.size() - 1 : j - 1]);
+  out[3] = number.EdgePoint(fe[j == 0 ? n - 1 : j - 1]);
+}
+
+/// The same for face f of `topo`.
+inline void GetQuadSplitChild(const MeshTopology& topo, const QuadSplitNumbering& number, Index f, Index j, Index* out)
+{
+  const IndexSpan fv = topo.GetFaceVertices(f);
+  GetQuadSplitChild(fv.Data, topo.GetFaceEdges(f).Data, fv.size(), number, f, j, out);
 }
 }
 

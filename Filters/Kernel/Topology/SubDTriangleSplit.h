@@ -28,13 +28,11 @@ struct TriangleSplitNumbering
   Index VertexPoint(Index v) const { return NumEdges + v; }
 };
 
-/// The corners of the child j (0, 1, 2: at corner j; 3: the middle) of triangle f (see
-/// above), in `number`'s points.
+/// The corners of the child j (0, 1, 2: at corner j; 3: the middle) of a triangle whose
+/// corners and edges are `fv` and `fe` (see above), in `number`'s points.
 SUBD_ALWAYS_INLINE void GetTriangleSplitChild(
-  const MeshTopology& topo, const TriangleSplitNumbering& number, Index f, Index j, Index* out)
+  const Index* fv, const Index* fe, const TriangleSplitNumbering& number, Index j, Index* out)
 {
-  const Index* fv = topo.GetTriangleVertices(f); // every face a triangle: no offsets to read
-  const Index* fe = topo.GetTriangleEdges(f);
   if (j == 3)
   {
     out[0] = number.EdgePoint(fe[0]);
@@ -45,6 +43,13 @@ SUBD_ALWAYS_INLINE void GetTriangleSplitChild(
   out[0] = number.VertexPoint(fv[j]);
   out[1] = number.EdgePoint(fe[j]);
   out[2] = number.EdgePoint(fe[j == 0 ? 2 : j - 1]);
+}
+
+/// The same for triangle f of `topo` (every face a triangle: no offsets to read).
+SUBD_ALWAYS_INLINE void GetTriangleSplitChild(
+  const MeshTopology& topo, const TriangleSplitNumbering& number, Index f, Index j, Index* out)
+{
+  GetTriangleSplitChild(topo.GetTriangleVertices(f), topo.GetTriangleEdges(f), number, j, out);
 }
 }
 
