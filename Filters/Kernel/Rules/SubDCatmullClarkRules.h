@@ -104,10 +104,6 @@ public:
   /// sharp at or around them (FindSmoothClosedVertices): their masks; false for other rows.
   template <typename Entries>
   bool VisitSmoothRow(Index row, Entries& entries) const;
-  /// Asks for the points VisitSmoothRow reads for `row` (SubDRowWriting.h).
-  template <typename T>
-  void PrefetchRow(Index row, const T* parents, const T* children) const;
-
 private:
   Index WriteEdgeRow(Index e, Index* sources, double* weights) const;
   Index WriteVertexRow(Index v, Index* sources, double* weights) const;
@@ -118,43 +114,6 @@ private:
   Index MaxRowSize = 4;
   std::vector<std::uint8_t> SmoothVertex; // FindSmoothClosedVertices
 };
-
-template <typename T>
-inline void CatmullClarkRowWriter::PrefetchRow(Index row, const T* parents, const T* children) const
-{
-  const MeshTopology& topo = this->Topology;
-  auto ask = [](const T* point) { PrefetchPoint(point); };
-  if (row < this->Number.NumFaces)
-  {
-    for (Index v : topo.GetFaceVertices(row))
-    {
-      ask(parents + 3 * static_cast<size_t>(v));
-    }
-    return;
-  }
-  const Index firstVertexPoint = this->Number.VertexPoint(0);
-  if (row < firstVertexPoint)
-  {
-    const Index e = row - this->Number.NumFaces;
-    const Index* ev = topo.GetEdgeVertices(e);
-    ask(parents + 3 * static_cast<size_t>(ev[0]));
-    ask(parents + 3 * static_cast<size_t>(ev[1]));
-    for (Index f : topo.GetEdgeFaces(e))
-    {
-      ask(children + 3 * static_cast<size_t>(this->Number.FacePoint(f)));
-    }
-    return;
-  }
-  const Index v = row - firstVertexPoint;
-  for (Index e : topo.GetVertexEdges(v))
-  {
-    ask(children + 3 * static_cast<size_t>(this->Number.EdgePoint(e)));
-  }
-  for (Index f : topo.GetVertexFaces(v))
-  {
-    ask(children + 3 * static_cast<size_t>(this->Number.FacePoint(f)));
-  }
-}
 
 template <typename Entries>
 SUBD_ALWAYS_INLINE bool CatmullClarkRowWriter::VisitSmoothRow(Index row, Entries& entries) const

@@ -103,11 +103,6 @@ public:
   /// around them (FindSmoothClosedVertices): their masks; false for other rows.
   template <typename Entries>
   bool VisitSmoothRow(Index row, Entries& entries) const;
-  /// Asks for what VisitSmoothRow reads for `row` (SubDRowWriting.h): an edge's end points
-  /// and its faces' corners (the third vertices are found there), a vertex's edge points.
-  template <typename T>
-  void PrefetchRow(Index row, const T* parents, const T* children) const;
-
 private:
   const Level& Parent;
   const MeshTopology& Topology;
@@ -116,28 +111,6 @@ private:
   LoopBetas Beta;
   std::vector<std::uint8_t> SmoothVertex; // FindSmoothClosedVertices
 };
-
-template <typename T>
-inline void LoopRowWriter::PrefetchRow(Index row, const T* parents, const T* children) const
-{
-  const MeshTopology& topo = this->Topology;
-  const Index firstVertexPoint = this->Number.VertexPoint(0);
-  if (row < firstVertexPoint)
-  {
-    const Index* ev = topo.GetEdgeVertices(row);
-    PrefetchPoint(parents + 3 * static_cast<size_t>(ev[0]));
-    PrefetchPoint(parents + 3 * static_cast<size_t>(ev[1]));
-    for (Index f : topo.GetEdgeFaces(row))
-    {
-      PrefetchForRead(topo.GetTriangleVertices(f));
-    }
-    return;
-  }
-  for (Index e : topo.GetVertexEdges(row - firstVertexPoint))
-  {
-    PrefetchPoint(children + 3 * static_cast<size_t>(this->Number.EdgePoint(e)));
-  }
-}
 
 template <typename Entries>
 SUBD_ALWAYS_INLINE bool LoopRowWriter::VisitSmoothRow(Index row, Entries& entries) const
