@@ -1,12 +1,10 @@
 // Kernel unit tests: topology construction, tags, and face screening.
-#include "SubDDualChildTopology.h"
 #include "SubDDualSplit.h"
 #include "SubDFaceBlocks.h"
 #include "SubDMeshTopology.h"
 #include "SubDMeshValidation.h"
 #include "SubDPrimalSplitShape.h"
 #include "SubDQuadSplit.h"
-#include "SubDSqrt3ChildTopology.h"
 #include "SubDSqrt3Rules.h"
 #include "SubDTestMeshes.h"
 #include "SubDTestParallel.h"
@@ -270,44 +268,6 @@ TEST(MeshTopology, TriangleSplitChildEqualsSearchedTopology)
   {
     ExpectSplitKnowsItsChild(mesh, subd::SplitTriangles, "mesh " + std::to_string(i++));
   }
-}
-
-// The dual split's child, in closed form where it applies (closed manifold parents: the
-// cube, the torus, the triangulated meshes, every level below them) and through the general
-// builder elsewhere, equals the general builder's on the same faces.
-TEST(MeshTopology, DualSplitChildEqualsSearchedTopology)
-{
-  int i = 0, closedForms = 0;
-  for (const subdtest::TestMesh& mesh : TagFixtures())
-  {
-    auto split = [&closedForms](const subd::Level& level, subd::ChildTopology depth, const subd::ParallelFor& parallelFor) {
-      const subd::DualPoints points = subd::NumberDualPoints(level, parallelFor);
-      closedForms += subd::DualChildTopology::Applies(level, points) ? 1 : 0;
-      return subd::SplitDual(level, points, depth, parallelFor);
-    };
-    ExpectSplitKnowsItsChild(mesh, split, "mesh " + std::to_string(i++));
-  }
-  EXPECT_GT(closedForms, 10);
-}
-
-// A sqrt(3) step's child, in closed form where it applies (closed manifold triangle meshes,
-// every level below them) and through the general builder elsewhere (boundaries: both
-// parities, trisected edges included), equals the general builder's on the same faces.
-TEST(MeshTopology, Sqrt3ChildEqualsSearchedTopology)
-{
-  int i = 0, closedForms = 0;
-  std::vector<subdtest::TestMesh> meshes = subdtest::TriangleMeshes();
-  meshes.push_back(TagFixtures().back());
-  for (const subdtest::TestMesh& mesh : meshes)
-  {
-    auto step = [&closedForms](const subd::Level& level, subd::ChildTopology depth, const subd::ParallelFor& parallelFor) {
-      subd::LevelRefinement refinement = subd::RefineSqrt3(level, depth, parallelFor);
-      closedForms += subd::Sqrt3ChildTopology::Applies(level, refinement.Child.Topology.GetNumVertices()) ? 1 : 0;
-      return std::move(refinement.Child);
-    };
-    ExpectSplitKnowsItsChild(mesh, step, "mesh " + std::to_string(i++));
-  }
-  EXPECT_GT(closedForms, 10);
 }
 
 // The general builder runs every pass on threads (counting sorts by item blocks, half-edges

@@ -1,7 +1,6 @@
 #include "SubDSqrt3Rules.h"
 #include "SubDFaceBlocks.h"
 #include "SubDRowWriting.h"
-#include "SubDSqrt3ChildTopology.h"
 
 #include <algorithm>
 #include <array>
@@ -564,17 +563,6 @@ Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopol
   Level child;
   child.FaceOrigin = std::move(faces.Origins);
   child.FaceIsHole = std::move(faces.Holes);
-  if (depth == ChildTopology::Full && Sqrt3ChildTopology::Applies(parent, points.NumPoints))
-  {
-    child.Depth = parent.Depth + 1;
-    child.Creasing = parent.Creasing;
-    child.Topology =
-      Sqrt3ChildTopology::OfSqrt3Step(parent.Topology, std::move(faces.Offsets), std::move(faces.Vertices), parallelFor);
-    child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), SharpnessSmooth);
-    child.VertexSharpness.assign(static_cast<size_t>(points.NumPoints), SharpnessSmooth);
-    Sqrt3InheritedSharpness(parent, points).SetOn(child);
-    return child;
-  }
   SetChildTopology(parent, child, points.NumPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
   if (depth == ChildTopology::Full)
   {

@@ -1,5 +1,4 @@
 #include "SubDDualSplit.h"
-#include "SubDDualChildTopology.h"
 #include "SubDFaceBlocks.h"
 
 #include <algorithm>
@@ -461,18 +460,7 @@ Level SplitDual(
   Level child;
   child.FaceOrigin = std::move(faces.Origins);
   child.FaceIsHole = std::move(faces.Holes);
-  const Index numPoints = points.NumPoints;
-  if (depth == ChildTopology::Full && DualChildTopology::Applies(parent, points))
-  {
-    child.Depth = parent.Depth + 1;
-    child.Creasing = parent.Creasing;
-    child.Topology = DualChildTopology::OfDualSplit(
-      parent.Topology, std::move(faces.Offsets), std::move(faces.Vertices), parallelFor);
-    child.EdgeSharpness.assign(static_cast<size_t>(child.Topology.GetNumEdges()), SharpnessSmooth);
-    child.VertexSharpness.assign(static_cast<size_t>(numPoints), SharpnessSmooth);
-    return child; // nothing sharp to inherit
-  }
-  SetChildTopology(parent, child, numPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
+  SetChildTopology(parent, child, points.NumPoints, std::move(faces.Offsets), std::move(faces.Vertices), depth, parallelFor);
   if (depth == ChildTopology::Full && parent.HasSharpFeatures())
   {
     InheritDualSharpness(parent, points, child);

@@ -190,11 +190,9 @@ public:
   }
 
 private:
-  // Splits that know their child's relations write them directly (SubDPrimalChildTopology,
-  // SubDDualChildTopology, SubDSqrt3ChildTopology).
+  // The primal splits know their child's relations and write them directly
+  // (SubDPrimalChildTopology).
   friend struct PrimalChildAssembly;
-  friend class DualChildTopology;
-  friend class Sqrt3ChildTopology;
 
   // GetEdgePosition for faces of more than 16 sides (a scan would make them quadratic).
   Index GetEdgePositionInLargeFace(Index f, Index e) const;
