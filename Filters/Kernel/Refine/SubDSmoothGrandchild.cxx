@@ -64,8 +64,8 @@ public:
       return true;
     }
     const Index v = row - this->Number.VertexPoint(0);
-    Index faces[MaxRing], edges[MaxRing], numFaces, numEdges;
-    this->Between.GetPointRelations(v, faces, edges, numFaces, numEdges);
+    Index faces[MaxRing], corners[MaxRing], edges[MaxRing], numFaces, numEdges;
+    this->Between.GetPointRelations(v, faces, corners, edges, numFaces, numEdges);
     CatmullClarkSmoothVertexMask(
       v, numEdges, numFaces, [&](Index i) { return this->Number.EdgePoint(edges[i]); },
       [&](Index i) { return this->Number.FacePoint(faces[i]); }, entries);
@@ -101,7 +101,7 @@ public:
     }
     const Index v = row - this->Number.VertexPoint(0);
     Index edges[MaxRing], numFaces, numEdges;
-    this->Between.GetPointRelations(v, nullptr, edges, numFaces, numEdges);
+    this->Between.GetPointRelations(v, nullptr, nullptr, edges, numFaces, numEdges);
     LoopSmoothVertexMask(
       v, numEdges, this->Beta(numEdges), [&](Index i) { return this->Number.EdgePoint(edges[i]); }, entries);
     return true;

@@ -8,9 +8,7 @@
 // children (quads for the quad split, triangles for the triangle split): then parent face g
 // has the four children 4g .. 4g + 3 and every child edge has two faces. The view holds two
 // numbers per child edge (its number by key, and the child corner it is first met at, where
-// its ends are read) and three per parent corner (the corner across its edge, the half of
-// its edge at its vertex, the corner of each edge in its first face); the child's own
-// topology takes about twenty per child edge.
+// its ends are read); the child's own topology takes about twenty.
 #ifndef SubDPrimalSplitView_h
 #define SubDPrimalSplitView_h
 
@@ -28,26 +26,6 @@ public:
     : Split{ parent }
     , Numbering(NumberChildEdges(this->Split, parallelFor))
   {
-    this->TwinCorner.resize(static_cast<size_t>(parent.GetNumFaceCorners()));
-    this->HalfAtCorner.resize(this->TwinCorner.size());
-    this->EdgeCorner.resize(static_cast<size_t>(parent.GetNumEdges()));
-    parallelFor(0, parent.GetNumFaces(), [&](Index begin, Index end) {
-      for (Index g = begin; g < end; ++g)
-      {
-        for (Index i = 0; i < FaceSize; ++i)
-        {
-          const Index e = parent.GetFaceEdges(g)[i], h = FaceSize * g + i;
-          const IndexSpan faces = parent.GetEdgeFaces(e);
-          const Index across = OtherOfTwo(faces, g);
-          this->TwinCorner[h] = FaceSize * across + parent.GetEdgePosition(across, e);
-          this->HalfAtCorner[h] = this->Numbering.GetEdge(HalfEdgeKey(parent, e, parent.GetFaceVertices(g)[i]));
-          if (faces[0] == g)
-          {
-            this->EdgeCorner[e] = h;
-          }
-        }
-      }
-    });
     this->FirstCorner.resize(this->Numbering.EdgeOfKey.size());
     parallelFor(0, parent.GetNumFaces(), [&](Index begin, Index end) {
       for (Index g = begin; g < end; ++g)
@@ -110,70 +88,38 @@ public:
   }
 
   /// The ends of child edge e (from the corner it is first met at to the next) and its two
-  /// faces in increasing order: the face it is first met in, and the child across.
+  /// faces in increasing order: a half of parent edge pe lies in the children of pe's faces
+  /// at its vertex, the first of them where it is first met; an edge inside a parent face
+  /// lies between two of that face's children.
   void GetEdge(Index e, Index* ends, Index* faces) const
   {
     const Index corner = this->FirstCorner[e];
     const Index p = corner / FaceSize, slot = corner % FaceSize;
-    Index corners[FaceSize];
+    Index corners[FaceSize], keys[FaceSize];
     this->GetFaceCorners(p, corners);
     ends[0] = corners[slot];
     ends[1] = corners[slot + 1 == FaceSize ? 0 : slot + 1];
+    this->Split.GetChildEdgeKeys(p / 4, p % 4, keys);
+    const Index key = keys[slot];
+    if (key >= 2 * this->Split.NumEdges)
+    {
+      this->Split.GetInteriorEdgeFaces(p / 4, key, faces);
+      return;
+    }
+    const MeshTopology& parent = this->Split.Parent;
+    const Index pe = key / 2, v = parent.GetEdgeVertices(pe)[key % 2];
+    const Index g = parent.GetEdgeFaces(pe)[1];
+    const Index i = parent.GetEdgePosition(g, pe);
     faces[0] = p;
-    faces[1] = this->ChildAcross(p, slot);
+    faces[1] = this->Split.CornerChild(g, parent.GetFaceVertices(g)[i] == v ? i : (i + 1 == FaceSize ? 0 : i + 1));
   }
 
-  /// The faces and the edges around child point `point`, each sorted, as the child's own
-  /// lists (WriteChildPointRelations); `faces` may be null for the edges alone. The lists
-  /// have at most GetMaxValence entries. An edge point lies in children of the two faces of
-  /// its edge; a vertex point ends the halves of its vertex's edges, one leaving each corner.
-  void GetPointRelations(Index point, Index* faces, Index* edges, Index& numFaces, Index& numEdges) const
+  /// The faces (with the point's corner in each) and the edges around child point `point`,
+  /// sorted; `faces` and `corners` may be null for the edges alone
+  /// (WriteChildPointRelations). The lists have at most GetMaxValence entries.
+  void GetPointRelations(Index point, Index* faces, Index* corners, Index* edges, Index& numFaces, Index& numEdges) const
   {
-    const MeshTopology& parent = this->Split.Parent;
-    const Index firstEdgePoint = this->Split.GetNumFacePoints();
-    const Index firstVertexPoint = firstEdgePoint + this->Split.NumEdges;
-    Index corners[2 * Shape::EdgePointFacesPerFace];
-    if (point < firstEdgePoint)
-    {
-      Index facePointCorners[FaceSize];
-      this->Split.WriteFacePoint(point, this->Numbering, faces ? faces : corners, facePointCorners, edges);
-      numFaces = numEdges = FaceSize;
-      return;
-    }
-    if (point < firstVertexPoint)
-    {
-      const Index e = point - firstEdgePoint;
-      const Index sides[2] = { this->EdgeCorner[e], this->TwinCorner[this->EdgeCorner[e]] };
-      edges[0] = this->Numbering.GetEdge(2 * e);
-      edges[1] = this->Numbering.GetEdge(2 * e + 1);
-      for (Index k = 0; k < 2; ++k)
-      {
-        const Index g = sides[k] / FaceSize, i = sides[k] % FaceSize;
-        if (faces)
-        {
-          const Index at = Shape::EdgePointFacesPerFace * k;
-          this->Split.WriteEdgePointFaces(g, i, faces + at, corners + at);
-        }
-        this->Split.WriteEdgePointEdges(g, i, this->Numbering, edges + 2 + Shape::EdgePointEdgesPerFace * k);
-      }
-      numFaces = 2 * Shape::EdgePointFacesPerFace;
-      numEdges = 2 + 2 * Shape::EdgePointEdgesPerFace;
-      SortShortList(edges, edges + numEdges);
-      return;
-    }
-    const Index v = point - firstVertexPoint;
-    const IndexSpan vertexFaces = parent.GetVertexFaces(v), vertexCorners = parent.GetVertexFaceCorners(v);
-    for (Index k = 0; k < vertexFaces.size(); ++k)
-    {
-      const Index h = FaceSize * vertexFaces[k] + vertexCorners[k];
-      if (faces)
-      {
-        faces[k] = this->Split.CornerChild(vertexFaces[k], vertexCorners[k]);
-      }
-      edges[k] = this->HalfAtCorner[h];
-    }
-    numFaces = numEdges = vertexFaces.size();
-    SortShortList(edges, edges + numEdges);
+    WriteChildPointRelations(this->Split, this->Numbering, point, faces, corners, edges, numFaces, numEdges);
   }
   Index GetMaxValence() const { return std::max(this->Split.Parent.GetMaxValence(), Shape::ChildFaceSize == 4 ? 4 : 6); }
 
@@ -197,50 +143,9 @@ public:
   }
 
 private:
-  // The child across the edge leaving corner `slot` of child face p: another child of the
-  // same parent face, or, across a half of parent edge e, the child at the same vertex in
-  // the face across e (where e runs the other way).
-  Index ChildAcross(Index p, Index slot) const
-  {
-    const Index g = p / 4, j = p % 4;
-    const Index previous = j == 0 ? FaceSize - 1 : j - 1;
-    if constexpr (FaceSize == 4)
-    {
-      // Child j's corners: v_j, edge j's point, the face point, edge j - 1's point.
-      switch (slot)
-      {
-        case 0: // the half of edge j at v_j, which edge i of the face across ends at
-          return 4 * (this->TwinCorner[4 * g + j] / 4) + (this->TwinCorner[4 * g + j] + 1) % 4;
-        case 1:
-          return 4 * g + (j + 1) % 4;
-        case 2:
-          return 4 * g + previous;
-        default: // the half of edge j - 1 at v_j, which edge i of the face across starts at
-          return this->TwinCorner[4 * g + previous];
-      }
-    }
-    else
-    {
-      // Child j < 3's corners: v_j, edge j's point, edge j - 1's point; child 3 (the middle)
-      // meets no edge first.
-      switch (slot)
-      {
-        case 0:
-          return 4 * (this->TwinCorner[3 * g + j] / 3) + (this->TwinCorner[3 * g + j] % 3 + 1) % 3;
-        case 1:
-          return 4 * g + 3;
-        default:
-          return 4 * (this->TwinCorner[3 * g + previous] / 3) + this->TwinCorner[3 * g + previous] % 3;
-      }
-    }
-  }
-
   Shape Split;
   ChildEdgeNumbering Numbering;
   IndexArray FirstCorner; // per child edge: the child corner (SubDPrimalSplitShape.h) it is first met at
-  IndexArray TwinCorner;   // per parent corner: the corner of the face across its edge that starts that edge
-  IndexArray HalfAtCorner; // per parent corner: the child edge that is the half of its edge at its vertex
-  IndexArray EdgeCorner;   // per parent edge: its corner in its first face
 };
 
 using QuadSplitView = PrimalSplitView<QuadSplitShape>;
