@@ -673,7 +673,7 @@ TEST(MeshTopology, BuildEqualsBruteForceOnFansOfEverySize)
 }
 
 // vtkSMPTools does not split a range shorter than its grain (2048 indices): a loop over a
-// few blocks (64 ranges of faces, 1024 ranges of elements) must still reach several of the
+// few blocks (64 ranges of faces) must still reach several of the
 // chunks a ParallelFor so made hands to its threads, or it runs on one thread.
 TEST(Parallel, FewBlocksReachSeveralChunksOfAGrainedFor)
 {
@@ -692,82 +692,6 @@ TEST(Parallel, FewBlocksReachSeveralChunksOfAGrainedFor)
   EXPECT_EQ(std::count(chunkOf.begin(), chunkOf.end(), -1), 0);
   std::sort(chunkOf.begin(), chunkOf.end());
   EXPECT_EQ(std::unique(chunkOf.begin(), chunkOf.end()) - chunkOf.begin(), 64); // one chunk each
-
-  // The triangles written in place go through it: their ranges reach many chunks.
-  std::vector<int> writers;
-  chunks = 0;
-  const subd::EmittedFaces faces = subd::EmitTrianglesInPlace(
-    5000, grained, [](Index begin, Index end) { return end - begin; },
-    [&](Index begin, Index end, subd::TriangleCursor& out) {
-      writers.push_back(chunks);
-      for (Index i = begin; i < end; ++i)
-      {
-        out.AddTriangle(i, i + 1, i + 2, i, 0);
-      }
-    });
-  EXPECT_EQ(faces.Origins.size(), 5000u);
-  std::sort(writers.begin(), writers.end());
-  EXPECT_GT(std::unique(writers.begin(), writers.end()) - writers.begin(), 100);
-}
-
-// Triangles written in place: element i gives i % 3 triangles (i, i + 1, i + 2), origin i,
-// hole i % 2. The same faces, in element order, whatever the threads; a range that writes
-// other than it counted is an error, not a corrupted output.
-TEST(FaceBlocks, TrianglesInPlaceInElementOrderAndCountsChecked)
-{
-  const Index numElements = 5000;
-  auto count = [](Index begin, Index end) {
-    Index n = 0;
-    for (Index i = begin; i < end; ++i)
-    {
-      n += i % 3;
-    }
-    return n;
-  };
-  auto write = [](Index begin, Index end, subd::TriangleCursor& out) {
-    for (Index i = begin; i < end; ++i)
-    {
-      for (Index k = 0; k < i % 3; ++k)
-      {
-        out.AddTriangle(i, i + 1, i + 2 + k, i, static_cast<std::uint8_t>(i % 2));
-      }
-    }
-  };
-  std::vector<Index> expected;
-  std::vector<Index> origins;
-  for (Index i = 0; i < numElements; ++i)
-  {
-    for (Index k = 0; k < i % 3; ++k)
-    {
-      expected.insert(expected.end(), { i, i + 1, i + 2 + k });
-      origins.push_back(i);
-    }
-  }
-  for (const subd::ParallelFor& parallelFor : { subd::ParallelFor(subd::SerialFor), subd::ParallelFor(subdtest::ThreeThreadFor) })
-  {
-    const subd::EmittedFaces faces = subd::EmitTrianglesInPlace(numElements, parallelFor, count, write);
-    ASSERT_EQ(std::vector<Index>(faces.Vertices.begin(), faces.Vertices.end()), expected);
-    ASSERT_EQ(std::vector<Index>(faces.Origins.begin(), faces.Origins.end()), origins);
-    ASSERT_EQ(faces.Offsets.size(), origins.size() + 1);
-    for (size_t t = 0; t < origins.size(); ++t)
-    {
-      EXPECT_EQ(faces.Offsets[t], static_cast<Index>(3 * t));
-      EXPECT_EQ(faces.Holes[t], origins[t] % 2);
-    }
-    EXPECT_EQ(faces.Offsets.back(), static_cast<Index>(expected.size()));
-    // One triangle too many for element 77, or one too few: refused.
-    auto tooMany = [&](Index begin, Index end, subd::TriangleCursor& out) {
-      write(begin, end, out);
-      if (begin <= 77 && 77 < end)
-      {
-        out.AddTriangle(0, 1, 2, 77, 0);
-      }
-    };
-    EXPECT_THROW(subd::EmitTrianglesInPlace(numElements, parallelFor, count, tooMany), std::logic_error);
-    auto tooFew = [&](Index begin, Index end) { return count(begin, end) + (begin <= 77 && 77 < end ? 1 : 0); };
-    EXPECT_THROW(subd::EmitTrianglesInPlace(numElements, parallelFor, tooFew, write), std::logic_error);
-  }
-  EXPECT_EQ(subd::EmitTrianglesInPlace(0, subd::SerialFor, count, write).Offsets.size(), 1u);
 }
 
 // The branch-free lookups the rules use on edges' ends and faces and triangles' corners.

@@ -420,34 +420,7 @@ public:
   }
   Index GetNumElements() const { return this->Topo.GetNumEdges() + this->Topo.GetNumFaces(); }
 
-  // The triangles WriteBlock writes for the same elements, told without working them out.
-  Index CountBlock(Index begin, Index end) const
-  {
-    const Index numEdges = this->Topo.GetNumEdges();
-    Index count = 0;
-    for (Index element = begin; element < end; ++element)
-    {
-      if (element < numEdges)
-      {
-        if (this->Flips(element))
-        {
-          count += 2;
-          continue;
-        }
-        for (Index f : this->Topo.GetEdgeFaces(element))
-        {
-          count += this->KeepsPartNextTo(element, f);
-        }
-      }
-      else
-      {
-        count += this->Trisects(element - numEdges);
-      }
-    }
-    return count;
-  }
-
-  void WriteBlock(Index begin, Index end, TriangleCursor& out) const
+  void WriteBlock(Index begin, Index end, FaceBlock& out) const
   {
     const Index numEdges = this->Topo.GetNumEdges();
     for (Index element = begin; element < end; ++element)
@@ -507,7 +480,7 @@ private:
   bool KeepsPartNextTo(Index e, Index f) const { return e != this->Points.TrisectedEdge(f); }
   bool Trisects(Index f) const { return this->Points.TrisectedEdge(f) != InvalidIndex; }
 
-  void WriteEdgeTriangles(Index e, TriangleCursor& out) const
+  void WriteEdgeTriangles(Index e, FaceBlock& out) const
   {
     const IndexSpan ef = this->Topo.GetEdgeFaces(e);
     if (this->Flips(e))
@@ -534,7 +507,7 @@ private:
 
   // Triangles (a, b, m) trisecting (a, b): the middle triangle (x_a, x_b, m); the triangles
   // (a, x_a, m) and (x_b, b, m) come from the flips of (m, a) and (b, m).
-  void WriteMiddleTriangle(Index f, TriangleCursor& out) const
+  void WriteMiddleTriangle(Index f, FaceBlock& out) const
   {
     if (!this->Trisects(f))
     {
@@ -557,9 +530,8 @@ private:
 Level SplitWithPoints(const Level& parent, const Sqrt3Points& points, ChildTopology depth, const ParallelFor& parallelFor)
 {
   const Sqrt3FaceWriter writer(parent, points);
-  EmittedFaces faces = EmitTrianglesInPlace(
-    writer.GetNumElements(), parallelFor, [&writer](Index begin, Index end) { return writer.CountBlock(begin, end); },
-    [&writer](Index begin, Index end, TriangleCursor& cursor) { writer.WriteBlock(begin, end, cursor); });
+  EmittedFaces faces = EmitFacesInParallel(writer.GetNumElements(), parallelFor,
+    [&writer](Index begin, Index end, FaceBlock& block) { writer.WriteBlock(begin, end, block); });
   Level child;
   child.FaceOrigin = std::move(faces.Origins);
   child.FaceIsHole = std::move(faces.Holes);

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <atomic>
 #include <numeric>
-#include <stdexcept>
 
 namespace subd
 {
@@ -121,40 +120,6 @@ EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelF
     const IndexArray& vertices = written[b].Vertices;
     std::copy(vertices.begin() + Offset(from), vertices.begin() + Offset(to), faces.Vertices.begin() + Offset(at));
   }, [&written](size_t b) { IndexArray().swap(written[b].Vertices); });
-  return faces;
-}
-
-EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallelFor,
-  const std::function<Index(Index begin, Index end)>& count,
-  const std::function<void(Index begin, Index end, TriangleCursor& cursor)>& write)
-{
-  // Fixed ranges: the counts and the writes must cover the same elements.
-  const FixedRanges ranges(numElements, 1024);
-  std::vector<size_t> firstTriangle(static_cast<size_t>(ranges.NumRanges) + 1, 0);
-  ForEachBlock(ranges.NumRanges, parallelFor,
-    [&](Index r) { firstTriangle[r + 1] = static_cast<size_t>(count(ranges.Begin(r), ranges.Begin(r + 1))); });
-  std::partial_sum(firstTriangle.begin(), firstTriangle.end(), firstTriangle.begin());
-  const size_t numTriangles = firstTriangle.back();
-  EmittedFaces faces;
-  faces.Vertices.resize(3 * numTriangles);
-  faces.Origins.resize(numTriangles);
-  faces.Holes.resize(numTriangles);
-  std::atomic<bool> miscounted{ false };
-  ForEachBlock(ranges.NumRanges, parallelFor, [&](Index r) {
-    const size_t first = firstTriangle[r], last = firstTriangle[r + 1];
-    TriangleCursor cursor{ faces.Vertices.data() + 3 * first, faces.Origins.data() + first, faces.Holes.data() + first,
-      faces.Vertices.data() + 3 * last };
-    write(ranges.Begin(r), ranges.Begin(r + 1), cursor);
-    if (cursor.Overflowed || cursor.Vertices != cursor.End)
-    {
-      miscounted = true;
-    }
-  });
-  if (miscounted)
-  {
-    throw std::logic_error("EmitTrianglesInPlace: a range of elements wrote other than the triangles it counted");
-  }
-  FillStrided(faces.Offsets, static_cast<Index>(numTriangles), 3, parallelFor);
   return faces;
 }
 }

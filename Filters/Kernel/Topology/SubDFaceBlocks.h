@@ -1,7 +1,7 @@
 // SubD kernel: child faces written in parallel, in the serial order, by splits that cannot
 // tell cheaply beforehand how many faces (and corners) each parent element gives: the dual
-// split (welded corners, one V-face per sector, vanishing faces). (Splits that can, and
-// write triangles only, write them in place: EmitTrianglesInPlace, for sqrt(3).)
+// split (welded corners, one V-face per sector, vanishing faces), sqrt(3)'s (flipped or
+// kept edges, trisected faces).
 //
 // The parent's elements (numbered in the order their faces must come) are cut into at most
 // 64 fixed ranges, each range writes its faces into a block of its own, and the blocks are
@@ -29,6 +29,12 @@ struct SUBDKERNEL_EXPORT FaceBlock
 
   /// Starts a face: returns where its corners begin, for EndFaceWithoutRepeats.
   size_t BeginFace() const { return this->Vertices.size(); }
+  /// A triangle, pushed and closed.
+  void AddTriangle(Index a, Index b, Index c, Index origin, std::uint8_t hole)
+  {
+    this->Vertices.insert(this->Vertices.end(), { a, b, c });
+    this->EndFace(origin, hole);
+  }
   /// Closes the face of the corners pushed since the last face ended.
   void EndFace(Index origin, std::uint8_t hole)
   {
@@ -55,41 +61,6 @@ struct EmittedFaces
 SUBDKERNEL_EXPORT EmittedFaces EmitFacesInParallel(Index numElements, const ParallelFor& parallelFor,
   const std::function<void(Index begin, Index end, FaceBlock& block)>& write);
 
-/// Where one range of elements writes its triangles, in place in the output
-/// (EmitTrianglesInPlace).
-struct TriangleCursor
-{
-  Index* Vertices;         ///< the next triangle's corners
-  Index* Origins;          ///< its origin
-  std::uint8_t* Holes;     ///< whether it is a hole
-  const Index* End;        ///< past the range's last corner
-  bool Overflowed = false; ///< the range wrote more triangles than it counted (dropped)
-
-  SUBD_ALWAYS_INLINE void AddTriangle(Index a, Index b, Index c, Index origin, std::uint8_t hole)
-  {
-    if (this->Vertices == this->End)
-    {
-      this->Overflowed = true; // a count that disagrees with the writes: reported, not written
-      return;
-    }
-    this->Vertices[0] = a;
-    this->Vertices[1] = b;
-    this->Vertices[2] = c;
-    this->Vertices += 3;
-    *this->Origins++ = origin;
-    *this->Holes++ = hole;
-  }
-};
-
-/// For splits that write triangles only, and can tell cheaply how many each element gives
-/// (sqrt(3)): count(begin, end) counts the triangles of fixed ranges of elements, and then
-/// write(begin, end, cursor) writes each range's triangles straight into the output, in
-/// element order. No blocks to concatenate: the faces' memory is touched once, and not
-/// copied (the blocks cost a second fault-in of every page and a copy). Throws
-/// std::logic_error if a range writes other than the triangles it counted.
-SUBDKERNEL_EXPORT EmittedFaces EmitTrianglesInPlace(Index numElements, const ParallelFor& parallelFor,
-  const std::function<Index(Index begin, Index end)>& count,
-  const std::function<void(Index begin, Index end, TriangleCursor& cursor)>& write);
 }
 
 #endif
