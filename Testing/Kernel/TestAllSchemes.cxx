@@ -694,3 +694,87 @@ TEST_P(AllSchemes, PeakMemoryEstimateCoversTheHeldMemory)
 }
 #endif
 
+
+// The third consumer of a scheme's rows, its limit masks, agrees with them: the limit of a
+// point does not change when the mesh is refined. Primal schemes and sqrt(3) keep every
+// vertex v as a child point (its vertex point), whose limit at the next level must be v's:
+// checked at smooth and extraordinary vertices, on boundaries, creases, corners and darts.
+// The dual schemes replace v by its V-face, whose centroid is v's limit point (SubDDualLimit.h)
+// and, a level further down, the centroid of that face's own F-face: checked on closed meshes.
+TEST_P(AllSchemes, LimitMasksAgreeWithTheRows)
+{
+  const auto scheme = GetParam().Make();
+  const std::string name = GetParam().Name;
+  const bool dual = name == "doo-sabin" || name == "midpoint";
+  const subdtest::TestMesh cube = subdtest::Cube().Jitter(0.1), grid = subdtest::Grid(5, 4, false, false).Jitter(0.1);
+  std::vector<subdtest::TestMesh> meshes{ cube, grid, subdtest::Grid(6, 5, true, true).Jitter(0.05) };
+  if (GetParam().TrianglesOnly)
+  {
+    meshes = { cube.Triangulated(), grid.Triangulated(), subdtest::Bipyramid(5).Jitter(0.1) };
+  }
+  int compared = 0;
+  for (const subdtest::TestMesh& mesh : meshes)
+  {
+    const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+    if (dual && topology.GetNumBoundaryEdges() > 0)
+      continue; // boundaries of the dual schemes: their curves' own limit rule, not a V-face
+    subd::BaseTags tags;
+    if (!dual && name != "sqrt3") // sqrt(3) has no limit point at a dart (SubDSqrt3Limit.h)
+    {
+      // Infinitely sharp edges: creases, corners where three meet, darts where one ends.
+      tags.EdgeSharpness.assign(static_cast<size_t>(topology.GetNumEdges()), 0.0f);
+      for (size_t e = 0; e < tags.EdgeSharpness.size(); e += 7)
+        tags.EdgeSharpness[e] = subd::SharpnessInfinite;
+    }
+    const subd::Level base = subd::MakeBaseLevel(topology, tags, subd::BoundaryRule::EdgeAndCorner);
+    const subd::LevelRefinement one = scheme->RefineLevel(base, subd::ChildTopology::Full);
+    const std::vector<double> points1 = subdtest::ApplyToPoints(one.Stencils, mesh.Points);
+    subd::StencilTable limit0, limit1;
+    std::string error;
+    ASSERT_TRUE(scheme->BuildLimitStencils(base, limit0, error)) << mesh.Name << ": " << error;
+    const std::vector<double> limits0 = subdtest::ApplyToPoints(limit0, mesh.Points);
+    const subd::MeshTopology& child = one.Child.Topology;
+    if (!dual)
+    {
+      ASSERT_TRUE(scheme->BuildLimitStencils(one.Child, limit1, error)) << mesh.Name << ": " << error;
+      const std::vector<double> limits1 = subdtest::ApplyToPoints(limit1, points1);
+      // The vertex points follow the face points (quad split, sqrt(3)'s first step) or the
+      // edge points (triangle split).
+      const Index firstVertexPoint = name == "sqrt3" ? topology.GetNumFaces()
+        : GetParam().TrianglesOnly                  ? topology.GetNumEdges()
+                                                    : topology.GetNumFaces() + topology.GetNumEdges();
+      for (Index v = 0; v < topology.GetNumVertices(); ++v)
+      {
+        // Not at a dart (one sharp edge inside): its limit mask, OpenSubdiv's too, is the
+        // smooth one, which the crease beside it makes an approximation.
+        const Index sharpEdges = base.GetNumSharpEdges(v);
+        if (sharpEdges == 1 && !topology.GetVertexTag(v).Boundary)
+          continue;
+        for (int k = 0; k < 3; ++k)
+          ASSERT_NEAR(limits1[3 * (firstVertexPoint + v) + k], limits0[3 * v + k], 1e-12)
+            << mesh.Name << " vertex " << v << " with " << sharpEdges << " sharp edges";
+        ++compared;
+      }
+      continue;
+    }
+    // A closed mesh: F-faces, then (Doo-Sabin) one E-face per edge, then one V-face per vertex.
+    const subd::LevelRefinement two = scheme->RefineLevel(one.Child, subd::ChildTopology::Full);
+    const std::vector<double> points2 = subdtest::ApplyToPoints(two.Stencils, points1);
+    auto centroid = [](const subd::MeshTopology& t, Index f, const std::vector<double>& p, int k) {
+      double sum = 0.0;
+      for (Index v : t.GetFaceVertices(f))
+        sum += p[3 * v + k];
+      return sum / t.GetFaceSize(f);
+    };
+    const Index firstVFace = topology.GetNumFaces() + (name == "doo-sabin" ? topology.GetNumEdges() : 0);
+    ASSERT_EQ(child.GetNumFaces(), firstVFace + topology.GetNumVertices()) << mesh.Name;
+    for (Index v = 0; v < topology.GetNumVertices(); ++v, ++compared)
+      for (int k = 0; k < 3; ++k)
+      {
+        ASSERT_NEAR(centroid(child, firstVFace + v, points1, k), limits0[3 * v + k], 1e-12) << mesh.Name << " " << v;
+        ASSERT_NEAR(centroid(two.Child.Topology, firstVFace + v, points2, k), limits0[3 * v + k], 1e-12)
+          << mesh.Name << " vertex " << v;
+      }
+  }
+  EXPECT_GT(compared, 30);
+}
