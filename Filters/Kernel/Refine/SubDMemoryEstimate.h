@@ -7,7 +7,9 @@
 //   vertex (the incidence lists, offsets, tags and sharpness of SubDMeshTopology.h and
 //   SubDLevel.h); a faces-only level: 4 per corner and 4 per face;
 // - rows written as they are applied (LevelRows::Written) keep every level above the finest,
-//   with their writers' own arrays (about 4 bytes per corner and 9 per vertex); stored tables
+//   with their writers' own arrays (about 4 bytes per corner and 9 per vertex); where the
+//   finest level's parent is not built (SubDSmoothGrandchild.h) it is still counted: a
+//   re-application builds it (BuildLevelBetween); stored tables
 //   are counted at 8 entries per row, each level's topology living only while the next one is
 //   refined;
 // - the evaluation holds the output values and two levels of scratch values.
