@@ -10,7 +10,7 @@
 // (SubDCatmullClarkRules.h, SubDLoopRules.h) and in the order P's own row writer gives them
 // (the same bits), and the finest faces are P's faces split again. What it costs: a row
 // works its point's neighbourhood out each time it is applied, which makes applying them
-// about twice as slow. A refinement applied again and again (points that move) builds P
+// two to three times as slow. A refinement applied again and again (points that move) builds P
 // when it is first applied again (BuildLevelBetween).
 #ifndef SubDSmoothGrandchild_h
 #define SubDSmoothGrandchild_h
@@ -40,7 +40,8 @@ SUBDKERNEL_EXPORT SmoothGrandchild MakeSmoothGrandchild(
 
 /// If the finest rows of `hierarchy` (made by Refine with `scheme`) are a SmoothGrandchild's,
 /// replaces them with the scheme's own rows over the level between, built now: the same
-/// points, applied about twice as fast, for the memory of that level. Returns whether it did.
+/// points, applied two to three times as fast, for the memory of that level. Returns whether
+/// it did.
 SUBDKERNEL_EXPORT bool BuildLevelBetween(const Scheme& scheme, Hierarchy& hierarchy);
 }
 

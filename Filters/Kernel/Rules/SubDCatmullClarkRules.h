@@ -104,6 +104,7 @@ public:
   /// sharp at or around them (FindSmoothClosedVertices): their masks; false for other rows.
   template <typename Entries>
   bool VisitSmoothRow(Index row, Entries& entries) const;
+
 private:
   Index WriteEdgeRow(Index e, Index* sources, double* weights) const;
   Index WriteVertexRow(Index v, Index* sources, double* weights) const;

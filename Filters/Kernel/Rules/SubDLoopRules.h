@@ -103,6 +103,7 @@ public:
   /// around them (FindSmoothClosedVertices): their masks; false for other rows.
   template <typename Entries>
   bool VisitSmoothRow(Index row, Entries& entries) const;
+
 private:
   const Level& Parent;
   const MeshTopology& Topology;

@@ -10,12 +10,12 @@
 // and optionally
 //   template <typename Entries>             // the row of a smooth point, if `row` is one
 //   bool VisitSmoothRow(Index row, Entries& entries) const;
-//   template <typename T>                   // asks for the points that row will read
+//   template <typename T>                   // asks for what that row will read
 //   void PrefetchRow(Index row, const T* parents, const T* children) const;
 // A scheme's masks are functions that give a row's entries to an Entries sink: RowEntries
 // writes them into a row's arrays (a stored table, or a row WriteRow writes), PointEntries
 // sums the weighted points straight away, in the same order, so that both give the same
-// bits. VisitSmoothRow calls them for the rows that need no planning (most of a mesh: away
+// bits, and PrefetchEntries asks for the points ahead (for a writer without PrefetchRow). VisitSmoothRow calls them for the rows that need no planning (most of a mesh: away
 // from creases and boundaries), and WriteRow calls VisitSmoothRow for those rows too: each
 // weight is written once. WrittenRows sums the smooth rows through VisitSmoothRow and writes
 // the others.
