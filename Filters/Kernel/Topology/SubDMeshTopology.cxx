@@ -273,20 +273,56 @@ void ForEachVertexPair(const std::uint64_t* first, const std::uint64_t* last, co
 }
 }
 
-// One vertex pair's group, its `count` half-edges in increasing order (halfEdgeAt(i)), `forward`
-// of them running the way the first does, which lies in the face starting at `firstFaceStart`:
-// each paired with the first, and the edge counted in its block.
+// One edge's group, its `count` half-edges in increasing order (halfEdgeAt(i)), the first in
+// the face starting at `firstFaceStart`: each paired with the first, and the edge counted in
+// its block.
 template <typename HalfEdgeAt>
 void MeshTopology::WriteHalfEdgeGroup(HalfEdgePairing& pairing, const EdgeCountsByBlock& counts,
-  std::vector<EdgeCounts>& blockCounts, Index count, Index forward, Index firstFaceStart, const HalfEdgeAt& halfEdgeAt)
+  std::vector<EdgeCounts>& blockCounts, Index count, bool nonManifold, Index firstFaceStart,
+  const HalfEdgeAt& halfEdgeAt)
 {
   const Index first = halfEdgeAt(0);
   for (Index i = 0; i < count; ++i)
   {
     pairing[halfEdgeAt(i)] = { first, i };
   }
-  pairing[first].RankOrGroup = HalfEdgePair::Group(count, forward);
-  blockCounts[counts.BlockOf(firstFaceStart)].Add(count, forward == 1);
+  pairing[first].RankOrGroup = HalfEdgePair::Group(count, nonManifold);
+  blockCounts[counts.BlockOf(firstFaceStart)].Add(count, nonManifold);
+}
+
+// The edges of one vertex pair, from its `count` half-edges in increasing order (`forward` of
+// them running the way the first does): one edge, unless the pair is met again in a face that
+// already has it. Then, as OpenSubdiv makes them, that half-edge is an edge of its own, the
+// first edge keeps the others, and all of them are non-manifold.
+template <typename HalfEdgeAt, typename WriteGroup>
+void MeshTopology::WriteVertexPairGroups(
+  Index count, Index forward, bool allTriangles, const HalfEdgeAt& halfEdgeAt, const WriteGroup& writeGroup) const
+{
+  auto faceOf = [&](Index i) { return this->GetFaceStart(halfEdgeAt(i), allTriangles); };
+  bool metTwice = false;
+  for (Index i = 1; i < count && !metTwice; ++i)
+  {
+    metTwice = faceOf(i) == faceOf(i - 1);
+  }
+  if (!metTwice)
+  {
+    writeGroup(count, EdgeCounts::IsNonManifold(count, forward), faceOf(0), halfEdgeAt);
+    return;
+  }
+  std::vector<Index> first{ halfEdgeAt(0) };
+  for (Index i = 1; i < count; ++i)
+  {
+    const Index h = halfEdgeAt(i);
+    if (faceOf(i) == faceOf(i - 1))
+    {
+      writeGroup(1, true, faceOf(i), [h](Index) { return h; });
+    }
+    else
+    {
+      first.push_back(h);
+    }
+  }
+  writeGroup(static_cast<Index>(first.size()), true, faceOf(0), [&first](Index i) { return first[i]; });
 }
 
 // The half-edges of one vertex pair are paired at the pair's lower vertex v, from v's own
@@ -313,15 +349,15 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
     std::vector<EdgeCounts> blockCounts(counts.Blocks.size());
     CornerNeighbours neighbours;
     Index leavingEdge[smallValence], enteringEdge[smallValence], faceStart[smallValence];
-    auto writeGroup = [&](Index count, Index forward, Index firstFaceStart, const auto& halfEdgeAt) {
-      WriteHalfEdgeGroup(pairing, counts, blockCounts, count, forward, firstFaceStart, halfEdgeAt);
+    auto writeGroup = [&](Index count, bool nonManifold, Index firstFaceStart, const auto& halfEdgeAt) {
+      WriteHalfEdgeGroup(pairing, counts, blockCounts, count, nonManifold, firstFaceStart, halfEdgeAt);
     };
     // A group of one half-edge, or of two running opposite ways (b != InvalidIndex), each in
     // the face starting at the corner given after it.
     auto pairUp = [&writeGroup](Index a, Index aFace, Index b, Index bFace) {
       const bool aFirst = b == InvalidIndex || a < b;
       const Index lower = aFirst ? a : b, upper = aFirst ? b : a;
-      writeGroup(b == InvalidIndex ? 1 : 2, 1, aFirst ? aFace : bFace, [=](Index i) { return i == 0 ? lower : upper; });
+      writeGroup(b == InvalidIndex ? 1 : 2, false, aFirst ? aFace : bFace, [=](Index i) { return i == 0 ? lower : upper; });
     };
     for (Index v = begin; v < end; ++v)
     {
@@ -350,13 +386,16 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
         to = this->FaceVertices[c + 1 == size ? faceFirst : h + 1];
         from = this->FaceVertices[previous];
       };
+      bool repeats = false; // a face through v twice, or back the way it came, or from v to v
       for (Index k = 0; k < kept; ++k)
       {
         cornerAt(k, faceStart[k], leavingEdge[k], enteringEdge[k], neighbours.Leaving[k], neighbours.Entering[k]);
+        const Index to = neighbours.Leaving[k], from = neighbours.Entering[k];
+        repeats |= to == v || from == v || to == from || (k > 0 && faces[k] == faces[k - 1]);
       }
       neighbours.N = kept;
       neighbours.Pad();
-      if (n <= smallValence && neighbours.Distinct())
+      if (n <= smallValence && !repeats && neighbours.Distinct())
       {
         const CornerChains chains(neighbours);
         smallFans[v] = chains.CountFans(n);
@@ -395,9 +434,13 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
       {
         Index faceFirst, h, previous, to, from;
         cornerAt(k, faceFirst, h, previous, to, from);
-        if (to >= v)
+        if (to == v)
         {
-          *last++ = HalfEdgeKey(to, h, to > v);
+          writeGroup(1, true, faceFirst, [h](Index) { return h; }); // from v to v: an edge of its own
+        }
+        else if (to > v)
+        {
+          *last++ = HalfEdgeKey(to, h, true);
         }
         if (from > v)
         {
@@ -406,7 +449,7 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
       }
       SortShortList(first, last);
       ForEachVertexPair(first, last, [&](Index count, Index forward, const auto& halfEdgeAt) {
-        writeGroup(count, forward, this->GetFaceStart(halfEdgeAt(0), allTriangles), halfEdgeAt);
+        this->WriteVertexPairGroups(count, forward, allTriangles, halfEdgeAt, writeGroup);
       });
     }
     const std::lock_guard<std::mutex> lock(merging);
@@ -483,7 +526,7 @@ void MeshTopology::NumberEdges(const HalfEdgePairing& pairing, const EdgeCountsB
         slot += group.GroupSize();
         EdgeTag& tag = this->EdgeTags[e];
         tag.Boundary = group.GroupSize() == 1;
-        tag.NonManifold = EdgeCounts::IsNonManifold(group.GroupSize(), group.RunsOppositeWays());
+        tag.NonManifold = group.IsNonManifold();
         ++e;
       }
     }
@@ -616,7 +659,12 @@ Index MeshTopology::GetEdgePositionInLargeFace(Index f, Index e) const
   // faces.
   const IndexSpan fe = this->GetFaceEdges(f);
   const Index i = this->FindCorner(this->GetEdgeVertices(e)[0], f);
-  return fe[i] == e ? i : (i == 0 ? fe.size() - 1 : i - 1);
+  const Index before = i == 0 ? fe.size() - 1 : i - 1;
+  if (fe[i] == e || fe[before] == e)
+  {
+    return fe[i] == e ? i : before;
+  }
+  return static_cast<Index>(std::find(fe.begin(), fe.end(), e) - fe.begin()); // a vertex f repeats
 }
 
 Index MeshTopology::FindCorner(Index v, Index f) const

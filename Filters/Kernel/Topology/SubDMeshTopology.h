@@ -42,7 +42,10 @@ public:
   MeshTopology() = default;
 
   /// Builds the topology. Preconditions (checked by the caller, see MeshValidation): every
-  /// face has >= 3 corners, no face repeats a vertex, all indices are in [0, numVertices).
+  /// face has >= 3 corners, all indices are in [0, numVertices). A face may repeat a vertex,
+  /// as OpenSubdiv reads it: a half-edge from a vertex to itself is an edge of its own, and a
+  /// vertex pair met twice in one face is two edges, all of them non-manifold (so an edge
+  /// occurs once per face, and a repeated vertex is non-manifold).
   /// `faceOffsets` has numFaces+1 entries, the last one equal to the size of `faceVertices`.
   /// `parallelFor` runs every pass on threads; the topology does not depend on their number.
   static MeshTopology Build(Index numVertices, IndexArray faceOffsets, IndexArray faceVertices,
@@ -212,12 +215,11 @@ private:
   struct HalfEdgePair
   {
     Index Representative, RankOrGroup;
-    /// `forward`: how many of the group's half-edges run the way its first does.
-    static Index Group(Index size, Index forward) { return 2 * size + (forward == 1 ? 1 : 0); }
+    static Index Group(Index size, bool nonManifold) { return 2 * size + (nonManifold ? 1 : 0); }
     Index Rank(Index h) const { return h == this->Representative ? 0 : this->RankOrGroup; }
     // At a group's first half-edge only:
     Index GroupSize() const { return this->RankOrGroup >> 1; }
-    bool RunsOppositeWays() const { return (this->RankOrGroup & 1) != 0; }
+    bool IsNonManifold() const { return (this->RankOrGroup & 1) != 0; }
   };
   using HalfEdgePairing = LevelArray<HalfEdgePair>; // one per half-edge: its writes share a line
   /// Edges counted by PairHalfEdges as it makes them, for NumberEdges: how many, their faces,
@@ -225,18 +227,15 @@ private:
   struct EdgeCounts
   {
     Index Edges = 0, EdgeFaces = 0, Boundary = 0, NonManifold = 0;
-    /// An edge of `faces` half-edges is non-manifold with more than two, or two running the
-    /// same way.
-    static bool IsNonManifold(Index faces, bool runOppositeWays)
-    {
-      return faces > 2 || (faces == 2 && !runOppositeWays);
-    }
-    void Add(Index faces, bool runOppositeWays)
+    /// An edge of `faces` half-edges, `forward` of them running the way the first does, is
+    /// non-manifold with more than two, or two running the same way.
+    static bool IsNonManifold(Index faces, Index forward) { return faces > 2 || (faces == 2 && forward != 1); }
+    void Add(Index faces, bool nonManifold)
     {
       ++this->Edges;
       this->EdgeFaces += faces;
       this->Boundary += faces == 1;
-      this->NonManifold += IsNonManifold(faces, runOppositeWays);
+      this->NonManifold += nonManifold;
     }
     EdgeCounts& operator+=(const EdgeCounts& other)
     {
@@ -275,8 +274,11 @@ private:
     bool allTriangles, IndexArray& smallFans, EdgeCountsByBlock& counts, const ParallelFor& parallelFor) const;
   template <typename HalfEdgeAt>
   static void WriteHalfEdgeGroup(HalfEdgePairing& pairing, const EdgeCountsByBlock& counts,
-    std::vector<EdgeCounts>& blockCounts, Index count, Index forward, Index firstFaceStart,
+    std::vector<EdgeCounts>& blockCounts, Index count, bool nonManifold, Index firstFaceStart,
     const HalfEdgeAt& halfEdgeAt);
+  template <typename HalfEdgeAt, typename WriteGroup>
+  void WriteVertexPairGroups(Index count, Index forward, bool allTriangles, const HalfEdgeAt& halfEdgeAt,
+    const WriteGroup& writeGroup) const;
   void NumberEdges(const HalfEdgePairing& pairing, const EdgeCountsByBlock& counts, const ParallelFor& parallelFor);
   void BuildEdgeFaces(const HalfEdgePairing& pairing, const ParallelFor& parallelFor);
   void BuildVertexEdges(const ParallelFor& parallelFor);
