@@ -862,3 +862,101 @@ TEST(RepeatedCorners, BaseTopologyIsOpenSubdivs)
     }
   }
 }
+
+// Refined, such faces give OpenSubdiv's faces (each keeps its size: a quad still has four
+// children), points and holes, level by level, and its limit positions, for Catmull-Clark,
+// Loop (on the meshes triangulated: triangles with a repeated corner) and bilinear, under the
+// three boundary rules (limit positions: not yet, see issue 52). Matched through OpenSubdiv's parent-to-child relations: a face's,
+// edge's and vertex's child point, a face's children by corner (the base levels are numbered
+// alike; a child face may start at another corner, found from its points).
+TEST(RepeatedCorners, RefinementIsOpenSubdivs)
+{
+  std::vector<subdtest::TestMesh> meshes{ RepeatedCornerMix() };
+  for (int n : { 3, 8, 64, 360 })
+    meshes.push_back(RepeatedCornerPole(n));
+  for (const SchemeKind kind : { SchemeKind::CatmullClark, SchemeKind::Loop, SchemeKind::Bilinear })
+    for (const subd::BoundaryRule rule :
+      { subd::BoundaryRule::None, subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::EdgeAndCorner })
+      for (subdtest::TestMesh mesh : meshes)
+      {
+        const bool loop = kind == SchemeKind::Loop;
+        if (loop)
+          mesh = mesh.Triangulated();
+        const int levels = mesh.NumFaces() > 200 ? 2 : 4;
+        const std::unique_ptr<subd::Scheme> scheme = MakeScheme(kind);
+        const std::string what = std::string(scheme->GetName()) + " " + mesh.Name + " " + subd::ToString(rule);
+        auto refiner = MakeOsdRefiner(mesh, rule, levels, kind, {});
+        Far::PrimvarRefinerReal<double> primvar(*refiner);
+        subd::Level level = subd::MakeBaseLevel(
+          subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, scheme->EffectiveBoundaryRule(rule));
+        std::vector<double> mine = mesh.Points;
+        std::vector<Point3> osd(static_cast<size_t>(mesh.NumVertices()));
+        for (Index v = 0; v < mesh.NumVertices(); ++v)
+          std::copy(&mesh.Points[3 * v], &mesh.Points[3 * v] + 3, osd[v].P);
+        const double tolerance = 1e-9 * subdtest::Diagonal(mesh.Points);
+        // OpenSubdiv's face f is my face FaceMap[f], its corner j my corner j + Turn[f].
+        std::vector<Index> faceMap(static_cast<size_t>(mesh.NumFaces())), turn(faceMap.size(), 0);
+        std::vector<Index> vertexMap(static_cast<size_t>(mesh.NumVertices()));
+        std::iota(faceMap.begin(), faceMap.end(), 0);
+        std::iota(vertexMap.begin(), vertexMap.end(), 0);
+        for (int l = 1; l <= levels; ++l)
+        {
+          const std::string at = what + " level " + std::to_string(l);
+          const Far::TopologyLevel& parentOsd = refiner->GetLevel(l - 1);
+          const Far::TopologyLevel& childOsd = refiner->GetLevel(l);
+          const subd::MeshTopology parent = level.Topology;
+          const subd::QuadSplitNumbering quads{ parent.GetNumFaces(), parent.GetNumEdges() };
+          const subd::TriangleSplitNumbering triangles{ parent.GetNumEdges() };
+          std::vector<Index> childVertexMap(static_cast<size_t>(childOsd.GetNumVertices()), subd::InvalidIndex);
+          std::vector<Index> childFaceMap(static_cast<size_t>(childOsd.GetNumFaces()), subd::InvalidIndex);
+          for (Index f = 0; f < parentOsd.GetNumFaces(); ++f)
+          {
+            const Index g = faceMap[f], n = parent.GetFaceSize(g);
+            const Far::ConstIndexArray edges = parentOsd.GetFaceEdges(f), children = parentOsd.GetFaceChildFaces(f);
+            for (Index j = 0; j < n; ++j)
+            {
+              const Index e = parent.GetFaceEdges(g)[(j + turn[f]) % n];
+              childVertexMap[parentOsd.GetEdgeChildVertex(edges[j])] = loop ? triangles.EdgePoint(e) : quads.EdgePoint(e);
+            }
+            if (!loop)
+              childVertexMap[parentOsd.GetFaceChildVertex(f)] = quads.FacePoint(g);
+            for (Index k = 0; k < children.size(); ++k)
+              childFaceMap[children[k]] = loop ? 4 * g + (k == 3 ? 3 : (k + turn[f]) % 3) : parent.GetFaceOffset(g) + (k + turn[f]) % n;
+          }
+          for (Index v = 0; v < parentOsd.GetNumVertices(); ++v)
+            childVertexMap[parentOsd.GetVertexChildVertex(v)] = loop ? triangles.VertexPoint(vertexMap[v]) : quads.VertexPoint(vertexMap[v]);
+
+          std::vector<Point3> osdChild(childVertexMap.size());
+          Point3* src = osd.data();
+          Point3* dst = osdChild.data();
+          primvar.Interpolate(l, src, dst);
+          osd.swap(osdChild);
+          mine = subdtest::ApplyToPoints(scheme->BuildStencils(level), mine);
+          level = scheme->Split(level, subd::ChildTopology::Full);
+          ASSERT_EQ(level.Topology.GetNumFaces(), childOsd.GetNumFaces()) << at;
+          ASSERT_EQ(level.Topology.GetNumVertices(), childOsd.GetNumVertices()) << at;
+          std::vector<Index> childTurn(childFaceMap.size(), subd::InvalidIndex);
+          for (Index f = 0; f < childOsd.GetNumFaces(); ++f)
+          {
+            const Far::ConstIndexArray fv = childOsd.GetFaceVertices(f);
+            const subd::IndexSpan corners = level.Topology.GetFaceVertices(childFaceMap[f]);
+            ASSERT_EQ(corners.size(), fv.size()) << at << " face " << f;
+            for (Index r = 0; r < fv.size() && childTurn[f] == subd::InvalidIndex; ++r)
+            {
+              bool agrees = true;
+              for (Index j = 0; j < fv.size(); ++j)
+                agrees &= childVertexMap[fv[j]] == corners[(j + r) % fv.size()];
+              childTurn[f] = agrees ? r : subd::InvalidIndex;
+            }
+            ASSERT_NE(childTurn[f], subd::InvalidIndex) << at << " face " << f << ": other corners";
+            EXPECT_EQ(level.IsFaceHole(childFaceMap[f]), childOsd.IsFaceHole(f)) << at << " face " << f;
+          }
+          for (Index v = 0; v < static_cast<Index>(osd.size()); ++v)
+            for (int k = 0; k < 3; ++k)
+              ASSERT_NEAR(mine[3 * childVertexMap[v] + k], osd[v].P[k], tolerance) << at << " point " << v;
+          faceMap = childFaceMap;
+          turn = childTurn;
+          vertexMap = childVertexMap;
+        }
+      }
+}

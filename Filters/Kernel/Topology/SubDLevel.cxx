@@ -214,11 +214,20 @@ void InheritPrimalSharpness(const Level& parent, Level& child, Index firstEdgePo
     {
       continue;
     }
+    // The halves: the edge point's edges to the ends' vertex points (two to the same one for
+    // an edge from a vertex to itself).
     const Index* ev = topo.GetEdgeVertices(e);
-    for (int k = 0; k < 2; ++k)
+    const Index edgePoint = firstEdgePoint + e;
+    for (Index half : childTopo.GetVertexEdges(edgePoint))
     {
-      const Index half = childTopo.FindEdge(firstEdgePoint + e, firstVertexPoint + ev[k]);
-      child.EdgeSharpness[half] = ChildEdgeSharpness(parent, e, k);
+      const Index other = childTopo.GetOtherEndpoint(half, edgePoint);
+      for (int k = 0; k < 2; ++k)
+      {
+        if (other == firstVertexPoint + ev[k])
+        {
+          child.EdgeSharpness[half] = ChildEdgeSharpness(parent, e, k);
+        }
+      }
     }
   }
   child.VertexSharpness.assign(static_cast<size_t>(childTopo.GetNumVertices()), SharpnessSmooth);

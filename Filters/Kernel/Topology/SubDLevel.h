@@ -140,6 +140,18 @@ inline Index HalfEdgeKey(const MeshTopology& parent, Index e, Index v)
   return 2 * e + (parent.GetEdgeVertices(e)[0] == v ? 0 : 1);
 }
 
+/// The keys of the halves of edge e of a face where e starts at the face's corner `start`:
+/// the half at that corner, and the half at the next one. Told by corner rather than by
+/// vertex, so that an edge from a vertex to itself (a face that repeats it) has two halves.
+inline Index StartHalfKey(const MeshTopology& parent, Index e, Index start)
+{
+  return HalfEdgeKey(parent, e, start);
+}
+inline Index EndHalfKey(const MeshTopology& parent, Index e, Index start)
+{
+  return 2 * e + (parent.GetEdgeVertices(e)[0] == start ? 1 : 0);
+}
+
 /// Gives the child faces of each parent face f, [firstChild(f), firstChild(f + 1)), the hole
 /// flag and origin of f. Shared by every split.
 template <typename FirstChild>

@@ -81,14 +81,17 @@ void PrimalChildAssembly::WriteEdgeFaces(
       const IndexSpan faces = parent.GetEdgeFaces(e);
       for (int side = 0; side < 2; ++side)
       {
-        const Index v = parent.GetEdgeVertices(e)[side];
         Index* out = child.EdgeFaces.data() + child.EdgeFaceOffsets[edgeOfKey[2 * e + side]];
         for (Index k = 0; k < faces.size(); ++k)
         {
           const Index g = faces[k];
           const Index i = parent.GetEdgePosition(g, e);
           const Index n = parent.GetFaceSize(g);
-          const Index corner = parent.GetFaceVertices(g)[i] == v ? i : (i + 1 == n ? 0 : i + 1);
+          // Where g runs e from its first end, the half there (side 0) is at corner i, the
+          // other at corner i + 1; the other way round otherwise. So an edge from a vertex to
+          // itself has a half at each of its two corners.
+          const bool startsAtFirstEnd = parent.GetFaceVertices(g)[i] == parent.GetEdgeVertices(e)[0];
+          const Index corner = startsAtFirstEnd == (side == 0) ? i : (i + 1 == n ? 0 : i + 1);
           out[k] = shape.CornerChild(g, corner);
         }
       }

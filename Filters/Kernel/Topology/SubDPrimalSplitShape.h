@@ -99,10 +99,10 @@ struct QuadSplitShape
     const IndexSpan fv = this->Parent.GetFaceVertices(f), fe = this->Parent.GetFaceEdges(f);
     const Index n = fv.size(), first = this->Parent.GetFaceOffset(f), inside = 2 * this->NumEdges;
     const Index previous = j == 0 ? n - 1 : j - 1;
-    keys[0] = HalfEdgeKey(this->Parent, fe[j], fv[j]);
+    keys[0] = StartHalfKey(this->Parent, fe[j], fv[j]);
     keys[1] = inside + first + j;
     keys[2] = inside + first + previous;
-    keys[3] = HalfEdgeKey(this->Parent, fe[previous], fv[j]);
+    keys[3] = EndHalfKey(this->Parent, fe[previous], fv[previous]);
   }
   // The edges inside f, each with its two faces in increasing order.
   template <typename Visit>
@@ -209,9 +209,9 @@ struct TriangleSplitShape
       return;
     }
     const Index *fv = this->Parent.GetTriangleVertices(f), *fe = this->Parent.GetTriangleEdges(f);
-    keys[0] = HalfEdgeKey(this->Parent, fe[j], fv[j]);
+    keys[0] = StartHalfKey(this->Parent, fe[j], fv[j]);
     keys[1] = inside + j;
-    keys[2] = HalfEdgeKey(this->Parent, fe[j == 0 ? 2 : j - 1], fv[j]);
+    keys[2] = EndHalfKey(this->Parent, fe[j == 0 ? 2 : j - 1], fv[j == 0 ? 2 : j - 1]);
   }
   template <typename Visit>
   void VisitInteriorEdges(Index f, Visit&& visit) const
@@ -315,7 +315,9 @@ void WriteChildPointRelations(const Shape& shape, const ChildEdgeNumbering& numb
   const IndexSpan parentEdges = parent.GetVertexEdges(v);
   for (Index k = 0; k < parentEdges.size(); ++k)
   {
-    edges[k] = numbering.EdgeOfKey[HalfEdgeKey(parent, parentEdges[k], v)];
+    // An edge from v to itself is listed twice: its two halves.
+    const bool again = k > 0 && parentEdges[k - 1] == parentEdges[k];
+    edges[k] = numbering.EdgeOfKey[HalfEdgeKey(parent, parentEdges[k], v) + (again ? 1 : 0)];
   }
   numFaces = parent.GetNumVertexFaces(v);
   numEdges = parentEdges.size();
