@@ -866,7 +866,7 @@ TEST(RepeatedCorners, BaseTopologyIsOpenSubdivs)
 // Refined, such faces give OpenSubdiv's faces (each keeps its size: a quad still has four
 // children), points and holes, level by level, and its limit positions, for Catmull-Clark,
 // Loop (on the meshes triangulated: triangles with a repeated corner) and bilinear, under the
-// three boundary rules (limit positions: not yet, see issue 52). Matched through OpenSubdiv's parent-to-child relations: a face's,
+// three boundary rules. Matched through OpenSubdiv's parent-to-child relations: a face's,
 // edge's and vertex's child point, a face's children by corner (the base levels are numbered
 // alike; a child face may start at another corner, found from its points).
 TEST(RepeatedCorners, RefinementIsOpenSubdivs)
@@ -958,5 +958,21 @@ TEST(RepeatedCorners, RefinementIsOpenSubdivs)
           turn = childTurn;
           vertexMap = childVertexMap;
         }
+        if (kind == SchemeKind::Bilinear)
+          continue;
+        std::vector<Point3> osdLimit(osd.size());
+        Point3* limitSrc = osd.data();
+        Point3* limitDst = osdLimit.data();
+        primvar.Limit(limitSrc, limitDst);
+        subd::StencilTable limit;
+        std::string error;
+        if (loop)
+          limit = subd::BuildLoopLimitStencils(level);
+        else
+          ASSERT_TRUE(subd::BuildCatmullClarkLimitStencils(level, limit, error)) << what << ": " << error;
+        const std::vector<double> mineLimit = subdtest::ApplyToPoints(limit, mine);
+        for (Index v = 0; v < static_cast<Index>(osd.size()); ++v)
+          for (int k = 0; k < 3; ++k)
+            ASSERT_NEAR(mineLimit[3 * vertexMap[v] + k], osdLimit[v].P[k], tolerance) << what << " limit " << v;
       }
 }

@@ -67,10 +67,19 @@ bool BuildCatmullClarkLimitStencils(const Level& level, StencilTable& stencils, 
     }
   }
   // v, then per face its edge neighbour (leaving v) and its diagonal vertex.
-  auto smoothSize = [&topo](Index v) { return 1 + 2 * topo.GetVertexFaces(v).size(); };
+  // Two faces: the corner mask (see the header).
+  auto smoothSize = [&topo](Index v) {
+    const Index n = topo.GetVertexFaces(v).size();
+    return n == 2 ? 1 : 1 + 2 * n;
+  };
   auto writeSmooth = [&topo](Index v, Index* src, double* wts) {
     const IndexSpan faces = topo.GetVertexFaces(v);
     const IndexSpan corners = topo.GetVertexFaceCorners(v);
+    if (faces.size() == 2)
+    {
+      wts[0] = 1.0;
+      return;
+    }
     const double n = static_cast<double>(faces.size());
     const double scale = 1.0 / (n * (n + 5.0));
     wts[0] = n / (n + 5.0);

@@ -9,6 +9,8 @@
 // the subdivision matrix):
 //     v_inf = (n^2 v + 4 sum e_i + sum f_i) / (n (n + 5)).
 // (The often-quoted form in terms of the level-1 edge and face points is the same point.)
+// A smooth vertex of two faces (one that a face repeats can be one) keeps its place, as in
+// OpenSubdiv, which gives it the corner mask.
 // Loop, smooth or dart vertex of valence n (Loop 1987; Hoppe et al. 1994):
 //     v_inf = (1 - n chi) v + chi sum v_i,   chi = 1 / (3 / (8 beta(n)) + n),
 // beta(n) Loop's weight (SubDLoopRules.h): 1/2 v + 1/12 sum v_i for n = 6.
