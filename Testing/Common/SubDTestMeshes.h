@@ -1,5 +1,5 @@
 // Test fixtures: small control meshes generated in code (closed, open, mixed face sizes,
-// valences 3..8, non-manifold), with deterministic jitter so that no symmetry hides a wrong
+// valences 3..8, non-manifold, faces that repeat a vertex), with deterministic jitter so that no symmetry hides a wrong
 // weight. Shared by the kernel, property and oracle tests.
 #ifndef SubDTestMeshes_h
 #define SubDTestMeshes_h
@@ -7,6 +7,7 @@
 #include "SubDRefiner.h"
 #include "SubDTypes.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -294,6 +295,56 @@ inline TestMesh Bipyramid(int n)
 /// The triangle fixtures (for Loop and other triangle schemes): the standard set
 /// triangulated, plus bipyramids for valences 3..12.
 inline std::vector<TestMesh> TriangleMeshes();
+
+// A cylinder of n side quads, open at the bottom, closed at the top by a pole fan of n quads
+// that repeat the pole (s_i, s_i+1, T, T), the repeated pair turned through the four slots.
+inline TestMesh RepeatedCornerPole(int n)
+{
+  TestMesh m;
+  m.Name = "pole" + std::to_string(n);
+  const double pi = 3.14159265358979323846;
+  for (int k = 0; k < n; ++k)
+  {
+    const double a = 2 * pi * k / n;
+    m.AddPoint(std::cos(a), std::sin(a), 0.0);
+    m.AddPoint(std::cos(a), std::sin(a), 1.0);
+  }
+  m.AddPoint(0, 0, 1.5);
+  const subd::Index pole = 2 * n;
+  for (int k = 0; k < n; ++k)
+  {
+    const subd::Index r0 = 2 * k, r1 = 2 * ((k + 1) % n);
+    m.AddFace({ r0, r1, r1 + 1, r0 + 1 });
+    std::vector<subd::Index> cap{ r0 + 1, r1 + 1, pole, pole };
+    std::rotate(cap.begin(), cap.begin() + k % 4, cap.end());
+    m.AddFace(cap);
+  }
+  return m;
+}
+
+// Quads, a quad and a pentagon with consecutive repeats (one and two degenerate edges), a
+// pentagon that passes a vertex twice (a vertex pair met twice in one face), and a
+// non-manifold edge (three faces on 0-1).
+inline TestMesh RepeatedCornerMix()
+{
+  TestMesh m;
+  m.Name = "repeat-mix";
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i)
+      m.AddPoint(i, j, 0.1 * ((i * 7 + j * 3) % 5));
+  m.AddPoint(0.5, 0.0, 1.0);
+  m.AddFace({ 0, 1, 5, 4 });
+  m.AddFace({ 1, 2, 6, 5 });
+  m.AddFace({ 2, 3, 7, 6 });
+  m.AddFace({ 4, 5, 9, 8 });
+  m.AddFace({ 5, 6, 10, 10 });
+  m.AddFace({ 6, 7, 7, 11, 11 });
+  m.AddFace({ 9, 13, 9, 12, 8 });
+  m.AddFace({ 10, 11, 15, 14 });
+  m.AddFace({ 1, 0, 16 });
+  m.AddFace({ 0, 1, 16 });
+  return m;
+}
 
 /// The oracle and property fixture set.
 inline std::vector<TestMesh> StandardMeshes()

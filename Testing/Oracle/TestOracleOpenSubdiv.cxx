@@ -758,68 +758,15 @@ TEST(ExplorerCreaseEditing, TheEditedSurfaceIsOpenSubdivs)
 }
 }
 
-namespace
-{
-// A cylinder of n side quads, open at the bottom, closed at the top by a pole fan of n quads
-// that repeat the pole (s_i, s_i+1, T, T), the repeated pair turned through the four slots.
-subdtest::TestMesh RepeatedCornerPole(int n)
-{
-  subdtest::TestMesh m;
-  m.Name = "pole" + std::to_string(n);
-  const double pi = 3.14159265358979323846;
-  for (int k = 0; k < n; ++k)
-  {
-    const double a = 2 * pi * k / n;
-    m.AddPoint(std::cos(a), std::sin(a), 0.0);
-    m.AddPoint(std::cos(a), std::sin(a), 1.0);
-  }
-  m.AddPoint(0, 0, 1.5);
-  const Index pole = 2 * n;
-  for (int k = 0; k < n; ++k)
-  {
-    const Index r0 = 2 * k, r1 = 2 * ((k + 1) % n);
-    m.AddFace({ r0, r1, r1 + 1, r0 + 1 });
-    std::vector<Index> cap{ r0 + 1, r1 + 1, pole, pole };
-    std::rotate(cap.begin(), cap.begin() + k % 4, cap.end());
-    m.AddFace(cap);
-  }
-  return m;
-}
-
-// Quads, a quad and a pentagon with consecutive repeats (one and two degenerate edges), a
-// quad that passes a vertex twice (a vertex pair met twice in one face), and a non-manifold
-// edge (three faces on 0-1).
-subdtest::TestMesh RepeatedCornerMix()
-{
-  subdtest::TestMesh m;
-  m.Name = "repeat-mix";
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i)
-      m.AddPoint(i, j, 0.1 * ((i * 7 + j * 3) % 5));
-  m.AddPoint(0.5, 0.0, 1.0);
-  m.AddFace({ 0, 1, 5, 4 });
-  m.AddFace({ 1, 2, 6, 5 });
-  m.AddFace({ 2, 3, 7, 6 });
-  m.AddFace({ 4, 5, 9, 8 });
-  m.AddFace({ 5, 6, 10, 10 });
-  m.AddFace({ 6, 7, 7, 11, 11 });
-  m.AddFace({ 9, 13, 9, 12, 8 });
-  m.AddFace({ 10, 11, 15, 14 });
-  m.AddFace({ 1, 0, 16 });
-  m.AddFace({ 0, 1, 16 });
-  return m;
-}
-}
-
 // Faces that repeat a vertex are read as OpenSubdiv reads them (Vtr::Level): each half-edge
 // from a vertex to itself is an edge of its own, a vertex pair met twice in one face is two
 // edges, all non-manifold; edges numbered in the order they are met. The base topology's
 // edges, their ends, faces and tags, and the vertices' tags equal OpenSubdiv's.
 TEST(RepeatedCorners, BaseTopologyIsOpenSubdivs)
 {
-  std::vector<subdtest::TestMesh> meshes{ RepeatedCornerMix() };
+  std::vector<subdtest::TestMesh> meshes{ subdtest::RepeatedCornerMix() };
   for (int n : { 3, 8, 64, 360 })
-    meshes.push_back(RepeatedCornerPole(n));
+    meshes.push_back(subdtest::RepeatedCornerPole(n));
   for (const subdtest::TestMesh& mesh : meshes)
   {
     const std::unique_ptr<Far::TopologyRefiner> refiner =
@@ -871,9 +818,9 @@ TEST(RepeatedCorners, BaseTopologyIsOpenSubdivs)
 // alike; a child face may start at another corner, found from its points).
 TEST(RepeatedCorners, RefinementIsOpenSubdivs)
 {
-  std::vector<subdtest::TestMesh> meshes{ RepeatedCornerMix() };
+  std::vector<subdtest::TestMesh> meshes{ subdtest::RepeatedCornerMix() };
   for (int n : { 3, 8, 64, 360 })
-    meshes.push_back(RepeatedCornerPole(n));
+    meshes.push_back(subdtest::RepeatedCornerPole(n));
   for (const SchemeKind kind : { SchemeKind::CatmullClark, SchemeKind::Loop, SchemeKind::Bilinear })
     for (const subd::BoundaryRule rule :
       { subd::BoundaryRule::None, subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::EdgeAndCorner })

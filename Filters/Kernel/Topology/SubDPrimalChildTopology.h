@@ -16,7 +16,10 @@
 //     the children of the parent edge's faces, oriented as they were), an edge point its
 //     edge's, a vertex point its vertex's; everything inside a face is interior and manifold.
 // The result equals MeshTopology::Build's on the same faces, for every input including
-// non-manifold ones (tested), and does not depend on the number of threads.
+// non-manifold ones (tested), and does not depend on the number of threads. Except below a
+// face that repeats a vertex: the two halves of its edge from that vertex to itself join the
+// same two child points, two edges of one face each, as in OpenSubdiv (tested against it),
+// where Build would make them one.
 #ifndef SubDPrimalChildTopology_h
 #define SubDPrimalChildTopology_h
 
