@@ -325,6 +325,41 @@ void MeshTopology::WriteVertexPairGroups(
   writeGroup(static_cast<Index>(first.size()), true, faceOf(0), [&first](Index i) { return first[i]; });
 }
 
+// The half-edges at v paired from a list sorted by their upper vertex (PairHalfEdges' path
+// for many corners and for faces that repeat v, turn back or go from v to v).
+template <typename CornerAt, typename WriteGroup>
+void MeshTopology::PairBySorting(Index v, Index n, bool allTriangles, std::vector<std::uint64_t>& keys,
+  const CornerAt& cornerAt, const WriteGroup& writeGroup) const
+{
+  if (keys.size() < 2 * static_cast<size_t>(n))
+  {
+    keys.resize(2 * static_cast<size_t>(n));
+  }
+  std::uint64_t* first = keys.data();
+  std::uint64_t* last = first;
+  for (Index k = 0; k < n; ++k)
+  {
+    Index faceFirst, h, previous, to, from;
+    cornerAt(k, faceFirst, h, previous, to, from);
+    if (to == v)
+    {
+      writeGroup(1, true, faceFirst, [h](Index) { return h; }); // from v to v: an edge of its own
+    }
+    else if (to > v)
+    {
+      *last++ = HalfEdgeKey(to, h, true);
+    }
+    if (from > v)
+    {
+      *last++ = HalfEdgeKey(from, previous, false);
+    }
+  }
+  SortShortList(first, last);
+  ForEachVertexPair(first, last, [&](Index count, Index forward, const auto& halfEdgeAt) {
+    this->WriteVertexPairGroups(count, forward, allTriangles, halfEdgeAt, writeGroup);
+  });
+}
+
 // The half-edges of one vertex pair are paired at the pair's lower vertex v, from v's own
 // face corners: the half-edge leaving v at a corner, when it goes up (or loops back to v),
 // and the one entering it from a higher vertex. At most vertices (up to 32 corners, no
@@ -424,33 +459,7 @@ MeshTopology::HalfEdgePairing MeshTopology::PairHalfEdges(
         continue;
       }
       smallFans[v] = InvalidIndex; // counted by TagVertices (CountFans)
-      if (keys.size() < 2 * static_cast<size_t>(n))
-      {
-        keys.resize(2 * static_cast<size_t>(n));
-      }
-      std::uint64_t* first = keys.data();
-      std::uint64_t* last = first;
-      for (Index k = 0; k < n; ++k)
-      {
-        Index faceFirst, h, previous, to, from;
-        cornerAt(k, faceFirst, h, previous, to, from);
-        if (to == v)
-        {
-          writeGroup(1, true, faceFirst, [h](Index) { return h; }); // from v to v: an edge of its own
-        }
-        else if (to > v)
-        {
-          *last++ = HalfEdgeKey(to, h, true);
-        }
-        if (from > v)
-        {
-          *last++ = HalfEdgeKey(from, previous, false);
-        }
-      }
-      SortShortList(first, last);
-      ForEachVertexPair(first, last, [&](Index count, Index forward, const auto& halfEdgeAt) {
-        this->WriteVertexPairGroups(count, forward, allTriangles, halfEdgeAt, writeGroup);
-      });
+      this->PairBySorting(v, n, allTriangles, keys, cornerAt, writeGroup);
     }
     const std::lock_guard<std::mutex> lock(merging);
     for (size_t b = 0; b < blockCounts.size(); ++b)

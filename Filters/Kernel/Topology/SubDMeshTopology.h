@@ -276,6 +276,9 @@ private:
   static void WriteHalfEdgeGroup(HalfEdgePairing& pairing, const EdgeCountsByBlock& counts,
     std::vector<EdgeCounts>& blockCounts, Index count, bool nonManifold, Index firstFaceStart,
     const HalfEdgeAt& halfEdgeAt);
+  template <typename CornerAt, typename WriteGroup>
+  void PairBySorting(Index v, Index n, bool allTriangles, std::vector<std::uint64_t>& keys, const CornerAt& cornerAt,
+    const WriteGroup& writeGroup) const;
   template <typename HalfEdgeAt, typename WriteGroup>
   void WriteVertexPairGroups(Index count, Index forward, bool allTriangles, const HalfEdgeAt& halfEdgeAt,
     const WriteGroup& writeGroup) const;
