@@ -1,12 +1,11 @@
 #include "vtkSubDCage.h"
 
-#include "SubDMeshValidation.h"
 #include "vtkSubDInputFaces.h"
 #include "vtkSubDPieces.h"
 #include "vtkSubDSharpFeatures.h"
 
-bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::BoundaryRule rule, subd::CreaseMethod creasing, vtkSubDCage& cage,
-  std::string& error, std::string& warning)
+bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::RepeatedCorners repeated, subd::BoundaryRule rule,
+  subd::CreaseMethod creasing, vtkSubDCage& cage, std::string& error, std::string& warning)
 {
   const vtkIdType numPoints = input && input->GetPoints() ? input->GetNumberOfPoints() : 0;
   const vtkSubDInputFaces faces = input ? vtkSubDGatherFaces(input) : vtkSubDInputFaces();
@@ -21,21 +20,12 @@ bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::BoundaryRule rule
     error = "point " + std::to_string(badPoint) + " has a non-finite coordinate";
     return false;
   }
-  // Faces screened as the surface filters screen them: degenerate ones are dropped.
+  // Faces screened as the surface filters screen them.
   const vtkIdType numPolys = input->GetNumberOfPolys();
-  const subd::FaceScreening screened = subd::ScreenFaces(static_cast<subd::Index>(numPoints),
-    static_cast<subd::Index>(faces.NumFaces), faces.Offsets, faces.Connectivity);
-  if (screened.NumOutOfRange > 0)
+  subd::FaceScreening screened;
+  if (!vtkSubDScreenFaces(faces, numPoints, numPolys, repeated, screened, error, warning))
   {
-    error = "cell " + std::to_string(faces.CellIdOf(screened.FirstOutOfRangeFace, numPolys)) + " uses point id " +
-      std::to_string(screened.FirstOutOfRangeId) + ", which does not exist";
     return false;
-  }
-  if (screened.NumDropped > 0)
-  {
-    warning = "ignored " + std::to_string(screened.NumDropped) +
-      " degenerate polygon(s) (fewer than 3 distinct points, or a point repeated); the first is cell " +
-      std::to_string(faces.CellIdOf(screened.FirstDroppedFace, numPolys));
   }
   for (subd::Index f : screened.KeptFaces)
   {

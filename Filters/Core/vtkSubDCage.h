@@ -4,6 +4,7 @@
 #define vtkSubDCage_h
 
 #include "SubDLevel.h"
+#include "SubDMeshValidation.h" // RepeatedCorners
 #include "vtkPolyData.h"
 
 #include <cstdint>
@@ -22,11 +23,12 @@ struct vtkSubDCage
 };
 
 /// Reads `input`'s polygons (screened as vtkSubDSurfaceFilter screens them: degenerate ones
-/// dropped with a warning), their ghost marks (a piece of a distributed mesh: the non-manifold
+/// dropped and polygons repeating a point kept or collapsed, as `repeated` says, with a
+/// warning), their ghost marks (a piece of a distributed mesh: the non-manifold
 /// warning counts only its own faces) and sharp features into `cage`. `triangles`: every face must be a
 /// triangle (Loop). False, with the reason in `error`, for no polygons, a non-finite point,
 /// an id outside the points, or a face of the wrong kind.
-bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::BoundaryRule rule, subd::CreaseMethod creasing, vtkSubDCage& cage,
-  std::string& error, std::string& warning);
+bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::RepeatedCorners repeated, subd::BoundaryRule rule,
+  subd::CreaseMethod creasing, vtkSubDCage& cage, std::string& error, std::string& warning);
 
 #endif

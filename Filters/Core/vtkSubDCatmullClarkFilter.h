@@ -46,6 +46,7 @@ protected:
   ~vtkSubDCatmullClarkFilter() override = default;
 
   subd::Scheme* NewScheme(bool allTriangles) override;
+  bool KeepsRepeatedCorners() override { return true; }
 
 private:
   vtkSubDCatmullClarkFilter(const vtkSubDCatmullClarkFilter&) = delete;

@@ -1,6 +1,7 @@
 #include "vtkSubDInputFaces.h"
 
 #include "SubDMeshTopology.h"
+#include "vtkSubDPointDataInterpolation.h"
 
 #include "vtkCellArray.h"
 #include "vtkIdTypeArray.h"
@@ -118,36 +119,105 @@ vtkIdType vtkSubDFirstCellOutsidePoints(vtkPolyData* input)
   return -1;
 }
 
+bool vtkSubDScreenFaces(const vtkSubDInputFaces& faces, vtkIdType numPoints, vtkIdType numPolys,
+  subd::RepeatedCorners repeated, subd::FaceScreening& screened, std::string& error, std::string& warning)
+{
+  screened = subd::ScreenFaces(static_cast<subd::Index>(numPoints), static_cast<subd::Index>(faces.NumFaces),
+    faces.Offsets, faces.Connectivity, &vtkSubDPointDataInterpolation::SMPFor, repeated);
+  auto cell = [&](subd::Index face) { return std::to_string(faces.CellIdOf(face, numPolys)); };
+  if (screened.NumOutOfRange > 0)
+  {
+    error = std::to_string(screened.NumOutOfRange) + " input cell(s) refer to points that do not exist; the first, " +
+      "cell " + cell(screened.FirstOutOfRangeFace) + ", uses point id " + std::to_string(screened.FirstOutOfRangeId) +
+      " but the input has " + std::to_string(numPoints) + " points";
+    return false;
+  }
+  warning.clear();
+  const subd::Index kept = screened.NumRepeatingKept, collapsed = screened.NumRepeatingCollapsed;
+  if (kept + collapsed > 0) // (the others are dropped, and counted so below)
+  {
+    std::string what = kept == 0 ? "" : std::to_string(kept) + " kept as OpenSubdiv keeps them (an edge from a point " +
+        "to itself and the repeated point infinitely sharp)";
+    if (collapsed > 0)
+    {
+      what += (what.empty() ? "" : ", ") + std::to_string(collapsed) + " with their repeated corners collapsed";
+    }
+    warning = std::to_string(screened.NumRepeating) + " polygon(s) repeat a point at several corners (the first " +
+      "is cell " + cell(screened.FirstRepeatingFace) + "): " + what;
+  }
+  if (screened.NumDropped > 0)
+  {
+    warning += (warning.empty() ? "" : "; ") + std::string("ignored ") + std::to_string(screened.NumDropped) +
+      " degenerate polygon(s) (fewer than 3 corners or 2 distinct points, or a point repeated after collapsing); " +
+      "the first is cell " + cell(screened.FirstDroppedFace);
+  }
+  return true;
+}
+
+namespace
+{
+// Whether face f names v at several corners.
+bool RepeatsVertex(const subd::MeshTopology& topology, subd::Index f, subd::Index v)
+{
+  const subd::IndexSpan corners = topology.GetFaceVertices(f);
+  return std::count(corners.begin(), corners.end(), v) > 1;
+}
+
+// What a face that repeats a point makes non-manifold (its edges from a point to itself or
+// joining a pair it meets twice; the repeated points), which vtkSubDScreenFaces reports with
+// those faces.
+bool FromRepeatedCorners(const subd::MeshTopology& topology, subd::Index e)
+{
+  const subd::Index* ends = topology.GetEdgeVertices(e);
+  const subd::IndexSpan faces = topology.GetEdgeFaces(e);
+  return std::any_of(faces.begin(), faces.end(), [&](subd::Index f) {
+    return RepeatsVertex(topology, f, ends[0]) || RepeatsVertex(topology, f, ends[1]);
+  });
+}
+bool VertexFromRepeatedCorners(const subd::MeshTopology& topology, subd::Index v)
+{
+  const subd::IndexSpan faces = topology.GetVertexFaces(v); // a face naming v twice is listed twice
+  if (std::adjacent_find(faces.begin(), faces.end()) != faces.end())
+  {
+    return true;
+  }
+  const subd::IndexSpan edges = topology.GetVertexEdges(v);
+  const auto nonManifold = [&topology](subd::Index e) { return topology.GetEdgeTag(e).NonManifold != 0; };
+  return std::any_of(edges.begin(), edges.end(), nonManifold) &&
+    std::all_of(edges.begin(), edges.end(),
+      [&](subd::Index e) { return !nonManifold(e) || FromRepeatedCorners(topology, e); });
+}
+}
+
 std::string vtkSubDNonManifoldWarning(const subd::MeshTopology& topology, const std::vector<std::uint8_t>& faceIsGhost)
 {
   if (topology.GetNumNonManifoldEdges() == 0 && topology.GetNumNonManifoldVertices() == 0)
   {
     return "";
   }
-  subd::Index edges = topology.GetNumNonManifoldEdges(), vertices = topology.GetNumNonManifoldVertices();
-  if (!faceIsGhost.empty())
+  // A piece: only what touches its own faces (the rim of its ghost layers is cut anywhere).
+  auto touchesOwnFace = [&faceIsGhost](subd::IndexSpan faces) {
+    return faceIsGhost.empty() ||
+      std::any_of(faces.begin(), faces.end(), [&faceIsGhost](subd::Index f) { return !faceIsGhost[f]; });
+  };
+  subd::Index edges = 0, vertices = 0;
+  for (subd::Index e = 0; e < topology.GetNumEdges(); ++e)
   {
-    // A piece: only what touches its own faces (the rim of its ghost layers is cut anywhere).
-    auto touchesOwnFace = [&faceIsGhost](subd::IndexSpan faces) {
-      return std::any_of(faces.begin(), faces.end(), [&faceIsGhost](subd::Index f) { return !faceIsGhost[f]; });
-    };
-    edges = vertices = 0;
-    for (subd::Index e = 0; e < topology.GetNumEdges(); ++e)
-    {
-      edges += topology.GetEdgeTag(e).NonManifold && touchesOwnFace(topology.GetEdgeFaces(e));
-    }
-    for (subd::Index v = 0; v < topology.GetNumVertices(); ++v)
-    {
-      vertices += topology.GetVertexTag(v).NonManifold && touchesOwnFace(topology.GetVertexFaces(v));
-    }
-    if (edges == 0 && vertices == 0)
-    {
-      return "";
-    }
+    edges += topology.GetEdgeTag(e).NonManifold && touchesOwnFace(topology.GetEdgeFaces(e)) &&
+      !FromRepeatedCorners(topology, e);
   }
   // A topology without vertex relations (the linear schemes') does not know its vertices.
-  const std::string vertexCount =
-    topology.HasVertexRelations() ? ", " + std::to_string(vertices) + " non-manifold vertices" : "";
+  const bool knowsVertices = topology.HasVertexRelations();
+  for (subd::Index v = 0; knowsVertices && v < topology.GetNumVertices(); ++v)
+  {
+    vertices += topology.GetVertexTag(v).NonManifold && touchesOwnFace(topology.GetVertexFaces(v)) &&
+      !VertexFromRepeatedCorners(topology, v);
+  }
+  if (edges == 0 && vertices == 0)
+  {
+    return "";
+  }
+  const std::string vertexCount = knowsVertices ? ", " + std::to_string(vertices) + " non-manifold vertices" : "";
   return "Input is non-manifold (" + std::to_string(edges) + " edges with more than two faces or inconsistent " +
     "orientation" + vertexCount + "); they are subdivided as infinitely sharp";
 }

@@ -4,6 +4,7 @@
 #ifndef vtkSubDInputFaces_h
 #define vtkSubDInputFaces_h
 
+#include "SubDMeshValidation.h" // RepeatedCorners, FaceScreening
 #include "vtkType.h"
 
 #include <cstdint>
@@ -36,6 +37,13 @@ struct vtkSubDInputFaces
 /// The faces of `input`. A strip p0 p1 p2 p3 ... gives the triangles (p0 p1 p2), (p2 p1 p3), ...
 vtkSubDInputFaces vtkSubDGatherFaces(vtkPolyData* input);
 
+/// `faces` screened (subd::ScreenFaces, on vtkSMPTools' threads) with the input's words for
+/// what was found: false and an `error` for point ids that do not exist; a `warning` ("" when
+/// nothing was repaired) counting the faces that repeat a corner (kept or collapsed, as
+/// `repeated` says) and the faces dropped, each with its first cell.
+bool vtkSubDScreenFaces(const vtkSubDInputFaces& faces, vtkIdType numPoints, vtkIdType numPolys,
+  subd::RepeatedCorners repeated, subd::FaceScreening& screened, std::string& error, std::string& warning);
+
 /// The first point with a NaN or infinite coordinate, or -1.
 vtkIdType vtkSubDFirstNonFinitePoint(vtkPoints* points);
 
@@ -45,7 +53,8 @@ vtkIdType vtkSubDFirstCellOutsidePoints(vtkPolyData* input);
 
 /// The warning for a non-manifold input ("" when it is manifold): such edges and vertices are
 /// subdivided as infinitely sharp, as OpenSubdiv does. For a piece with ghost faces (1 in
-/// `faceIsGhost`), only the edges and vertices of its own faces count.
+/// `faceIsGhost`), only the edges and vertices of its own faces count. What a face repeating a
+/// point makes non-manifold by itself is not counted: vtkSubDScreenFaces' warning tells it.
 std::string vtkSubDNonManifoldWarning(
   const subd::MeshTopology& topology, const std::vector<std::uint8_t>& faceIsGhost = {});
 

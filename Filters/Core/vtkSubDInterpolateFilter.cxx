@@ -67,7 +67,11 @@ int vtkSubDInterpolateFilter::Execute(
 
   vtkSubDCage cage;
   std::string error, warning;
-  if (!vtkSubDReadCage(input, this->Scheme == LOOP, static_cast<subd::BoundaryRule>(this->BoundaryRule),
+  // Polygons repeating a point are kept as the Catmull-Clark and Loop filters keep them.
+  const subd::RepeatedCorners repeated = this->Scheme == DOO_SABIN ? subd::RepeatedCorners::Collapse
+    : this->Scheme == LOOP                                         ? subd::RepeatedCorners::KeepInTriangles
+                                                                   : subd::RepeatedCorners::Keep;
+  if (!vtkSubDReadCage(input, this->Scheme == LOOP, repeated, static_cast<subd::BoundaryRule>(this->BoundaryRule),
         static_cast<subd::CreaseMethod>(this->CreaseMethod), cage, error, warning))
   {
     return fail(error);

@@ -477,7 +477,9 @@ int vtkSubDLimitFilter::Execute(
   const bool quads = this->Scheme == CATMULL_CLARK;
   vtkSubDCage cage;
   std::string error, warning;
-  const bool read = vtkSubDReadCage(input, !quads, static_cast<subd::BoundaryRule>(this->BoundaryRule),
+  const bool read = vtkSubDReadCage(input, !quads,
+    quads ? subd::RepeatedCorners::Keep : subd::RepeatedCorners::KeepInTriangles,
+    static_cast<subd::BoundaryRule>(this->BoundaryRule),
     static_cast<subd::CreaseMethod>(this->CreaseMethod), cage, error, warning);
   if (!warning.empty())
   {

@@ -65,6 +65,7 @@ protected:
 
   subd::Scheme* NewScheme(bool allTriangles) override;
   bool RequiresTriangles() override { return this->Split == SPLIT_TRIANGLES; }
+  bool KeepsRepeatedCorners() override { return true; }
 
   int Split = SPLIT_AUTO;
 

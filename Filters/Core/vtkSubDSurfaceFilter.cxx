@@ -12,6 +12,7 @@
 #include "SubDSmoothGrandchild.h"
 #include "vtkSubDAdoptedArray.h"
 #include "vtkSubDInputFaces.h"
+#include "vtkSubDInterpolationSupport.h"
 #include "vtkSubDLimitGeometry.h"
 #include "vtkSubDPieces.h"
 #include "vtkSubDPointDataInterpolation.h"
@@ -421,24 +422,20 @@ bool vtkSubDSurfaceFilter::ScreenInputFaces(vtkPolyData* input, vtkInputMesh& me
     vtkErrorMacro("Input has " << faces.Offsets[faces.NumFaces] << " face corners; too many.");
     return false;
   }
-  mesh.Screened = subd::ScreenFaces(static_cast<subd::Index>(mesh.NumPoints), static_cast<subd::Index>(faces.NumFaces),
-    faces.Offsets, faces.Connectivity, &vtkSubDPointDataInterpolation::SMPFor);
-  const subd::FaceScreening& screened = mesh.Screened;
-  if (screened.NumOutOfRange > 0)
+  const subd::RepeatedCorners repeated = this->CollapseRepeatedCorners || !this->KeepsRepeatedCorners()
+    ? subd::RepeatedCorners::Collapse
+    : this->RequiresTriangles() ? subd::RepeatedCorners::KeepInTriangles : subd::RepeatedCorners::Keep;
+  std::string error, warning;
+  if (!vtkSubDScreenFaces(faces, mesh.NumPoints, mesh.NumPolys, repeated, mesh.Screened, error, warning))
   {
-    vtkErrorMacro(<< screened.NumOutOfRange << " input cell(s) refer to points that do not exist; "
-                  << "the first, cell " << faces.CellIdOf(screened.FirstOutOfRangeFace, mesh.NumPolys)
-                  << ", uses point id " << screened.FirstOutOfRangeId << " but the input has "
-                  << mesh.NumPoints << " points.");
+    vtkErrorMacro(<< vtkSubDSentence(error));
     return false;
   }
-  if (screened.NumDropped > 0)
+  if (!warning.empty())
   {
-    vtkWarningMacro(<< "Ignored " << screened.NumDropped
-                    << " degenerate polygon(s) (fewer than 3 distinct points, or a point repeated); "
-                    << "the first is cell " << faces.CellIdOf(screened.FirstDroppedFace, mesh.NumPolys)
-                    << ".");
+    vtkWarningMacro(<< vtkSubDSentence(warning));
   }
+  const subd::FaceScreening& screened = mesh.Screened;
   if (this->RequiresTriangles())
   {
     const subd::Index split = TriangulateFaces(mesh.Screened, input->GetPoints());
@@ -1072,6 +1069,7 @@ void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CreaseMethod: " << this->GetCreaseMethodAsString() << "\n";
   os << indent << "AutomaticCreases: " << (this->AutomaticCreases ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
+  os << indent << "CollapseRepeatedCorners: " << (this->CollapseRepeatedCorners ? "On" : "Off") << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "ProjectToLimit: " << (this->ProjectToLimit ? "On" : "Off") << "\n";
   os << indent << "ComputeLimitNormals: " << (this->ComputeLimitNormals ? "On" : "Off") << "\n";

@@ -7,10 +7,14 @@
  * options; this class
  *
  * - reads the input's polygons (any size; triangle strips are split into triangles) straight
- *   from its offsets/connectivity arrays, screens them (faces with fewer than three distinct
- *   corners are dropped with one warning; out-of-range point ids are an error), and for
- *   triangle-only schemes splits larger polygons into triangles by ear clipping, which is
- *   correct for concave polygons too (one warning),
+ *   from its offsets/connectivity arrays, screens them (faces with fewer than three corners
+ *   or two distinct points are dropped with one warning; out-of-range point ids are an
+ *   error), and for triangle-only schemes splits larger polygons into triangles by ear
+ *   clipping, which is correct for concave polygons too (one warning),
+ * - keeps a polygon that names a point at several corners (a quad 4 3 5 5 closing a pole) as
+ *   OpenSubdiv does, in the schemes that OpenSubdiv has (Catmull-Clark, Loop and the linear
+ *   scheme; see CollapseRepeatedCorners); the other schemes collapse the repeats; one
+ *   warning counts such polygons,
  * - builds the kernel topology, tagging non-manifold edges and vertices, which are then
  *   subdivided as infinitely sharp (OpenSubdiv's behaviour) after one warning,
  * - refines NumberOfSubdivisions levels, or reuses the stencils of the previous execution when
@@ -162,6 +166,25 @@ public:
   vtkBooleanMacro(AutomaticCreases, bool);
   vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
   vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /**
+   * What to do with a polygon that names a point at several corners (a quad 4 3 5 5, or
+   * 81 81 81 82 left by welding). Off (default): Catmull-Clark, Loop (triangles; larger
+   * polygons are collapsed before they are triangulated) and the linear scheme keep it as
+   * OpenSubdiv does: the face keeps its corners, an edge from a point to itself is an edge of
+   * its own and every edge and point involved is non-manifold, hence infinitely sharp, so the
+   * repeated point stays a corner of the surface; the output then equals OpenSubdiv's. On:
+   * consecutive repeats are removed first (4 3 5 5 becomes the triangle 4 3 5), the surface is
+   * smooth there, and a polygon that still repeats a point is dropped. Doo-Sabin, the midpoint
+   * scheme, sqrt(3) and butterfly always collapse, and so do Catmull-Clark and Loop when
+   * limit normals or curvature are asked for (their evaluation needs distinct corners).
+   * Either way one warning counts the polygons.
+   */
+  vtkSetMacro(CollapseRepeatedCorners, bool);
+  vtkGetMacro(CollapseRepeatedCorners, bool);
+  vtkBooleanMacro(CollapseRepeatedCorners, bool);
   ///@}
 
   ///@{
@@ -320,11 +343,16 @@ protected:
   /// clipping, correct for concave polygons), with one warning, instead of being refused.
   virtual bool RequiresTriangles() { return false; }
 
+  /// True for schemes that refine a polygon repeating a point as OpenSubdiv does
+  /// (CollapseRepeatedCorners); the others have it collapsed.
+  virtual bool KeepsRepeatedCorners() { return false; }
+
   int NumberOfSubdivisions = 1;
   int BoundaryRule = BOUNDARY_EDGE_ONLY;
   int CreaseMethod = CREASE_UNIFORM;
   bool AutomaticCreases = false;
   double FeatureAngle = 30.0;
+  bool CollapseRepeatedCorners = false;
   int OutputPointsPrecision = DEFAULT_PRECISION;
   bool GenerateParentCellIds = false;
   bool ProjectToLimit = false;

@@ -194,7 +194,8 @@ TEST(InterpolateFilter, CatmullClarkLimitPassesThroughEveryVertex)
 {
   for (const subdtest::TestMesh& mesh :
     { subdtest::Grid(4, 3, false, false).Jitter(0.1), subdtest::Star(5).Jitter(0.1),
-      subdtest::House(false).Jitter(0.1), subdtest::Grid(6, 5, true, true).Jitter(0.05) })
+      subdtest::House(false).Jitter(0.1), subdtest::Grid(6, 5, true, true).Jitter(0.05),
+      subdtest::RepeatedCornerPole(8) }) // cap quads (a, b, T, T) kept as the Catmull-Clark filter keeps them
   {
     auto targets = ToPolyData(mesh);
     for (int solver : { vtkSubDInterpolateFilter::SOLVER_DIRECT, vtkSubDInterpolateFilter::SOLVER_ITERATIVE })
@@ -250,7 +251,7 @@ TEST(InterpolateFilter, CatmullClarkWithSharpAndSemiSharpCreases)
 TEST(InterpolateFilter, LoopLimitPassesThroughEveryVertex)
 {
   for (const subdtest::TestMesh& mesh : { subdtest::Bipyramid(5).Jitter(0.1), subdtest::Cube().Jitter(0.1).Triangulated(),
-         subdtest::Grid(4, 3, false, false).Jitter(0.1).Triangulated() })
+         subdtest::Grid(4, 3, false, false).Jitter(0.1).Triangulated(), subdtest::RepeatedCornerPole(8).Triangulated() })
   {
     auto targets = ToPolyData(mesh);
     auto cage = Solve(targets, vtkSubDInterpolateFilter::LOOP);

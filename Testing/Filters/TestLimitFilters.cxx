@@ -439,7 +439,8 @@ TEST(LimitFilter, PointDataFollowTheLimitWeights)
 }
 
 // The cage is read as the surface filters read it: strips are triangles, degenerate polygons
-// are dropped with a warning.
+// are dropped with a warning, a quad repeating its points (0 1 1 0) is kept as Catmull-Clark
+// keeps it.
 TEST(LimitFilter, StripsAndDegeneratePolygonsAreReadLikeTheSurfaceFilters)
 {
   vtkSmartPointer<vtkPolyData> triangles = ToPolyData(subdtest::Cube().Triangulated());
@@ -461,16 +462,20 @@ TEST(LimitFilter, StripsAndDegeneratePolygonsAreReadLikeTheSurfaceFilters)
   EXPECT_EQ(counts[0], counts[1]);
 
   vtkSmartPointer<vtkPolyData> cube = ToPolyData(subdtest::Cube());
-  const vtkIdType degenerate[4] = { 0, 1, 1, 0 };
-  cube->GetPolys()->InsertNextCell(4, degenerate);
+  const vtkIdType degenerate[3] = { 2, 2, 2 }, repeating[4] = { 0, 1, 1, 0 };
+  cube->GetPolys()->InsertNextCell(3, degenerate);
+  cube->GetPolys()->InsertNextCell(4, repeating);
   vtkNew<vtkSubDLimitFilter> limit;
   subdtest::Messages messages;
   messages.Watch(limit);
   limit->SetInputData(cube);
   limit->SetResolution(2);
   limit->Update();
-  EXPECT_NE(messages.Warnings.find("degenerate"), std::string::npos) << messages.Warnings;
-  EXPECT_EQ(limit->GetOutput()->GetNumberOfCells(), 6 * 4);
+  EXPECT_NE(messages.Warnings.find("ignored 1 degenerate"), std::string::npos) << messages.Warnings;
+  EXPECT_NE(messages.Warnings.find("2 polygon(s) repeat a point"), std::string::npos) << messages.Warnings;
+  EXPECT_NE(messages.Warnings.find("kept as OpenSubdiv"), std::string::npos) << messages.Warnings;
+  EXPECT_EQ(messages.NumErrors, 0) << messages.Errors;
+  EXPECT_EQ(limit->GetOutput()->GetNumberOfCells(), 7 * 4);
 }
 
 namespace

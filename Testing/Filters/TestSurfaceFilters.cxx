@@ -26,6 +26,8 @@
 #include "vtkUnsignedCharArray.h"
 
 #include "SubDFilterTestSupport.h"
+#include "SubDMeshValidation.h"
+#include "SubDTestMeshes.h"
 
 #include <gtest/gtest.h>
 
@@ -44,6 +46,7 @@
 namespace
 {
 using subdtest::Messages;
+using subd::Index;
 
 vtkSmartPointer<vtkPolyData> MakeMesh(const std::vector<double>& xyz, const std::vector<std::vector<vtkIdType>>& faces)
 {
@@ -505,12 +508,82 @@ TYPED_TEST(AnySurfaceFilter, NonManifoldEdgeIsSubdividedWithOneWarning)
 TYPED_TEST(AnySurfaceFilter, DegenerateFacesDroppedWithWarning)
 {
   vtkSmartPointer<vtkPolyData> mesh = Cube();
-  const vtkIdType bad[3] = { 0, 0, 1 };
+  const vtkIdType bad[3] = { 0, 0, 0 }, twoCorners[2] = { 1, 2 };
   mesh->GetPolys()->InsertNextCell(3, bad);
+  mesh->GetPolys()->InsertNextCell(2, twoCorners);
   Messages messages;
   vtkSmartPointer<vtkPolyData> out = Subdivide<TypeParam>(mesh, 1, &messages);
   EXPECT_NE(messages.Warnings.find("degenerate"), std::string::npos);
   EXPECT_EQ(out->GetNumberOfPolys(), Subdivide<TypeParam>(Cube(), 1)->GetNumberOfPolys());
+}
+
+// Polygons that repeat a point (RepeatedCornerPole: a cylinder closed by quads (a, b, T, T)):
+// Catmull-Clark and the linear scheme keep them as OpenSubdiv does (each cap quad gives four
+// quads; the refined points are OpenSubdiv's, TestOracleOpenSubdiv), and so does Loop for
+// triangles (the triangulated pole); the others, and all of them with CollapseRepeatedCorners,
+// give what the collapsed polygons give. Either way one warning counts the polygons.
+TYPED_TEST(AnySurfaceFilter, RepeatedCornersKeptOrCollapsedWithOneWarning)
+{
+  const subdtest::TestMesh pole = subdtest::RepeatedCornerPole(8);
+  const bool triangles = std::is_same<TypeParam, vtkSubDLoopFilter>::value;
+  const subdtest::TestMesh input = triangles ? pole.Triangulated() : pole;
+  subdtest::TestMesh collapsed;
+  collapsed.Points = input.Points;
+  Index numRepeating = 0, numDropped = 0;
+  for (Index f = 0; f < input.NumFaces(); ++f)
+  {
+    std::vector<Index> face(input.Vertices.begin() + input.Offsets[f], input.Vertices.begin() + input.Offsets[f + 1]);
+    std::vector<Index> sorted = face;
+    std::sort(sorted.begin(), sorted.end());
+    numRepeating += std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+    face.resize(static_cast<size_t>(subd::CollapseRepeatedCorners(face.data(), static_cast<Index>(face.size()))));
+    if (face.size() < 3)
+      ++numDropped;
+    else
+      collapsed.AddFace(face);
+  }
+  ASSERT_EQ(numRepeating, 8);
+  auto run = [](const subdtest::TestMesh& mesh, bool collapse, Messages* messages) {
+    vtkNew<TypeParam> filter;
+    if (messages)
+      messages->Watch(filter);
+    filter->SetInputData(subdtest::ToPolyData(mesh));
+    filter->SetNumberOfSubdivisions(2);
+    filter->SetCollapseRepeatedCorners(collapse);
+    filter->Update();
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->DeepCopy(filter->GetOutput());
+    return out;
+  };
+  const vtkSmartPointer<vtkPolyData> fromCollapsed = run(collapsed, false, nullptr);
+  for (const bool collapse : { false, true })
+  {
+    Messages messages;
+    const vtkSmartPointer<vtkPolyData> out = run(input, collapse, &messages);
+    EXPECT_EQ(messages.NumErrors, 0) << messages.Errors;
+    // (Collapsed, the triangles (T, T, a) have two points left: dropped, and counted so.)
+    const bool dropped = triangles && collapse;
+    const std::string counted = dropped ? "Ignored 8 degenerate" : "8 polygon(s) repeat a point";
+    const auto first = messages.Warnings.find(counted);
+    ASSERT_NE(first, std::string::npos) << messages.Warnings;
+    EXPECT_EQ(messages.Warnings.find(counted, first + 1), std::string::npos) << "one warning";
+    EXPECT_EQ(messages.Warnings.find("Input is non-manifold"), std::string::npos) << messages.Warnings;
+    const bool kept = !collapse && (std::is_same<TypeParam, vtkSubDCatmullClarkFilter>::value ||
+                                     std::is_same<TypeParam, vtkSubDLinearFilter>::value || triangles);
+    EXPECT_NE(messages.Warnings.find(kept ? "kept as OpenSubdiv" : dropped ? "Ignored" : "collapsed"), std::string::npos)
+      << messages.Warnings;
+    if (kept)
+    {
+      EXPECT_EQ(out->GetNumberOfPolys(), 16 * input.NumFaces()); // every face split twice into four
+      EXPECT_NE(subdtest::Coordinates(out), subdtest::Coordinates(fromCollapsed));
+    }
+    else
+    {
+      EXPECT_EQ(subdtest::Coordinates(out), subdtest::Coordinates(fromCollapsed));
+      EXPECT_EQ(out->GetNumberOfPolys(), fromCollapsed->GetNumberOfPolys());
+    }
+  }
+  EXPECT_EQ(numDropped, triangles ? 8 : 0); // (T, T, a) has two points left
 }
 
 TYPED_TEST(AnySurfaceFilter, ErrorEmptyInput)

@@ -810,10 +810,35 @@ TEST(RepeatedCorners, BaseTopologyIsOpenSubdivs)
   }
 }
 
+// Semi-sharp creases and a corner on the repeated-corner fixtures (RepeatedCornerPole: a side
+// edge, a ring edge and a spoke to the pole, a bottom corner; RepeatedCornerMix: two grid
+// edges and a corner), edges of their triangulations too.
+SharpTags RepeatedCornerCreases(const subdtest::TestMesh& mesh)
+{
+  SharpTags tags;
+  tags.Label = "-creased";
+  if (mesh.Name.rfind("pole", 0) == 0)
+  {
+    const int pole = mesh.NumVertices() - 1;
+    tags.CreasePairs = { 0, 1, 1, 3, 3, pole };
+    tags.CreaseSharpness = { 2.5f, 1.0f, 1.5f };
+    tags.Corners = { 2 };
+    tags.CornerSharpness = { 3.0f };
+  }
+  else
+  {
+    tags.CreasePairs = { 4, 5, 5, 6 };
+    tags.CreaseSharpness = { 2.0f, 1.5f };
+    tags.Corners = { 15 };
+    tags.CornerSharpness = { 2.0f };
+  }
+  return tags;
+}
+
 // Refined, such faces give OpenSubdiv's faces (each keeps its size: a quad still has four
 // children), points and holes, level by level, and its limit positions, for Catmull-Clark,
 // Loop (on the meshes triangulated: triangles with a repeated corner) and bilinear, under the
-// three boundary rules. Matched through OpenSubdiv's parent-to-child relations: a face's,
+// three boundary rules, with and without creases and a corner. Matched through OpenSubdiv's parent-to-child relations: a face's,
 // edge's and vertex's child point, a face's children by corner (the base levels are numbered
 // alike; a child face may start at another corner, found from its points).
 TEST(RepeatedCorners, RefinementIsOpenSubdivs)
@@ -824,18 +849,20 @@ TEST(RepeatedCorners, RefinementIsOpenSubdivs)
   for (const SchemeKind kind : { SchemeKind::CatmullClark, SchemeKind::Loop, SchemeKind::Bilinear })
     for (const subd::BoundaryRule rule :
       { subd::BoundaryRule::None, subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::EdgeAndCorner })
-      for (subdtest::TestMesh mesh : meshes)
+      for (const subdtest::TestMesh& input : meshes)
+        for (const SharpTags& tags : { SharpTags{}, RepeatedCornerCreases(input) })
       {
         const bool loop = kind == SchemeKind::Loop;
-        if (loop)
-          mesh = mesh.Triangulated();
+        const subdtest::TestMesh mesh = loop ? input.Triangulated() : input;
         const int levels = mesh.NumFaces() > 200 ? 2 : 4;
         const std::unique_ptr<subd::Scheme> scheme = MakeScheme(kind);
-        const std::string what = std::string(scheme->GetName()) + " " + mesh.Name + " " + subd::ToString(rule);
-        auto refiner = MakeOsdRefiner(mesh, rule, levels, kind, {});
+        const std::string what =
+          std::string(scheme->GetName()) + " " + mesh.Name + tags.Label + " " + subd::ToString(rule);
+        auto refiner = MakeOsdRefiner(mesh, rule, levels, kind, tags);
         Far::PrimvarRefinerReal<double> primvar(*refiner);
-        subd::Level level = subd::MakeBaseLevel(
-          subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices), {}, scheme->EffectiveBoundaryRule(rule));
+        subd::MeshTopology base = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+        const subd::BaseTags baseTags = ToBaseTags(tags, base);
+        subd::Level level = subd::MakeBaseLevel(std::move(base), baseTags, scheme->EffectiveBoundaryRule(rule));
         std::vector<double> mine = mesh.Points;
         std::vector<Point3> osd(static_cast<size_t>(mesh.NumVertices()));
         for (Index v = 0; v < mesh.NumVertices(); ++v)
@@ -923,3 +950,24 @@ TEST(RepeatedCorners, RefinementIsOpenSubdivs)
             ASSERT_NEAR(mineLimit[3 * vertexMap[v] + k], osdLimit[v].P[k], tolerance) << what << " limit " << v;
       }
 }
+
+// Limit evaluation next to faces that repeat a vertex: the pieces it refines keep the two
+// edges that a degenerate edge leaves between the same two points (MeshTopology::ExtractFaces),
+// so positions and derivatives are OpenSubdiv's patches' (LimitOracle), with and without
+// creases.
+std::vector<OracleCase> RepeatedCornerLimitCases()
+{
+  std::vector<OracleCase> cases;
+  for (const subdtest::TestMesh& mesh : { subdtest::RepeatedCornerMix(), subdtest::RepeatedCornerPole(3),
+         subdtest::RepeatedCornerPole(8) })
+    for (const SharpTags& tags : { SharpTags{}, RepeatedCornerCreases(mesh) })
+      for (auto rule : { subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::EdgeAndCorner })
+      {
+        cases.push_back({ mesh, rule, SchemeKind::CatmullClark, tags });
+        cases.push_back({ mesh.Triangulated(), rule, SchemeKind::Loop, tags });
+      }
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(RepeatedCorners, LimitOracle, ::testing::ValuesIn(RepeatedCornerLimitCases()), CaseName);
+

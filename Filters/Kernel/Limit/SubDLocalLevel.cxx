@@ -1,7 +1,6 @@
 #include "SubDLocalLevel.h"
 
 #include <algorithm>
-#include <unordered_map>
 
 namespace subd
 {
@@ -54,35 +53,18 @@ Level ExtractPiece(const Level& level, Index face, std::vector<Index>& points)
       }
     }
   }
-  std::unordered_map<Index, Index> localOf;
   points.clear();
-  std::vector<Index> offsets{ 0 }, vertices;
-  for (Index g : faces)
-  {
-    for (Index v : topo.GetFaceVertices(g))
-    {
-      auto inserted = localOf.emplace(v, static_cast<Index>(points.size()));
-      if (inserted.second)
-      {
-        points.push_back(v);
-      }
-      vertices.push_back(inserted.first->second);
-    }
-    offsets.push_back(static_cast<Index>(vertices.size()));
-  }
+  std::vector<Index> edges;
   Level piece;
-  piece.Topology = MeshTopology::Build(static_cast<Index>(points.size()), std::move(offsets), std::move(vertices));
+  piece.Topology = topo.ExtractFaces(faces, points, edges);
   piece.Depth = level.Depth;
   piece.Creasing = level.Creasing;
   const MeshTopology& local = piece.Topology;
   piece.EdgeSharpness.resize(static_cast<size_t>(local.GetNumEdges()));
   for (Index e = 0; e < local.GetNumEdges(); ++e)
   {
-    const Index* ev = local.GetEdgeVertices(e);
     // The piece's own border is a boundary the rules must not see as smooth (it is never read).
-    piece.EdgeSharpness[e] = local.GetEdgeFaces(e).size() == 2
-      ? level.EdgeSharpness[topo.FindEdge(points[ev[0]], points[ev[1]])]
-      : SharpnessInfinite;
+    piece.EdgeSharpness[e] = local.GetEdgeFaces(e).size() == 2 ? level.EdgeSharpness[edges[e]] : SharpnessInfinite;
   }
   piece.VertexSharpness.resize(points.size());
   for (size_t p = 0; p < points.size(); ++p)

@@ -65,33 +65,18 @@ Eigen::MatrixXd Projector(const Eigen::EigenSolver<Eigen::MatrixXd>& right,
 // pinned by vertex sharpness (the sector may hold fewer of its sharp edges).
 Level SectorLevel(const Level& level, Index v, const std::vector<Index>& sector, std::vector<Index>& points)
 {
-  const MeshTopology& topo = level.Topology;
   points.assign(1, v);
-  std::vector<Index> offsets{ 0 }, vertices;
-  for (Index g : sector)
-  {
-    for (Index p : topo.GetFaceVertices(g))
-    {
-      auto found = std::find(points.begin(), points.end(), p);
-      vertices.push_back(static_cast<Index>(found - points.begin()));
-      if (found == points.end())
-      {
-        points.push_back(p);
-      }
-    }
-    offsets.push_back(static_cast<Index>(vertices.size()));
-  }
-  const Index n = static_cast<Index>(points.size());
+  std::vector<Index> edges;
   Level mini;
-  mini.Topology = MeshTopology::Build(n, offsets, vertices);
+  mini.Topology = level.Topology.ExtractFaces(sector, points, edges);
+  const Index n = static_cast<Index>(points.size());
   mini.Creasing = level.Creasing;
   mini.Depth = level.Depth;
   mini.EdgeSharpness.resize(static_cast<size_t>(mini.Topology.GetNumEdges()));
   for (Index e = 0; e < mini.Topology.GetNumEdges(); ++e)
   {
-    const Index* ev = mini.Topology.GetEdgeVertices(e);
     mini.EdgeSharpness[e] = mini.Topology.GetEdgeFaces(e).size() == 2
-      ? level.EdgeSharpness[topo.FindEdge(points[ev[0]], points[ev[1]])]
+      ? level.EdgeSharpness[edges[e]]
       : SharpnessInfinite; // the sector's border: creases, or edges never read
   }
   mini.VertexSharpness.resize(static_cast<size_t>(n));

@@ -53,6 +53,12 @@ public:
   /// The same from std::vector (copied on `parallelFor`'s threads).
   static MeshTopology Build(Index numVertices, const std::vector<Index>& faceOffsets,
     const std::vector<Index>& faceVertices, const ParallelFor& parallelFor = SerialFor);
+  /// The topology of some of this one's faces (`faces`, in that order), numbering their
+  /// points and edges in the order they are first met: `points` (on entry, points to number
+  /// first) and `edges` receive the index in this topology of each. Unlike Build on the same
+  /// faces, the edges are this topology's: two edges between one pair of points stay two
+  /// (below a face that repeats a point), and an edge non-manifold here stays so.
+  MeshTopology ExtractFaces(const std::vector<Index>& faces, std::vector<Index>& points, std::vector<Index>& edges) const;
   Index GetNumVertices() const { return NumVertices; }
   Index GetNumFaces() const { return static_cast<Index>(FaceOffsets.size()) - 1; }
   Index GetNumEdges() const { return static_cast<Index>(EdgeVertices.size() / 2); }

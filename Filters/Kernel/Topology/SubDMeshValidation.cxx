@@ -25,4 +25,21 @@ bool HasRepeatedVertex(const Index* corners, Index n, std::vector<Index>& scratc
   std::sort(scratch.begin(), scratch.end());
   return std::adjacent_find(scratch.begin(), scratch.end()) != scratch.end();
 }
+
+Index CollapseRepeatedCorners(Index* corners, Index n)
+{
+  Index left = 0;
+  for (Index k = 0; k < n; ++k)
+  {
+    if (left == 0 || corners[left - 1] != corners[k])
+    {
+      corners[left++] = corners[k];
+    }
+  }
+  while (left > 1 && corners[left - 1] == corners[0])
+  {
+    --left;
+  }
+  return left;
+}
 }

@@ -1,9 +1,11 @@
 // SubD kernel: checks and repairs polygon lists before a topology is built from them.
 //
-// Subdivision rules assume every face has at least three distinct corners. Real meshes break
-// that (repeated ids from welding, two-point "faces", out-of-range ids from broken files), so
-// faces are screened once here: consecutive repeated corners are collapsed, faces left with
-// fewer than three corners or repeating a vertex elsewhere are dropped and counted, and
+// Real meshes break the rules a subdivision scheme assumes (repeated ids from welding,
+// two-point "faces", out-of-range ids from broken files), so faces are screened once here.
+// A face that names a vertex at two corners is either kept as it is, as OpenSubdiv keeps it
+// (MeshTopology::Build makes its degenerate edges non-manifold), or collapsed: consecutive
+// repeats removed, the face dropped if a vertex still repeats. Faces left with fewer than
+// three corners, or fewer than two distinct vertices, are dropped; all of it is counted, and
 // out-of-range ids are reported (the caller refuses such input).
 #ifndef SubDMeshValidation_h
 #define SubDMeshValidation_h
@@ -17,6 +19,14 @@
 
 namespace subd
 {
+/// What screening does with a face that names one vertex at several corners.
+enum class RepeatedCorners
+{
+  Collapse,       ///< consecutive repeats removed; dropped if a vertex still repeats
+  Keep,           ///< kept as it is if it has two distinct vertices (OpenSubdiv's semantics)
+  KeepInTriangles ///< Keep for triangles, Collapse for larger faces (for schemes that triangulate them)
+};
+
 struct FaceScreening
 {
   IndexArray Offsets{ 0 };          ///< kept faces, offsets
@@ -25,8 +35,12 @@ struct FaceScreening
   Index NumOutOfRange = 0;          ///< faces naming a vertex outside [0, numVertices)
   Index FirstOutOfRangeFace = InvalidIndex;
   Index FirstOutOfRangeId = InvalidIndex;
-  Index NumDropped = 0;             ///< faces with < 3 distinct corners or repeated vertices
+  Index NumDropped = 0;             ///< faces with < 3 corners, < 2 distinct vertices, or repeats left
   Index FirstDroppedFace = InvalidIndex;
+  Index NumRepeating = 0;           ///< faces (in range) naming a vertex at several corners
+  Index FirstRepeatingFace = InvalidIndex;
+  Index NumRepeatingKept = 0;       ///< of those, kept with their repeats
+  Index NumRepeatingCollapsed = 0;  ///< of those, collapsed and kept
   Index NumCollapsedCorners = 0;    ///< consecutive duplicates removed from kept faces
 };
 
@@ -35,7 +49,7 @@ struct FaceScreening
 /// usual case) is checked and copied on `parallelFor`'s threads.
 template <typename IdType>
 FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offsets, const IdType* vertices,
-  const ParallelFor& parallelFor = SerialFor);
+  const ParallelFor& parallelFor = SerialFor, RepeatedCorners repeated = RepeatedCorners::Collapse);
 
 /// True when the n corners hold a vertex twice (n small: pairwise, else sorted copy).
 SUBDKERNEL_EXPORT bool HasRepeatedVertex(const Index* corners, Index n, std::vector<Index>& scratch);
@@ -94,16 +108,16 @@ bool CopyCleanFaces(Index numVertices, Index numFaces, const IdType* offsets, co
   return allClean;
 }
 
-// Face f (corners [begin, end)) of the repair pass: appended with its repeated consecutive
-// corners collapsed, or counted as out of range or dropped.
+// Removes the consecutive repeats of the n corners (the last and the first included); returns
+// how many are left.
+SUBDKERNEL_EXPORT Index CollapseRepeatedCorners(Index* corners, Index n);
+
+// Face f (corners [begin, end)) of the repair pass: appended as it is, or with its repeated
+// consecutive corners collapsed, or counted as out of range or dropped.
 template <typename IdType>
-void ScreenFace(Index f, Index numVertices, const IdType* vertices, IdType begin, IdType end, FaceScreening& s,
-  std::vector<Index>& scratch)
+void ScreenFace(Index f, Index numVertices, const IdType* vertices, IdType begin, IdType end,
+  RepeatedCorners repeated, FaceScreening& s, std::vector<Index>& scratch)
 {
-  auto drop = [&s, f]() {
-    s.FirstDroppedFace = s.NumDropped == 0 ? f : s.FirstDroppedFace;
-    ++s.NumDropped;
-  };
   for (IdType k = begin; k < end; ++k)
   {
     if (vertices[k] < 0 || vertices[k] >= static_cast<IdType>(numVertices))
@@ -119,33 +133,42 @@ void ScreenFace(Index f, Index numVertices, const IdType* vertices, IdType begin
   const size_t start = s.Vertices.size();
   for (IdType k = begin; k < end; ++k)
   {
-    const Index v = static_cast<Index>(vertices[k]);
-    if (s.Vertices.size() > start && s.Vertices.back() == v)
-    {
-      ++s.NumCollapsedCorners;
-      continue;
-    }
-    s.Vertices.push_back(v);
+    s.Vertices.push_back(static_cast<Index>(vertices[k]));
   }
-  while (s.Vertices.size() > start + 1 && s.Vertices.back() == s.Vertices[start])
+  Index* corners = s.Vertices.data() + start;
+  Index n = static_cast<Index>(end - begin);
+  if (HasRepeatedVertex(corners, n, scratch))
   {
-    s.Vertices.pop_back();
-    ++s.NumCollapsedCorners;
+    s.FirstRepeatingFace = s.NumRepeating++ == 0 ? f : s.FirstRepeatingFace;
+    const bool keep = repeated == RepeatedCorners::Keep || (repeated == RepeatedCorners::KeepInTriangles && n == 3);
+    if (keep)
+    {
+      const bool twoDistinct = std::any_of(corners, corners + n, [corners](Index v) { return v != corners[0]; });
+      n = twoDistinct ? n : 0;
+      s.NumRepeatingKept += twoDistinct && n >= 3;
+    }
+    else
+    {
+      const Index left = CollapseRepeatedCorners(corners, n);
+      s.NumCollapsedCorners += n - left;
+      n = HasRepeatedVertex(corners, left, scratch) ? 0 : left;
+      s.NumRepeatingCollapsed += n >= 3;
+    }
   }
-  const Index n = static_cast<Index>(s.Vertices.size() - start);
-  if (n < 3 || HasRepeatedVertex(s.Vertices.data() + start, n, scratch))
+  if (n < 3)
   {
     s.Vertices.resize(start);
-    drop();
+    s.FirstDroppedFace = s.NumDropped++ == 0 ? f : s.FirstDroppedFace;
     return;
   }
+  s.Vertices.resize(start + static_cast<size_t>(n));
   s.Offsets.push_back(static_cast<Index>(s.Vertices.size()));
   s.KeptFaces.push_back(f);
 }
 
 template <typename IdType>
 FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offsets, const IdType* vertices,
-  const ParallelFor& parallelFor)
+  const ParallelFor& parallelFor, RepeatedCorners repeated)
 {
   FaceScreening s;
   // A face whose corners are not within [offsets[0], offsets[numFaces]) (offsets that go
@@ -165,11 +188,10 @@ FaceScreening ScreenFaces(Index numVertices, Index numFaces, const IdType* offse
     const IdType begin = offsets[f], end = offsets[f + 1];
     if (first <= begin && begin <= end && end <= last)
     {
-      ScreenFace(f, numVertices, vertices, begin, end, s, scratch);
+      ScreenFace(f, numVertices, vertices, begin, end, repeated, s, scratch);
       continue;
     }
-    s.FirstDroppedFace = s.NumDropped == 0 ? f : s.FirstDroppedFace;
-    ++s.NumDropped;
+    s.FirstDroppedFace = s.NumDropped++ == 0 ? f : s.FirstDroppedFace;
   }
   return s;
 }

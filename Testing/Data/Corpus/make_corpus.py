@@ -98,10 +98,11 @@ expect("inconsistent-orientation.off", surface="ok~non-manifold")
 write_text("duplicate-faces.off", off(CUBE_POINTS, CUBE_FACES + [CUBE_FACES[0], CUBE_FACES[1][::-1]]))
 expect("duplicate-faces.off", surface="ok~non-manifold")
 
-# --- degenerate faces: dropped (or repaired) with a warning, the rest subdivided ---
-# Repeated ids: one collapses to a triangle (consecutive repeat), one repeats a vertex elsewhere.
+# --- degenerate faces: kept as OpenSubdiv keeps them, or dropped (or repaired), with a warning ---
+# Repeated ids: one consecutive repeat, one vertex repeated elsewhere (kept by Catmull-Clark,
+# Loop and linear; collapsed to a triangle and dropped by the others).
 write_text("repeated-ids.off", off(CUBE_POINTS, CUBE_FACES + [(0, 1, 1, 3), (0, 3, 0, 5)]))
-expect("repeated-ids.off", surface="ok~degenerate|ignored")
+expect("repeated-ids.off", surface="ok~degenerate|ignored|repeat")
 
 # Faces with two and one corners next to a good cube.
 write_text("short-faces.off", off(CUBE_POINTS, CUBE_FACES + [(0, 7), (3,)]))
@@ -117,7 +118,7 @@ write_text("zero-area.off",
 expect("zero-area.off")
 
 # Only degenerate faces: nothing usable remains.
-write_text("all-degenerate.off", off(CUBE_POINTS, [(0, 1), (2, 2, 2), (4, 5, 4)]))
+write_text("all-degenerate.off", off(CUBE_POINTS, [(0, 1), (2, 2, 2), (4, 4, 4, 4)]))
 expect("all-degenerate.off", surface="error~no usable polygon")
 
 # --- points that no face uses ---
