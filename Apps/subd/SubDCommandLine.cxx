@@ -115,6 +115,7 @@ const OptionUse OptionUses[] = {
   { "--levels", Use::Both, nullptr }, { "--boundary", Use::Both, nullptr }, { "--tension", Use::Both, nullptr },
   { "--crease-method", Use::Both, nullptr }, { "--feature-angle", Use::Both, nullptr },
   { "--limit", Use::Both, nullptr }, { "--normals", Use::Both, nullptr }, { "--curvature", Use::Both, nullptr },
+  { "--collapse-repeated-corners", Use::Both, nullptr },
   { "--builtin", Use::Both, nullptr }, { "-o", Use::Both, nullptr }, { "--output", Use::Both, nullptr },
   { "--compress", Use::Both, nullptr }, { "--threads", Use::MpiOnly, nullptr },
   { "--image", Use::SubdOnly, PictureReason }, { "--compare", Use::SubdOnly, PictureReason },
@@ -180,7 +181,7 @@ std::string UsageText(Program program)
   std::ostringstream out;
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
          "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--normals]\n"
-         "            [--curvature] [--tangents] [--closed] [--interpolate]\n"
+         "            [--curvature] [--collapse-repeated-corners] [--tangents] [--closed] [--interpolate]\n"
          "            [--output FILE] [--compress]\n"
          "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
          "\n"
@@ -281,6 +282,11 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
       cmd.Options.LimitCurvature = true;
       cmd.SurfaceOptions.push_back(arg);
     }
+    else if (arg == "--collapse-repeated-corners")
+    {
+      cmd.Options.CollapseRepeatedCorners = true;
+      cmd.SurfaceOptions.push_back(arg);
+    }
     else if (arg == "--tangents")
     {
       cmd.Options.Tangents = true;
@@ -343,6 +349,10 @@ std::string SchemeOptionsHelp(Program program)
          "                       uniform: one unit of sharpness per level\n"
          "                       chaikin: averaged along the crease first (OpenSubdiv's Chaikin)\n"
          "  --feature-angle D  edges whose faces meet at more than D degrees become sharp creases\n"
+         "  --collapse-repeated-corners\n"
+         "                     remove a polygon's repeated corners first (4 3 5 5 becomes 4 3 5);\n"
+         "                     otherwise catmull-clark, loop and linear keep such polygons as\n"
+         "                     OpenSubdiv does, the repeated point a sharp corner of the surface\n"
          "  --limit            move the output points (and point data) to the limit surface\n"
          "                     (catmull-clark and loop: OpenSubdiv's limit masks; sqrt3, doo-sabin,\n"
          "                     midpoint: their closed-form limit points; linear and butterfly\n"
@@ -412,8 +422,8 @@ std::string MpiUsageText()
   std::ostringstream out;
   out << "usage: mpirun -np N subd-mpi [INPUT] [--scheme NAME] [--levels N] [--boundary RULE]\n"
          "                     [--tension W] [--crease-method METHOD] [--feature-angle DEG]\n"
-         "                     [--limit] [--normals] [--curvature] [--output FILE.pvtp]\n"
-         "                     [--compress] [--threads T]\n"
+         "                     [--limit] [--normals] [--curvature] [--collapse-repeated-corners]\n"
+         "                     [--output FILE.pvtp] [--compress] [--threads T]\n"
          "\n"
          "Subdivides the polygon mesh INPUT ("
       << SupportedExtensions()

@@ -31,6 +31,7 @@ vtkSmartPointer<Filter> NewSurfaceFilter(const SchemeOptions& options)
   filter->SetProjectToLimit(options.ProjectToLimit);
   filter->SetComputeLimitNormals(options.LimitNormals);
   filter->SetComputeCurvature(options.LimitCurvature);
+  filter->SetCollapseRepeatedCorners(options.CollapseRepeatedCorners);
   if (options.FeatureAngle > 0.0)
   {
     filter->SetFeatureAngle(options.FeatureAngle);

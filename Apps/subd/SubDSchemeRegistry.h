@@ -25,6 +25,7 @@ struct SchemeOptions
   bool LimitCurvature = false; // add the limit curvature arrays
   bool Tangents = false;       // curves: add the unit limit tangents
   bool Closed = false;         // curves: every polyline is closed
+  bool CollapseRepeatedCorners = false; // surfaces: collapse polygons that repeat a point
 };
 
 /// Whether two option sets configure a filter alike (the explorer reuses a view's result).
@@ -33,7 +34,8 @@ inline bool operator==(const SchemeOptions& a, const SchemeOptions& b)
   return a.Levels == b.Levels && a.BoundaryRule == b.BoundaryRule && a.Tension == b.Tension &&
     a.TensionGiven == b.TensionGiven && a.CreaseMethod == b.CreaseMethod && a.FeatureAngle == b.FeatureAngle &&
     a.ProjectToLimit == b.ProjectToLimit && a.LimitNormals == b.LimitNormals &&
-    a.LimitCurvature == b.LimitCurvature && a.Tangents == b.Tangents && a.Closed == b.Closed;
+    a.LimitCurvature == b.LimitCurvature && a.Tangents == b.Tangents && a.Closed == b.Closed &&
+    a.CollapseRepeatedCorners == b.CollapseRepeatedCorners;
 }
 inline bool operator!=(const SchemeOptions& a, const SchemeOptions& b)
 {

@@ -31,6 +31,9 @@
  *
  * Attributes, crease input/output, errors, progress and stencil caching: see
  * vtkSubDSurfaceFilter.
+ *
+ * A polygon that repeats a point has its repeated corners collapsed first (its stencils
+ * need distinct corners; see vtkSubDSurfaceFilter::SetCollapseRepeatedCorners).
  */
 #ifndef vtkSubDButterflyFilter_h
 #define vtkSubDButterflyFilter_h

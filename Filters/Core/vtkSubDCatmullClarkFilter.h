@@ -27,6 +27,9 @@
  *
  * Everything else (attributes, cell data, errors, progress, stencil caching) is described
  * in vtkSubDSurfaceFilter.
+ *
+ * A polygon that repeats a point (a quad 4 3 5 5) keeps its corners, as in OpenSubdiv: see
+ * vtkSubDSurfaceFilter::SetCollapseRepeatedCorners.
  */
 #ifndef vtkSubDCatmullClarkFilter_h
 #define vtkSubDCatmullClarkFilter_h

@@ -27,6 +27,9 @@
  * the dual scheme has no edge point to blend, so there is no fractional transition).
  *
  * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
+ *
+ * A polygon that repeats a point has its repeated corners collapsed first (its corner
+ * points need distinct corners; see vtkSubDSurfaceFilter::SetCollapseRepeatedCorners).
  */
 #ifndef vtkSubDDooSabinFilter_h
 #define vtkSubDDooSabinFilter_h

@@ -35,6 +35,9 @@
  * (NumberOfSubdivisions levels of the scheme, with the same boundary rule and creases).
  *
  * @sa vtkSubDCatmullClarkFilter vtkSubDLoopFilter vtkSubDDooSabinFilter vtkSubDLimitFilter
+ *
+ * Polygons that repeat a point are read as the scheme's surface filter reads them: kept by
+ * Catmull-Clark and Loop (triangles), collapsed by Doo-Sabin.
  */
 #ifndef vtkSubDInterpolateFilter_h
 #define vtkSubDInterpolateFilter_h

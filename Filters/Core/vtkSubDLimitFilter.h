@@ -41,7 +41,8 @@
  * Sharp features are read as vtkSubDSurfaceFilter reads them (lines with "Sharpness",
  * "CornerSharpness", "Hole"), with the same BoundaryRule and CreaseMethod, and its faces the
  * same way (polygons, then the triangles of strips; degenerate polygons dropped with a
- * warning). Bad input (no polygons, NaN points, Loop on polygons that are not triangles, a
+ * warning; polygons that repeat a point kept as OpenSubdiv keeps them, the Loop scheme's
+ * larger ones collapsed, as the Catmull-Clark and Loop filters do). Bad input (no polygons, NaN points, Loop on polygons that are not triangles, a
  * location outside its face or on a missing or hole face) is an error naming the culprit,
  * with an empty output.
  *

@@ -26,6 +26,10 @@
  * faces pinch (a bowtie), which changes nothing here.
  *
  * Attributes, cell data, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
+ *
+ * A polygon that repeats a point is kept as OpenSubdiv's bilinear scheme keeps it (triangle
+ * split: triangles only, larger polygons collapsed first; see
+ * vtkSubDSurfaceFilter::SetCollapseRepeatedCorners).
  */
 #ifndef vtkSubDLinearFilter_h
 #define vtkSubDLinearFilter_h

@@ -23,6 +23,10 @@
  * round-off with the same tags.
  *
  * Attributes, cell data, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
+ *
+ * A triangle that repeats a point (a b b) is kept as OpenSubdiv keeps it, larger polygons
+ * that do are collapsed before they are triangulated (see
+ * vtkSubDSurfaceFilter::SetCollapseRepeatedCorners).
  */
 #ifndef vtkSubDLoopFilter_h
 #define vtkSubDLoopFilter_h

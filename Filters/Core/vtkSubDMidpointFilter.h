@@ -24,6 +24,9 @@
  * method, one unit per level with CREASE_UNIFORM); the scheme has no rule to blend with.
  *
  * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
+ *
+ * A polygon that repeats a point has its repeated corners collapsed first (see
+ * vtkSubDSurfaceFilter::SetCollapseRepeatedCorners).
  */
 #ifndef vtkSubDMidpointFilter_h
 #define vtkSubDMidpointFilter_h

@@ -28,6 +28,9 @@
  * corners act as sharp while their sharpness is positive, losing one unit per step.
  *
  * Attributes, errors, progress and stencil caching: see vtkSubDSurfaceFilter.
+ *
+ * A polygon that repeats a point has its repeated corners collapsed first (see
+ * vtkSubDSurfaceFilter::SetCollapseRepeatedCorners).
  */
 #ifndef vtkSubDSqrt3Filter_h
 #define vtkSubDSqrt3Filter_h

@@ -178,9 +178,8 @@ public:
    * repeated point stays a corner of the surface; the output then equals OpenSubdiv's. On:
    * consecutive repeats are removed first (4 3 5 5 becomes the triangle 4 3 5), the surface is
    * smooth there, and a polygon that still repeats a point is dropped. Doo-Sabin, the midpoint
-   * scheme, sqrt(3) and butterfly always collapse, and so do Catmull-Clark and Loop when
-   * limit normals or curvature are asked for (their evaluation needs distinct corners).
-   * Either way one warning counts the polygons.
+   * scheme, sqrt(3) and butterfly always collapse. Either way one warning counts the
+   * polygons.
    */
   vtkSetMacro(CollapseRepeatedCorners, bool);
   vtkGetMacro(CollapseRepeatedCorners, bool);

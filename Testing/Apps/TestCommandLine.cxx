@@ -46,7 +46,7 @@ TEST(CommandLine, SubdMpiTakesTheSurfaceOptionsOfSubdAlike)
 {
   const std::vector<std::string> surface = { "in.obj", "--scheme", "loop", "--levels", "3", "--boundary",
     "edge-and-corner", "--crease-method", "chaikin", "--feature-angle", "40", "--limit", "--normals", "--curvature",
-    "--compress", "-q" };
+    "--collapse-repeated-corners", "--compress", "-q" };
   subdapp::CommandLine subd, mpi;
   std::string error;
   std::vector<std::string> args = surface;
@@ -58,6 +58,7 @@ TEST(CommandLine, SubdMpiTakesTheSurfaceOptionsOfSubdAlike)
   EXPECT_TRUE(subd.Options == mpi.Options);
   EXPECT_EQ(mpi.Options.CreaseMethod, 1);
   EXPECT_TRUE(mpi.Options.LimitNormals && mpi.Options.LimitCurvature && mpi.Options.ProjectToLimit);
+  EXPECT_TRUE(mpi.Options.CollapseRepeatedCorners);
   EXPECT_EQ(subd.Scheme, mpi.Scheme);
   EXPECT_EQ(subd.Input, mpi.Input);
   EXPECT_TRUE(mpi.Compress && mpi.Quiet);
@@ -77,7 +78,8 @@ TEST(CommandLine, SubdMpiTakesWhatItsHelpNamesAndRefusesTheRestByName)
   std::set<std::string> taken = OptionsNamed(help.substr(usageLine.size(), refusedAt - usageLine.size()));
   const std::set<std::string> refused = OptionsNamed(help.substr(refusedAt, deprecatedAt - refusedAt));
   for (const char* name : { "--scheme", "--levels", "--boundary", "--tension", "--crease-method", "--feature-angle",
-         "--limit", "--normals", "--curvature", "--builtin", "-o", "--output", "--compress", "--threads" })
+         "--limit", "--normals", "--curvature", "--collapse-repeated-corners", "--builtin", "-o", "--output",
+         "--compress", "--threads" })
   {
     EXPECT_EQ(taken.count(name), 1u) << name << " is not in subd-mpi's help";
   }

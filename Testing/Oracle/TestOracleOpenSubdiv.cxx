@@ -9,6 +9,7 @@
 // end points), never by assuming equal numbering. Positions must agree to 1e-9 of the
 // bounding-box diagonal; faces and holes must agree exactly.
 #include "SubDLimitRules.h"
+#include "SubDFilterTestSupport.h"
 #include "SubDOracleSupport.h"
 #include "SubDRefiner.h"
 #include "SubDQuadSplit.h"
@@ -34,6 +35,7 @@
 #include "vtkIdList.h"
 #include "vtkNew.h"
 #include "vtkPolyData.h"
+#include "vtkStaticPointLocator.h"
 
 #include <gtest/gtest.h>
 
@@ -854,7 +856,7 @@ TEST(RepeatedCorners, RefinementIsOpenSubdivs)
       {
         const bool loop = kind == SchemeKind::Loop;
         const subdtest::TestMesh mesh = loop ? input.Triangulated() : input;
-        const int levels = mesh.NumFaces() > 200 ? 2 : 4;
+        const int levels = 4;
         const std::unique_ptr<subd::Scheme> scheme = MakeScheme(kind);
         const std::string what =
           std::string(scheme->GetName()) + " " + mesh.Name + tags.Label + " " + subd::ToString(rule);
@@ -948,6 +950,66 @@ TEST(RepeatedCorners, RefinementIsOpenSubdivs)
         for (Index v = 0; v < static_cast<Index>(osd.size()); ++v)
           for (int k = 0; k < 3; ++k)
             ASSERT_NEAR(mineLimit[3 * vertexMap[v] + k], osdLimit[v].P[k], tolerance) << what << " limit " << v;
+      }
+}
+
+// What a user gets from subd's filters on the repeated-corner fixtures: OpenSubdiv's face
+// count (Catmull-Clark level 1 on pole fans of 8, 64 and 360 quads: 64, 512 and 2880 faces,
+// not the 56, 448 and 2520 of collapsed poles) and its points, found among the output's (the
+// two number them differently), at two levels, for Catmull-Clark, Loop (triangulated input)
+// and linear (bilinear on quads), with one warning counting the polygons.
+TEST(RepeatedCorners, FiltersGiveOpenSubdivsOutput)
+{
+  std::vector<subdtest::TestMesh> meshes{ subdtest::RepeatedCornerMix() };
+  for (int n : { 8, 64, 360 })
+    meshes.push_back(subdtest::RepeatedCornerPole(n));
+  const std::pair<const char*, SchemeKind> schemes[] = { { "catmull-clark", SchemeKind::CatmullClark },
+    { "loop", SchemeKind::Loop }, { "linear", SchemeKind::Bilinear } };
+  for (const auto& scheme : schemes)
+    for (const subdtest::TestMesh& input : meshes)
+      for (int levels : { 1, 2 })
+      {
+        const subdtest::TestMesh mesh = scheme.second == SchemeKind::Loop ? input.Triangulated() : input;
+        const std::string what = std::string(scheme.first) + " " + mesh.Name + " level " + std::to_string(levels);
+        subdapp::SchemeOptions options;
+        options.Levels = levels;
+        subdapp::MessageCollector messages;
+        const vtkSmartPointer<vtkPolyData> out =
+          subdapp::RunScheme(*subdapp::FindScheme(scheme.first), options, subdtest::ToPolyData(mesh), messages);
+        ASSERT_NE(out, nullptr) << what << ": " << messages.Errors;
+        EXPECT_NE(messages.Warnings.find("polygon(s) repeat a point"), std::string::npos) << what;
+        // The mix has a non-manifold edge of its own (three faces); the poles only what their
+        // repeated corners make non-manifold, which that warning tells.
+        EXPECT_EQ(messages.Warnings.find("Input is non-manifold") != std::string::npos, mesh.Name.rfind("repeat-mix", 0) == 0)
+          << what << ": " << messages.Warnings;
+
+        auto refiner = MakeOsdRefiner(mesh, subd::BoundaryRule::EdgeOnly, levels, scheme.second, {});
+        std::vector<Point3> osd(static_cast<size_t>(refiner->GetNumVerticesTotal()));
+        for (Index v = 0; v < mesh.NumVertices(); ++v)
+          std::copy(&mesh.Points[3 * v], &mesh.Points[3 * v] + 3, osd[v].P);
+        Far::PrimvarRefinerReal<double> primvar(*refiner);
+        Point3* src = osd.data();
+        for (int l = 1; l <= levels; ++l)
+        {
+          Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
+          primvar.Interpolate(l, src, dst);
+          src = dst;
+        }
+        const Far::TopologyLevel& finest = refiner->GetLevel(levels);
+        ASSERT_EQ(out->GetNumberOfPolys(), finest.GetNumFaces()) << what;
+        ASSERT_EQ(out->GetNumberOfPoints(), finest.GetNumVertices()) << what;
+        if (scheme.second == SchemeKind::CatmullClark && levels == 1 && mesh.Name != "repeat-mix")
+          EXPECT_EQ(finest.GetNumFaces(), 8 * (mesh.NumVertices() - 1) / 2) << what; // 8 children per pole quad pair
+        vtkNew<vtkStaticPointLocator> locator;
+        locator->SetDataSet(out);
+        locator->BuildLocator();
+        const double tolerance = 1e-9 * subdtest::Diagonal(mesh.Points);
+        for (Index v = 0; v < finest.GetNumVertices(); ++v)
+        {
+          const double* p = src[v].P;
+          const double* q = out->GetPoint(locator->FindClosestPoint(p));
+          ASSERT_LT(std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]), tolerance) << what << " point " << v;
+        }
       }
 }
 
