@@ -9,6 +9,7 @@
 // end points), never by assuming equal numbering. Positions must agree to 1e-9 of the
 // bounding-box diagonal; faces and holes must agree exactly.
 #include "SubDLimitRules.h"
+#include "SubDOpenSubdivOracle.h"
 #include "SubDFilterTestSupport.h"
 #include "SubDOracleSupport.h"
 #include "SubDRefiner.h"
@@ -50,109 +51,8 @@
 namespace
 {
 using namespace OpenSubdiv;
+using namespace subdtest;
 using subd::Index;
-
-struct Point3
-{
-  double P[3];
-  void Clear() { P[0] = P[1] = P[2] = 0.0; }
-  void AddWithWeight(const Point3& src, double w)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      P[c] += w * src.P[c];
-    }
-  }
-};
-
-Sdc::Options::VtxBoundaryInterpolation ToOsd(subd::BoundaryRule rule)
-{
-  switch (rule)
-  {
-    case subd::BoundaryRule::None:
-      return Sdc::Options::VTX_BOUNDARY_NONE;
-    case subd::BoundaryRule::EdgeOnly:
-      return Sdc::Options::VTX_BOUNDARY_EDGE_ONLY;
-    default:
-      return Sdc::Options::VTX_BOUNDARY_EDGE_AND_CORNER;
-  }
-}
-
-enum class SchemeKind
-{
-  CatmullClark,
-  Loop,
-  Bilinear
-};
-
-std::unique_ptr<subd::Scheme> MakeScheme(SchemeKind kind)
-{
-  if (kind == SchemeKind::Loop)
-    return std::make_unique<subd::LoopScheme>();
-  if (kind == SchemeKind::Bilinear)
-    return std::make_unique<subd::BilinearScheme>();
-  return std::make_unique<subd::CatmullClarkScheme>();
-}
-
-/// Sharp features given with a fixture: crease edges as vertex pairs, corner vertices,
-/// hole faces, and the crease method.
-struct SharpTags
-{
-  std::string Label;
-  std::vector<int> CreasePairs;
-  std::vector<float> CreaseSharpness;
-  std::vector<int> Corners;
-  std::vector<float> CornerSharpness;
-  std::vector<int> Holes;
-  subd::CreaseMethod Method = subd::CreaseMethod::Uniform;
-};
-
-/// OpenSubdiv's refiner of a fixture, not refined yet.
-std::unique_ptr<Far::TopologyRefiner> CreateOsdRefiner(const subdtest::TestMesh& mesh,
-  subd::BoundaryRule rule, SchemeKind kind, const SharpTags& tags)
-{
-  std::vector<int> sizes(static_cast<size_t>(mesh.NumFaces()));
-  for (Index f = 0; f < mesh.NumFaces(); ++f)
-  {
-    sizes[f] = mesh.Offsets[f + 1] - mesh.Offsets[f];
-  }
-  Far::TopologyDescriptor desc;
-  desc.numVertices = mesh.NumVertices();
-  desc.numFaces = mesh.NumFaces();
-  desc.numVertsPerFace = sizes.data();
-  desc.vertIndicesPerFace = mesh.Vertices.data();
-  desc.numCreases = static_cast<int>(tags.CreaseSharpness.size());
-  desc.creaseVertexIndexPairs = tags.CreasePairs.data();
-  desc.creaseWeights = tags.CreaseSharpness.data();
-  desc.numCorners = static_cast<int>(tags.Corners.size());
-  desc.cornerVertexIndices = tags.Corners.data();
-  desc.cornerWeights = tags.CornerSharpness.data();
-  desc.numHoles = static_cast<int>(tags.Holes.size());
-  desc.holeIndices = tags.Holes.data();
-  Sdc::Options options;
-  options.SetVtxBoundaryInterpolation(ToOsd(rule));
-  options.SetCreasingMethod(
-    tags.Method == subd::CreaseMethod::Chaikin ? Sdc::Options::CREASE_CHAIKIN : Sdc::Options::CREASE_UNIFORM);
-  using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
-  std::unique_ptr<Far::TopologyRefiner> refiner(
-    Factory::Create(desc,
-      Factory::Options(kind == SchemeKind::Loop
-          ? Sdc::SCHEME_LOOP
-          : (kind == SchemeKind::Bilinear ? Sdc::SCHEME_BILINEAR : Sdc::SCHEME_CATMARK),
-        options)));
-  return refiner;
-}
-
-std::unique_ptr<Far::TopologyRefiner> MakeOsdRefiner(const subdtest::TestMesh& mesh,
-  subd::BoundaryRule rule, int levels, SchemeKind kind, const SharpTags& tags)
-{
-  std::unique_ptr<Far::TopologyRefiner> refiner = CreateOsdRefiner(mesh, rule, kind, tags);
-  Far::TopologyRefiner::UniformOptions uniform(levels);
-  uniform.orderVerticesFromFacesFirst = true;
-  uniform.fullTopologyInLastLevel = true;
-  refiner->RefineUniform(uniform);
-  return refiner;
-}
 
 std::vector<Index> SortedCorners(const Index* begin, Index n, const std::vector<Index>& map)
 {
@@ -163,32 +63,6 @@ std::vector<Index> SortedCorners(const Index* begin, Index n, const std::vector<
   }
   std::sort(key.begin(), key.end());
   return key;
-}
-
-/// The same tags in SubD's form, for the base level of `topology`.
-subd::BaseTags ToBaseTags(const SharpTags& tags, const subd::MeshTopology& topology)
-{
-  subd::BaseTags base;
-  base.Creasing = tags.Method;
-  base.EdgeSharpness.assign(static_cast<size_t>(topology.GetNumEdges()), 0.0f);
-  for (size_t i = 0; i < tags.CreaseSharpness.size(); ++i)
-  {
-    const Index e = topology.FindEdge(tags.CreasePairs[2 * i], tags.CreasePairs[2 * i + 1]);
-    EXPECT_NE(e, subd::InvalidIndex) << "crease " << i << " is not an edge";
-    if (e != subd::InvalidIndex)
-      base.EdgeSharpness[e] = tags.CreaseSharpness[i];
-  }
-  base.VertexSharpness.assign(static_cast<size_t>(topology.GetNumVertices()), 0.0f);
-  for (size_t i = 0; i < tags.Corners.size(); ++i)
-  {
-    base.VertexSharpness[tags.Corners[i]] = tags.CornerSharpness[i];
-  }
-  base.FaceIsHole.assign(static_cast<size_t>(topology.GetNumFaces()), 0);
-  for (int f : tags.Holes)
-  {
-    base.FaceIsHole[f] = 1;
-  }
-  return base;
 }
 
 struct OracleCase

@@ -192,6 +192,7 @@ void SetChildTopology(const Level& parent, Level& child, Index numPoints, IndexA
 {
   child.Depth = parent.Depth + 1;
   child.Creasing = parent.Creasing;
+  child.Linear = parent.Linear;
   if (depth == ChildTopology::FacesOnly)
   {
     child.Topology = MeshTopology::BuildFacesOnly(numPoints, std::move(offsets), std::move(vertices));
@@ -206,6 +207,13 @@ void InheritPrimalSharpness(const Level& parent, Level& child, Index firstEdgePo
 {
   const MeshTopology& topo = parent.Topology;
   const MeshTopology& childTopo = child.Topology;
+  child.Linear = parent.Linear;
+  if (parent.Linear == LinearPart::All)
+  {
+    child.EdgeSharpness.assign(static_cast<size_t>(childTopo.GetNumEdges()), SharpnessInfinite);
+    child.VertexSharpness.assign(static_cast<size_t>(childTopo.GetNumVertices()), SharpnessInfinite);
+    return;
+  }
   child.EdgeSharpness.assign(static_cast<size_t>(childTopo.GetNumEdges()), SharpnessSmooth);
   for (Index e = 0; e < topo.GetNumEdges(); ++e)
   {
@@ -234,6 +242,13 @@ void InheritPrimalSharpness(const Level& parent, Level& child, Index firstEdgePo
   for (Index v = 0; v < topo.GetNumVertices(); ++v)
   {
     child.VertexSharpness[firstVertexPoint + v] = DecaySharpness(parent.VertexSharpness[v]);
+  }
+  for (Index e = 0; parent.Linear == LinearPart::Boundaries && e < topo.GetNumEdges(); ++e)
+  {
+    if (topo.GetEdgeTag(e).Boundary)
+    {
+      child.VertexSharpness[firstEdgePoint + e] = SharpnessInfinite;
+    }
   }
 }
 

@@ -12,6 +12,15 @@
 
 namespace subd
 {
+/// The part of a face-varying channel's mesh that stays linear at every level (OpenSubdiv's
+/// FVarLinearInterpolation Boundaries and All, SubDFaceVarying.h).
+enum class LinearPart : std::uint8_t
+{
+  None,       ///< none (a mesh's level)
+  Boundaries, ///< every point made on a boundary edge is a corner, so boundaries stay polylines
+  All         ///< every point and edge is infinitely sharp: linear refinement
+};
+
 struct SUBDKERNEL_EXPORT Level
 {
   MeshTopology Topology;
@@ -24,6 +33,7 @@ struct SUBDKERNEL_EXPORT Level
   /// parent's tags (InheritPrimalFaceTags: 2).
   int FaceTagShift = 0;
   int Depth = 0;                         ///< 0 for the base level, then 1, 2, ...
+  LinearPart Linear = LinearPart::None;  ///< inherited by every level below
 
   bool IsFaceHole(Index f) const
   {

@@ -1,0 +1,392 @@
+// Oracle test: SubD's face-varying channels (SubDFaceVarying.h) against OpenSubdiv's
+// Far::PrimvarRefinerReal<double>::InterpolateFaceVarying and LimitFaceVarying.
+//
+// Seamed fixtures (a UV sphere with triangle poles, a torus with two crossing seams, a cube as
+// six islands and as two, an open grid in two islands with semi-sharp and sharp creases and a
+// corner, a house of pentagons, quads and triangles, a grid with a hole, a non-manifold mesh)
+// are refined three levels by Catmull-Clark, Loop (the fixtures triangulated, their corners'
+// values with them) and bilinear, in every interpolation mode, under two boundary rules. Child
+// faces are matched through OpenSubdiv's parent-to-child relations (GetFaceChildFaces), the
+// corners of each by rotation; every corner's value must agree to 1e-9 of the values' extent,
+// and at the last level its limit value to 1e-7 (OpenSubdiv's seam limit weights are floats).
+#include "SubDFaceVarying.h"
+#include "SubDLimitRules.h"
+#include "SubDOpenSubdivOracle.h"
+#include "SubDRefiner.h"
+#include "SubDTestMeshes.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <numeric>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace
+{
+using namespace OpenSubdiv;
+using namespace subdtest;
+using subd::FaceVaryingInterpolation;
+
+struct Point2
+{
+  double P[2];
+  void Clear() { P[0] = P[1] = 0.0; }
+  void AddWithWeight(const Point2& src, double w)
+  {
+    P[0] += w * src.P[0];
+    P[1] += w * src.P[1];
+  }
+};
+
+struct SeamedMesh
+{
+  TestMesh Mesh;
+  FaceVaryingChannel UV;
+  SharpTags Tags;
+};
+
+// Values per (vertex, island): faces of different islands meet at seams. A value is an
+// affine function of its point, shifted per island.
+SeamedMesh ByIslands(const TestMesh& mesh, const std::vector<int>& islandOfFace, const std::string& name)
+{
+  SeamedMesh s;
+  s.Mesh = mesh;
+  s.Mesh.Name = name;
+  std::map<std::pair<Index, int>, Index> valueOf;
+  for (Index f = 0; f < mesh.NumFaces(); ++f)
+    for (Index h = mesh.Offsets[f]; h < mesh.Offsets[f + 1]; ++h)
+    {
+      const Index v = mesh.Vertices[h];
+      const auto inserted = valueOf.emplace(std::make_pair(v, islandOfFace[f]), static_cast<Index>(valueOf.size()));
+      if (inserted.second)
+      {
+        const double* p = &mesh.Points[3 * v];
+        const double shift = 5.0 * islandOfFace[f];
+        s.UV.Values.insert(s.UV.Values.end(), { p[0] + 0.3 * p[1] + 0.7 * p[2] + shift, 0.2 * p[0] - p[1] + 0.4 * p[2] });
+      }
+      s.UV.ValueOfCorner.push_back(inserted.first->second);
+    }
+  return s;
+}
+
+// A grid of values (i / nu, j / nv), i in 0..nu, j in 0..nv, for a mesh whose vertices wrap.
+Index GridValue(int i, int j, int nu)
+{
+  return static_cast<Index>(j * (nu + 1) + i);
+}
+
+std::vector<double> GridValues(int nu, int nv)
+{
+  std::vector<double> values;
+  for (int j = 0; j <= nv; ++j)
+    for (int i = 0; i <= nu; ++i)
+      values.insert(values.end(), { double(i) / nu, double(j) / nv });
+  return values;
+}
+
+// A torus of nu x nv quads whose values are cut along i = 0 and j = 0 (the seams cross).
+SeamedMesh SeamedTorus(int nu, int nv)
+{
+  SeamedMesh s;
+  s.Mesh = Grid(nu, nv, true, true).Jitter(0.05);
+  s.Mesh.Name = "torus-seams";
+  s.UV.Values = GridValues(nu, nv);
+  for (int j = 0; j < nv; ++j)
+    for (int i = 0; i < nu; ++i)
+      s.UV.ValueOfCorner.insert(s.UV.ValueOfCorner.end(),
+        { GridValue(i, j, nu), GridValue(i + 1, j, nu), GridValue(i + 1, j + 1, nu), GridValue(i, j + 1, nu) });
+  return s;
+}
+
+// A UV sphere: rings of quads, triangle fans at the poles, cut along a meridian; every pole
+// triangle has its own value at the pole (a vertex where nu regions meet).
+SeamedMesh UVSphere(int nu, int nv)
+{
+  SeamedMesh s;
+  TestMesh& m = s.Mesh;
+  m.Name = "uv-sphere";
+  const double pi = 3.14159265358979323846;
+  m.AddPoint(0, 0, 1);
+  for (int j = 1; j < nv; ++j)
+    for (int i = 0; i < nu; ++i)
+      m.AddPoint(std::sin(pi * j / nv) * std::cos(2 * pi * i / nu), std::sin(pi * j / nv) * std::sin(2 * pi * i / nu),
+        std::cos(pi * j / nv));
+  m.AddPoint(0, 0, -1);
+  m.Jitter(0.05);
+  const Index south = m.NumVertices() - 1;
+  auto ring = [nu](int j, int i) { return static_cast<Index>(1 + (j - 1) * nu + i % nu); };
+  s.UV.Values = GridValues(nu, nv);
+  const Index numGrid = static_cast<Index>(s.UV.Values.size() / 2);
+  for (int i = 0; i < nu; ++i) // pole values: one per triangle
+  {
+    s.UV.Values.insert(s.UV.Values.end(), { (i + 0.5) / nu, 0.0 });
+    s.UV.Values.insert(s.UV.Values.end(), { (i + 0.5) / nu, 1.0 });
+  }
+  for (int i = 0; i < nu; ++i)
+  {
+    m.AddFace({ ring(1, i + 1), ring(1, i), 0 });
+    s.UV.ValueOfCorner.insert(s.UV.ValueOfCorner.end(), { GridValue(i + 1, 1, nu), GridValue(i, 1, nu), numGrid + 2 * i });
+  }
+  for (int j = 1; j + 1 < nv; ++j)
+    for (int i = 0; i < nu; ++i)
+    {
+      m.AddFace({ ring(j, i), ring(j, i + 1), ring(j + 1, i + 1), ring(j + 1, i) });
+      s.UV.ValueOfCorner.insert(s.UV.ValueOfCorner.end(),
+        { GridValue(i, j, nu), GridValue(i + 1, j, nu), GridValue(i + 1, j + 1, nu), GridValue(i, j + 1, nu) });
+    }
+  for (int i = 0; i < nu; ++i)
+  {
+    m.AddFace({ ring(nv - 1, i), ring(nv - 1, i + 1), south });
+    s.UV.ValueOfCorner.insert(s.UV.ValueOfCorner.end(),
+      { GridValue(i, nv - 1, nu), GridValue(i + 1, nv - 1, nu), numGrid + 2 * i + 1 });
+  }
+  return s;
+}
+
+// A 4 x 4 grid, one value per vertex but for a cut from the boundary into the middle along
+// x = 2, y in [0, 2]: the seam ends inside the mesh (a dart of the channel) at vertex (2, 2).
+SeamedMesh CutGrid()
+{
+  const TestMesh grid = Grid(4, 4, false, false).Jitter(0.1);
+  std::vector<int> islandOfFace(16, 0);
+  SeamedMesh s = ByIslands(grid, islandOfFace, "grid-cut");
+  const Index cutEnd = 2 * 5 + 2;
+  for (Index f = 0; f < grid.NumFaces(); ++f)
+  {
+    const int i = f % 4, j = f / 4;
+    if (i < 2 || j >= 2)
+      continue;
+    for (Index h = grid.Offsets[f]; h < grid.Offsets[f + 1]; ++h)
+    {
+      const Index v = grid.Vertices[h];
+      if (v % 5 == 2 && v != cutEnd) // on the cut: the right side's own value
+      {
+        s.UV.ValueOfCorner[h] = static_cast<Index>(s.UV.Values.size() / 2) + v;
+      }
+    }
+  }
+  for (Index v = 0; v < grid.NumVertices(); ++v) // room for the right side's values
+    s.UV.Values.insert(s.UV.Values.end(), { grid.Points[3 * v] + 0.25, grid.Points[3 * v + 1] });
+  return s;
+}
+
+std::vector<SeamedMesh> SeamedMeshes()
+{
+  std::vector<SeamedMesh> meshes{ UVSphere(8, 5), SeamedTorus(6, 4) };
+  meshes.push_back(ByIslands(Cube().Jitter(0.1), { 0, 1, 2, 3, 4, 5 }, "cube-6-islands"));
+  meshes.push_back(ByIslands(Cube().Jitter(0.1), { 0, 1, 0, 0, 1, 1 }, "cube-2-islands"));
+  // An open 4 x 3 grid cut along x = 2; a semi-sharp edge inside the left island ending at the
+  // seam, an infinitely sharp one inside the right island, a semi-sharp corner.
+  std::vector<int> halves;
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 4; ++i)
+      halves.push_back(i >= 2 ? 1 : 0);
+  SeamedMesh grid = ByIslands(Grid(4, 3, false, false).Jitter(0.1), halves, "grid-2-islands");
+  grid.Tags.Label = "-creased";
+  grid.Tags.CreasePairs = { 6, 7, 8, 3 };
+  grid.Tags.CreaseSharpness = { 1.5f, 10.0f };
+  grid.Tags.Corners = { 0 };
+  grid.Tags.CornerSharpness = { 2.0f };
+  meshes.push_back(grid);
+  SeamedMesh chaikin = grid;
+  chaikin.Tags.Method = subd::CreaseMethod::Chaikin;
+  chaikin.Tags.Label = "-chaikin";
+  meshes.push_back(chaikin);
+  meshes.push_back(CutGrid());
+  std::vector<int> oneFace(16, 0);
+  oneFace[5] = 1; // an island of one face inside another: concave corners around it
+  meshes.push_back(ByIslands(Grid(4, 4, false, false).Jitter(0.1), oneFace, "grid-one-face-island"));
+  meshes.push_back(ByIslands(House(false).Jitter(0.1), { 1, 0, 0, 0, 0, 0, 0, 0 }, "house-gable-island"));
+  std::vector<int> holeHalves;
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i)
+      holeHalves.push_back(j >= 2 ? 1 : 0);
+  SeamedMesh holed = ByIslands(Grid(4, 4, false, false).Jitter(0.1), holeHalves, "grid-hole");
+  holed.Tags.Holes = { 5 };
+  meshes.push_back(holed);
+  meshes.push_back(ByIslands(NonManifold().Jitter(0.05), { 0, 0, 1, 0, 0 }, "non-manifold-islands"));
+  return meshes;
+}
+
+// The fixture with its faces split into fans, each corner keeping its value.
+SeamedMesh Triangulated(const SeamedMesh& s)
+{
+  SeamedMesh t = s;
+  t.Mesh = s.Mesh.Triangulated();
+  t.UV.ValueOfCorner.clear();
+  for (Index f = 0; f < s.Mesh.NumFaces(); ++f)
+  {
+    const Index first = s.Mesh.Offsets[f];
+    for (Index k = first + 1; k + 1 < s.Mesh.Offsets[f + 1]; ++k)
+      t.UV.ValueOfCorner.insert(t.UV.ValueOfCorner.end(),
+        { s.UV.ValueOfCorner[first], s.UV.ValueOfCorner[k], s.UV.ValueOfCorner[k + 1] });
+  }
+  if (!t.Tags.Holes.empty())
+    t.Tags.Holes = { 2 * t.Tags.Holes[0] }; // the first triangle of the hole quad
+  return t;
+}
+
+struct FaceVaryingCase
+{
+  SeamedMesh Fixture;
+  SchemeKind Kind;
+  subd::BoundaryRule Rule;
+  FaceVaryingInterpolation Mode;
+};
+
+void PrintTo(const FaceVaryingCase& c, std::ostream* os)
+{
+  *os << MakeScheme(c.Kind)->GetName() << " " << c.Fixture.Mesh.Name << c.Fixture.Tags.Label << " "
+      << subd::ToString(c.Rule) << " " << subd::ToString(c.Mode);
+}
+
+std::string CaseName(const ::testing::TestParamInfo<FaceVaryingCase>& info)
+{
+  std::string name = ::testing::PrintToString(info.param);
+  std::replace_if(name.begin(), name.end(), [](char ch) { return !std::isalnum(static_cast<unsigned char>(ch)); }, '_');
+  return name;
+}
+
+class FaceVaryingOracle : public ::testing::TestWithParam<FaceVaryingCase>
+{
+};
+
+TEST_P(FaceVaryingOracle, MatchesOpenSubdiv)
+{
+  const FaceVaryingCase& c = GetParam();
+  SeamedMesh fixture = c.Fixture;
+  fixture.UV.Mode = c.Mode;
+  const TestMesh& mesh = fixture.Mesh;
+  const bool loop = c.Kind == SchemeKind::Loop;
+  const int levels = 3;
+  const auto refiner = MakeOsdRefiner(mesh, c.Rule, levels, c.Kind, fixture.Tags, &fixture.UV);
+  Far::PrimvarRefinerReal<double> primvar(*refiner);
+
+  const std::unique_ptr<subd::Scheme> scheme = MakeScheme(c.Kind);
+  subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+  const subd::BaseTags tags = ToBaseTags(fixture.Tags, topology);
+  const subd::Level base = subd::MakeBaseLevel(std::move(topology), tags, scheme->EffectiveBoundaryRule(c.Rule));
+  subd::FaceVaryingBase channel = subd::MakeFaceVaryingBase(base, fixture.UV.ValueOfCorner.data(), c.Mode);
+  subd::Level level = std::move(channel.Values);
+  std::vector<double> mine;
+  for (Index u : channel.UserValue)
+    mine.insert(mine.end(), { fixture.UV.Values[2 * u], fixture.UV.Values[2 * u + 1] });
+  std::vector<Point2> osd(fixture.UV.Values.size() / 2);
+  for (size_t i = 0; i < osd.size(); ++i)
+    osd[i] = Point2{ { fixture.UV.Values[2 * i], fixture.UV.Values[2 * i + 1] } };
+  double lo[2] = { 1e300, 1e300 }, hi[2] = { -1e300, -1e300 };
+  for (size_t i = 0; i < fixture.UV.Values.size(); ++i)
+  {
+    lo[i % 2] = std::min(lo[i % 2], fixture.UV.Values[i]);
+    hi[i % 2] = std::max(hi[i % 2], fixture.UV.Values[i]);
+  }
+  const double tolerance = 1e-9 * std::hypot(hi[0] - lo[0], hi[1] - lo[1]);
+
+  // OpenSubdiv's face f is my face faceMap[f], its corner j my corner j + turn[f].
+  std::vector<Index> faceMap(static_cast<size_t>(mesh.NumFaces())), turn(faceMap.size(), 0);
+  std::iota(faceMap.begin(), faceMap.end(), 0);
+  // Compares every corner of OpenSubdiv's faces at level l (values `theirs`) with mine.
+  auto compareCorners = [&](int l, const std::vector<Point2>& theirs, const std::vector<double>& ours,
+                          const std::string& what, double tolerance) {
+    const Far::TopologyLevel& osdLevel = refiner->GetLevel(l);
+    for (Index f = 0; f < osdLevel.GetNumFaces(); ++f)
+    {
+      const Far::ConstIndexArray values = osdLevel.GetFaceFVarValues(f, 0);
+      const subd::IndexSpan corners = level.Topology.GetFaceVertices(faceMap[f]);
+      ASSERT_EQ(values.size(), corners.size()) << what << " face " << f;
+      for (Index j = 0; j < values.size(); ++j)
+      {
+        const Index u = corners[(j + turn[f]) % corners.size()];
+        for (int d = 0; d < 2; ++d)
+          ASSERT_NEAR(ours[2 * u + d], theirs[values[j]].P[d], tolerance)
+            << what << " level " << l << " face " << f << " corner " << j << " component " << d;
+      }
+    }
+  };
+  for (int l = 1; l <= levels; ++l)
+  {
+    const Far::TopologyLevel& parentOsd = refiner->GetLevel(l - 1);
+    const Far::TopologyLevel& childOsd = refiner->GetLevel(l);
+    std::vector<Point2> osdChild(static_cast<size_t>(childOsd.GetNumFVarValues(0)));
+    Point2* src = osd.data();
+    Point2* dst = osdChild.data();
+    primvar.InterpolateFaceVarying(l, src, dst, 0);
+    osd.swap(osdChild);
+    const subd::StencilTable rows = scheme->BuildStencils(level);
+    std::vector<double> child(static_cast<size_t>(rows.GetNumRows()) * 2);
+    rows.Apply(mine.data(), child.data(), 2);
+    mine.swap(child);
+    const subd::MeshTopology parent = level.Topology;
+    level = scheme->Split(level, subd::ChildTopology::Full);
+    std::vector<Index> childFaceMap(static_cast<size_t>(childOsd.GetNumFaces()));
+    for (Index f = 0; f < parentOsd.GetNumFaces(); ++f)
+    {
+      const Index g = faceMap[f], n = parent.GetFaceSize(g);
+      const Far::ConstIndexArray children = parentOsd.GetFaceChildFaces(f);
+      for (Index k = 0; k < children.size(); ++k)
+        childFaceMap[children[k]] = loop ? 4 * g + (k == 3 ? 3 : (k + turn[f]) % 3) : parent.GetFaceOffset(g) + (k + turn[f]) % n;
+    }
+    faceMap = childFaceMap;
+    // The rotation of each child face: the one under which its values agree.
+    turn.assign(faceMap.size(), 0);
+    for (Index f = 0; f < childOsd.GetNumFaces(); ++f)
+    {
+      const Far::ConstIndexArray values = childOsd.GetFaceFVarValues(f, 0);
+      const subd::IndexSpan corners = level.Topology.GetFaceVertices(faceMap[f]);
+      Index best = 0;
+      double bestError = 1e300;
+      for (Index r = 0; r < values.size(); ++r)
+      {
+        double error = 0.0;
+        for (Index j = 0; j < values.size(); ++j)
+          for (int d = 0; d < 2; ++d)
+            error = std::max(error, std::abs(mine[2 * corners[(j + r) % corners.size()] + d] - osd[values[j]].P[d]));
+        if (error < bestError)
+        {
+          bestError = error;
+          best = r;
+        }
+      }
+      turn[f] = best;
+    }
+    compareCorners(l, osd, mine, "values", tolerance);
+  }
+  if (c.Kind == SchemeKind::Bilinear)
+    return; // OpenSubdiv's bilinear face-varying limit applies a crease mask the refinement does not
+  std::vector<Point2> osdLimit(osd.size());
+  Point2* limitSrc = osd.data();
+  Point2* limitDst = osdLimit.data();
+  primvar.LimitFaceVarying(limitSrc, limitDst, 0);
+  subd::StencilTable limit;
+  std::string error;
+  ASSERT_TRUE(scheme->BuildLimitStencils(level, limit, error)) << error;
+  std::vector<double> mineLimit(static_cast<size_t>(limit.GetNumRows()) * 2);
+  limit.Apply(mine.data(), mineLimit.data(), 2);
+  // OpenSubdiv's limit of a value on a seam weighs it and its neighbours by 2/3 and 1/6
+  // rounded to float (far/primvarRefiner.h, limitFVar): 3e-8 off, relative.
+  compareCorners(levels, osdLimit, mineLimit, "limit", 100 * tolerance);
+}
+
+std::vector<FaceVaryingCase> Cases()
+{
+  std::vector<FaceVaryingCase> cases;
+  for (const SeamedMesh& fixture : SeamedMeshes())
+    for (const FaceVaryingInterpolation mode :
+      { FaceVaryingInterpolation::None, FaceVaryingInterpolation::CornersOnly, FaceVaryingInterpolation::CornersPlus1,
+        FaceVaryingInterpolation::CornersPlus2, FaceVaryingInterpolation::Boundaries, FaceVaryingInterpolation::All })
+      for (const subd::BoundaryRule rule :
+        { subd::BoundaryRule::None, subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::EdgeAndCorner })
+      {
+        cases.push_back({ fixture, SchemeKind::CatmullClark, rule, mode });
+        cases.push_back({ Triangulated(fixture), SchemeKind::Loop, rule, mode });
+        cases.push_back({ fixture, SchemeKind::Bilinear, rule, mode });
+      }
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Seamed, FaceVaryingOracle, ::testing::ValuesIn(Cases()), CaseName);
+}
