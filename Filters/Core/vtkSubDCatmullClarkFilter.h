@@ -50,6 +50,7 @@ protected:
 
   subd::Scheme* NewScheme(bool allTriangles) override;
   bool KeepsRepeatedCorners() override { return true; }
+  bool RefinesFaceVaryingData() override { return true; }
 
 private:
   vtkSubDCatmullClarkFilter(const vtkSubDCatmullClarkFilter&) = delete;

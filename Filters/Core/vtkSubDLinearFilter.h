@@ -70,6 +70,7 @@ protected:
   subd::Scheme* NewScheme(bool allTriangles) override;
   bool RequiresTriangles() override { return this->Split == SPLIT_TRIANGLES; }
   bool KeepsRepeatedCorners() override { return true; }
+  bool RefinesFaceVaryingData() override { return true; }
 
   int Split = SPLIT_AUTO;
 

@@ -48,6 +48,7 @@ protected:
   subd::Scheme* NewScheme(bool allTriangles) override;
   bool RequiresTriangles() override { return true; }
   bool KeepsRepeatedCorners() override { return true; }
+  bool RefinesFaceVaryingData() override { return true; }
 
 private:
   vtkSubDLoopFilter(const vtkSubDLoopFilter&) = delete;

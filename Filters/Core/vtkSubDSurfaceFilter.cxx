@@ -16,6 +16,7 @@
 #include "vtkSubDLimitGeometry.h"
 #include "vtkSubDPieces.h"
 #include "vtkSubDPointDataInterpolation.h"
+#include "vtkSubDSeams.h"
 #include "vtkSubDSharpFeatures.h"
 
 #include "vtkCellArray.h"
@@ -145,6 +146,8 @@ public:
   std::vector<subd::Index> UnmatchedSegments; // crease segments that are not surface edges
   subd::Hierarchy Hierarchy;
   std::unique_ptr<subd::Scheme> Scheme; // the scheme the hierarchy was built with
+  vtkSubDSeams Seams;                   // the welded input's seams, and their channel
+  vtkSubDSeamChannel SeamChannel;
   // Schemes LimitEvaluator cannot evaluate: two tangent rows per finest point (normals only).
   subd::StencilTable LimitTangents;
   int InputDepth = 0;        // the input's "SubDDepth" (0 without it)
@@ -333,6 +336,7 @@ struct vtkSubDSurfaceFilter::vtkInputMesh
   subd::LevelArray<vtkIdType> FaceCells;  // per kept face, its input cell
   std::vector<std::uint8_t> FaceIsGhost; // per kept face; empty unless a piece with ghosts
   vtkSubDSharpFeatures Features;
+  vtkSubDSeams Seams; // where welded points differ in their data (WeldCoincidentPoints)
   int Depth = 0; // the input's "SubDDepth"
 };
 
@@ -445,6 +449,16 @@ bool vtkSubDSurfaceFilter::ScreenInputFaces(vtkPolyData* input, vtkInputMesh& me
                       << "triangles: this scheme is defined on triangles only.");
     }
   }
+  if (this->WeldCoincidentPoints)
+  {
+    subd::Index dropped = 0;
+    mesh.Seams = vtkSubDWeldCoincidentPoints(input, mesh.Screened, !this->RefinesFaceVaryingData(), dropped);
+    if (dropped > 0)
+    {
+      vtkWarningMacro(<< "Ignored " << dropped << " polygon(s) whose points coincide once welded (a point at two "
+                      << "corners that were distinct points); WeldCoincidentPoints off keeps them.");
+    }
+  }
   if (screened.KeptFaces.empty())
   {
     vtkErrorMacro("No usable polygon remains after removing degenerate ones.");
@@ -500,7 +514,8 @@ bool vtkSubDSurfaceFilter::CanReuseRefinement(const vtkInputMesh& mesh, int outp
   return cache.Valid && cache.FilterMTime == this->GetMTime() && cache.InputDepth == mesh.Depth &&
     cache.NumInputPoints == mesh.NumPoints && cache.Offsets == mesh.Screened.Offsets &&
     cache.Vertices == mesh.Screened.Vertices && cache.FaceIsGhost == mesh.FaceIsGhost &&
-    cache.OutputGhostLevels == outputGhostLevels && cache.Features == mesh.Features && !this->AutomaticCreases;
+    cache.OutputGhostLevels == outputGhostLevels && cache.Features == mesh.Features && cache.Seams == mesh.Seams &&
+    !this->AutomaticCreases;
 }
 
 bool vtkSubDSurfaceFilter::FitsTheMemoryBudget(
@@ -665,6 +680,14 @@ vtkSubDSurfaceFilter::Status vtkSubDSurfaceFilter::BuildRefinement(vtkPolyData* 
     std::move(topology), tags, scheme.EffectiveBoundaryRule(static_cast<subd::BoundaryRule>(this->BoundaryRule)));
   cache.WritesDepth = scheme.DependsOnDepth();
   base.Depth = cache.WritesDepth ? mesh.Depth : 0;
+  std::string seamError;
+  if (mesh.Seams.Any() &&
+    !vtkSubDRefineSeams(scheme, base, mesh.Seams, static_cast<subd::FaceVaryingInterpolation>(this->FaceVaryingInterpolation),
+      this->NumberOfSubdivisions, this->ProjectToLimit, cache.SeamChannel, seamError))
+  {
+    vtkErrorMacro(<< "ProjectToLimit (face-varying data): " << seamError << ".");
+    return Status::Failed;
+  }
   auto progress = [this](double fraction) {
     this->UpdateProgress(0.5 * fraction);
     return !this->GetAbortExecute();
@@ -690,6 +713,7 @@ vtkSubDSurfaceFilter::Status vtkSubDSurfaceFilter::BuildRefinement(vtkPolyData* 
   cache.Vertices = std::move(mesh.Screened.Vertices);
   cache.KeptFaces = std::move(mesh.Screened.KeptFaces);
   cache.Features = std::move(mesh.Features);
+  cache.Seams = std::move(mesh.Seams);
   cache.FilterMTime = this->GetMTime();
   cache.Valid = true;
   return Status::Done;
@@ -744,6 +768,11 @@ vtkSubDSurfaceFilter::Status vtkSubDSurfaceFilter::WriteOutput(
     output->GetFieldData()->AddArray(depth);
   }
   cache.AddGhostArrays(output, static_cast<vtkIdType>(lineSharpness.size()), seams.LineIsCopy);
+  if (cache.Seams.Any())
+  {
+    vtkSubDSplitAtSeams(input, cache.Seams, [&cache](vtkIdType c) { return cache.FinestFace(c); }, cache.SeamChannel,
+      output);
+  }
   return Status::Done;
 }
 
@@ -1070,6 +1099,9 @@ void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "AutomaticCreases: " << (this->AutomaticCreases ? "On" : "Off") << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "CollapseRepeatedCorners: " << (this->CollapseRepeatedCorners ? "On" : "Off") << "\n";
+  os << indent << "WeldCoincidentPoints: " << (this->WeldCoincidentPoints ? "On" : "Off") << "\n";
+  os << indent << "FaceVaryingInterpolation: "
+     << subd::ToString(static_cast<subd::FaceVaryingInterpolation>(this->FaceVaryingInterpolation)) << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "ProjectToLimit: " << (this->ProjectToLimit ? "On" : "Off") << "\n";
   os << indent << "ComputeLimitNormals: " << (this->ComputeLimitNormals ? "On" : "Off") << "\n";

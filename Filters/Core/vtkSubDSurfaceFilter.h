@@ -188,6 +188,46 @@ public:
 
   ///@{
   /**
+   * Make input points with identical coordinates one vertex (default on). VTK's readers of
+   * textured meshes (vtkOBJReader, vtkGLTFReader) split the points along every texture seam,
+   * which would otherwise be subdivided as a cut: a crease along each seam. Point-data arrays
+   * whose values differ between such points (texture coordinates, normals) are face-varying:
+   * Catmull-Clark, Loop and the linear scheme refine them as OpenSubdiv refines face-varying
+   * data, with FaceVaryingInterpolation, and the output is split again where the input was,
+   * so textures map as before; the other arrays stay vertex data. Doo-Sabin, the midpoint
+   * scheme, sqrt(3) and butterfly weld only points whose data agree too (their seams stay
+   * boundaries).
+   */
+  vtkSetMacro(WeldCoincidentPoints, bool);
+  vtkGetMacro(WeldCoincidentPoints, bool);
+  vtkBooleanMacro(WeldCoincidentPoints, bool);
+  ///@}
+
+  /// OpenSubdiv's FVarLinearInterpolation: what stays linear in face-varying data.
+  enum FaceVaryingInterpolations
+  {
+    FVAR_LINEAR_NONE = 0,
+    FVAR_LINEAR_CORNERS_ONLY = 1,
+    FVAR_LINEAR_CORNERS_PLUS1 = 2,
+    FVAR_LINEAR_CORNERS_PLUS2 = 3,
+    FVAR_LINEAR_BOUNDARIES = 4,
+    FVAR_LINEAR_ALL = 5
+  };
+
+  ///@{
+  /**
+   * How face-varying data (see WeldCoincidentPoints) is interpolated, with OpenSubdiv's (and
+   * USD's) meanings: NONE smooth everywhere; CORNERS_ONLY keeps the corners of each region
+   * (a value with one face); CORNERS_PLUS1 (default, USD's) also where three or more regions
+   * meet; CORNERS_PLUS2 also the ends of seams inside the surface and concave corners;
+   * BOUNDARIES keeps seams and boundaries linear; ALL is linear everywhere.
+   */
+  vtkSetClampMacro(FaceVaryingInterpolation, int, FVAR_LINEAR_NONE, FVAR_LINEAR_ALL);
+  vtkGetMacro(FaceVaryingInterpolation, int);
+  ///@}
+
+  ///@{
+  /**
    * Precision of the output points: vtkAlgorithm::DEFAULT_PRECISION (that of the input
    * points), SINGLE_PRECISION or DOUBLE_PRECISION. Computation is always in double.
    */
@@ -346,12 +386,18 @@ protected:
   /// (CollapseRepeatedCorners); the others have it collapsed.
   virtual bool KeepsRepeatedCorners() { return false; }
 
+  /// True for schemes that refine face-varying data (WeldCoincidentPoints): their child faces
+  /// are their parents' split corner for corner, so a channel's faces follow the mesh's.
+  virtual bool RefinesFaceVaryingData() { return false; }
+
   int NumberOfSubdivisions = 1;
   int BoundaryRule = BOUNDARY_EDGE_ONLY;
   int CreaseMethod = CREASE_UNIFORM;
   bool AutomaticCreases = false;
   double FeatureAngle = 30.0;
   bool CollapseRepeatedCorners = false;
+  bool WeldCoincidentPoints = true;
+  int FaceVaryingInterpolation = FVAR_LINEAR_CORNERS_PLUS1;
   int OutputPointsPrecision = DEFAULT_PRECISION;
   bool GenerateParentCellIds = false;
   bool ProjectToLimit = false;

@@ -12,8 +12,21 @@
 #include "SubDFaceVarying.h"
 #include "SubDLimitRules.h"
 #include "SubDOpenSubdivOracle.h"
+#include "SubDOracleSupport.h"
 #include "SubDRefiner.h"
 #include "SubDTestMeshes.h"
+
+#include "vtkCellArray.h"
+#include "vtkDoubleArray.h"
+#include "vtkIdList.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkStaticPointLocator.h"
+#include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDLinearFilter.h"
+#include "vtkSubDLoopFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -389,4 +402,123 @@ std::vector<FaceVaryingCase> Cases()
 }
 
 INSTANTIATE_TEST_SUITE_P(Seamed, FaceVaryingOracle, ::testing::ValuesIn(Cases()), CaseName);
+
+// The fixture as VTK's readers deliver a textured mesh: a point per value, at its vertex's
+// position, with the value as texture coordinates; faces name those points.
+vtkSmartPointer<vtkPolyData> SplitAtSeams(const SeamedMesh& s)
+{
+  const Index numValues = static_cast<Index>(s.UV.Values.size() / 2);
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(numValues);
+  vtkNew<vtkDoubleArray> uv;
+  uv->SetName("UV");
+  uv->SetNumberOfComponents(2);
+  uv->SetNumberOfTuples(numValues);
+  for (Index value = 0; value < numValues; ++value) // values no corner uses: points of their own
+  {
+    points->SetPoint(value, 1e6, value, 0.0);
+    uv->SetTuple(value, &s.UV.Values[2 * value]);
+  }
+  vtkNew<vtkCellArray> polys;
+  for (Index f = 0; f < s.Mesh.NumFaces(); ++f)
+  {
+    polys->InsertNextCell(s.Mesh.Offsets[f + 1] - s.Mesh.Offsets[f]);
+    for (Index h = s.Mesh.Offsets[f]; h < s.Mesh.Offsets[f + 1]; ++h)
+    {
+      const Index value = s.UV.ValueOfCorner[h];
+      points->SetPoint(value, &s.Mesh.Points[3 * s.Mesh.Vertices[h]]);
+      polys->InsertCellPoint(value);
+    }
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  mesh->GetPointData()->SetTCoords(uv);
+  return mesh;
+}
+
+// A mesh split at its seams (as vtkOBJReader gives it) is welded by the surface filters and
+// subdivided whole: every corner of OpenSubdiv's refined faces (its position from the vertex
+// data, its texture coordinates from the face-varying channel) is a point of the output, the
+// output has as many points as OpenSubdiv's channel has values and as many faces, for
+// Catmull-Clark, Loop and linear (bilinear) and three interpolation modes. (The fixtures'
+// creases and holes stay out: the split input does not carry them.)
+TEST(FaceVaryingFilters, SplitInputIsWeldedAndRefinedAsOpenSubdivDoes)
+{
+  const int levels = 2;
+  for (const SeamedMesh& fixture : SeamedMeshes())
+    for (const SchemeKind kind : { SchemeKind::CatmullClark, SchemeKind::Loop, SchemeKind::Bilinear })
+      for (const FaceVaryingInterpolation mode :
+        { FaceVaryingInterpolation::None, FaceVaryingInterpolation::CornersPlus1, FaceVaryingInterpolation::Boundaries })
+      {
+        SeamedMesh seamed = kind == SchemeKind::Loop ? Triangulated(fixture) : fixture;
+        seamed.UV.Mode = mode;
+        seamed.Tags = SharpTags(); // (the split input carries no creases or holes)
+        const std::string what = std::string(MakeScheme(kind)->GetName()) + " " + seamed.Mesh.Name + " " + subd::ToString(mode);
+        vtkSmartPointer<vtkSubDSurfaceFilter> filter;
+        if (kind == SchemeKind::CatmullClark)
+          filter = vtkSmartPointer<vtkSubDCatmullClarkFilter>::New();
+        else if (kind == SchemeKind::Loop)
+          filter = vtkSmartPointer<vtkSubDLoopFilter>::New();
+        else
+          filter = vtkSmartPointer<vtkSubDLinearFilter>::New();
+        vtkSmartPointer<vtkPolyData> input = SplitAtSeams(seamed);
+        filter->SetInputData(input);
+        filter->SetNumberOfSubdivisions(levels);
+        filter->SetFaceVaryingInterpolation(static_cast<int>(mode));
+        filter->SetBoundaryRuleToEdgeOnly();
+        filter->Update();
+        vtkPolyData* out = filter->GetOutput();
+        vtkDataArray* outUV = out->GetPointData()->GetTCoords();
+        ASSERT_NE(outUV, nullptr) << what;
+
+        const auto refiner = MakeOsdRefiner(seamed.Mesh, subd::BoundaryRule::EdgeOnly, levels, kind, seamed.Tags, &seamed.UV);
+        Far::PrimvarRefinerReal<double> primvar(*refiner);
+        std::vector<Point3> xyz(static_cast<size_t>(refiner->GetNumVerticesTotal()));
+        std::vector<Point2> uv(static_cast<size_t>(seamed.UV.Values.size() / 2));
+        for (Index v = 0; v < seamed.Mesh.NumVertices(); ++v)
+          std::copy(&seamed.Mesh.Points[3 * v], &seamed.Mesh.Points[3 * v] + 3, xyz[v].P);
+        for (size_t i = 0; i < uv.size(); ++i)
+          uv[i] = Point2{ { seamed.UV.Values[2 * i], seamed.UV.Values[2 * i + 1] } };
+        Point3* src = xyz.data();
+        for (int l = 1; l <= levels; ++l)
+        {
+          Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
+          primvar.Interpolate(l, src, dst);
+          src = dst;
+          std::vector<Point2> child(static_cast<size_t>(refiner->GetLevel(l).GetNumFVarValues(0)));
+          Point2* from = uv.data();
+          Point2* to = child.data();
+          primvar.InterpolateFaceVarying(l, from, to, 0);
+          uv.swap(child);
+        }
+        const Far::TopologyLevel& finest = refiner->GetLevel(levels);
+        ASSERT_EQ(out->GetNumberOfPolys(), finest.GetNumFaces()) << what;
+        // (At a non-manifold vertex OpenSubdiv may count one value twice, at one position.)
+        if (seamed.Mesh.Name.find("non-manifold") == std::string::npos)
+          EXPECT_EQ(out->GetNumberOfPoints(), finest.GetNumFVarValues(0)) << what;
+        vtkNew<vtkStaticPointLocator> locator;
+        locator->SetDataSet(out);
+        locator->BuildLocator();
+        const double tolerance = 1e-9 * subdtest::Diagonal(seamed.Mesh.Points);
+        vtkNew<vtkIdList> near;
+        for (Index f = 0; f < finest.GetNumFaces(); ++f)
+        {
+          const Far::ConstIndexArray corners = finest.GetFaceVertices(f), values = finest.GetFaceFVarValues(f, 0);
+          for (Index j = 0; j < corners.size(); ++j)
+          {
+            locator->FindPointsWithinRadius(tolerance, src[corners[j]].P, near);
+            bool found = false;
+            for (vtkIdType k = 0; k < near->GetNumberOfIds() && !found; ++k)
+            {
+              const double* t = outUV->GetTuple2(near->GetId(k));
+              found = std::abs(t[0] - uv[values[j]].P[0]) < 1e-9 && std::abs(t[1] - uv[values[j]].P[1]) < 1e-9;
+            }
+            ASSERT_TRUE(found) << what << ": face " << f << " corner " << j << " (" << near->GetNumberOfIds()
+                               << " points there)";
+          }
+        }
+      }
+}
 }

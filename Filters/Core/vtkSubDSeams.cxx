@@ -1,0 +1,335 @@
+#include "vtkSubDSeams.h"
+
+#include "vtkCellArray.h"
+#include "vtkDataArray.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+#include "vtkPoints.h"
+#include "vtkPolyData.h"
+#include "vtkTypeInt32Array.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace
+{
+// Whether points p and q carry equal values in `array`.
+bool SameTuple(vtkDataArray* array, vtkIdType p, vtkIdType q)
+{
+  for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+  {
+    if (array->GetComponent(p, c) != array->GetComponent(q, c))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+// Per input point, the first point at the same position (itself if none comes before it);
+// with `byData`, only among points whose point data are equal too.
+std::vector<subd::Index> FirstAtSamePosition(vtkPolyData* input, bool byData, bool& anyWelded)
+{
+  const vtkIdType n = input->GetNumberOfPoints();
+  std::vector<double> xyz(3 * static_cast<size_t>(n));
+  for (vtkIdType i = 0; i < n; ++i)
+  {
+    input->GetPoint(i, &xyz[3 * i]);
+  }
+  std::vector<subd::Index> order(static_cast<size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(), [&xyz](subd::Index a, subd::Index b) {
+    const double* p = &xyz[3 * static_cast<size_t>(a)];
+    const double* q = &xyz[3 * static_cast<size_t>(b)];
+    return std::lexicographical_compare(p, p + 3, q, q + 3) || (std::equal(p, p + 3, q) && a < b);
+  });
+  vtkPointData* pd = input->GetPointData();
+  auto sameData = [pd](vtkIdType p, vtkIdType q) {
+    for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+    {
+      vtkDataArray* array = pd->GetArray(a);
+      if (array && !SameTuple(array, p, q))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  std::vector<subd::Index> first(static_cast<size_t>(n));
+  std::iota(first.begin(), first.end(), 0);
+  anyWelded = false;
+  std::vector<subd::Index> kept; // the points of a run that others weld to
+  for (size_t k = 0; k < order.size();)
+  {
+    const double* position = &xyz[3 * static_cast<size_t>(order[k])];
+    size_t end = k + 1;
+    while (end < order.size() && std::equal(position, position + 3, &xyz[3 * static_cast<size_t>(order[end])]))
+    {
+      ++end;
+    }
+    // The run holds one position, in increasing index. Compared by data, a point welds to
+    // the first kept one with its data (among a bounded number: never quadratic).
+    kept.assign(1, order[k]);
+    for (size_t i = k + 1; i < end; ++i)
+    {
+      const auto match = byData
+        ? std::find_if(kept.begin(), kept.end(), [&](subd::Index q) { return sameData(order[i], q); })
+        : kept.begin();
+      if (match != kept.end())
+      {
+        first[order[i]] = *match;
+        anyWelded = true;
+      }
+      else if (kept.size() < 64)
+      {
+        kept.push_back(order[i]);
+      }
+    }
+    k = end;
+  }
+  return first;
+}
+
+// Drops the faces (and their corners' values) that renaming made repeat a point they did
+// not repeat before; returns how many.
+subd::Index DropFacesRepeatedByWelding(subd::FaceScreening& screened, subd::IndexArray& valueOfCorner)
+{
+  subd::Index dropped = 0;
+  subd::IndexArray offsets{ 0 }, vertices, values, kept;
+  std::vector<subd::Index> scratch;
+  const size_t numFaces = screened.KeptFaces.size();
+  for (size_t f = 0; f < numFaces; ++f)
+  {
+    const subd::Index begin = screened.Offsets[f], n = screened.Offsets[f + 1] - begin;
+    if (subd::HasRepeatedVertex(screened.Vertices.data() + begin, n, scratch) &&
+      !subd::HasRepeatedVertex(valueOfCorner.data() + begin, n, scratch))
+    {
+      ++dropped;
+      continue;
+    }
+    vertices.insert(vertices.end(), screened.Vertices.begin() + begin, screened.Vertices.begin() + begin + n);
+    values.insert(values.end(), valueOfCorner.begin() + begin, valueOfCorner.begin() + begin + n);
+    offsets.push_back(static_cast<subd::Index>(vertices.size()));
+    kept.push_back(screened.KeptFaces[f]);
+  }
+  if (dropped > 0)
+  {
+    screened.Offsets.swap(offsets);
+    screened.Vertices.swap(vertices);
+    screened.KeptFaces.swap(kept);
+    valueOfCorner.swap(values);
+  }
+  return dropped;
+}
+
+// The value of a refined channel for an array of type `type`: rounded and clamped for
+// integer types, as vertex data are (vtkSubDPointDataInterpolation).
+double StoredValue(vtkDataArray* array, double value)
+{
+  const int type = array->GetDataType();
+  if (type == VTK_FLOAT || type == VTK_DOUBLE)
+  {
+    return value;
+  }
+  return std::min(array->GetDataTypeMax(), std::max(array->GetDataTypeMin(), std::round(value)));
+}
+}
+
+vtkSubDSeams vtkSubDWeldCoincidentPoints(vtkPolyData* input, subd::FaceScreening& screened, bool byData,
+  subd::Index& numDropped)
+{
+  vtkSubDSeams seams;
+  numDropped = 0;
+  bool anyWelded = false;
+  const std::vector<subd::Index> first = FirstAtSamePosition(input, byData, anyWelded);
+  if (!anyWelded)
+  {
+    return seams;
+  }
+  vtkPointData* pd = input->GetPointData();
+  for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
+  {
+    vtkDataArray* array = pd->GetArray(a);
+    bool differs = false;
+    for (vtkIdType p = 0; array && !differs && p < input->GetNumberOfPoints(); ++p)
+    {
+      differs = first[p] != p && !SameTuple(array, p, first[p]);
+    }
+    if (differs)
+    {
+      seams.Arrays.push_back(a);
+    }
+  }
+  subd::IndexArray valueOfCorner = screened.Vertices;
+  for (subd::Index& v : screened.Vertices)
+  {
+    v = first[v];
+  }
+  numDropped = DropFacesRepeatedByWelding(screened, valueOfCorner);
+  if (seams.Any())
+  {
+    seams.ValueOfCorner = std::move(valueOfCorner);
+  }
+  return seams;
+}
+
+bool vtkSubDRefineSeams(const subd::Scheme& scheme, const subd::Level& base, const vtkSubDSeams& seams,
+  subd::FaceVaryingInterpolation mode, int levels, bool limit, vtkSubDSeamChannel& channel, std::string& error)
+{
+  subd::FaceVaryingBase values = subd::MakeFaceVaryingBase(base, seams.ValueOfCorner.data(), mode);
+  channel = vtkSubDSeamChannel();
+  channel.UserValue = std::move(values.UserValue);
+  channel.Hierarchy.NumBasePoints = static_cast<subd::Index>(channel.UserValue.size());
+  if (!subd::Refine(scheme, std::move(values.Values), levels, channel.Hierarchy, nullptr,
+        limit ? subd::ChildTopology::Full : subd::ChildTopology::FacesOnly, subd::LevelRows::Written))
+  {
+    return false;
+  }
+  if (limit)
+  {
+    subd::StencilTable table;
+    if (!scheme.BuildLimitStencils(channel.Hierarchy.Finest, table, error))
+    {
+      return false;
+    }
+    channel.Hierarchy.Stencils.push_back(std::move(table));
+  }
+  return true;
+}
+
+namespace
+{
+// The split output's points and faces: a point per channel vertex that a face uses, in the
+// order the faces use them, then the unsplit points no face uses (ends of lines passed
+// through). `newOfOld` receives, per unsplit point, one of its new points.
+void MakeSplitTopology(vtkPolyData* output, const std::function<subd::Index(vtkIdType)>& finestFace,
+  vtkSubDSeamChannel& channel, std::vector<vtkIdType>& newOfOld)
+{
+  const subd::MeshTopology& values = channel.Hierarchy.Finest.Topology;
+  std::vector<vtkIdType> newOfChannel(static_cast<size_t>(values.GetNumVertices()), -1);
+  newOfOld.assign(static_cast<size_t>(output->GetNumberOfPoints()), -1);
+  vtkCellArray* polys = output->GetPolys();
+  vtkNew<vtkTypeInt32Array> offsets, connectivity;
+  offsets->InsertNextValue(0);
+  vtkIdType n;
+  const vtkIdType* corners;
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, n, corners);
+    const subd::IndexSpan channelCorners = values.GetFaceVertices(finestFace(c));
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      vtkIdType& point = newOfChannel[channelCorners[k]];
+      if (point < 0)
+      {
+        point = static_cast<vtkIdType>(channel.SourcePoint.size());
+        channel.SourcePoint.push_back(corners[k]);
+        channel.ChannelVertex.push_back(channelCorners[k]);
+      }
+      newOfOld[corners[k]] = newOfOld[corners[k]] < 0 ? point : newOfOld[corners[k]];
+      connectivity->InsertNextValue(static_cast<vtkTypeInt32>(point));
+    }
+    offsets->InsertNextValue(static_cast<vtkTypeInt32>(connectivity->GetNumberOfTuples()));
+  }
+  for (vtkIdType p = 0; p < output->GetNumberOfPoints(); ++p)
+  {
+    if (newOfOld[p] < 0)
+    {
+      newOfOld[p] = static_cast<vtkIdType>(channel.SourcePoint.size());
+      channel.SourcePoint.push_back(p);
+      channel.ChannelVertex.push_back(-1);
+    }
+  }
+  channel.Faces = vtkSmartPointer<vtkCellArray>::New();
+  channel.Faces->SetData(offsets, connectivity);
+}
+
+// The refined values of `array` (an input point-data array) at the channel's finest vertices.
+std::vector<double> RefinedValues(vtkDataArray* array, const vtkSubDSeamChannel& channel)
+{
+  const int components = array->GetNumberOfComponents();
+  std::vector<double> base(channel.UserValue.size() * static_cast<size_t>(components));
+  for (size_t u = 0; u < channel.UserValue.size(); ++u)
+  {
+    array->GetTuple(channel.UserValue[u], &base[u * components]);
+  }
+  std::vector<double> finest(static_cast<size_t>(channel.Hierarchy.GetNumFinestPoints()) * components);
+  channel.Hierarchy.Evaluate(base.data(), components, finest.data());
+  return finest;
+}
+}
+
+void vtkSubDSplitAtSeams(vtkPolyData* input, const vtkSubDSeams& seams,
+  const std::function<subd::Index(vtkIdType)>& finestFace, vtkSubDSeamChannel& channel, vtkPolyData* output)
+{
+  std::vector<vtkIdType> newOfOld;
+  if (!channel.Faces)
+  {
+    MakeSplitTopology(output, finestFace, channel, newOfOld);
+  }
+  else
+  {
+    newOfOld.assign(static_cast<size_t>(output->GetNumberOfPoints()), -1);
+    for (size_t p = channel.SourcePoint.size(); p-- > 0;)
+    {
+      newOfOld[channel.SourcePoint[p]] = static_cast<vtkIdType>(p);
+    }
+  }
+  const vtkIdType numPoints = static_cast<vtkIdType>(channel.SourcePoint.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataType(output->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(numPoints);
+  vtkPointData* unsplit = output->GetPointData();
+  vtkNew<vtkPointData> split;
+  split->CopyAllocate(unsplit, numPoints);
+  for (vtkIdType p = 0; p < numPoints; ++p)
+  {
+    points->SetPoint(p, output->GetPoint(channel.SourcePoint[p]));
+    split->CopyData(unsplit, channel.SourcePoint[p], p);
+  }
+  for (int a : seams.Arrays)
+  {
+    vtkDataArray* source = input->GetPointData()->GetArray(a);
+    vtkDataArray* target = source ? split->GetArray(source->GetName()) : nullptr;
+    if (!target)
+    {
+      continue;
+    }
+    const int components = source->GetNumberOfComponents();
+    const std::vector<double> values = RefinedValues(source, channel);
+    const bool normals = source == input->GetPointData()->GetNormals() && components == 3;
+    for (vtkIdType p = 0; p < numPoints; ++p)
+    {
+      const subd::Index v = channel.ChannelVertex[p];
+      if (v < 0)
+      {
+        continue;
+      }
+      const double* value = &values[static_cast<size_t>(v) * components];
+      const double length = normals ? std::sqrt(value[0] * value[0] + value[1] * value[1] + value[2] * value[2]) : 1.0;
+      for (int c = 0; c < components; ++c)
+      {
+        target->SetComponent(p, c, StoredValue(target, length > 0.0 ? value[c] / length : value[c]));
+      }
+    }
+  }
+  vtkNew<vtkCellArray> lines;
+  vtkIdType n;
+  const vtkIdType* ends;
+  vtkCellArray* oldLines = output->GetLines();
+  std::vector<vtkIdType> line;
+  for (oldLines->InitTraversal(); oldLines->GetNextCell(n, ends);)
+  {
+    line.assign(ends, ends + n);
+    for (vtkIdType& p : line)
+    {
+      p = newOfOld[p];
+    }
+    lines->InsertNextCell(n, line.data());
+  }
+  output->SetPoints(points);
+  output->GetPointData()->ShallowCopy(split);
+  output->SetLines(lines);
+  output->SetPolys(channel.Faces);
+}

@@ -1,0 +1,73 @@
+// Private helper of vtkSubDSurfaceFilter: points that VTK's readers split at texture seams.
+//
+// vtkOBJReader, vtkGLTFReader and their kind give a point per (position, texture coordinate,
+// normal) combination, so a textured surface arrives cut along every seam. Welding makes the
+// points at one position one vertex again (the first of them), so that the surface is
+// subdivided whole. Each point-data array whose values differ between welded points is then
+// face-varying: its values are refined as a channel (SubDFaceVarying.h) whose values are the
+// input's points, so its seams are where the input was split, and the output is split there
+// again, each side with its own values; the other arrays stay vertex data.
+#ifndef vtkSubDSeams_h
+#define vtkSubDSeams_h
+
+#include "SubDFaceVarying.h"
+#include "SubDMeshValidation.h"
+#include "SubDRefiner.h"
+#include "vtkSmartPointer.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+class vtkCellArray;
+class vtkPolyData;
+
+struct vtkSubDSeams
+{
+  /// Per screened face corner, the input point it named before welding (the channel's
+  /// value); empty when nothing was welded apart from equal data.
+  subd::IndexArray ValueOfCorner;
+  /// The point-data arrays (by index in the input's point data) whose values differ across
+  /// welded points.
+  std::vector<int> Arrays;
+  bool Any() const { return !this->Arrays.empty(); }
+  bool operator==(const vtkSubDSeams& other) const
+  {
+    return this->ValueOfCorner == other.ValueOfCorner && this->Arrays == other.Arrays;
+  }
+};
+
+/// Welds the input's points that have identical coordinates in `screened` (every corner
+/// renamed to the first point at its position) and returns the seams that leaves. `byData`
+/// (schemes that cannot refine a channel) welds only points whose point data are equal too,
+/// so that no seam is left. Faces that welding leaves with a point repeated they did not
+/// repeat before are dropped (counted in `numDropped`).
+vtkSubDSeams vtkSubDWeldCoincidentPoints(
+  vtkPolyData* input, subd::FaceScreening& screened, bool byData, subd::Index& numDropped);
+
+/// The channel of the seams, refined with the mesh; cached with the mesh's refinement.
+struct vtkSubDSeamChannel
+{
+  subd::Hierarchy Hierarchy;
+  subd::IndexArray UserValue; ///< per base channel vertex: its input point
+  // The split output's topology, made once: per output point, the unsplit output point and
+  // the channel's finest vertex it comes from (-1: a point no face uses), and the faces.
+  std::vector<vtkIdType> SourcePoint;
+  std::vector<subd::Index> ChannelVertex;
+  vtkSmartPointer<vtkCellArray> Faces;
+};
+
+/// Refines the seams' channel of the mesh's base level `base` with the mesh's scheme.
+/// `limit` appends the channel's limit table (ProjectToLimit). False with `error` if the
+/// limit masks do not apply; false without one if progress asked to stop.
+bool vtkSubDRefineSeams(const subd::Scheme& scheme, const subd::Level& base, const vtkSubDSeams& seams,
+  subd::FaceVaryingInterpolation mode, int levels, bool limit, vtkSubDSeamChannel& channel, std::string& error);
+
+/// Splits `output` (points, point data, faces and lines as the filter made them, its faces
+/// the finest faces `finestFace(c)` in order) at the seams: a point per channel vertex its
+/// faces use, carrying the channel's values in the face-varying arrays, the output point's
+/// values in the others. Lines keep one of the points at their ends.
+void vtkSubDSplitAtSeams(vtkPolyData* input, const vtkSubDSeams& seams,
+  const std::function<subd::Index(vtkIdType)>& finestFace, vtkSubDSeamChannel& channel, vtkPolyData* output);
+
+#endif
