@@ -3,6 +3,7 @@
 #include "SubDArgumentReader.h"
 #include "SubDBuiltinCages.h"
 #include "SubDMeshIO.h"
+#include "vtkSubDSurfaceFilter.h"
 
 #include <algorithm>
 #include <cmath>
@@ -115,7 +116,8 @@ const OptionUse OptionUses[] = {
   { "--levels", Use::Both, nullptr }, { "--boundary", Use::Both, nullptr }, { "--tension", Use::Both, nullptr },
   { "--crease-method", Use::Both, nullptr }, { "--feature-angle", Use::Both, nullptr },
   { "--limit", Use::Both, nullptr }, { "--normals", Use::Both, nullptr }, { "--curvature", Use::Both, nullptr },
-  { "--collapse-repeated-corners", Use::Both, nullptr },
+  { "--collapse-repeated-corners", Use::Both, nullptr }, { "--no-weld", Use::Both, nullptr },
+  { "--fvar-interpolation", Use::Both, nullptr },
   { "--builtin", Use::Both, nullptr }, { "-o", Use::Both, nullptr }, { "--output", Use::Both, nullptr },
   { "--compress", Use::Both, nullptr }, { "--threads", Use::MpiOnly, nullptr },
   { "--image", Use::SubdOnly, PictureReason }, { "--compare", Use::SubdOnly, PictureReason },
@@ -181,7 +183,8 @@ std::string UsageText(Program program)
   std::ostringstream out;
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
          "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--normals]\n"
-         "            [--curvature] [--collapse-repeated-corners] [--tangents] [--closed] [--interpolate]\n"
+         "            [--curvature] [--collapse-repeated-corners] [--no-weld] [--fvar-interpolation MODE]\n"
+         "            [--tangents] [--closed] [--interpolate]\n"
          "            [--output FILE] [--compress]\n"
          "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
          "\n"
@@ -287,6 +290,11 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
       cmd.Options.CollapseRepeatedCorners = true;
       cmd.SurfaceOptions.push_back(arg);
     }
+    else if (arg == "--no-weld")
+    {
+      cmd.Options.Weld = false;
+      cmd.SurfaceOptions.push_back(arg);
+    }
     else if (arg == "--tangents")
     {
       cmd.Options.Tangents = true;
@@ -353,6 +361,13 @@ std::string SchemeOptionsHelp(Program program)
          "                     remove a polygon's repeated corners first (4 3 5 5 becomes 4 3 5);\n"
          "                     otherwise catmull-clark, loop and linear keep such polygons as\n"
          "                     OpenSubdiv does, the repeated point a sharp corner of the surface\n"
+         "  --no-weld          keep points with identical coordinates apart (by default they are one\n"
+         "                     vertex: a mesh split at texture seams is subdivided whole, and data\n"
+         "                     that differ there, such as texture coordinates, are face-varying)\n"
+         "  --fvar-interpolation MODE\n"
+         "                     how face-varying data are interpolated, OpenSubdiv's and USD's modes\n"
+         "                     (default corners-plus1): none, corners-only, corners-plus1,\n"
+         "                     corners-plus2, boundaries, all (catmull-clark, loop, linear)\n"
          "  --limit            move the output points (and point data) to the limit surface\n"
          "                     (catmull-clark and loop: OpenSubdiv's limit masks; sqrt3, doo-sabin,\n"
          "                     midpoint: their closed-form limit points; linear and butterfly\n"
@@ -423,6 +438,7 @@ std::string MpiUsageText()
   out << "usage: mpirun -np N subd-mpi [INPUT] [--scheme NAME] [--levels N] [--boundary RULE]\n"
          "                     [--tension W] [--crease-method METHOD] [--feature-angle DEG]\n"
          "                     [--limit] [--normals] [--curvature] [--collapse-repeated-corners]\n"
+         "                     [--no-weld] [--fvar-interpolation MODE]\n"
          "                     [--output FILE.pvtp] [--compress] [--threads T]\n"
          "\n"
          "Subdivides the polygon mesh INPUT ("
@@ -534,6 +550,25 @@ Parsed ParseSchemeOption(ArgumentReader& arguments, CommandLine& cmd, std::strin
       return fail("--crease-method wants uniform or chaikin, not '" + text + "'");
     }
     cmd.Options.CreaseMethod = text == "chaikin" ? 1 : 0;
+  }
+  else if (arg == "--fvar-interpolation")
+  {
+    cmd.SurfaceOptions.push_back(arg);
+    if (!value(text))
+    {
+      return Parsed::Failed;
+    }
+    int mode = 0;
+    while (mode <= 5 && text != vtkSubDSurfaceFilter::GetFaceVaryingInterpolationName(mode))
+    {
+      ++mode;
+    }
+    if (mode > 5)
+    {
+      return fail("--fvar-interpolation wants none, corners-only, corners-plus1, corners-plus2, boundaries or all, "
+                  "not '" + text + "'");
+    }
+    cmd.Options.FaceVaryingInterpolation = mode;
   }
   else if (arg == "--feature-angle")
   {

@@ -32,6 +32,8 @@ vtkSmartPointer<Filter> NewSurfaceFilter(const SchemeOptions& options)
   filter->SetComputeLimitNormals(options.LimitNormals);
   filter->SetComputeCurvature(options.LimitCurvature);
   filter->SetCollapseRepeatedCorners(options.CollapseRepeatedCorners);
+  filter->SetWeldCoincidentPoints(options.Weld);
+  filter->SetFaceVaryingInterpolation(options.FaceVaryingInterpolation);
   if (options.FeatureAngle > 0.0)
   {
     filter->SetFeatureAngle(options.FeatureAngle);

@@ -26,6 +26,8 @@ struct SchemeOptions
   bool Tangents = false;       // curves: add the unit limit tangents
   bool Closed = false;         // curves: every polyline is closed
   bool CollapseRepeatedCorners = false; // surfaces: collapse polygons that repeat a point
+  bool Weld = true;                      // surfaces: weld points split at seams
+  int FaceVaryingInterpolation = 2;      // vtkSubDSurfaceFilter::FVAR_LINEAR_CORNERS_PLUS1
 };
 
 /// Whether two option sets configure a filter alike (the explorer reuses a view's result).
@@ -35,7 +37,8 @@ inline bool operator==(const SchemeOptions& a, const SchemeOptions& b)
     a.TensionGiven == b.TensionGiven && a.CreaseMethod == b.CreaseMethod && a.FeatureAngle == b.FeatureAngle &&
     a.ProjectToLimit == b.ProjectToLimit && a.LimitNormals == b.LimitNormals &&
     a.LimitCurvature == b.LimitCurvature && a.Tangents == b.Tangents && a.Closed == b.Closed &&
-    a.CollapseRepeatedCorners == b.CollapseRepeatedCorners;
+    a.CollapseRepeatedCorners == b.CollapseRepeatedCorners && a.Weld == b.Weld &&
+    a.FaceVaryingInterpolation == b.FaceVaryingInterpolation;
 }
 inline bool operator!=(const SchemeOptions& a, const SchemeOptions& b)
 {

@@ -303,6 +303,11 @@ const char* vtkSubDSurfaceFilter::GetBoundaryRuleAsString()
   return subd::ToString(static_cast<subd::BoundaryRule>(this->BoundaryRule));
 }
 
+const char* vtkSubDSurfaceFilter::GetFaceVaryingInterpolationName(int mode)
+{
+  return subd::ToString(static_cast<subd::FaceVaryingInterpolation>(std::max(0, std::min(5, mode))));
+}
+
 const char* vtkSubDSurfaceFilter::GetCreaseMethodAsString()
 {
   return subd::ToString(static_cast<subd::CreaseMethod>(this->CreaseMethod));
@@ -1100,8 +1105,8 @@ void vtkSubDSurfaceFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "CollapseRepeatedCorners: " << (this->CollapseRepeatedCorners ? "On" : "Off") << "\n";
   os << indent << "WeldCoincidentPoints: " << (this->WeldCoincidentPoints ? "On" : "Off") << "\n";
-  os << indent << "FaceVaryingInterpolation: "
-     << subd::ToString(static_cast<subd::FaceVaryingInterpolation>(this->FaceVaryingInterpolation)) << "\n";
+  os << indent << "FaceVaryingInterpolation: " << GetFaceVaryingInterpolationName(this->FaceVaryingInterpolation)
+     << "\n";
   os << indent << "OutputPointsPrecision: " << this->OutputPointsPrecision << "\n";
   os << indent << "ProjectToLimit: " << (this->ProjectToLimit ? "On" : "Off") << "\n";
   os << indent << "ComputeLimitNormals: " << (this->ComputeLimitNormals ? "On" : "Off") << "\n";

@@ -224,6 +224,8 @@ public:
    */
   vtkSetClampMacro(FaceVaryingInterpolation, int, FVAR_LINEAR_NONE, FVAR_LINEAR_ALL);
   vtkGetMacro(FaceVaryingInterpolation, int);
+  /// The mode's name as OpenSubdiv's and USD's users write it ("corners-plus1", ...).
+  static const char* GetFaceVaryingInterpolationName(int mode);
   ///@}
 
   ///@{

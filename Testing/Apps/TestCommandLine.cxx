@@ -46,7 +46,7 @@ TEST(CommandLine, SubdMpiTakesTheSurfaceOptionsOfSubdAlike)
 {
   const std::vector<std::string> surface = { "in.obj", "--scheme", "loop", "--levels", "3", "--boundary",
     "edge-and-corner", "--crease-method", "chaikin", "--feature-angle", "40", "--limit", "--normals", "--curvature",
-    "--collapse-repeated-corners", "--compress", "-q" };
+    "--collapse-repeated-corners", "--no-weld", "--fvar-interpolation", "boundaries", "--compress", "-q" };
   subdapp::CommandLine subd, mpi;
   std::string error;
   std::vector<std::string> args = surface;
@@ -59,6 +59,8 @@ TEST(CommandLine, SubdMpiTakesTheSurfaceOptionsOfSubdAlike)
   EXPECT_EQ(mpi.Options.CreaseMethod, 1);
   EXPECT_TRUE(mpi.Options.LimitNormals && mpi.Options.LimitCurvature && mpi.Options.ProjectToLimit);
   EXPECT_TRUE(mpi.Options.CollapseRepeatedCorners);
+  EXPECT_FALSE(mpi.Options.Weld);
+  EXPECT_EQ(mpi.Options.FaceVaryingInterpolation, 4);
   EXPECT_EQ(subd.Scheme, mpi.Scheme);
   EXPECT_EQ(subd.Input, mpi.Input);
   EXPECT_TRUE(mpi.Compress && mpi.Quiet);
@@ -78,7 +80,8 @@ TEST(CommandLine, SubdMpiTakesWhatItsHelpNamesAndRefusesTheRestByName)
   std::set<std::string> taken = OptionsNamed(help.substr(usageLine.size(), refusedAt - usageLine.size()));
   const std::set<std::string> refused = OptionsNamed(help.substr(refusedAt, deprecatedAt - refusedAt));
   for (const char* name : { "--scheme", "--levels", "--boundary", "--tension", "--crease-method", "--feature-angle",
-         "--limit", "--normals", "--curvature", "--collapse-repeated-corners", "--builtin", "-o", "--output",
+         "--limit", "--normals", "--curvature", "--collapse-repeated-corners", "--no-weld", "--fvar-interpolation",
+         "--builtin", "-o", "--output",
          "--compress", "--threads" })
   {
     EXPECT_EQ(taken.count(name), 1u) << name << " is not in subd-mpi's help";
