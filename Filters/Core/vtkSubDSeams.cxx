@@ -171,6 +171,7 @@ vtkSubDSeams vtkSubDWeldCoincidentPoints(vtkPolyData* input, subd::FaceScreening
   {
     seams.ValueOfCorner = std::move(valueOfCorner);
   }
+  seams.WeldedTo = first;
   return seams;
 }
 

@@ -30,10 +30,13 @@ struct vtkSubDSeams
   /// The point-data arrays (by index in the input's point data) whose values differ across
   /// welded points.
   std::vector<int> Arrays;
+  /// Per input point, the point it was welded to (itself if none); empty if none was.
+  std::vector<subd::Index> WeldedTo;
   bool Any() const { return !this->Arrays.empty(); }
   bool operator==(const vtkSubDSeams& other) const
   {
-    return this->ValueOfCorner == other.ValueOfCorner && this->Arrays == other.Arrays;
+    return this->ValueOfCorner == other.ValueOfCorner && this->Arrays == other.Arrays &&
+      this->WeldedTo == other.WeldedTo;
   }
 };
 

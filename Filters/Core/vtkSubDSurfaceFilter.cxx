@@ -509,6 +509,11 @@ bool vtkSubDSurfaceFilter::ReadInputMesh(vtkPolyData* input, const vtkSubDPieceR
     vtkErrorMacro(<< featureError);
     return false;
   }
+  const std::vector<subd::Index>& weldedTo = mesh.Seams.WeldedTo;
+  for (subd::Index& p : mesh.Features.SegmentPoints) // crease lines name welded points as the faces do
+  {
+    p = p >= 0 && static_cast<size_t>(p) < weldedTo.size() ? weldedTo[p] : p;
+  }
   mesh.Depth = ReadInputDepth(input);
   return true;
 }

@@ -35,6 +35,8 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <set>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -584,6 +586,58 @@ TYPED_TEST(AnySurfaceFilter, RepeatedCornersKeptOrCollapsedWithOneWarning)
     }
   }
   EXPECT_EQ(numDropped, triangles ? 8 : 0); // (T, T, a) has two points left
+}
+
+// A cube delivered as VTK's readers deliver a textured one (a point per face corner, each
+// face its own texture island) is welded and subdivided as the cube, with its crease lines
+// given on any copy of their points: every output point lies where the 8-point cube's
+// subdivision puts one, the crease is as sharp, and the texture coordinates split at the seams.
+TEST(Welding, SplitCubeIsSubdividedAsTheCube)
+{
+  const subdtest::TestMesh cube = subdtest::Cube();
+  subdtest::TestMesh split;
+  vtkNew<vtkDoubleArray> uv;
+  uv->SetName("UV");
+  uv->SetNumberOfComponents(2);
+  std::vector<std::vector<Index>> copies(8);
+  for (Index f = 0; f < cube.NumFaces(); ++f)
+  {
+    std::vector<Index> face;
+    for (Index k = 0; k < 4; ++k)
+    {
+      const Index v = cube.Vertices[cube.Offsets[f] + k];
+      copies[v].push_back(split.NumVertices());
+      face.push_back(split.NumVertices());
+      split.AddPoint(cube.Points[3 * v], cube.Points[3 * v + 1], cube.Points[3 * v + 2]);
+      uv->InsertNextTuple2(f + (k == 1 || k == 2 ? 1.0 : 0.0), k >= 2 ? 1.0 : 0.0);
+    }
+    split.AddFace(face);
+  }
+  auto withCrease = [](vtkSmartPointer<vtkPolyData> mesh, vtkIdType a, vtkIdType b) {
+    vtkNew<vtkCellArray> lines;
+    const vtkIdType ends[2] = { a, b };
+    lines->InsertNextCell(2, ends);
+    mesh->SetLines(lines);
+    return mesh;
+  };
+  vtkSmartPointer<vtkPolyData> input = withCrease(subdtest::ToPolyData(split), copies[0].back(), copies[1].back());
+  input->GetPointData()->SetTCoords(uv);
+  Messages messages;
+  vtkSmartPointer<vtkPolyData> out = Subdivide(input, 2, &messages);
+  vtkSmartPointer<vtkPolyData> whole = Subdivide(withCrease(subdtest::ToPolyData(cube), 0, 1), 2);
+  EXPECT_EQ(messages.NumErrors, 0) << messages.Errors;
+  EXPECT_EQ(messages.Warnings.find("not surface edges"), std::string::npos) << messages.Warnings;
+  ASSERT_EQ(out->GetNumberOfPolys(), whole->GetNumberOfPolys());
+  EXPECT_EQ(out->GetNumberOfLines(), whole->GetNumberOfLines()); // the crease, refined
+  std::set<std::array<double, 3>> wholePoints, outPoints;
+  for (vtkIdType p = 0; p < whole->GetNumberOfPoints(); ++p)
+    wholePoints.insert({ whole->GetPoint(p)[0], whole->GetPoint(p)[1], whole->GetPoint(p)[2] });
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+    outPoints.insert({ out->GetPoint(p)[0], out->GetPoint(p)[1], out->GetPoint(p)[2] });
+  EXPECT_EQ(outPoints, wholePoints);
+  // Each face of the six islands keeps its own corners: a cube corner is three points.
+  EXPECT_GT(out->GetNumberOfPoints(), whole->GetNumberOfPoints());
+  ASSERT_NE(out->GetPointData()->GetTCoords(), nullptr);
 }
 
 TYPED_TEST(AnySurfaceFilter, ErrorEmptyInput)
