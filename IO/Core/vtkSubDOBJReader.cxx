@@ -34,6 +34,11 @@ struct OBJContents
   std::vector<double> Points;
   std::vector<vtkIdType> FaceOffsets{ 0 };      // face f's corners: [FaceOffsets[f], FaceOffsets[f + 1])
   std::vector<vtkIdType> FaceCorners;           // 0-based
+  std::vector<double> TexCoords;                // `vt`: u, v per texture coordinate
+  std::vector<long> FaceTexCorners;             // per face corner: its `vt`, 0-based, or -1 (none)
+  bool AnyTexCorner = false;
+  std::vector<long> CopyOf;                     // per point past the file's vertices: its vertex
+  std::vector<long> PointTexCoord;              // per point: its `vt` (-1: none), once split
   std::vector<std::vector<long>> Polylines;     // `l` elements, 0-based
   std::vector<std::vector<long>> CreaseChains;  // from tags, 0-based
   std::vector<float> ChainSharpness;
@@ -201,28 +206,73 @@ std::string ParseVertex(LineWords& words, OBJContents& contents)
   return "";
 }
 
+// Reads `vt u v [w]` into `contents` (w is dropped); a problem, or "".
+std::string ParseTexCoord(LineWords& words, OBJContents& contents)
+{
+  const char *first, *last;
+  double uv[2];
+  for (double& c : uv)
+  {
+    if (!words.Next(first, last) || !ParseFiniteDouble(first, last, c))
+    {
+      return "a texture coordinate needs 2 finite numbers";
+    }
+  }
+  contents.TexCoords.insert(contents.TexCoords.end(), uv, uv + 2);
+  return "";
+}
+
+// The `vt` index of a corner word v/vt/vn ([slash, last) after its vertex): 0-based, or -1
+// when it has none (`v`, `v//vn`); false if it is not an index.
+bool TexIndex(const char* slash, const char* last, long numTexCoords, long& index)
+{
+  index = -1;
+  if (slash == last || slash + 1 == last || slash[1] == '/')
+  {
+    return true;
+  }
+  return ObjIndex(slash + 1, std::find(slash + 1, last, '/'), numTexCoords, index) && index >= 0;
+}
+
 // Reads the corners of an `f` (face) or `l` (polyline) element into `contents`, using
-// `element` as scratch; a problem, or "".
+// `element` and `texCorners` as scratch; a problem, or "".
 std::string ParseElement(LineWords& words, bool face, OBJContents& contents, std::vector<long>& element)
 {
   const char *first, *last;
   element.clear();
   const long numPoints = static_cast<long>(contents.Points.size() / 3);
+  const long numTexCoords = static_cast<long>(contents.TexCoords.size() / 2);
+  long withTexture = 0;
   while (words.Next(first, last))
   {
-    long index;
-    if (!ObjIndex(first, std::find(first, last, '/'), numPoints, index))
+    long index, texture;
+    const char* slash = std::find(first, last, '/');
+    if (!ObjIndex(first, slash, numPoints, index))
     {
       return "'" + std::string(first, last) + "' is not a vertex index";
     }
+    if (face && !TexIndex(slash, last, numTexCoords, texture))
+    {
+      return "'" + std::string(first, last) + "' has no valid texture coordinate index";
+    }
     element.push_back(index);
+    if (face)
+    {
+      contents.FaceTexCorners.push_back(texture);
+      withTexture += texture >= 0 ? 1 : 0;
+    }
   }
   if (element.size() < (face ? 3u : 2u))
   {
     return face ? "a face needs at least 3 vertices" : "a line needs at least 2 vertices";
   }
+  if (face && withTexture != 0 && withTexture != static_cast<long>(element.size()))
+  {
+    return "a face mixes corners with and without texture coordinates";
+  }
   if (face)
   {
+    contents.AnyTexCorner |= withTexture > 0;
     contents.FaceCorners.insert(contents.FaceCorners.end(), element.begin(), element.end());
     contents.FaceOffsets.push_back(static_cast<vtkIdType>(contents.FaceCorners.size()));
   }
@@ -251,6 +301,10 @@ std::string ParseLine(std::string& line, OBJContents& contents, std::vector<long
   {
     return ParseVertex(words, contents);
   }
+  if (IsWord(keyword, keywordEnd, "vt"))
+  {
+    return ParseTexCoord(words, contents);
+  }
   if (IsWord(keyword, keywordEnd, "f") || IsWord(keyword, keywordEnd, "l"))
   {
     return ParseElement(words, *keyword == 'f', contents, element);
@@ -260,7 +314,8 @@ std::string ParseLine(std::string& line, OBJContents& contents, std::vector<long
     std::istringstream in(words.Rest()); // tags are few: parsed as a stream
     return ParseTag(in, contents);
   }
-  // vt, vn, vp, g, o, s, usemtl, mtllib and the like carry nothing SubD uses.
+  // vn (normals are the surface's own once subdivided), vp, g, o, s, usemtl, mtllib and the
+  // like carry nothing SubD uses.
   return "";
 }
 
@@ -306,6 +361,19 @@ std::string CheckIndices(const OBJContents& contents)
     CheckCell(numPoints, static_cast<size_t>(f), corners + contents.FaceOffsets[f],
       corners + contents.FaceOffsets[f + 1], "face", error);
   }
+  const long numTexCoords = static_cast<long>(contents.TexCoords.size() / 2);
+  for (vtkIdType f = 0; f < numFaces && error.empty() && contents.AnyTexCorner; ++f)
+  {
+    for (vtkIdType h = contents.FaceOffsets[f]; h < contents.FaceOffsets[f + 1] && error.empty(); ++h)
+    {
+      const long t = contents.FaceTexCorners[h];
+      if (t < -1 || t >= numTexCoords)
+      {
+        error = "face " + std::to_string(f) + " uses texture coordinate " + std::to_string(t) + " but the file has " +
+          std::to_string(numTexCoords);
+      }
+    }
+  }
   if (!error.empty() || !CheckCells(numPoints, contents.Polylines, "line", error) ||
     !CheckCells(numPoints, contents.CreaseChains, "crease tag", error))
   {
@@ -339,6 +407,55 @@ void ToCells(const std::vector<std::vector<long>>& elements, vtkCellArray* cells
       cells->InsertCellPoint(v);
     }
   }
+}
+
+// Splits the vertices at texture seams as VTK's readers do: a corner whose vertex carries
+// another texture coordinate in an earlier corner gets a copy of the vertex, a point per
+// (vertex, texture coordinate). The file's vertices keep their numbers (lines and tags name
+// them); copies follow. Corners without texture coordinates use the vertex itself.
+void SplitAtTextureSeams(OBJContents& contents)
+{
+  const long numVertices = static_cast<long>(contents.Points.size() / 3);
+  contents.PointTexCoord.assign(static_cast<size_t>(numVertices), -1);
+  std::map<std::pair<long, long>, long> copies;
+  for (size_t h = 0; h < contents.FaceCorners.size(); ++h)
+  {
+    const long v = static_cast<long>(contents.FaceCorners[h]), t = contents.FaceTexCorners[h];
+    if (t < 0 || contents.PointTexCoord[v] == t)
+    {
+      continue;
+    }
+    if (contents.PointTexCoord[v] < 0)
+    {
+      contents.PointTexCoord[v] = t;
+      continue;
+    }
+    const auto copy = copies.emplace(std::make_pair(v, t), static_cast<long>(contents.PointTexCoord.size()));
+    if (copy.second)
+    {
+      contents.Points.insert(contents.Points.end(), { contents.Points[3 * v], contents.Points[3 * v + 1],
+                                                      contents.Points[3 * v + 2] });
+      contents.PointTexCoord.push_back(t);
+      contents.CopyOf.push_back(v);
+    }
+    contents.FaceCorners[h] = copy.first->second;
+  }
+}
+
+// The "TCoords" point data of the split points ((0, 0) for a point no textured face uses).
+void AddTexCoords(const OBJContents& contents, vtkPolyData* output)
+{
+  vtkNew<vtkFloatArray> tcoords;
+  tcoords->SetName("TCoords");
+  tcoords->SetNumberOfComponents(2);
+  tcoords->SetNumberOfTuples(static_cast<vtkIdType>(contents.PointTexCoord.size()));
+  for (size_t p = 0; p < contents.PointTexCoord.size(); ++p)
+  {
+    const long t = contents.PointTexCoord[p];
+    tcoords->SetTuple2(static_cast<vtkIdType>(p), t < 0 ? 0.0 : contents.TexCoords[2 * t],
+      t < 0 ? 0.0 : contents.TexCoords[2 * t + 1]);
+  }
+  output->GetPointData()->SetTCoords(tcoords);
 }
 
 // Sets the output's points, its faces (Polys) and its polylines then crease chains (Lines,
@@ -419,6 +536,11 @@ void AddTagArrays(const OBJContents& contents, vtkPolyData* output)
     {
       corners->SetValue(corner.first, corner.second);
     }
+    const vtkIdType numVertices = corners->GetNumberOfTuples() - static_cast<vtkIdType>(contents.CopyOf.size());
+    for (size_t c = 0; c < contents.CopyOf.size(); ++c) // a vertex's copies at seams are as sharp
+    {
+      corners->SetValue(numVertices + static_cast<vtkIdType>(c), corners->GetValue(contents.CopyOf[c]));
+    }
     output->GetPointData()->AddArray(corners);
   }
 }
@@ -458,8 +580,16 @@ bool vtkSubDOBJReader::ReadFile(std::istream& file, vtkPolyData* output)
   {
     return this->Fail(0, error);
   }
+  if (contents.AnyTexCorner)
+  {
+    SplitAtTextureSeams(contents);
+  }
   BuildGeometry(contents, output);
   AddTagArrays(contents, output);
+  if (contents.AnyTexCorner)
+  {
+    AddTexCoords(contents, output);
+  }
   if (!contents.SkippedTags.empty())
   {
     vtkWarningMacro("'" << this->FileName << "': skipped tag(s) SubD does not use: " << JoinNames(contents.SkippedTags)

@@ -16,8 +16,16 @@
  * They become what SubD's surface filters read (vtkSubDSurfaceFilter): the crease lines in
  * Lines with the float cell-data array "Sharpness" (`l` polylines are infinitely sharp,
  * 10), the point-data array "CornerSharpness" and the cell-data array "Hole" (unsigned
- * char). Each array exists only if the file tags something. Texture coordinates, normals,
- * groups and materials are skipped; other tags are skipped with one warning naming them.
+ * char). Each array exists only if the file tags something.
+ *
+ * Texture coordinates (`vt`, named per corner by `f v/vt ...`) become the point-data array
+ * "TCoords" (the output's TCoords), the points split at the seams as VTK's readers split them:
+ * a point per (vertex, texture coordinate). The file's vertices keep their numbers, so lines
+ * and tags name them, and each copy follows, as sharp as its vertex; vtkSubDSurfaceFilter
+ * welds them back (WeldCoincidentPoints) and refines the coordinates as face-varying data. A
+ * face that gives texture coordinates to some corners only, or names one that does not
+ * exist, is an error. Normals (`vn`), groups and materials are skipped (the subdivided surface
+ * has normals of its own); other tags are skipped with one warning naming them.
  * Malformed lines and out-of-range indices are errors naming the line; the output is then
  * empty and the error code set.
  */

@@ -4,33 +4,89 @@
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
 #include "vtkObjectFactory.h"
+#include "vtkPoints.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkSubDStripTriangles.h"
 #include "vtkSubDBufferedOutput.h"
 
+#include <map>
+#include <numeric>
 #include <vector>
 
 vtkStandardNewMacro(vtkSubDOBJWriter);
+
+namespace
+{
+// Numbers the distinct tuples of `array` (compared exactly) in the order they first come;
+// returns each tuple's number, and the distinct tuples in `distinct`.
+std::vector<vtkIdType> NumberDistinct(vtkDataArray* array, std::vector<std::vector<double>>& distinct)
+{
+  std::map<std::vector<double>, vtkIdType> numberOf;
+  std::vector<vtkIdType> number(static_cast<size_t>(array->GetNumberOfTuples()));
+  std::vector<double> tuple(static_cast<size_t>(array->GetNumberOfComponents()));
+  for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+  {
+    array->GetTuple(i, tuple.data());
+    const auto inserted = numberOf.emplace(tuple, static_cast<vtkIdType>(distinct.size()));
+    if (inserted.second)
+    {
+      distinct.push_back(tuple);
+    }
+    number[i] = inserted.first->second;
+  }
+  return number;
+}
+}
 
 void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
 {
   vtkSubDBufferedOutput out(file); // numbers in their shortest exact form
   out << "# written by SubD (sharp features as OpenSubdiv tags, 0-based)\n";
   const vtkIdType numPoints = input->GetNumberOfPoints();
-  vtkSubDFormatInParallel(out, numPoints, [input](vtkSubDBufferedOutput& text, vtkIdType i) {
-    double p[3];
-    input->GetPoint(i, p);
-    text << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
-  });
+  // With texture coordinates the points are split at seams (one per position and
+  // coordinate): each position is one `v`, each coordinate one `vt`, and corners name both.
+  vtkDataArray* tcoords = input->GetPointData()->GetTCoords();
+  const bool textured = tcoords && tcoords->GetNumberOfComponents() >= 2 && numPoints > 0;
+  std::vector<vtkIdType> vertexOf(static_cast<size_t>(numPoints)), texOf;
+  if (textured)
+  {
+    std::vector<std::vector<double>> positions, coordinates;
+    vertexOf = NumberDistinct(input->GetPoints()->GetData(), positions);
+    texOf = NumberDistinct(tcoords, coordinates);
+    for (const auto& p : positions)
+    {
+      out << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    }
+    for (const auto& t : coordinates)
+    {
+      out << "vt " << t[0] << ' ' << t[1] << '\n';
+    }
+  }
+  else
+  {
+    std::iota(vertexOf.begin(), vertexOf.end(), 0);
+    vtkSubDFormatInParallel(out, numPoints, [input](vtkSubDBufferedOutput& text, vtkIdType i) {
+      double p[3];
+      input->GetPoint(i, p);
+      text << "v " << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
+    });
+  }
+  auto corner = [&vertexOf, &texOf, textured](vtkSubDBufferedOutput& text, vtkIdType id) {
+    text << ' ' << vertexOf[id] + 1;
+    if (textured)
+    {
+      text << '/' << texOf[id] + 1;
+    }
+  };
 
   // Faces: polygons then strip triangles; holes are numbered among them.
   vtkCellArray* polys = input->GetPolys();
-  vtkSubDFormatCellsInParallel(out, polys, [](vtkSubDBufferedOutput& text, const auto& pts) {
+  vtkSubDFormatCellsInParallel(out, polys, [&corner](vtkSubDBufferedOutput& text, const auto& pts) {
     text << 'f';
     for (const auto id : pts)
     {
-      text << ' ' << id + 1;
+      corner(text, id);
     }
     text << '\n';
   });
@@ -46,8 +102,12 @@ void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
       }
     }
   }
-  vtkSubDForEachStripTriangle(input->GetStrips(), [&out](vtkIdType a, vtkIdType b, vtkIdType c) {
-    out << "f " << a + 1 << ' ' << b + 1 << ' ' << c + 1 << '\n';
+  vtkSubDForEachStripTriangle(input->GetStrips(), [&out, &corner](vtkIdType a, vtkIdType b, vtkIdType c) {
+    out << 'f';
+    corner(out, a);
+    corner(out, b);
+    corner(out, c);
+    out << '\n';
   });
 
   // Sharp features.
@@ -65,17 +125,19 @@ void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
     out << "t crease " << n << "/1/0";
     for (vtkIdType k = 0; k < n; ++k)
     {
-      out << ' ' << pts[k];
+      out << ' ' << vertexOf[pts[k]];
     }
     out << ' ' << (sharpness ? sharpness->GetComponent(cell, 0) : 10.0) << '\n';
   }
   if (vtkDataArray* corners = input->GetPointData()->GetArray("CornerSharpness"))
   {
-    std::vector<vtkIdType> ids;
+    std::vector<vtkIdType> ids; // points, one per vertex
+    std::vector<char> tagged(static_cast<size_t>(numPoints), 0);
     for (vtkIdType i = 0; i < numPoints; ++i)
     {
-      if (corners->GetComponent(i, 0) != 0.0)
+      if (corners->GetComponent(i, 0) != 0.0 && !tagged[vertexOf[i]])
       {
+        tagged[vertexOf[i]] = 1;
         ids.push_back(i);
       }
     }
@@ -84,7 +146,7 @@ void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
       out << "t corner " << ids.size() << '/' << ids.size() << "/0";
       for (vtkIdType i : ids)
       {
-        out << ' ' << i;
+        out << ' ' << vertexOf[i];
       }
       for (vtkIdType i : ids)
       {

@@ -2,6 +2,7 @@
 // survive a round trip, and broken files give errors naming the line.
 #include "vtkSubDOBJReader.h"
 #include "vtkSubDOBJWriter.h"
+#include "vtkSubDCatmullClarkFilter.h"
 
 #include "SubDFilterTestSupport.h"
 #include "SubDTempFiles.h"
@@ -12,7 +13,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <fstream>
+#include <set>
 #include <string>
 
 namespace
@@ -137,6 +140,10 @@ TEST(OBJ, BrokenFilesNameTheProblem)
     { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt hole 1/0/0 4\n", "hole tag names face 4" },
     { "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nt corner 1/1/0 7 2\n", "corner tag names vertex 7" },
     { "garbage\n", "no vertices" },
+    { "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/2\n", "face 0 uses texture coordinate 1" },
+    { "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2 3/1\n", "line 5: a face mixes corners with and without texture" },
+    { "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt nan 0\nf 1/1 2/1 3/1\n", "line 4: a texture coordinate needs 2 finite" },
+    { "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/-2 2/1 3/1\n", "line 5: '1/-2' has no valid texture coordinate" },
   };
   int k = 0;
   for (const auto& c : cases)
@@ -147,6 +154,86 @@ TEST(OBJ, BrokenFilesNameTheProblem)
     vtkSmartPointer<vtkPolyData> mesh = ReadOBJ(path, messages);
     EXPECT_NE(messages.Errors.find(c.second), std::string::npos) << c.second << " in: " << messages.Errors;
     EXPECT_EQ(mesh->GetNumberOfPoints(), 0);
+  }
+}
+
+// A cube whose six faces are texture islands of their own (24 `vt`): read, its points split
+// at the seams carry "TCoords"; subdivided, the surface is the untextured cube's and the
+// output is split at the same seams; written and read back, the file keeps 8 positions'
+// worth of surface and every corner's texture coordinate.
+TEST(OBJ, TextureSeamsSurviveSubdivisionAndRoundTrip)
+{
+  std::string text;
+  const char* positions[8] = { "0 0 0", "1 0 0", "1 1 0", "0 1 0", "0 0 1", "1 0 1", "1 1 1", "0 1 1" };
+  for (const char* p : positions)
+    text += std::string("v ") + p + "\n";
+  const int faces[6][4] = { { 1, 4, 3, 2 }, { 5, 6, 7, 8 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 }, { 3, 4, 8, 7 }, { 4, 1, 5, 8 } };
+  for (int f = 0; f < 6; ++f)
+    for (int k = 0; k < 4; ++k)
+      text += "vt " + std::to_string(f + (k == 1 || k == 2 ? 1 : 0)) + " " + std::to_string(k >= 2 ? 1 : 0) + "\n";
+  for (int f = 0; f < 6; ++f)
+  {
+    text += "f";
+    for (int k = 0; k < 4; ++k)
+      text += " " + std::to_string(faces[f][k]) + "/" + std::to_string(4 * f + k + 1) + "/1";
+    text += "\n";
+  }
+  const std::string path = TempPath("islands.obj"), out = TempPath("islands-cc.obj");
+  std::ofstream(path) << text;
+  subdtest::Messages messages;
+  vtkSmartPointer<vtkPolyData> mesh = ReadOBJ(path, messages);
+  EXPECT_EQ(messages.Errors, "");
+  ASSERT_EQ(mesh->GetNumberOfPoints(), 24); // a point per (vertex, texture coordinate)
+  ASSERT_NE(mesh->GetPointData()->GetTCoords(), nullptr);
+
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(mesh);
+  filter->SetNumberOfSubdivisions(2);
+  filter->Update();
+  vtkPolyData* refined = filter->GetOutput();
+  ASSERT_EQ(refined->GetNumberOfPolys(), 96);
+  vtkDataArray* tcoords = refined->GetPointData()->GetTCoords();
+  ASSERT_NE(tcoords, nullptr);
+  // Each island keeps its own coordinates: 6 islands of 5 x 5 points.
+  EXPECT_EQ(refined->GetNumberOfPoints(), 6 * 25);
+  vtkNew<vtkSubDCatmullClarkFilter> plain; // the same cube without its `vt`
+  const std::string plainPath = TempPath("plain.obj");
+  std::ofstream(plainPath) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+                              "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
+  plain->SetInputData(ReadOBJ(plainPath, messages));
+  plain->SetNumberOfSubdivisions(2);
+  plain->Update();
+  std::set<std::array<double, 3>> a, b;
+  for (vtkIdType p = 0; p < refined->GetNumberOfPoints(); ++p)
+    a.insert({ refined->GetPoint(p)[0], refined->GetPoint(p)[1], refined->GetPoint(p)[2] });
+  for (vtkIdType p = 0; p < plain->GetOutput()->GetNumberOfPoints(); ++p)
+    b.insert({ plain->GetOutput()->GetPoint(p)[0], plain->GetOutput()->GetPoint(p)[1], plain->GetOutput()->GetPoint(p)[2] });
+  EXPECT_EQ(a, b); // the surface is the cube's, no crease along the seams
+
+  vtkNew<vtkSubDOBJWriter> writer;
+  writer->SetInputData(refined);
+  writer->SetFileName(out.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+  vtkSmartPointer<vtkPolyData> back = ReadOBJ(out, messages);
+  // (Points of two islands with the same position and coordinates read back as one.)
+  ASSERT_EQ(back->GetNumberOfPolys(), refined->GetNumberOfPolys());
+  vtkDataArray* backCoords = back->GetPointData()->GetTCoords();
+  ASSERT_NE(backCoords, nullptr);
+  for (vtkIdType c = 0; c < refined->GetNumberOfPolys(); ++c)
+  {
+    vtkIdType n1, n2;
+    const vtkIdType *p1, *p2;
+    refined->GetPolys()->GetCellAtId(c, n1, p1);
+    back->GetPolys()->GetCellAtId(c, n2, p2);
+    ASSERT_EQ(n1, n2);
+    for (vtkIdType k = 0; k < n1; ++k)
+    {
+      for (int d = 0; d < 3; ++d)
+        EXPECT_EQ(refined->GetPoint(p1[k])[d], back->GetPoint(p2[k])[d]) << "face " << c;
+      for (int d = 0; d < 2; ++d)
+        EXPECT_EQ(static_cast<float>(tcoords->GetComponent(p1[k], d)), static_cast<float>(backCoords->GetComponent(p2[k], d)))
+          << "face " << c << " corner " << k;
+    }
   }
 }
 }
