@@ -27,9 +27,9 @@ bool SameTuple(vtkDataArray* array, vtkIdType p, vtkIdType q)
   return true;
 }
 
-// Per input point, the first point at the same position (itself if none comes before it);
-// with `byData`, only among points whose point data are equal too.
-std::vector<subd::Index> FirstAtSamePosition(vtkPolyData* input, bool byData, bool& anyWelded)
+// Per input point, the first point at the same position (`first`, itself if none comes
+// before it) and the first at the same position with the same point data (`firstWithData`).
+void FirstAtSamePosition(vtkPolyData* input, std::vector<subd::Index>& first, std::vector<subd::Index>& firstWithData)
 {
   const vtkIdType n = input->GetNumberOfPoints();
   std::vector<double> xyz(3 * static_cast<size_t>(n));
@@ -56,10 +56,10 @@ std::vector<subd::Index> FirstAtSamePosition(vtkPolyData* input, bool byData, bo
     }
     return true;
   };
-  std::vector<subd::Index> first(static_cast<size_t>(n));
+  first.resize(static_cast<size_t>(n));
   std::iota(first.begin(), first.end(), 0);
-  anyWelded = false;
-  std::vector<subd::Index> kept; // the points of a run that others weld to
+  firstWithData = first;
+  std::vector<subd::Index> kept; // the points of a run that others with their data weld to
   for (size_t k = 0; k < order.size();)
   {
     const double* position = &xyz[3 * static_cast<size_t>(order[k])];
@@ -68,18 +68,16 @@ std::vector<subd::Index> FirstAtSamePosition(vtkPolyData* input, bool byData, bo
     {
       ++end;
     }
-    // The run holds one position, in increasing index. Compared by data, a point welds to
-    // the first kept one with its data (among a bounded number: never quadratic).
+    // The run holds one position, in increasing index. By data, a point goes to the first
+    // kept one with its data (among a bounded number: never quadratic).
     kept.assign(1, order[k]);
     for (size_t i = k + 1; i < end; ++i)
     {
-      const auto match = byData
-        ? std::find_if(kept.begin(), kept.end(), [&](subd::Index q) { return sameData(order[i], q); })
-        : kept.begin();
+      first[order[i]] = order[k];
+      const auto match = std::find_if(kept.begin(), kept.end(), [&](subd::Index q) { return sameData(order[i], q); });
       if (match != kept.end())
       {
-        first[order[i]] = *match;
-        anyWelded = true;
+        firstWithData[order[i]] = *match;
       }
       else if (kept.size() < 64)
       {
@@ -88,12 +86,12 @@ std::vector<subd::Index> FirstAtSamePosition(vtkPolyData* input, bool byData, bo
     }
     k = end;
   }
-  return first;
 }
 
 // Drops the faces (and their corners' values) that renaming made repeat a point they did
-// not repeat before; returns how many.
-subd::Index DropFacesRepeatedByWelding(subd::FaceScreening& screened, subd::IndexArray& valueOfCorner)
+// not repeat in `original`; returns how many.
+subd::Index DropFacesRepeatedByWelding(
+  subd::FaceScreening& screened, const subd::IndexArray& original, subd::IndexArray& valueOfCorner)
 {
   subd::Index dropped = 0;
   subd::IndexArray offsets{ 0 }, vertices, values, kept;
@@ -103,7 +101,7 @@ subd::Index DropFacesRepeatedByWelding(subd::FaceScreening& screened, subd::Inde
   {
     const subd::Index begin = screened.Offsets[f], n = screened.Offsets[f + 1] - begin;
     if (subd::HasRepeatedVertex(screened.Vertices.data() + begin, n, scratch) &&
-      !subd::HasRepeatedVertex(valueOfCorner.data() + begin, n, scratch))
+      !subd::HasRepeatedVertex(original.data() + begin, n, scratch))
     {
       ++dropped;
       continue;
@@ -141,8 +139,14 @@ vtkSubDSeams vtkSubDWeldCoincidentPoints(vtkPolyData* input, subd::FaceScreening
 {
   vtkSubDSeams seams;
   numDropped = 0;
+  std::vector<subd::Index> first, firstWithData;
+  FirstAtSamePosition(input, first, firstWithData);
+  const std::vector<subd::Index>& weldedTo = byData ? firstWithData : first;
   bool anyWelded = false;
-  const std::vector<subd::Index> first = FirstAtSamePosition(input, byData, anyWelded);
+  for (size_t p = 0; p < weldedTo.size() && !anyWelded; ++p)
+  {
+    anyWelded = weldedTo[p] != static_cast<subd::Index>(p);
+  }
   if (!anyWelded)
   {
     return seams;
@@ -154,24 +158,31 @@ vtkSubDSeams vtkSubDWeldCoincidentPoints(vtkPolyData* input, subd::FaceScreening
     bool differs = false;
     for (vtkIdType p = 0; array && !differs && p < input->GetNumberOfPoints(); ++p)
     {
-      differs = first[p] != p && !SameTuple(array, p, first[p]);
+      differs = weldedTo[p] != p && !SameTuple(array, p, weldedTo[p]);
     }
     if (differs)
     {
       seams.Arrays.push_back(a);
     }
   }
+  // A corner's value: the first point with its position and data, so that points split
+  // where their data agree (VTK's OBJ reader splits every corner) are no seam.
+  const subd::IndexArray original = screened.Vertices;
   subd::IndexArray valueOfCorner = screened.Vertices;
+  for (subd::Index& v : valueOfCorner)
+  {
+    v = firstWithData[v];
+  }
   for (subd::Index& v : screened.Vertices)
   {
-    v = first[v];
+    v = weldedTo[v];
   }
-  numDropped = DropFacesRepeatedByWelding(screened, valueOfCorner);
+  numDropped = DropFacesRepeatedByWelding(screened, original, valueOfCorner);
   if (seams.Any())
   {
     seams.ValueOfCorner = std::move(valueOfCorner);
   }
-  seams.WeldedTo = first;
+  seams.WeldedTo = weldedTo;
   return seams;
 }
 

@@ -5,8 +5,9 @@
 // points at one position one vertex again (the first of them), so that the surface is
 // subdivided whole. Each point-data array whose values differ between welded points is then
 // face-varying: its values are refined as a channel (SubDFaceVarying.h) whose values are the
-// input's points, so its seams are where the input was split, and the output is split there
-// again, each side with its own values; the other arrays stay vertex data.
+// input's points with distinct data, so its seams are where the input was split and the data
+// differ, and the output is split there again, each side with its own values; the other
+// arrays stay vertex data.
 #ifndef vtkSubDSeams_h
 #define vtkSubDSeams_h
 
@@ -24,8 +25,9 @@ class vtkPolyData;
 
 struct vtkSubDSeams
 {
-  /// Per screened face corner, the input point it named before welding (the channel's
-  /// value); empty when nothing was welded apart from equal data.
+  /// Per screened face corner, the channel's value: the first input point with the
+  /// position and data of the point the corner named (points split where their data agree
+  /// are no seam); empty when no welded points differ in their data.
   subd::IndexArray ValueOfCorner;
   /// The point-data arrays (by index in the input's point data) whose values differ across
   /// welded points.

@@ -3,6 +3,7 @@
 #include "vtkSubDOBJReader.h"
 #include "vtkSubDOBJWriter.h"
 #include "vtkSubDCatmullClarkFilter.h"
+#include "vtkOBJReader.h"
 
 #include "SubDFilterTestSupport.h"
 #include "SubDTempFiles.h"
@@ -170,7 +171,7 @@ TEST(OBJ, TextureSeamsSurviveSubdivisionAndRoundTrip)
   const int faces[6][4] = { { 1, 4, 3, 2 }, { 5, 6, 7, 8 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 }, { 3, 4, 8, 7 }, { 4, 1, 5, 8 } };
   for (int f = 0; f < 6; ++f)
     for (int k = 0; k < 4; ++k)
-      text += "vt " + std::to_string(f + (k == 1 || k == 2 ? 1 : 0)) + " " + std::to_string(k >= 2 ? 1 : 0) + "\n";
+      text += "vt " + std::to_string(2 * f + (k == 1 || k == 2 ? 1 : 0)) + " " + std::to_string(k >= 2 ? 1 : 0) + "\n";
   for (int f = 0; f < 6; ++f)
   {
     text += "f";
@@ -234,6 +235,62 @@ TEST(OBJ, TextureSeamsSurviveSubdivisionAndRoundTrip)
         EXPECT_EQ(static_cast<float>(tcoords->GetComponent(p1[k], d)), static_cast<float>(backCoords->GetComponent(p2[k], d)))
           << "face " << c << " corner " << k;
     }
+  }
+}
+
+// VTK's own OBJ reader splits every corner of a textured file into a point of its own: welded,
+// the filters give the same surface and texture coordinates as from SubD's reader, which
+// splits only at seams.
+TEST(OBJ, VTKsSplitReadingWeldsToTheSameResult)
+{
+  std::string text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
+  // A cross unwrap: the four sides in a strip (one seam where it closes), the caps on side 0.
+  const char* vt[] = { "0 0", "1 0", "2 0", "3 0", "4 0", "0 1", "1 1", "2 1", "3 1", "4 1", "0 2", "1 2", "0 -1",
+    "1 -1" };
+  for (const char* t : vt)
+    text += std::string("vt ") + t + "\n";
+  text += "f 1/1 2/2 6/7 5/6\nf 2/2 3/3 7/8 6/7\nf 3/3 4/4 8/9 7/8\nf 4/4 1/5 5/10 8/9\n" // sides
+          "f 5/6 6/7 7/12 8/11\nf 1/1 4/13 3/14 2/2\n";                                 // caps
+  const std::string path = TempPath("cross.obj");
+  std::ofstream(path) << text;
+  subdtest::Messages messages;
+  vtkSmartPointer<vtkPolyData> ours = ReadOBJ(path, messages);
+  vtkNew<vtkOBJReader> vtkReader;
+  vtkReader->SetFileName(path.c_str());
+  vtkReader->Update();
+  vtkPolyData* split = vtkReader->GetOutput();
+  ASSERT_GT(split->GetNumberOfPoints(), ours->GetNumberOfPoints());
+  ASSERT_NE(split->GetPointData()->GetTCoords(), nullptr);
+  // (Points with their texture coordinates, compared as sets.)
+  auto corners = [](vtkPolyData* input) {
+    vtkNew<vtkSubDCatmullClarkFilter> filter;
+    filter->SetInputData(input);
+    filter->SetNumberOfSubdivisions(2);
+    filter->Update();
+    vtkPolyData* out = filter->GetOutput();
+    vtkDataArray* tcoords = out->GetPointData()->GetTCoords();
+    std::set<std::array<double, 5>> set;
+    for (vtkIdType p = 0; tcoords && p < out->GetNumberOfPoints(); ++p)
+    {
+      const double* x = out->GetPoint(p);
+      set.insert({ x[0], x[1], x[2], tcoords->GetComponent(p, 0), tcoords->GetComponent(p, 1) });
+    }
+    EXPECT_EQ(out->GetNumberOfPolys(), 96);
+    return set;
+  };
+  const std::set<std::array<double, 5>> fromOurs = corners(ours), fromVTK = corners(split);
+  EXPECT_FALSE(fromOurs.empty());
+  // (vtkOBJReader's points are floats: the two agree to float precision.)
+  EXPECT_EQ(fromOurs.size(), fromVTK.size());
+  for (const auto& ours : fromOurs)
+  {
+    const bool found = std::any_of(fromVTK.begin(), fromVTK.end(), [&ours](const std::array<double, 5>& theirs) {
+      for (int d = 0; d < 5; ++d)
+        if (std::abs(ours[d] - theirs[d]) > 1e-6)
+          return false;
+      return true;
+    });
+    EXPECT_TRUE(found) << ::testing::PrintToString(ours) << " is not in vtkOBJReader's result";
   }
 }
 }
