@@ -6,6 +6,9 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
+#include "vtkIdList.h"
+#include "vtkSMPTools.h"
+#include "vtkSubDPointDataInterpolation.h"
 #include "vtkTypeInt32Array.h"
 
 #include <algorithm>
@@ -212,37 +215,39 @@ bool vtkSubDRefineSeams(const subd::Scheme& scheme, const subd::Level& base, con
 
 namespace
 {
-// The split output's points and faces: a point per channel vertex that a face uses, in the
-// order the faces use them, then the unsplit points no face uses (ends of lines passed
-// through). `newOfOld` receives, per unsplit point, one of its new points.
+// The split output's points and faces: a point per channel vertex that a face uses (in the
+// channel's order), then the unsplit points no face uses (ends of lines passed through);
+// the faces keep their sizes. `newOfOld` receives, per unsplit point, one of its new points.
 void MakeSplitTopology(vtkPolyData* output, const std::function<subd::Index(vtkIdType)>& finestFace,
   vtkSubDSeamChannel& channel, std::vector<vtkIdType>& newOfOld)
 {
   const subd::MeshTopology& values = channel.Hierarchy.Finest.Topology;
-  std::vector<vtkIdType> newOfChannel(static_cast<size_t>(values.GetNumVertices()), -1);
-  newOfOld.assign(static_cast<size_t>(output->GetNumberOfPoints()), -1);
   vtkCellArray* polys = output->GetPolys();
-  vtkNew<vtkTypeInt32Array> offsets, connectivity;
-  offsets->InsertNextValue(0);
+  const vtkIdType numFaces = polys->GetNumberOfCells();
+  // The unsplit point of each channel vertex a face uses (-1: none uses it).
+  std::vector<vtkIdType> sourceOf(static_cast<size_t>(values.GetNumVertices()), -1);
   vtkIdType n;
   const vtkIdType* corners;
-  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  for (vtkIdType c = 0; c < numFaces; ++c)
   {
     polys->GetCellAtId(c, n, corners);
     const subd::IndexSpan channelCorners = values.GetFaceVertices(finestFace(c));
     for (vtkIdType k = 0; k < n; ++k)
     {
-      vtkIdType& point = newOfChannel[channelCorners[k]];
-      if (point < 0)
-      {
-        point = static_cast<vtkIdType>(channel.SourcePoint.size());
-        channel.SourcePoint.push_back(corners[k]);
-        channel.ChannelVertex.push_back(channelCorners[k]);
-      }
-      newOfOld[corners[k]] = newOfOld[corners[k]] < 0 ? point : newOfOld[corners[k]];
-      connectivity->InsertNextValue(static_cast<vtkTypeInt32>(point));
+      sourceOf[channelCorners[k]] = corners[k];
     }
-    offsets->InsertNextValue(static_cast<vtkTypeInt32>(connectivity->GetNumberOfTuples()));
+  }
+  std::vector<vtkIdType> newOfChannel(sourceOf.size(), -1);
+  newOfOld.assign(static_cast<size_t>(output->GetNumberOfPoints()), -1);
+  for (size_t v = 0; v < sourceOf.size(); ++v)
+  {
+    if (sourceOf[v] >= 0)
+    {
+      newOfChannel[v] = static_cast<vtkIdType>(channel.SourcePoint.size());
+      newOfOld[sourceOf[v]] = newOfChannel[v];
+      channel.SourcePoint.push_back(sourceOf[v]);
+      channel.ChannelVertex.push_back(static_cast<subd::Index>(v));
+    }
   }
   for (vtkIdType p = 0; p < output->GetNumberOfPoints(); ++p)
   {
@@ -253,6 +258,24 @@ void MakeSplitTopology(vtkPolyData* output, const std::function<subd::Index(vtkI
       channel.ChannelVertex.push_back(-1);
     }
   }
+  vtkNew<vtkTypeInt32Array> offsets, connectivity;
+  offsets->SetNumberOfTuples(numFaces + 1);
+  offsets->SetValue(0, 0);
+  for (vtkIdType c = 0; c < numFaces; ++c)
+  {
+    offsets->SetValue(c + 1, offsets->GetValue(c) + static_cast<vtkTypeInt32>(polys->GetCellSize(c)));
+  }
+  connectivity->SetNumberOfTuples(offsets->GetValue(numFaces));
+  vtkSMPTools::For(0, numFaces, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType c = begin; c < end; ++c)
+    {
+      vtkTypeInt32* out = connectivity->GetPointer(offsets->GetValue(c));
+      for (subd::Index v : values.GetFaceVertices(finestFace(c)))
+      {
+        *out++ = static_cast<vtkTypeInt32>(newOfChannel[v]);
+      }
+    }
+  });
   channel.Faces = vtkSmartPointer<vtkCellArray>::New();
   channel.Faces->SetData(offsets, connectivity);
 }
@@ -267,8 +290,35 @@ std::vector<double> RefinedValues(vtkDataArray* array, const vtkSubDSeamChannel&
     array->GetTuple(channel.UserValue[u], &base[u * components]);
   }
   std::vector<double> finest(static_cast<size_t>(channel.Hierarchy.GetNumFinestPoints()) * components);
-  channel.Hierarchy.Evaluate(base.data(), components, finest.data());
+  channel.Hierarchy.Evaluate(base.data(), components, finest.data(), &vtkSubDPointDataInterpolation::SMPFor);
   return finest;
+}
+
+// The face-varying array of `source` at the split points: the channel's values where a face
+// uses the point, 0 elsewhere (a point of a line passed through).
+vtkSmartPointer<vtkDataArray> FaceVaryingArray(vtkDataArray* source, bool normals, const vtkSubDSeamChannel& channel)
+{
+  const int components = source->GetNumberOfComponents();
+  const std::vector<double> values = RefinedValues(source, channel);
+  vtkSmartPointer<vtkDataArray> target = vtkSmartPointer<vtkDataArray>::Take(source->NewInstance());
+  target->SetName(source->GetName());
+  target->SetNumberOfComponents(components);
+  const vtkIdType numPoints = static_cast<vtkIdType>(channel.SourcePoint.size());
+  target->SetNumberOfTuples(numPoints);
+  vtkSMPTools::For(0, numPoints, 4096, [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType p = begin; p < end; ++p)
+    {
+      const subd::Index v = channel.ChannelVertex[p];
+      const double* value = v < 0 ? nullptr : &values[static_cast<size_t>(v) * components];
+      const double length =
+        value && normals ? std::sqrt(value[0] * value[0] + value[1] * value[1] + value[2] * value[2]) : 1.0;
+      for (int c = 0; c < components; ++c)
+      {
+        target->SetComponent(p, c, value ? StoredValue(target, length > 0.0 ? value[c] / length : value[c]) : 0.0);
+      }
+    }
+  });
+  return target;
 }
 }
 
@@ -288,41 +338,44 @@ void vtkSubDSplitAtSeams(vtkPolyData* input, const vtkSubDSeams& seams,
       newOfOld[channel.SourcePoint[p]] = static_cast<vtkIdType>(p);
     }
   }
-  const vtkIdType numPoints = static_cast<vtkIdType>(channel.SourcePoint.size());
+  // Every array of the unsplit output, gathered at the split points' sources.
+  vtkNew<vtkIdList> sources;
+  sources->SetNumberOfIds(static_cast<vtkIdType>(channel.SourcePoint.size()));
+  std::copy(channel.SourcePoint.begin(), channel.SourcePoint.end(), sources->GetPointer(0));
+  auto gather = [&sources](vtkDataArray* array) {
+    vtkSmartPointer<vtkDataArray> split = vtkSmartPointer<vtkDataArray>::Take(array->NewInstance());
+    split->SetName(array->GetName());
+    split->SetNumberOfComponents(array->GetNumberOfComponents());
+    split->SetNumberOfTuples(sources->GetNumberOfIds());
+    array->GetTuples(sources, split);
+    return split;
+  };
   vtkNew<vtkPoints> points;
-  points->SetDataType(output->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(numPoints);
+  points->SetData(gather(output->GetPoints()->GetData()));
   vtkPointData* unsplit = output->GetPointData();
   vtkNew<vtkPointData> split;
-  split->CopyAllocate(unsplit, numPoints);
-  for (vtkIdType p = 0; p < numPoints; ++p)
+  for (int a = 0; a < unsplit->GetNumberOfArrays(); ++a)
   {
-    points->SetPoint(p, output->GetPoint(channel.SourcePoint[p]));
-    split->CopyData(unsplit, channel.SourcePoint[p], p);
+    if (vtkDataArray* array = unsplit->GetArray(a))
+    {
+      split->AddArray(gather(array));
+      const int attribute = unsplit->IsArrayAnAttribute(a);
+      if (attribute >= 0)
+      {
+        split->SetActiveAttribute(split->GetNumberOfArrays() - 1, attribute);
+      }
+    }
   }
+  vtkPointData* inPD = input->GetPointData();
   for (int a : seams.Arrays)
   {
-    vtkDataArray* source = input->GetPointData()->GetArray(a);
-    vtkDataArray* target = source ? split->GetArray(source->GetName()) : nullptr;
-    if (!target)
+    if (vtkDataArray* source = inPD->GetArray(a))
     {
-      continue;
-    }
-    const int components = source->GetNumberOfComponents();
-    const std::vector<double> values = RefinedValues(source, channel);
-    const bool normals = source == input->GetPointData()->GetNormals() && components == 3;
-    for (vtkIdType p = 0; p < numPoints; ++p)
-    {
-      const subd::Index v = channel.ChannelVertex[p];
-      if (v < 0)
+      const int attribute = inPD->IsArrayAnAttribute(a);
+      split->AddArray(FaceVaryingArray(source, attribute == vtkDataSetAttributes::NORMALS, channel));
+      if (attribute >= 0)
       {
-        continue;
-      }
-      const double* value = &values[static_cast<size_t>(v) * components];
-      const double length = normals ? std::sqrt(value[0] * value[0] + value[1] * value[1] + value[2] * value[2]) : 1.0;
-      for (int c = 0; c < components; ++c)
-      {
-        target->SetComponent(p, c, StoredValue(target, length > 0.0 ? value[c] / length : value[c]));
+        split->SetActiveAttribute(split->GetNumberOfArrays() - 1, attribute);
       }
     }
   }

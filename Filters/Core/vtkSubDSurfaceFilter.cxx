@@ -458,6 +458,19 @@ bool vtkSubDSurfaceFilter::ScreenInputFaces(vtkPolyData* input, vtkInputMesh& me
   {
     subd::Index dropped = 0;
     mesh.Seams = vtkSubDWeldCoincidentPoints(input, mesh.Screened, !this->RefinesFaceVaryingData(), dropped);
+    // Arrays the output does not carry on (corner sharpness is decayed per vertex, ghost
+    // flags are the input's, normals replaced by the limit's) need no channel.
+    vtkPointData* inPD = input->GetPointData();
+    vtkDataArray* cornerSharpness = vtkSubDNamedArray(inPD, this->GetFeatureArrayNames().CornerSharpness);
+    std::vector<int>& arrays = mesh.Seams.Arrays;
+    arrays.erase(std::remove_if(arrays.begin(), arrays.end(), [&](int a) {
+      return inPD->GetArray(a) == cornerSharpness || inPD->GetArray(a) == input->GetPointGhostArray() ||
+        this->IsReplacedByLimitNormals(inPD, a);
+    }), arrays.end());
+    if (arrays.empty())
+    {
+      mesh.Seams.ValueOfCorner.clear();
+    }
     if (dropped > 0)
     {
       vtkWarningMacro(<< "Ignored " << dropped << " polygon(s) whose points coincide once welded (a point at two "
@@ -836,6 +849,14 @@ std::function<bool(double)> vtkSubDSurfaceFilter::EvaluationProgress(vtkPolyData
   };
 }
 
+bool vtkSubDSurfaceFilter::IsReplacedByLimitNormals(vtkPointData* inPD, int a) const
+{
+  vtkDataArray* array = inPD->GetArray(a);
+  return this->ComputeLimitNormals && array &&
+    (inPD->IsArrayAnAttribute(a) == vtkDataSetAttributes::NORMALS ||
+      (array->GetName() && std::string(array->GetName()) == "Normals"));
+}
+
 bool vtkSubDSurfaceFilter::InterpolatePointData(vtkPolyData* input, vtkSubDPointDataInterpolation& interpolation,
   vtkPolyData* output, std::vector<std::pair<vtkDataArray*, vtkDataArray*>>& interpolated)
 {
@@ -866,12 +887,12 @@ bool vtkSubDSurfaceFilter::InterpolatePointData(vtkPolyData* input, vtkSubDPoint
                       << " points; it is not passed on.");
       continue;
     }
-    const int attribute = inPD->IsArrayAnAttribute(a);
-    if (this->ComputeLimitNormals &&
-      (attribute == vtkDataSetAttributes::NORMALS || (array->GetName() && std::string(array->GetName()) == "Normals")))
+    if (this->IsReplacedByLimitNormals(inPD, a) ||
+      std::find(cache.Seams.Arrays.begin(), cache.Seams.Arrays.end(), a) != cache.Seams.Arrays.end())
     {
-      continue; // replaced by the limit normals
+      continue; // replaced by the limit normals, or face-varying (vtkSubDSplitAtSeams)
     }
+    const int attribute = inPD->IsArrayAnAttribute(a);
     vtkSmartPointer<vtkDataArray> out = interpolation.Interpolate(
       array, array->GetDataType(), attribute == vtkDataSetAttributes::NORMALS, this->EvaluationProgress(input, a + 1));
     if (!out)

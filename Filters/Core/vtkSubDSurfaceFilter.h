@@ -442,6 +442,8 @@ private:
   /// Output mesh: points, point data, sharp features, faces, cell data.
   Status WriteOutput(vtkPolyData* input, const vtkInputMesh& mesh, bool reuse, vtkPolyData* output);
   Status WritePoints(vtkPolyData* input, vtkSubDPointDataInterpolation& interpolation, vtkPolyData* output);
+  /// Whether point-data array `a` is left out for the limit normals (ComputeLimitNormals).
+  bool IsReplacedByLimitNormals(vtkPointData* inPD, int a) const;
   bool InterpolatePointData(vtkPolyData* input, vtkSubDPointDataInterpolation& interpolation, vtkPolyData* output,
     std::vector<std::pair<vtkDataArray*, vtkDataArray*>>& interpolated);
   void AddCellData(
