@@ -190,35 +190,19 @@ std::string ParseTag(std::istringstream& in, OBJContents& contents)
   return "";
 }
 
-// Reads `v x y z` (the words after the keyword) into `contents`; a problem, or "".
-std::string ParseVertex(LineWords& words, OBJContents& contents)
+// Appends the next `count` words, finite numbers, to `values`; `problem` if they are not.
+std::string ParseNumbers(LineWords& words, int count, std::vector<double>& values, const char* problem)
 {
   const char *first, *last;
-  double xyz[3];
-  for (double& c : xyz)
+  double number[3];
+  for (int k = 0; k < count; ++k)
   {
-    if (!words.Next(first, last) || !ParseFiniteDouble(first, last, c))
+    if (!words.Next(first, last) || !ParseFiniteDouble(first, last, number[k]))
     {
-      return "a vertex needs 3 finite coordinates";
+      return problem;
     }
   }
-  contents.Points.insert(contents.Points.end(), xyz, xyz + 3);
-  return "";
-}
-
-// Reads `vt u v [w]` into `contents` (w is dropped); a problem, or "".
-std::string ParseTexCoord(LineWords& words, OBJContents& contents)
-{
-  const char *first, *last;
-  double uv[2];
-  for (double& c : uv)
-  {
-    if (!words.Next(first, last) || !ParseFiniteDouble(first, last, c))
-    {
-      return "a texture coordinate needs 2 finite numbers";
-    }
-  }
-  contents.TexCoords.insert(contents.TexCoords.end(), uv, uv + 2);
+  values.insert(values.end(), number, number + count);
   return "";
 }
 
@@ -299,11 +283,11 @@ std::string ParseLine(std::string& line, OBJContents& contents, std::vector<long
   }
   if (IsWord(keyword, keywordEnd, "v"))
   {
-    return ParseVertex(words, contents);
+    return ParseNumbers(words, 3, contents.Points, "a vertex needs 3 finite coordinates");
   }
-  if (IsWord(keyword, keywordEnd, "vt"))
+  if (IsWord(keyword, keywordEnd, "vt")) // (a third number, w, is dropped)
   {
-    return ParseTexCoord(words, contents);
+    return ParseNumbers(words, 2, contents.TexCoords, "a texture coordinate needs 2 finite numbers");
   }
   if (IsWord(keyword, keywordEnd, "f") || IsWord(keyword, keywordEnd, "l"))
   {
