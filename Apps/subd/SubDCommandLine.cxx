@@ -67,6 +67,30 @@ bool ParseSchemeList(const std::string& text, std::vector<std::string>& names, s
   return true;
 }
 
+bool ParseCreaseMethod(const std::string& text, int& method)
+{
+  if (text != "uniform" && text != "chaikin")
+  {
+    return false;
+  }
+  method = text == "chaikin" ? 1 : 0;
+  return true;
+}
+
+// A face-varying interpolation mode by its name (vtkSubDSurfaceFilter's).
+bool ParseFaceVaryingInterpolation(const std::string& text, int& mode)
+{
+  for (int m = vtkSubDSurfaceFilter::FVAR_LINEAR_NONE; m <= vtkSubDSurfaceFilter::FVAR_LINEAR_ALL; ++m)
+  {
+    if (text == vtkSubDSurfaceFilter::GetFaceVaryingInterpolationName(m))
+    {
+      mode = m;
+      return true;
+    }
+  }
+  return false;
+}
+
 bool ParseBoundary(const std::string& text, int& rule)
 {
   if (text == "none")
@@ -218,6 +242,42 @@ std::string UsageText(Program program)
   return out.str();
 }
 
+namespace
+{
+// The options without a value, each setting one thing (and recorded as a surface or curve
+// option where CheckCombinations needs to know); false for any other argument.
+bool ParseSwitch(const std::string& arg, CommandLine& cmd)
+{
+  using Set = void (*)(CommandLine&);
+  static const std::pair<const char*, Set> switches[] = {
+    { "--limit", [](CommandLine& c) { c.Options.ProjectToLimit = true; } },
+    { "--normals", [](CommandLine& c) { c.Options.LimitNormals = true; c.SurfaceOptions.push_back("--normals"); } },
+    { "--curvature",
+      [](CommandLine& c) { c.Options.LimitCurvature = true; c.SurfaceOptions.push_back("--curvature"); } },
+    { "--collapse-repeated-corners",
+      [](CommandLine& c) {
+        c.Options.CollapseRepeatedCorners = true;
+        c.SurfaceOptions.push_back("--collapse-repeated-corners");
+      } },
+    { "--no-weld", [](CommandLine& c) { c.Options.Weld = false; c.SurfaceOptions.push_back("--no-weld"); } },
+    { "--tangents", [](CommandLine& c) { c.Options.Tangents = true; c.CurveOptions.push_back("--tangents"); } },
+    { "--closed", [](CommandLine& c) { c.Options.Closed = true; c.CurveOptions.push_back("--closed"); } },
+    { "--interpolate", [](CommandLine& c) { c.Interpolate = true; } },
+    { "--compress", [](CommandLine& c) { c.Compress = true; } },
+    { "--no-cage", [](CommandLine& c) { c.Cage = false; } },
+  };
+  for (const auto& option : switches)
+  {
+    if (arg == option.first)
+    {
+      option.second(cmd);
+      return true;
+    }
+  }
+  return false;
+}
+}
+
 bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& error, Program program)
 {
   cmd.Tool = program;
@@ -271,51 +331,9 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
         return false;
       }
     }
-    else if (arg == "--limit")
+    else if (ParseSwitch(arg, cmd))
     {
-      cmd.Options.ProjectToLimit = true;
-    }
-    else if (arg == "--normals")
-    {
-      cmd.Options.LimitNormals = true;
-      cmd.SurfaceOptions.push_back(arg);
-    }
-    else if (arg == "--curvature")
-    {
-      cmd.Options.LimitCurvature = true;
-      cmd.SurfaceOptions.push_back(arg);
-    }
-    else if (arg == "--collapse-repeated-corners")
-    {
-      cmd.Options.CollapseRepeatedCorners = true;
-      cmd.SurfaceOptions.push_back(arg);
-    }
-    else if (arg == "--no-weld")
-    {
-      cmd.Options.Weld = false;
-      cmd.SurfaceOptions.push_back(arg);
-    }
-    else if (arg == "--tangents")
-    {
-      cmd.Options.Tangents = true;
-      cmd.CurveOptions.push_back(arg);
-    }
-    else if (arg == "--closed")
-    {
-      cmd.Options.Closed = true;
-      cmd.CurveOptions.push_back(arg);
-    }
-    else if (arg == "--interpolate")
-    {
-      cmd.Interpolate = true;
-    }
-    else if (arg == "--compress")
-    {
-      cmd.Compress = true;
-    }
-    else if (arg == "--no-cage")
-    {
-      cmd.Cage = false;
+      continue;
     }
     else if (!arg.empty() && arg[0] == '-')
     {
@@ -488,6 +506,15 @@ Parsed ParseSchemeOption(ArgumentReader& arguments, CommandLine& cmd, std::strin
     return Parsed::Failed;
   };
   std::string text;
+  // A surface option naming one of a few settings.
+  auto named = [&](bool (*parse)(const std::string&, int&), int& setting, const char* wants) {
+    cmd.SurfaceOptions.push_back(arg);
+    if (!value(text))
+    {
+      return Parsed::Failed;
+    }
+    return parse(text, setting) ? Parsed::Done : fail(arg + " wants " + wants + ", not '" + text + "'");
+  };
   if (arg == "--scheme")
   {
     if (!value(cmd.Scheme))
@@ -516,15 +543,7 @@ Parsed ParseSchemeOption(ArgumentReader& arguments, CommandLine& cmd, std::strin
   }
   else if (arg == "--boundary")
   {
-    cmd.SurfaceOptions.push_back(arg);
-    if (!value(text))
-    {
-      return Parsed::Failed;
-    }
-    if (!ParseBoundary(text, cmd.Options.BoundaryRule))
-    {
-      return fail("--boundary wants none, edge-only or edge-and-corner, not '" + text + "'");
-    }
+    return named(ParseBoundary, cmd.Options.BoundaryRule, "none, edge-only or edge-and-corner");
   }
   else if (arg == "--tension")
   {
@@ -540,35 +559,12 @@ Parsed ParseSchemeOption(ArgumentReader& arguments, CommandLine& cmd, std::strin
   }
   else if (arg == "--crease-method")
   {
-    cmd.SurfaceOptions.push_back(arg);
-    if (!value(text))
-    {
-      return Parsed::Failed;
-    }
-    if (text != "uniform" && text != "chaikin")
-    {
-      return fail("--crease-method wants uniform or chaikin, not '" + text + "'");
-    }
-    cmd.Options.CreaseMethod = text == "chaikin" ? 1 : 0;
+    return named(ParseCreaseMethod, cmd.Options.CreaseMethod, "uniform or chaikin");
   }
   else if (arg == "--fvar-interpolation")
   {
-    cmd.SurfaceOptions.push_back(arg);
-    if (!value(text))
-    {
-      return Parsed::Failed;
-    }
-    int mode = 0;
-    while (mode <= 5 && text != vtkSubDSurfaceFilter::GetFaceVaryingInterpolationName(mode))
-    {
-      ++mode;
-    }
-    if (mode > 5)
-    {
-      return fail("--fvar-interpolation wants none, corners-only, corners-plus1, corners-plus2, boundaries or all, "
-                  "not '" + text + "'");
-    }
-    cmd.Options.FaceVaryingInterpolation = mode;
+    return named(ParseFaceVaryingInterpolation, cmd.Options.FaceVaryingInterpolation,
+      "none, corners-only, corners-plus1, corners-plus2, boundaries or all");
   }
   else if (arg == "--feature-angle")
   {

@@ -37,6 +37,66 @@ std::vector<vtkIdType> NumberDistinct(vtkDataArray* array, std::vector<std::vect
   }
   return number;
 }
+
+// The sharp features as OpenSubdiv's tags, naming the `v` of each point (`vertexOf`).
+void WriteSharpFeatureTags(vtkPolyData* input, const std::vector<vtkIdType>& vertexOf,
+  const std::vector<vtkIdType>& holeFaces, vtkSubDBufferedOutput& out)
+{
+  const vtkIdType numPoints = input->GetNumberOfPoints();
+  vtkIdType n;
+  const vtkIdType* pts;
+  vtkDataArray* sharpness = input->GetCellData()->GetArray("Sharpness");
+  vtkIdType cell = input->GetNumberOfVerts();
+  vtkCellArray* lines = input->GetLines();
+  for (lines->InitTraversal(); lines->GetNextCell(n, pts); ++cell)
+  {
+    if (n < 2)
+    {
+      continue;
+    }
+    out << "t crease " << n << "/1/0";
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      out << ' ' << vertexOf[pts[k]];
+    }
+    out << ' ' << (sharpness ? sharpness->GetComponent(cell, 0) : 10.0) << '\n';
+  }
+  if (vtkDataArray* corners = input->GetPointData()->GetArray("CornerSharpness"))
+  {
+    std::vector<vtkIdType> ids; // points, one per vertex
+    std::vector<char> tagged(static_cast<size_t>(numPoints), 0);
+    for (vtkIdType i = 0; i < numPoints; ++i)
+    {
+      if (corners->GetComponent(i, 0) != 0.0 && !tagged[vertexOf[i]])
+      {
+        tagged[vertexOf[i]] = 1;
+        ids.push_back(i);
+      }
+    }
+    if (!ids.empty())
+    {
+      out << "t corner " << ids.size() << '/' << ids.size() << "/0";
+      for (vtkIdType i : ids)
+      {
+        out << ' ' << vertexOf[i];
+      }
+      for (vtkIdType i : ids)
+      {
+        out << ' ' << corners->GetComponent(i, 0);
+      }
+      out << '\n';
+    }
+  }
+  if (!holeFaces.empty())
+  {
+    out << "t hole " << holeFaces.size() << "/0/0";
+    for (vtkIdType f : holeFaces)
+    {
+      out << ' ' << f;
+    }
+    out << '\n';
+  }
+}
 }
 
 void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
@@ -110,60 +170,7 @@ void vtkSubDOBJWriter::WriteFile(vtkPolyData* input, std::ostream& file)
     out << '\n';
   });
 
-  // Sharp features.
-  vtkIdType n;
-  const vtkIdType* pts;
-  vtkDataArray* sharpness = input->GetCellData()->GetArray("Sharpness");
-  vtkIdType cell = input->GetNumberOfVerts();
-  vtkCellArray* lines = input->GetLines();
-  for (lines->InitTraversal(); lines->GetNextCell(n, pts); ++cell)
-  {
-    if (n < 2)
-    {
-      continue;
-    }
-    out << "t crease " << n << "/1/0";
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      out << ' ' << vertexOf[pts[k]];
-    }
-    out << ' ' << (sharpness ? sharpness->GetComponent(cell, 0) : 10.0) << '\n';
-  }
-  if (vtkDataArray* corners = input->GetPointData()->GetArray("CornerSharpness"))
-  {
-    std::vector<vtkIdType> ids; // points, one per vertex
-    std::vector<char> tagged(static_cast<size_t>(numPoints), 0);
-    for (vtkIdType i = 0; i < numPoints; ++i)
-    {
-      if (corners->GetComponent(i, 0) != 0.0 && !tagged[vertexOf[i]])
-      {
-        tagged[vertexOf[i]] = 1;
-        ids.push_back(i);
-      }
-    }
-    if (!ids.empty())
-    {
-      out << "t corner " << ids.size() << '/' << ids.size() << "/0";
-      for (vtkIdType i : ids)
-      {
-        out << ' ' << vertexOf[i];
-      }
-      for (vtkIdType i : ids)
-      {
-        out << ' ' << corners->GetComponent(i, 0);
-      }
-      out << '\n';
-    }
-  }
-  if (!holeFaces.empty())
-  {
-    out << "t hole " << holeFaces.size() << "/0/0";
-    for (vtkIdType f : holeFaces)
-    {
-      out << ' ' << f;
-    }
-    out << '\n';
-  }
+  WriteSharpFeatureTags(input, vertexOf, holeFaces, out);
 }
 
 void vtkSubDOBJWriter::PrintSelf(ostream& os, vtkIndent indent)
