@@ -141,7 +141,7 @@ const OptionUse OptionUses[] = {
   { "--crease-method", Use::Both, nullptr }, { "--feature-angle", Use::Both, nullptr },
   { "--limit", Use::Both, nullptr }, { "--normals", Use::Both, nullptr }, { "--curvature", Use::Both, nullptr },
   { "--collapse-repeated-corners", Use::Both, nullptr }, { "--no-weld", Use::Both, nullptr },
-  { "--fvar-interpolation", Use::Both, nullptr },
+  { "--fvar-interpolation", Use::Both, nullptr }, { "--smooth-triangles", Use::Both, nullptr },
   { "--builtin", Use::Both, nullptr }, { "-o", Use::Both, nullptr }, { "--output", Use::Both, nullptr },
   { "--compress", Use::Both, nullptr }, { "--threads", Use::MpiOnly, nullptr },
   { "--image", Use::SubdOnly, PictureReason }, { "--compare", Use::SubdOnly, PictureReason },
@@ -208,6 +208,7 @@ std::string UsageText(Program program)
   out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
          "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--normals]\n"
          "            [--curvature] [--collapse-repeated-corners] [--no-weld] [--fvar-interpolation MODE]\n"
+         "            [--smooth-triangles]\n"
          "            [--tangents] [--closed] [--interpolate]\n"
          "            [--output FILE] [--compress]\n"
          "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
@@ -260,6 +261,8 @@ bool ParseSwitch(const std::string& arg, CommandLine& cmd)
         c.SurfaceOptions.push_back("--collapse-repeated-corners");
       } },
     { "--no-weld", [](CommandLine& c) { c.Options.Weld = false; c.SurfaceOptions.push_back("--no-weld"); } },
+    { "--smooth-triangles",
+      [](CommandLine& c) { c.Options.SmoothTriangles = true; c.SurfaceOptions.push_back("--smooth-triangles"); } },
     { "--tangents", [](CommandLine& c) { c.Options.Tangents = true; c.CurveOptions.push_back("--tangents"); } },
     { "--closed", [](CommandLine& c) { c.Options.Closed = true; c.CurveOptions.push_back("--closed"); } },
     { "--interpolate", [](CommandLine& c) { c.Interpolate = true; } },
@@ -386,6 +389,8 @@ std::string SchemeOptionsHelp(Program program)
          "                     how face-varying data are interpolated, OpenSubdiv's and USD's modes\n"
          "                     (default corners-plus1): none, corners-only, corners-plus1,\n"
          "                     corners-plus2, boundaries, all (catmull-clark, loop, linear)\n"
+         "  --smooth-triangles catmull-clark: OpenSubdiv's smooth triangle rule (rounder over the\n"
+         "                     input's triangles)\n"
          "  --limit            move the output points (and point data) to the limit surface\n"
          "                     (catmull-clark and loop: OpenSubdiv's limit masks; sqrt3, doo-sabin,\n"
          "                     midpoint: their closed-form limit points; linear and butterfly\n"
@@ -456,7 +461,7 @@ std::string MpiUsageText()
   out << "usage: mpirun -np N subd-mpi [INPUT] [--scheme NAME] [--levels N] [--boundary RULE]\n"
          "                     [--tension W] [--crease-method METHOD] [--feature-angle DEG]\n"
          "                     [--limit] [--normals] [--curvature] [--collapse-repeated-corners]\n"
-         "                     [--no-weld] [--fvar-interpolation MODE]\n"
+         "                     [--no-weld] [--fvar-interpolation MODE] [--smooth-triangles]\n"
          "                     [--output FILE.pvtp] [--compress] [--threads T]\n"
          "\n"
          "Subdivides the polygon mesh INPUT ("

@@ -47,6 +47,13 @@ vtkSmartPointer<vtkPolyDataAlgorithm> MakeSurfaceFilter(const SchemeOptions& opt
   return NewSurfaceFilter<Filter>(options);
 }
 
+vtkSmartPointer<vtkPolyDataAlgorithm> MakeCatmullClark(const SchemeOptions& options)
+{
+  auto filter = NewSurfaceFilter<vtkSubDCatmullClarkFilter>(options);
+  filter->SetSmoothTriangles(options.SmoothTriangles);
+  return filter;
+}
+
 vtkSmartPointer<vtkPolyDataAlgorithm> MakeButterfly(const SchemeOptions& options)
 {
   auto filter = NewSurfaceFilter<vtkSubDButterflyFilter>(options);
@@ -78,7 +85,7 @@ const std::vector<SchemeEntry>& Schemes()
 {
   static const std::vector<SchemeEntry> schemes = {
     { "catmull-clark", "Catmull-Clark: quads from any polygons (approximating, C2 where regular)",
-      false, true, true, &MakeSurfaceFilter<vtkSubDCatmullClarkFilter>, vtkSubDInterpolateFilter::CATMULL_CLARK,
+      false, true, true, &MakeCatmullClark, vtkSubDInterpolateFilter::CATMULL_CLARK,
       nullptr },
     { "loop", "Loop: triangles (other polygons are triangulated first; approximating, C2 where regular)",
       false, true, true, &MakeSurfaceFilter<vtkSubDLoopFilter>, vtkSubDInterpolateFilter::LOOP, nullptr },

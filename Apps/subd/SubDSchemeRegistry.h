@@ -28,6 +28,7 @@ struct SchemeOptions
   bool CollapseRepeatedCorners = false; // surfaces: collapse polygons that repeat a point
   bool Weld = true;                      // surfaces: weld points split at seams
   int FaceVaryingInterpolation = 2;      // vtkSubDSurfaceFilter::FVAR_LINEAR_CORNERS_PLUS1
+  bool SmoothTriangles = false;          // catmull-clark: OpenSubdiv's smooth triangle rule
 };
 
 /// Whether two option sets configure a filter alike (the explorer reuses a view's result).
@@ -38,7 +39,7 @@ inline bool operator==(const SchemeOptions& a, const SchemeOptions& b)
     a.ProjectToLimit == b.ProjectToLimit && a.LimitNormals == b.LimitNormals &&
     a.LimitCurvature == b.LimitCurvature && a.Tangents == b.Tangents && a.Closed == b.Closed &&
     a.CollapseRepeatedCorners == b.CollapseRepeatedCorners && a.Weld == b.Weld &&
-    a.FaceVaryingInterpolation == b.FaceVaryingInterpolation;
+    a.FaceVaryingInterpolation == b.FaceVaryingInterpolation && a.SmoothTriangles == b.SmoothTriangles;
 }
 inline bool operator!=(const SchemeOptions& a, const SchemeOptions& b)
 {

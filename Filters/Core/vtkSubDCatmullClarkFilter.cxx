@@ -7,10 +7,11 @@ vtkStandardNewMacro(vtkSubDCatmullClarkFilter);
 
 subd::Scheme* vtkSubDCatmullClarkFilter::NewScheme(bool)
 {
-  return new subd::CatmullClarkScheme;
+  return new subd::CatmullClarkScheme(this->SmoothTriangles);
 }
 
 void vtkSubDCatmullClarkFilter::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
+  os << indent << "SmoothTriangles: " << (this->SmoothTriangles ? "On" : "Off") << "\n";
 }

@@ -44,6 +44,19 @@ public:
   vtkTypeMacro(vtkSubDCatmullClarkFilter, vtkSubDSurfaceFilter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  ///@{
+  /**
+   * OpenSubdiv's smooth triangle rule (Sdc::Options::TRI_SUB_SMOOTH; default off): the smooth
+   * edge point of an edge of a triangle weighs each face point by the mean of 0.47 for a
+   * triangle and 1/4 for another face, its ends by what remains, which rounds the surface
+   * over triangles where Catmull-Clark's rule leaves it flat and dimpled. Only the input's
+   * triangles are affected (after one level every face is a quad), face-varying data alike.
+   */
+  vtkSetMacro(SmoothTriangles, bool);
+  vtkGetMacro(SmoothTriangles, bool);
+  vtkBooleanMacro(SmoothTriangles, bool);
+  ///@}
+
 protected:
   vtkSubDCatmullClarkFilter() = default;
   ~vtkSubDCatmullClarkFilter() override = default;
@@ -51,6 +64,9 @@ protected:
   subd::Scheme* NewScheme(bool allTriangles) override;
   bool KeepsRepeatedCorners() override { return true; }
   bool RefinesFaceVaryingData() override { return true; }
+
+private:
+  bool SmoothTriangles = false;
 
 private:
   vtkSubDCatmullClarkFilter(const vtkSubDCatmullClarkFilter&) = delete;

@@ -46,7 +46,8 @@ TEST(CommandLine, SubdMpiTakesTheSurfaceOptionsOfSubdAlike)
 {
   const std::vector<std::string> surface = { "in.obj", "--scheme", "loop", "--levels", "3", "--boundary",
     "edge-and-corner", "--crease-method", "chaikin", "--feature-angle", "40", "--limit", "--normals", "--curvature",
-    "--collapse-repeated-corners", "--no-weld", "--fvar-interpolation", "boundaries", "--compress", "-q" };
+    "--collapse-repeated-corners", "--no-weld", "--fvar-interpolation", "boundaries", "--smooth-triangles",
+    "--compress", "-q" };
   subdapp::CommandLine subd, mpi;
   std::string error;
   std::vector<std::string> args = surface;
@@ -61,6 +62,7 @@ TEST(CommandLine, SubdMpiTakesTheSurfaceOptionsOfSubdAlike)
   EXPECT_TRUE(mpi.Options.CollapseRepeatedCorners);
   EXPECT_FALSE(mpi.Options.Weld);
   EXPECT_EQ(mpi.Options.FaceVaryingInterpolation, 4);
+  EXPECT_TRUE(mpi.Options.SmoothTriangles);
   EXPECT_EQ(subd.Scheme, mpi.Scheme);
   EXPECT_EQ(subd.Input, mpi.Input);
   EXPECT_TRUE(mpi.Compress && mpi.Quiet);
@@ -81,6 +83,7 @@ TEST(CommandLine, SubdMpiTakesWhatItsHelpNamesAndRefusesTheRestByName)
   const std::set<std::string> refused = OptionsNamed(help.substr(refusedAt, deprecatedAt - refusedAt));
   for (const char* name : { "--scheme", "--levels", "--boundary", "--tension", "--crease-method", "--feature-angle",
          "--limit", "--normals", "--curvature", "--collapse-repeated-corners", "--no-weld", "--fvar-interpolation",
+         "--smooth-triangles",
          "--builtin", "-o", "--output",
          "--compress", "--threads" })
   {

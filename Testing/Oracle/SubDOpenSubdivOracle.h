@@ -90,7 +90,8 @@ struct FaceVaryingChannel
 /// OpenSubdiv's refiner of a fixture (with `channel` as its face-varying channel 0), not
 /// refined yet.
 inline std::unique_ptr<Far::TopologyRefiner> CreateOsdRefiner(const subdtest::TestMesh& mesh,
-  subd::BoundaryRule rule, SchemeKind kind, const SharpTags& tags, const FaceVaryingChannel* channel = nullptr)
+  subd::BoundaryRule rule, SchemeKind kind, const SharpTags& tags, const FaceVaryingChannel* channel = nullptr,
+  bool smoothTriangles = false)
 {
   std::vector<int> sizes(static_cast<size_t>(mesh.NumFaces()));
   for (Index f = 0; f < mesh.NumFaces(); ++f)
@@ -122,6 +123,8 @@ inline std::unique_ptr<Far::TopologyRefiner> CreateOsdRefiner(const subdtest::Te
   options.SetVtxBoundaryInterpolation(ToOsd(rule));
   if (channel)
     options.SetFVarLinearInterpolation(static_cast<Sdc::Options::FVarLinearInterpolation>(channel->Mode));
+  if (smoothTriangles)
+    options.SetTriangleSubdivision(Sdc::Options::TRI_SUB_SMOOTH);
   options.SetCreasingMethod(
     tags.Method == subd::CreaseMethod::Chaikin ? Sdc::Options::CREASE_CHAIKIN : Sdc::Options::CREASE_UNIFORM);
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
@@ -136,9 +139,9 @@ inline std::unique_ptr<Far::TopologyRefiner> CreateOsdRefiner(const subdtest::Te
 
 inline std::unique_ptr<Far::TopologyRefiner> MakeOsdRefiner(const subdtest::TestMesh& mesh,
   subd::BoundaryRule rule, int levels, SchemeKind kind, const SharpTags& tags,
-  const FaceVaryingChannel* channel = nullptr)
+  const FaceVaryingChannel* channel = nullptr, bool smoothTriangles = false)
 {
-  std::unique_ptr<Far::TopologyRefiner> refiner = CreateOsdRefiner(mesh, rule, kind, tags, channel);
+  std::unique_ptr<Far::TopologyRefiner> refiner = CreateOsdRefiner(mesh, rule, kind, tags, channel, smoothTriangles);
   Far::TopologyRefiner::UniformOptions uniform(levels);
   uniform.orderVerticesFromFacesFirst = true;
   uniform.fullTopologyInLastLevel = true;

@@ -37,6 +37,7 @@
 #include "vtkNew.h"
 #include "vtkPolyData.h"
 #include "vtkStaticPointLocator.h"
+#include "vtkSubDCatmullClarkFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -885,6 +886,106 @@ TEST(RepeatedCorners, FiltersGiveOpenSubdivsOutput)
           ASSERT_LT(std::hypot(p[0] - q[0], p[1] - q[1], p[2] - q[2]), tolerance) << what << " point " << v;
         }
       }
+}
+
+// OpenSubdiv's smooth triangle rule (Sdc::Options::TRI_SUB_SMOOTH) in Catmull-Clark: on meshes
+// with triangles (the house's floor, the stars' roofs, the triangulated grid and cube), under
+// the three boundary rules, with and without a semi-sharp edge between a triangle and a quad,
+// levels 1..3: every refined point is one of OpenSubdiv's at 1e-9 of the diagonal, and as many;
+// without the rule some point is not (the fixtures test it).
+TEST(SmoothTriangles, CatmullClarkIsOpenSubdivs)
+{
+  std::vector<subdtest::TestMesh> meshes{ subdtest::House(false).Jitter(0.1),
+    subdtest::Grid(4, 3, false, false).Jitter(0.1).Triangulated(), subdtest::Cube().Jitter(0.1).Triangulated() };
+  for (int n : { 3, 5, 8 })
+    meshes.push_back(subdtest::Star(n).Jitter(0.1));
+  const int levels = 3;
+  for (const subdtest::TestMesh& mesh : meshes)
+    for (const subd::BoundaryRule rule :
+      { subd::BoundaryRule::None, subd::BoundaryRule::EdgeOnly, subd::BoundaryRule::EdgeAndCorner })
+      for (const bool creased : { false, true })
+      {
+        SharpTags tags;
+        if (creased) // an edge of the first face, a triangle or next to one
+        {
+          tags.CreasePairs = { mesh.Vertices[mesh.Offsets[0]], mesh.Vertices[mesh.Offsets[0] + 1] };
+          tags.CreaseSharpness = { 0.6f };
+        }
+        const std::string what = mesh.Name + " " + subd::ToString(rule) + (creased ? " creased" : "");
+        auto refiner = MakeOsdRefiner(mesh, rule, levels, SchemeKind::CatmullClark, tags, nullptr, true);
+        std::vector<Point3> osd(static_cast<size_t>(refiner->GetNumVerticesTotal()));
+        for (Index v = 0; v < mesh.NumVertices(); ++v)
+          std::copy(&mesh.Points[3 * v], &mesh.Points[3 * v] + 3, osd[v].P);
+        Far::PrimvarRefinerReal<double> primvar(*refiner);
+        Point3* src = osd.data();
+        for (int l = 1; l <= levels; ++l)
+        {
+          Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
+          primvar.Interpolate(l, src, dst);
+          src = dst;
+        }
+        const Index numFinest = refiner->GetLevel(levels).GetNumVertices();
+        const double tolerance = 1e-9 * subdtest::Diagonal(mesh.Points);
+        Index unmatched[2] = { 0, 0 };
+        for (const bool smooth : { true, false })
+        {
+          const subd::CatmullClarkScheme scheme(smooth);
+          subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
+          const subd::BaseTags baseTags = ToBaseTags(tags, topology);
+          subd::Level level = subd::MakeBaseLevel(std::move(topology), baseTags, scheme.EffectiveBoundaryRule(rule));
+          std::vector<double> mine = mesh.Points;
+          for (int l = 0; l < levels; ++l)
+          {
+            mine = subdtest::ApplyToPoints(scheme.BuildStencils(level), mine);
+            level = scheme.Split(level, subd::ChildTopology::Full);
+          }
+          ASSERT_EQ(static_cast<Index>(mine.size() / 3), numFinest) << what;
+          for (Index v = 0; v < numFinest; ++v)
+          {
+            double distance;
+            subdtest::NearestPoint(mine, src[v].P, distance);
+            unmatched[smooth ? 0 : 1] += distance > tolerance;
+          }
+        }
+        EXPECT_EQ(unmatched[0], 0) << what << ": points not OpenSubdiv's";
+        EXPECT_GT(unmatched[1], 0) << what << ": the rule changes nothing here";
+      }
+}
+
+// The filter's SmoothTriangles option is that rule: the house (its floor two triangles)
+// through vtkSubDCatmullClarkFilter gives OpenSubdiv's points.
+TEST(SmoothTriangles, TheFilterOptionIsTheRule)
+{
+  const subdtest::TestMesh mesh = subdtest::House(false).Jitter(0.1);
+  const int levels = 2;
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(subdtest::ToPolyData(mesh));
+  filter->SetNumberOfSubdivisions(levels);
+  filter->SmoothTrianglesOn();
+  filter->Update();
+  auto refiner = MakeOsdRefiner(mesh, subd::BoundaryRule::EdgeOnly, levels, SchemeKind::CatmullClark, {}, nullptr, true);
+  std::vector<Point3> osd(static_cast<size_t>(refiner->GetNumVerticesTotal()));
+  for (Index v = 0; v < mesh.NumVertices(); ++v)
+    std::copy(&mesh.Points[3 * v], &mesh.Points[3 * v] + 3, osd[v].P);
+  Far::PrimvarRefinerReal<double> primvar(*refiner);
+  Point3* src = osd.data();
+  for (int l = 1; l <= levels; ++l)
+  {
+    Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
+    primvar.Interpolate(l, src, dst);
+    src = dst;
+  }
+  vtkPolyData* out = filter->GetOutput();
+  ASSERT_EQ(out->GetNumberOfPoints(), refiner->GetLevel(levels).GetNumVertices());
+  std::vector<double> ours;
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+    ours.insert(ours.end(), out->GetPoint(p), out->GetPoint(p) + 3);
+  for (Index v = 0; v < refiner->GetLevel(levels).GetNumVertices(); ++v)
+  {
+    double distance;
+    subdtest::NearestPoint(ours, src[v].P, distance);
+    EXPECT_LT(distance, 1e-9 * subdtest::Diagonal(mesh.Points)) << "point " << v;
+  }
 }
 
 // Limit evaluation next to faces that repeat a vertex: the pieces it refines keep the two

@@ -23,12 +23,13 @@ Level QuadSplitScheme::Split(const Level& parent, ChildTopology depth) const
 
 StencilTable CatmullClarkScheme::BuildStencils(const Level& parent) const
 {
-  return BuildCatmullClarkStencils(parent);
+  return BuildCatmullClarkStencils(parent, this->SmoothTriangles);
 }
 
 std::shared_ptr<const RowSource> CatmullClarkScheme::MakeRowSource(std::shared_ptr<const Level> parent) const
 {
-  return std::make_shared<WrittenRows<CatmullClarkRowWriter>>(std::move(parent), this->GetParallelFor());
+  return std::make_shared<WrittenRows<CatmullClarkRowWriter>>(
+    std::move(parent), this->GetParallelFor(), this->SmoothTriangles);
 }
 
 MeshCounts QuadSplitScheme::PredictChildCounts(const MeshCounts& parent) const

@@ -101,14 +101,22 @@ public:
   MeshCounts PredictChildCounts(const MeshCounts& parent) const override;
 };
 
-/// Catmull-Clark (SubDCatmullClarkRules.h).
+/// Catmull-Clark (SubDCatmullClarkRules.h); `smoothTriangles`: OpenSubdiv's smooth triangle
+/// rule (Sdc::Options::TRI_SUB_SMOOTH) for the edges of triangles.
 class SUBDKERNEL_EXPORT CatmullClarkScheme : public QuadSplitScheme
 {
 public:
+  explicit CatmullClarkScheme(bool smoothTriangles = false)
+    : SmoothTriangles(smoothTriangles)
+  {
+  }
   const char* GetName() const override { return "catmull-clark"; }
   StencilTable BuildStencils(const Level& parent) const override;
   std::shared_ptr<const RowSource> MakeRowSource(std::shared_ptr<const Level> parent) const override;
   bool BuildLimitStencils(const Level& level, StencilTable& stencils, std::string& error) const override;
+
+private:
+  bool SmoothTriangles;
 };
 
 /// Bilinear: centroids, midpoints and fixed vertices (SubDLinearRules.h).

@@ -5,20 +5,21 @@
 
 namespace subd
 {
-StencilTable BuildCatmullClarkStencils(const Level& parent)
+StencilTable BuildCatmullClarkStencils(const Level& parent, bool smoothTriangles)
 {
   const MeshTopology& topo = parent.Topology;
   // Face rows hold a face's corners; smooth edge rows 4 entries, smooth vertex rows 1 + 2n.
   const size_t expected = static_cast<size_t>(topo.GetNumFaceCorners()) * 3 + 4 * static_cast<size_t>(topo.GetNumEdges()) +
     static_cast<size_t>(topo.GetNumVertices());
-  return WriteStencilTable(CatmullClarkRowWriter(parent), expected);
+  return WriteStencilTable(CatmullClarkRowWriter(parent, SerialFor, smoothTriangles), expected);
 }
 
-CatmullClarkRowWriter::CatmullClarkRowWriter(const Level& parent, const ParallelFor& parallelFor)
+CatmullClarkRowWriter::CatmullClarkRowWriter(const Level& parent, const ParallelFor& parallelFor, bool smoothTriangles)
   : Parent(parent)
   , Topology(parent.Topology)
   , Number{ parent.Topology.GetNumFaces(), parent.Topology.GetNumEdges() }
   , SmoothVertex(FindSmoothClosedVertices(parent, parallelFor))
+  , SmoothTriangles(smoothTriangles)
 {
   const MeshTopology& topo = this->Topology;
   for (Index f = 0; f < topo.GetNumFaces(); ++f)
@@ -50,8 +51,12 @@ Index CatmullClarkRowWriter::WriteEdgeRow(Index e, Index* sources, double* weigh
   // Sources >= numParents name child points of this level: here the face points.
   const Index numParents = this->GetNumParents();
   const float creaseWeight = EdgeCreaseWeight(this->Parent, e);
-  WritePrimalEdgeRow(this->Topology.GetEdgeVertices(e), creaseWeight, CatmullClarkEdgeEndWeight,
-    CatmullClarkEdgeFaceWeight, sources, weights, [&](Index* sides) {
+  const IndexSpan faces = this->Topology.GetEdgeFaces(e);
+  const double faceWeight = creaseWeight < 1.0f // then the edge has two faces
+    ? CatmullClarkEdgeFaceWeightOf(this->Topology, faces, this->SmoothTriangles)
+    : CatmullClarkEdgeFaceWeight;
+  WritePrimalEdgeRow(this->Topology.GetEdgeVertices(e), creaseWeight, 0.5 - faceWeight, faceWeight, sources, weights,
+    [&](Index* sides) {
       const IndexSpan ef = this->Topology.GetEdgeFaces(e);
       sides[0] = numParents + this->Number.FacePoint(ef[0]);
       sides[1] = numParents + this->Number.FacePoint(ef[1]);

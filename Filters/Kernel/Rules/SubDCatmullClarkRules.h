@@ -5,6 +5,9 @@
 //
 //   face point   f  = average of the face's n vertices
 //   edge point   e  = (v0 + v1 + f0 + f1) / 4                     smooth edge (two faces)
+//                e  = (1/2 - w)(v0 + v1) + w (f0 + f1)            the same with OpenSubdiv's
+//                     smooth triangle rule (Sdc TRI_SUB_SMOOTH): w the mean over the two faces
+//                     of 0.47 for a triangle, 1/4 for any other face
 //                e  = (v0 + v1) / 2                               sharp, boundary, non-manifold
 //   vertex point v' = (n-2)/n v + 1/n^2 sum(e_i) + 1/n^2 sum(f_i)  Smooth or Dart rule, n faces,
 //                     e_i the far ends of the n edges, f_i the new face points; where nothing
@@ -21,6 +24,8 @@
 #ifndef SubDCatmullClarkRules_h
 #define SubDCatmullClarkRules_h
 
+#include <algorithm>
+
 #include "SubDLevel.h"
 #include "SubDPrimalRules.h"
 #include "SubDQuadSplit.h"
@@ -29,21 +34,40 @@
 
 namespace subd
 {
-SUBDKERNEL_EXPORT StencilTable BuildCatmullClarkStencils(const Level& parent);
+/// `smoothTriangles`: OpenSubdiv's smooth triangle rule for the edges of triangles.
+SUBDKERNEL_EXPORT StencilTable BuildCatmullClarkStencils(const Level& parent, bool smoothTriangles = false);
 
-/// Catmull-Clark's smooth edge weights (on each end, on each face point); the crease rule
-/// blends them with the midpoint (WritePrimalEdgeRow).
-constexpr double CatmullClarkEdgeEndWeight = 0.25;
+/// Catmull-Clark's smooth edge weight on each face point (each end takes 1/2 less it); the
+/// crease rule blends the mask with the midpoint (WritePrimalEdgeRow).
 constexpr double CatmullClarkEdgeFaceWeight = 0.25;
+/// The smooth triangle rule's weight of a triangle's face point.
+constexpr double CatmullClarkTriangleFaceWeight = 0.47;
 
-/// The smooth edge point of an edge with ends `ends` and face points `facePoints` (children).
-template <typename Entries>
-void CatmullClarkSmoothEdgeMask(const Index* ends, const Index* facePoints, Entries& entries)
+/// The weight of each face point in the smooth edge point of an edge with faces `faces` (two):
+/// Catmull-Clark's, or with the smooth triangle rule the mean of the faces' weights.
+inline double CatmullClarkEdgeFaceWeightOf(const MeshTopology& topo, IndexSpan faces, bool smoothTriangles)
 {
-  entries.Parent(ends[0], CatmullClarkEdgeEndWeight);
-  entries.Parent(ends[1], CatmullClarkEdgeEndWeight);
-  entries.Child(facePoints[0], CatmullClarkEdgeFaceWeight);
-  entries.Child(facePoints[1], CatmullClarkEdgeFaceWeight);
+  if (!smoothTriangles)
+  {
+    return CatmullClarkEdgeFaceWeight;
+  }
+  auto weight = [&topo](Index f) {
+    return topo.GetFaceSize(f) == 3 ? CatmullClarkTriangleFaceWeight : CatmullClarkEdgeFaceWeight;
+  };
+  return 0.5 * (weight(faces[0]) + weight(faces[1]));
+}
+
+/// The smooth edge point of an edge with ends `ends` and face points `facePoints` (children),
+/// `faceWeight` on each face point and what remains on the ends.
+template <typename Entries>
+void CatmullClarkSmoothEdgeMask(
+  const Index* ends, const Index* facePoints, Entries& entries, double faceWeight = CatmullClarkEdgeFaceWeight)
+{
+  const double endWeight = 0.5 - faceWeight;
+  entries.Parent(ends[0], endWeight);
+  entries.Parent(ends[1], endWeight);
+  entries.Child(facePoints[0], faceWeight);
+  entries.Child(facePoints[1], faceWeight);
 }
 
 /// The smooth vertex point of v from the new edge and face points around it (the form that
@@ -91,7 +115,8 @@ void CatmullClarkRingVertexMask(
 class SUBDKERNEL_EXPORT CatmullClarkRowWriter
 {
 public:
-  explicit CatmullClarkRowWriter(const Level& parent, const ParallelFor& parallelFor = SerialFor);
+  explicit CatmullClarkRowWriter(
+    const Level& parent, const ParallelFor& parallelFor = SerialFor, bool smoothTriangles = false);
   Index GetNumParents() const { return this->Topology.GetNumVertices(); }
   Index GetNumRows() const { return this->Number.VertexPoint(this->Topology.GetNumVertices()); }
   std::vector<Index> GetBlockEnds() const
@@ -114,6 +139,7 @@ private:
   QuadSplitNumbering Number;
   Index MaxRowSize = 4;
   std::vector<std::uint8_t> SmoothVertex; // FindSmoothClosedVertices
+  bool SmoothTriangles = false;
 };
 
 template <typename Entries>
@@ -135,16 +161,22 @@ SUBD_ALWAYS_INLINE bool CatmullClarkRowWriter::VisitSmoothRow(Index row, Entries
     }
     const IndexSpan ef = topo.GetEdgeFaces(e);
     const Index facePoints[2] = { this->Number.FacePoint(ef[0]), this->Number.FacePoint(ef[1]) };
-    CatmullClarkSmoothEdgeMask(topo.GetEdgeVertices(e), facePoints, entries);
+    CatmullClarkSmoothEdgeMask(
+      topo.GetEdgeVertices(e), facePoints, entries, CatmullClarkEdgeFaceWeightOf(topo, ef, this->SmoothTriangles));
     return true;
   }
   const Index v = row - firstVertexPoint;
-  if (!this->SmoothVertex[v])
+  const IndexSpan faces = topo.GetVertexFaces(v);
+  // The mask below reads the new edge points, which is the smooth rule only where they are
+  // Catmull-Clark's: next to a triangle under the smooth triangle rule, the ring's form is
+  // written instead (WriteVertexRow).
+  if (!this->SmoothVertex[v] ||
+    (this->SmoothTriangles &&
+      std::any_of(faces.begin(), faces.end(), [&topo](Index f) { return topo.GetFaceSize(f) == 3; })))
   {
     return false;
   }
   const IndexSpan edges = topo.GetVertexEdges(v);
-  const IndexSpan faces = topo.GetVertexFaces(v);
   CatmullClarkSmoothVertexMask(
     v, edges.size(), faces.size(), [&](Index i) { return this->Number.EdgePoint(edges[i]); },
     [&](Index i) { return this->Number.FacePoint(faces[i]); }, entries);
