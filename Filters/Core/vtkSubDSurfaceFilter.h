@@ -15,6 +15,10 @@
  *   OpenSubdiv does, in the schemes that OpenSubdiv has (Catmull-Clark, Loop and the linear
  *   scheme; see CollapseRepeatedCorners); the other schemes collapse the repeats; one
  *   warning counts such polygons,
+ * - welds points with identical coordinates (WeldCoincidentPoints), so that a mesh split at
+ *   its texture seams by VTK's readers is subdivided whole; point data that differ across
+ *   such points are face-varying (FaceVaryingInterpolation, OpenSubdiv's rules) and the
+ *   output is split again at the seams (docs/face-varying.md),
  * - builds the kernel topology, tagging non-manifold edges and vertices, which are then
  *   subdivided as infinitely sharp (OpenSubdiv's behaviour) after one warning,
  * - refines NumberOfSubdivisions levels, or reuses the stencils of the previous execution when
