@@ -149,6 +149,14 @@ inline std::unique_ptr<Far::TopologyRefiner> MakeOsdRefiner(const subdtest::Test
   return refiner;
 }
 
+/// My child face that is OpenSubdiv's child k of a face whose my face is g of `parent`, its
+/// corners turned by `turn` against OpenSubdiv's: the quad split has a child per corner, the
+/// triangle split three corner children and the middle one.
+inline Index MyChildFace(const subd::MeshTopology& parent, Index g, Index turn, Index k, bool triangles)
+{
+  return triangles ? 4 * g + (k == 3 ? 3 : (k + turn) % 3) : parent.GetFaceOffset(g) + (k + turn) % parent.GetFaceSize(g);
+}
+
 /// The same tags in SubD's form, for the base level of `topology`.
 inline subd::BaseTags ToBaseTags(const SharpTags& tags, const subd::MeshTopology& topology)
 {

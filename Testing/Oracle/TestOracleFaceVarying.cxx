@@ -243,6 +243,28 @@ SeamedMesh Triangulated(const SeamedMesh& s)
   return t;
 }
 
+// The turn of my face's corners `corners` (values `mine`, two each) against OpenSubdiv's
+// (`values` into `theirs`) under which the values agree best.
+Index TurnOfValues(const Far::ConstIndexArray& values, const subd::IndexSpan& corners, const std::vector<double>& mine,
+  const std::vector<Point2>& theirs)
+{
+  Index best = 0;
+  double bestError = 1e300;
+  for (Index r = 0; r < values.size(); ++r)
+  {
+    double error = 0.0;
+    for (Index j = 0; j < values.size(); ++j)
+      for (int d = 0; d < 2; ++d)
+        error = std::max(error, std::abs(mine[2 * corners[(j + r) % corners.size()] + d] - theirs[values[j]].P[d]));
+    if (error < bestError)
+    {
+      bestError = error;
+      best = r;
+    }
+  }
+  return best;
+}
+
 struct FaceVaryingCase
 {
   SeamedMesh Fixture;
@@ -341,31 +363,12 @@ TEST_P(FaceVaryingOracle, MatchesOpenSubdiv)
       const Index g = faceMap[f], n = parent.GetFaceSize(g);
       const Far::ConstIndexArray children = parentOsd.GetFaceChildFaces(f);
       for (Index k = 0; k < children.size(); ++k)
-        childFaceMap[children[k]] = loop ? 4 * g + (k == 3 ? 3 : (k + turn[f]) % 3) : parent.GetFaceOffset(g) + (k + turn[f]) % n;
+        childFaceMap[children[k]] = MyChildFace(parent, g, turn[f], k, loop);
     }
     faceMap = childFaceMap;
-    // The rotation of each child face: the one under which its values agree.
     turn.assign(faceMap.size(), 0);
     for (Index f = 0; f < childOsd.GetNumFaces(); ++f)
-    {
-      const Far::ConstIndexArray values = childOsd.GetFaceFVarValues(f, 0);
-      const subd::IndexSpan corners = level.Topology.GetFaceVertices(faceMap[f]);
-      Index best = 0;
-      double bestError = 1e300;
-      for (Index r = 0; r < values.size(); ++r)
-      {
-        double error = 0.0;
-        for (Index j = 0; j < values.size(); ++j)
-          for (int d = 0; d < 2; ++d)
-            error = std::max(error, std::abs(mine[2 * corners[(j + r) % corners.size()] + d] - osd[values[j]].P[d]));
-        if (error < bestError)
-        {
-          bestError = error;
-          best = r;
-        }
-      }
-      turn[f] = best;
-    }
+      turn[f] = TurnOfValues(childOsd.GetFaceFVarValues(f, 0), level.Topology.GetFaceVertices(faceMap[f]), mine, osd);
     compareCorners(l, osd, mine, "values", tolerance);
   }
   if (c.Kind == SchemeKind::Bilinear)

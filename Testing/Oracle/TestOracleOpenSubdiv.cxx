@@ -772,7 +772,7 @@ TEST(RepeatedCorners, RefinementIsOpenSubdivs)
             if (!loop)
               childVertexMap[parentOsd.GetFaceChildVertex(f)] = quads.FacePoint(g);
             for (Index k = 0; k < children.size(); ++k)
-              childFaceMap[children[k]] = loop ? 4 * g + (k == 3 ? 3 : (k + turn[f]) % 3) : parent.GetFaceOffset(g) + (k + turn[f]) % n;
+              childFaceMap[children[k]] = MyChildFace(parent, g, turn[f], k, loop);
           }
           for (Index v = 0; v < parentOsd.GetNumVertices(); ++v)
             childVertexMap[parentOsd.GetVertexChildVertex(v)] = loop ? triangles.VertexPoint(vertexMap[v]) : quads.VertexPoint(vertexMap[v]);
