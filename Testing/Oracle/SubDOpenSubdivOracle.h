@@ -149,6 +149,23 @@ inline std::unique_ptr<Far::TopologyRefiner> MakeOsdRefiner(const subdtest::Test
   return refiner;
 }
 
+/// OpenSubdiv's points of `mesh` at the refiner's last level (Far::PrimvarRefinerReal<double>).
+inline std::vector<Point3> OsdFinestPoints(const Far::TopologyRefiner& refiner, const subdtest::TestMesh& mesh)
+{
+  std::vector<Point3> all(static_cast<size_t>(refiner.GetNumVerticesTotal()));
+  for (Index v = 0; v < mesh.NumVertices(); ++v)
+    std::copy(&mesh.Points[3 * v], &mesh.Points[3 * v] + 3, all[v].P);
+  Far::PrimvarRefinerReal<double> primvar(refiner);
+  Point3* src = all.data();
+  for (int l = 1; l <= refiner.GetMaxLevel(); ++l)
+  {
+    Point3* dst = src + refiner.GetLevel(l - 1).GetNumVertices();
+    primvar.Interpolate(l, src, dst);
+    src = dst;
+  }
+  return std::vector<Point3>(src, all.data() + all.size());
+}
+
 /// My child face that is OpenSubdiv's child k of a face whose my face is g of `parent`, its
 /// corners turned by `turn` against OpenSubdiv's: the quad split has a child per corner, the
 /// triangle split three corner children and the middle one.

@@ -859,17 +859,8 @@ TEST(RepeatedCorners, FiltersGiveOpenSubdivsOutput)
           << what << ": " << messages.Warnings;
 
         auto refiner = MakeOsdRefiner(mesh, subd::BoundaryRule::EdgeOnly, levels, scheme.second, {});
-        std::vector<Point3> osd(static_cast<size_t>(refiner->GetNumVerticesTotal()));
-        for (Index v = 0; v < mesh.NumVertices(); ++v)
-          std::copy(&mesh.Points[3 * v], &mesh.Points[3 * v] + 3, osd[v].P);
-        Far::PrimvarRefinerReal<double> primvar(*refiner);
-        Point3* src = osd.data();
-        for (int l = 1; l <= levels; ++l)
-        {
-          Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
-          primvar.Interpolate(l, src, dst);
-          src = dst;
-        }
+        const std::vector<Point3> finestPoints = OsdFinestPoints(*refiner, mesh);
+        const Point3* src = finestPoints.data();
         const Far::TopologyLevel& finest = refiner->GetLevel(levels);
         ASSERT_EQ(out->GetNumberOfPolys(), finest.GetNumFaces()) << what;
         ASSERT_EQ(out->GetNumberOfPoints(), finest.GetNumVertices()) << what;
@@ -913,17 +904,8 @@ TEST(SmoothTriangles, CatmullClarkIsOpenSubdivs)
         }
         const std::string what = mesh.Name + " " + subd::ToString(rule) + (creased ? " creased" : "");
         auto refiner = MakeOsdRefiner(mesh, rule, levels, SchemeKind::CatmullClark, tags, nullptr, true);
-        std::vector<Point3> osd(static_cast<size_t>(refiner->GetNumVerticesTotal()));
-        for (Index v = 0; v < mesh.NumVertices(); ++v)
-          std::copy(&mesh.Points[3 * v], &mesh.Points[3 * v] + 3, osd[v].P);
-        Far::PrimvarRefinerReal<double> primvar(*refiner);
-        Point3* src = osd.data();
-        for (int l = 1; l <= levels; ++l)
-        {
-          Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
-          primvar.Interpolate(l, src, dst);
-          src = dst;
-        }
+        const std::vector<Point3> finestPoints = OsdFinestPoints(*refiner, mesh);
+        const Point3* src = finestPoints.data();
         const Index numFinest = refiner->GetLevel(levels).GetNumVertices();
         const double tolerance = 1e-9 * subdtest::Diagonal(mesh.Points);
         Index unmatched[2] = { 0, 0 };
@@ -964,17 +946,8 @@ TEST(SmoothTriangles, TheFilterOptionIsTheRule)
   filter->SmoothTrianglesOn();
   filter->Update();
   auto refiner = MakeOsdRefiner(mesh, subd::BoundaryRule::EdgeOnly, levels, SchemeKind::CatmullClark, {}, nullptr, true);
-  std::vector<Point3> osd(static_cast<size_t>(refiner->GetNumVerticesTotal()));
-  for (Index v = 0; v < mesh.NumVertices(); ++v)
-    std::copy(&mesh.Points[3 * v], &mesh.Points[3 * v] + 3, osd[v].P);
-  Far::PrimvarRefinerReal<double> primvar(*refiner);
-  Point3* src = osd.data();
-  for (int l = 1; l <= levels; ++l)
-  {
-    Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
-    primvar.Interpolate(l, src, dst);
-    src = dst;
-  }
+  const std::vector<Point3> finestPoints = OsdFinestPoints(*refiner, mesh);
+  const Point3* src = finestPoints.data();
   vtkPolyData* out = filter->GetOutput();
   ASSERT_EQ(out->GetNumberOfPoints(), refiner->GetLevel(levels).GetNumVertices());
   std::vector<double> ours;

@@ -110,6 +110,27 @@ float DependentSharpness(const std::vector<float>& semiSharp)
   return level + std::min(1.0f, sum / static_cast<float>(count));
 }
 
+// The two values of a vertex under CornersPlus1 and CornersPlus2: true if both are corners (a
+// region holds an infinitely sharp edge or touches itself; with Plus2 one of a single face),
+// else gives the value whose region has no semi-sharp edge its partner's decay.
+bool PinTwoValues(const std::vector<ValueSpan>& spans, Index first, FaceVaryingInterpolation mode, Level& channel)
+{
+  const auto sharpened = [mode](const ValueSpan& s) {
+    return s.InfSharpEdge || s.Disjoint || (mode == FaceVaryingInterpolation::CornersPlus2 && s.Faces == 1);
+  };
+  if (sharpened(spans[0]) || sharpened(spans[1]))
+  {
+    return true;
+  }
+  const bool semi0 = !spans[0].SemiSharpEdges.empty(), semi1 = !spans[1].SemiSharpEdges.empty();
+  if (semi0 != semi1)
+  {
+    float& dependent = channel.VertexSharpness[first + (semi0 ? 1 : 0)];
+    dependent = std::max(dependent, DependentSharpness(spans[semi0 ? 0 : 1].SemiSharpEdges));
+  }
+  return false;
+}
+
 // Pins the values of mesh vertex v that the mode makes corners (OpenSubdiv's
 // FVarLevel::completeTopologyFromFaceValues); the channel's own rules do the rest.
 void PinValues(const Level& mesh, Index v, const std::vector<ValueSpan>& spans, Index first,
@@ -120,21 +141,9 @@ void PinValues(const Level& mesh, Index v, const std::vector<ValueSpan>& spans, 
   const bool mismatched = count > 1 || std::any_of(spans.begin(), spans.end(), [](const ValueSpan& s) { return s.OnSeam; });
   const VertexTag tag = mesh.Topology.GetVertexTag(v);
   const bool plus = mode == Mode::CornersPlus1 || mode == Mode::CornersPlus2;
-  bool all = (tag.NonManifold && mismatched) || (mode == Mode::Boundaries && (mismatched || tag.Boundary)) ||
-    (plus && count > 2) || (mode == Mode::CornersPlus2 && mismatched && count == 1 && !tag.Boundary);
-  if (plus && count == 2)
-  {
-    const auto sharpened = [mode](const ValueSpan& s) {
-      return s.InfSharpEdge || s.Disjoint || (mode == Mode::CornersPlus2 && s.Faces == 1);
-    };
-    all |= sharpened(spans[0]) || sharpened(spans[1]);
-    const bool semi0 = !spans[0].SemiSharpEdges.empty(), semi1 = !spans[1].SemiSharpEdges.empty();
-    if (!all && semi0 != semi1)
-    {
-      float& dependent = channel.VertexSharpness[first + (semi0 ? 1 : 0)];
-      dependent = std::max(dependent, DependentSharpness(spans[semi0 ? 0 : 1].SemiSharpEdges));
-    }
-  }
+  const bool all = (tag.NonManifold && mismatched) || (mode == Mode::Boundaries && (mismatched || tag.Boundary)) ||
+    (plus && count > 2) || (mode == Mode::CornersPlus2 && mismatched && count == 1 && !tag.Boundary) ||
+    (plus && count == 2 && PinTwoValues(spans, first, mode, channel));
   for (Index k = 0; k < count; ++k)
   {
     if (all || (mode != Mode::None && spans[k].Faces == 1))
