@@ -214,7 +214,7 @@ std::string UsageText(Program program)
          "            [--image FILE.png [--compare S1,S2,...] [--color C] [--view-size WxH] [--no-cage]]\n"
          "\n"
          "Subdivides the polygon mesh INPUT (" << SupportedExtensions() << ") and writes the\n"
-         "result; the formats are chosen by the file extensions. The curve schemes refine the\n"
+         "result (" << WritableExtensions() << "); the formats are chosen by the file extensions. The curve schemes refine the\n"
          "input's lines and polylines instead (its polygons pass through). Without INPUT, a\n"
          "built-in control cage (or curve) is used.\n"
          "\n"

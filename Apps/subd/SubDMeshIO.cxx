@@ -9,6 +9,8 @@
 #include "vtkPolyDataWriter.h"
 #include "vtkSTLReader.h"
 #include "vtkSTLWriter.h"
+#include "vtkSubDGLTFReader.h"
+#include "vtkSubDGLTFWriter.h"
 #include "vtkSubDLegacyReader.h"
 #include "vtkSubDOBJReader.h"
 #include "vtkSubDOBJWriter.h"
@@ -99,7 +101,8 @@ vtkSmartPointer<vtkPolyData> RunReader(const std::string& path, std::string& err
     {
       why.pop_back();
     }
-    error = "cannot read '" + path + "': " + why;
+    const std::string named = "'" + path + "'"; // SubD's readers name the file themselves
+    error = "cannot read " + (why.compare(0, named.size(), named) == 0 ? why : named + ": " + why);
     return nullptr;
   }
   if (!out || out->GetNumberOfPoints() == 0)
@@ -128,7 +131,19 @@ std::string LowerExtension(const std::string& path)
 
 const char* SupportedExtensions()
 {
-  return ".vtp .vtk .obj .ply .stl .off";
+  return ".vtp .vtk .obj .ply .stl .off .gltf .glb";
+}
+
+const char* WritableExtensions()
+{
+  return ".vtp .vtk .obj .ply .stl .off .gltf";
+}
+
+bool CanWrite(const std::string& path)
+{
+  const std::string ext = LowerExtension(path);
+  const std::string known = std::string(WritableExtensions()) + " ";
+  return !ext.empty() && known.find(ext + " ") != std::string::npos;
 }
 
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& error)
@@ -162,6 +177,10 @@ vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& erro
   if (ext == ".off")
   {
     return RunReader<vtkSubDOFFReader>(path, error);
+  }
+  if (ext == ".gltf" || ext == ".glb")
+  {
+    return RunReader<vtkSubDGLTFReader>(path, error);
   }
   error = "'" + path + "': unknown file type '" + ext + "' (supported: " + SupportedExtensions() + ")";
   return nullptr;
@@ -222,6 +241,10 @@ vtkSmartPointer<vtkAlgorithm> MakeWriter(const std::string& ext, const std::stri
   {
     return NewWriter<vtkSubDOFFWriter>(fileName);
   }
+  if (ext == ".gltf")
+  {
+    return NewWriter<vtkSubDGLTFWriter>(fileName);
+  }
   return nullptr;
 }
 }
@@ -235,7 +258,7 @@ bool WriteMesh(vtkPolyData* mesh, const std::string& path, std::string& error, b
   vtkSmartPointer<vtkAlgorithm> writer = MakeWriter(ext, temporary, compress);
   if (!writer)
   {
-    error = "'" + path + "': unknown output type '" + ext + "' (supported: " + SupportedExtensions() + ")";
+    error = "'" + path + "': unknown output type '" + ext + "' (supported: " + WritableExtensions() + ")";
     return false;
   }
   vtkSmartPointer<vtkPolyData> data = mesh;

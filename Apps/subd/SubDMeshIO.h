@@ -8,10 +8,16 @@
 
 namespace subdapp
 {
-/// Extensions understood by ReadMesh and WriteMesh (lower case, with the dot).
+/// Extensions understood by ReadMesh (lower case, with the dot).
 const char* SupportedExtensions();
 
-/// Reads .vtp .vtk .obj .ply .stl .off. On failure returns nullptr and sets `error`.
+/// Extensions understood by WriteMesh (all but .glb: VTK's glTF writer writes .gltf only).
+const char* WritableExtensions();
+
+/// Whether WriteMesh knows the extension of `path`.
+bool CanWrite(const std::string& path);
+
+/// Reads .vtp .vtk .obj .ply .stl .off .gltf .glb. On failure returns nullptr and sets `error`.
 vtkSmartPointer<vtkPolyData> ReadMesh(const std::string& path, std::string& error);
 
 /// Writes by extension, atomically: into a temporary file beside `path`, renamed over it only

@@ -95,11 +95,10 @@ int CheckOutput(const subdapp::CommandLine& cmd, const std::string& output)
     std::cerr << "subd: refusing to overwrite the input file '" << cmd.Input << "'\n";
     return 1;
   }
-  if (subdapp::WritesMesh(cmd) && (subdapp::LowerExtension(output).empty() ||
-    std::string(subdapp::SupportedExtensions()).find(subdapp::LowerExtension(output)) == std::string::npos))
+  if (subdapp::WritesMesh(cmd) && !subdapp::CanWrite(output))
   {
     std::cerr << "subd: cannot write '" << output << "': unknown output type (supported: "
-              << subdapp::SupportedExtensions() << ")\n";
+              << subdapp::WritableExtensions() << ")\n";
     return 2;
   }
   return 0;

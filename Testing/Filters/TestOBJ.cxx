@@ -1,9 +1,13 @@
 // OBJ reader/writer with OpenSubdiv's sharp-feature tags: the tags become SubD's arrays,
-// survive a round trip, and broken files give errors naming the line.
+// survive a round trip, and broken files give errors naming the line. Texture seams through OBJ
+// and glTF files.
 #include "vtkSubDOBJReader.h"
 #include "vtkSubDOBJWriter.h"
 #include "vtkSubDCatmullClarkFilter.h"
 #include "vtkOBJReader.h"
+#include "vtkSubDGLTFReader.h"
+#include "vtkSubDGLTFWriter.h"
+#include "vtkTriangleFilter.h"
 
 #include "SubDFilterTestSupport.h"
 #include "SubDTempFiles.h"
@@ -238,21 +242,70 @@ TEST(OBJ, TextureSeamsSurviveSubdivisionAndRoundTrip)
   }
 }
 
-// VTK's own OBJ reader splits every corner of a textured file into a point of its own: welded,
-// the filters give the same surface and texture coordinates as from SubD's reader, which
-// splits only at seams.
-TEST(OBJ, VTKsSplitReadingWeldsToTheSameResult)
+// A cube with a cross unwrap: the four sides in a strip (one seam where it closes), the caps on
+// side 0.
+std::string CrossUnwrapOBJ()
 {
   std::string text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
-  // A cross unwrap: the four sides in a strip (one seam where it closes), the caps on side 0.
   const char* vt[] = { "0 0", "1 0", "2 0", "3 0", "4 0", "0 1", "1 1", "2 1", "3 1", "4 1", "0 2", "1 2", "0 -1",
     "1 -1" };
   for (const char* t : vt)
     text += std::string("vt ") + t + "\n";
   text += "f 1/1 2/2 6/7 5/6\nf 2/2 3/3 7/8 6/7\nf 3/3 4/4 8/9 7/8\nf 4/4 1/5 5/10 8/9\n" // sides
           "f 5/6 6/7 7/12 8/11\nf 1/1 4/13 3/14 2/2\n";                                 // caps
+  return text;
+}
+
+using Corners = std::set<std::array<double, 5>>;
+
+// The points of a mesh with their texture coordinates, as a set.
+Corners PointsWithTCoords(vtkPolyData* mesh)
+{
+  vtkDataArray* tcoords = mesh->GetPointData()->GetTCoords();
+  Corners set;
+  for (vtkIdType p = 0; tcoords && p < mesh->GetNumberOfPoints(); ++p)
+  {
+    const double* x = mesh->GetPoint(p);
+    set.insert({ x[0], x[1], x[2], tcoords->GetComponent(p, 0), tcoords->GetComponent(p, 1) });
+  }
+  return set;
+}
+
+// Catmull-Clark, two levels: the output's polygon count and its points with coordinates.
+Corners RefinedCorners(vtkPolyData* input, vtkIdType expectedPolys)
+{
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(input);
+  filter->SetNumberOfSubdivisions(2);
+  filter->Update();
+  EXPECT_EQ(filter->GetOutput()->GetNumberOfPolys(), expectedPolys);
+  return PointsWithTCoords(filter->GetOutput());
+}
+
+// Every element of `a` has one in `b` within `tolerance`, and the sets are as large.
+void ExpectSameCorners(const Corners& a, const Corners& b, double tolerance)
+{
+  EXPECT_FALSE(a.empty());
+  EXPECT_EQ(a.size(), b.size());
+  for (const auto& ours : a)
+  {
+    const bool found = std::any_of(b.begin(), b.end(), [&](const std::array<double, 5>& theirs) {
+      for (int d = 0; d < 5; ++d)
+        if (std::abs(ours[d] - theirs[d]) > tolerance)
+          return false;
+      return true;
+    });
+    EXPECT_TRUE(found) << ::testing::PrintToString(ours) << " has no counterpart";
+  }
+}
+
+// VTK's own OBJ reader splits every corner of a textured file into a point of its own: welded,
+// the filters give the same surface and texture coordinates as from SubD's reader, which
+// splits only at seams.
+TEST(OBJ, VTKsSplitReadingWeldsToTheSameResult)
+{
   const std::string path = TempPath("cross.obj");
-  std::ofstream(path) << text;
+  std::ofstream(path) << CrossUnwrapOBJ();
   subdtest::Messages messages;
   vtkSmartPointer<vtkPolyData> ours = ReadOBJ(path, messages);
   vtkNew<vtkOBJReader> vtkReader;
@@ -261,36 +314,70 @@ TEST(OBJ, VTKsSplitReadingWeldsToTheSameResult)
   vtkPolyData* split = vtkReader->GetOutput();
   ASSERT_GT(split->GetNumberOfPoints(), ours->GetNumberOfPoints());
   ASSERT_NE(split->GetPointData()->GetTCoords(), nullptr);
-  // (Points with their texture coordinates, compared as sets.)
-  auto corners = [](vtkPolyData* input) {
-    vtkNew<vtkSubDCatmullClarkFilter> filter;
-    filter->SetInputData(input);
-    filter->SetNumberOfSubdivisions(2);
-    filter->Update();
-    vtkPolyData* out = filter->GetOutput();
-    vtkDataArray* tcoords = out->GetPointData()->GetTCoords();
-    std::set<std::array<double, 5>> set;
-    for (vtkIdType p = 0; tcoords && p < out->GetNumberOfPoints(); ++p)
-    {
-      const double* x = out->GetPoint(p);
-      set.insert({ x[0], x[1], x[2], tcoords->GetComponent(p, 0), tcoords->GetComponent(p, 1) });
-    }
-    EXPECT_EQ(out->GetNumberOfPolys(), 96);
-    return set;
-  };
-  const std::set<std::array<double, 5>> fromOurs = corners(ours), fromVTK = corners(split);
-  EXPECT_FALSE(fromOurs.empty());
   // (vtkOBJReader's points are floats: the two agree to float precision.)
-  EXPECT_EQ(fromOurs.size(), fromVTK.size());
-  for (const auto& ours : fromOurs)
-  {
-    const bool found = std::any_of(fromVTK.begin(), fromVTK.end(), [&ours](const std::array<double, 5>& theirs) {
-      for (int d = 0; d < 5; ++d)
-        if (std::abs(ours[d] - theirs[d]) > 1e-6)
-          return false;
-      return true;
-    });
-    EXPECT_TRUE(found) << ::testing::PrintToString(ours) << " is not in vtkOBJReader's result";
-  }
+  ExpectSameCorners(RefinedCorners(ours, 96), RefinedCorners(split, 96), 1e-6);
+}
+
+vtkSmartPointer<vtkPolyData> ReadGLTF(const std::string& path, subdtest::Messages& messages)
+{
+  vtkNew<vtkSubDGLTFReader> reader;
+  messages.Watch(reader);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(reader->GetOutput());
+  return out;
+}
+
+void WriteGLTF(vtkPolyData* mesh, const std::string& path)
+{
+  vtkNew<vtkSubDGLTFWriter> writer;
+  writer->SetInputData(mesh);
+  writer->SetFileName(path.c_str());
+  ASSERT_EQ(writer->Write(), 1);
+}
+
+// glTF keeps a vertex per (position, attributes) and triangles only. The cross-unwrapped cube,
+// triangulated and written as glTF, reads back split at its seams; welded and refined it gives
+// the seamed OBJ's surface and texture coordinates (to float precision, glTF's). A refined mesh
+// written and read back keeps every point with its coordinates.
+TEST(GLTF, SplitTrianglesWeldToTheSeamedResultAndRoundTrip)
+{
+  const std::string path = TempPath("cross-tris.obj"), gltf = TempPath("cross.gltf"), refinedPath = TempPath("cc.gltf");
+  std::ofstream(path) << CrossUnwrapOBJ();
+  subdtest::Messages messages;
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(ReadOBJ(path, messages));
+  triangles->Update();
+  vtkPolyData* cage = triangles->GetOutput();
+  WriteGLTF(cage, gltf);
+  vtkSmartPointer<vtkPolyData> split = ReadGLTF(gltf, messages);
+  EXPECT_EQ(messages.Errors, "");
+  ASSERT_EQ(split->GetNumberOfPolys(), 12);
+  ASSERT_NE(split->GetPointData()->GetTCoords(), nullptr);
+  EXPECT_EQ(split->GetPointData()->GetTCoords()->GetName(), std::string("TCoords"));
+  ExpectSameCorners(RefinedCorners(cage, 144), RefinedCorners(split, 144), 1e-6);
+
+  vtkNew<vtkSubDCatmullClarkFilter> filter;
+  filter->SetInputData(cage);
+  filter->SetNumberOfSubdivisions(2);
+  filter->Update();
+  WriteGLTF(filter->GetOutput(), refinedPath);
+  vtkSmartPointer<vtkPolyData> back = ReadGLTF(refinedPath, messages);
+  EXPECT_EQ(messages.Errors, "");
+  EXPECT_EQ(back->GetNumberOfPolys(), 2 * filter->GetOutput()->GetNumberOfPolys()); // quads as two triangles
+  ExpectSameCorners(PointsWithTCoords(filter->GetOutput()), PointsWithTCoords(back), 1e-6);
+}
+
+// A broken file gives an error naming the fault and an empty output (VTK 9.1's own reader
+// crashes on it).
+TEST(GLTF, BrokenReferencesAreErrorsNotCrashes)
+{
+  const std::string path = TempPath("broken.gltf");
+  std::ofstream(path) << R"({"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attributes":{"POSITION":5}}]}]})";
+  subdtest::Messages messages;
+  vtkSmartPointer<vtkPolyData> mesh = ReadGLTF(path, messages);
+  EXPECT_NE(messages.Errors.find("refers to accessors[5]"), std::string::npos) << messages.Errors;
+  EXPECT_EQ(mesh->GetNumberOfPoints(), 0);
 }
 }

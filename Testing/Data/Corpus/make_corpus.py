@@ -27,6 +27,8 @@ every run gives the same bytes. The test suite (Testing/Filters/TestCorpus.cxx a
 tests) regenerates the corpus in the build folder; fuzzing adds the inputs that once crashed
 (Testing/Data/Corpus/crashes/), which are committed as they are.
 """
+import base64
+import json
 import math
 import os
 import random
@@ -275,6 +277,60 @@ write_bytes("valid-big-endian-quality.ply", ply_binary(CUBE_POINTS, CUBE_FACES, 
 expect("valid-big-endian-quality.ply")
 write_bytes("ply-index-out-of-range.ply", ply_binary(CUBE_POINTS, CUBE_FACES[:5] + [(0, 1, 8, 3)], "little"))
 expect("ply-index-out-of-range.ply", read="error~uses vertex 8")
+
+# glTF: the cube as triangles in one primitive, as a .gltf with its buffer in a data URI and as
+# a .glb; then the structural faults VTK 9.1's glTF reader would crash on or read past.
+def gltf_cube(edit=None, uri=True):
+    tris = [t for f in CUBE_FACES for t in ((f[0], f[1], f[2]), (f[0], f[2], f[3]))]
+    data = struct.pack("<24f", *[c for p in CUBE_POINTS for c in p]) + struct.pack("<36I", *[i for t in tris for i in t])
+    doc = {"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
+           "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+           "buffers": [{"byteLength": len(data)}],
+           "bufferViews": [{"buffer": 0, "byteLength": 96}, {"buffer": 0, "byteOffset": 96, "byteLength": 144}],
+           "accessors": [{"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+                          "min": [0, 0, 0], "max": [1, 1, 1]},
+                         {"bufferView": 1, "componentType": 5125, "count": 36, "type": "SCALAR"}]}
+    if uri:
+        doc["buffers"][0]["uri"] = "data:application/octet-stream;base64," + base64.b64encode(data).decode()
+    if edit:
+        edit(doc)
+    return doc, data
+
+
+def glb(doc, data):
+    text = json.dumps(doc).encode()
+    text += b" " * (-len(text) % 4)
+    data += bytes(-len(data) % 4)
+    body = struct.pack("<II", len(text), 0x4E4F534A) + text + struct.pack("<II", len(data), 0x004E4942) + data
+    return b"glTF" + struct.pack("<II", 2, 12 + len(body)) + body
+
+
+write_text("valid.gltf", json.dumps(gltf_cube()[0]))
+expect("valid.gltf")
+write_bytes("valid.glb", glb(*gltf_cube(uri=False)))
+expect("valid.glb")
+write_text("truncated.gltf", json.dumps(gltf_cube()[0])[:200])
+expect("truncated.gltf", read="error~json")
+write_bytes("truncated.glb", glb(*gltf_cube(uri=False))[:300])
+expect("truncated.glb", read="error~longer than the file")
+write_bytes("garbage.gltf", bytes(rng.randrange(256) for _ in range(3000)))
+expect("garbage.gltf", read="error~.")
+gltf_faults = {
+    "accessor-out-of-range": (lambda d: d["meshes"][0]["primitives"][0]["attributes"].update(POSITION=5), "accessors\\[5\\]"),
+    "missing-buffer-file": (lambda d: d["buffers"][0].update(uri="no-such-file.bin"), "cannot open"),
+    "short-buffer": (lambda d: d["buffers"][0].update(byteLength=100), "outside its buffer"),
+    "accessor-past-view": (lambda d: d["accessors"][1].update(count=99), "past the end"),
+    "node-cycle": (lambda d: d["nodes"].append({"children": [1]}) or d["nodes"][0].update(children=[1]), "own ancestor"),
+    "no-position": (lambda d: d["meshes"][0]["primitives"][0].update(attributes={}), "no position"),
+    "version-1": (lambda d: d["asset"].update(version="1.0"), "2\\.0"),
+}
+for name, (edit, message) in sorted(gltf_faults.items()):
+    write_text("gltf-" + name + ".gltf", json.dumps(gltf_cube(edit)[0]))
+    expect("gltf-" + name + ".gltf", read="error~" + message)
+# An index past the points: the file's structure is sound, the faces are not.
+write_bytes("gltf-index-out-of-range.glb",
+            glb(*gltf_cube(uri=False))[:-4] + struct.pack("<I", 40))
+expect("gltf-index-out-of-range.glb", surface="error~not exist|outside", curve="error~cell 11 .*outside")
 
 # --- seeds for the fuzz targets (Testing/Fuzz) ---
 # FuzzReaders: a format byte (the index in its list of extensions), then the file.
