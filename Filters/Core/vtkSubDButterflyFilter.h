@@ -32,6 +32,11 @@
  * Attributes, crease input/output, errors, progress and stencil caching: see
  * vtkSubDSurfaceFilter.
  *
+ * Face-varying data (texture coordinates split at seams, see vtkSubDSurfaceFilter's
+ * WeldCoincidentPoints): the surface is refined whole; each UV island is refined by the same
+ * rules, its seams acting as its boundaries (4-point rule), so values inside an island are
+ * interpolated as positions are, and a linear map on a flat island stays linear.
+ *
  * A polygon that repeats a point has its repeated corners collapsed first (its stencils
  * need distinct corners; see vtkSubDSurfaceFilter::SetCollapseRepeatedCorners).
  */
@@ -72,6 +77,7 @@ protected:
 
   subd::Scheme* NewScheme(bool allTriangles) override;
   bool RequiresTriangles() override { return true; }
+  bool RefinesFaceVaryingData() override { return true; }
 
   double Tension = 0.0;
 

@@ -12,6 +12,7 @@
 #include "SubDFaceVarying.h"
 #include "SubDLimitRules.h"
 #include "SubDOpenSubdivOracle.h"
+#include "SubDFilterTestSupport.h"
 #include "SubDOracleSupport.h"
 #include "SubDRefiner.h"
 #include "SubDTestMeshes.h"
@@ -24,6 +25,7 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkStaticPointLocator.h"
+#include "vtkSubDButterflyFilter.h"
 #include "vtkSubDCatmullClarkFilter.h"
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
@@ -31,6 +33,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <numeric>
@@ -550,5 +553,80 @@ TEST(FaceVaryingFilters, SplitInputIsWeldedAndRefinedAsOpenSubdivDoes)
           }
         }
       }
+}
+
+// The points of `mesh`, sorted, to compare surfaces whatever their numbering.
+std::vector<std::array<double, 3>> SortedPoints(vtkPolyData* mesh)
+{
+  std::vector<std::array<double, 3>> points(static_cast<size_t>(mesh->GetNumberOfPoints()));
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+    mesh->GetPoint(p, points[p].data());
+  std::sort(points.begin(), points.end());
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  return points;
+}
+
+vtkSmartPointer<vtkPolyData> Butterfly(vtkPolyData* input, int levels)
+{
+  vtkNew<vtkSubDButterflyFilter> filter;
+  filter->SetInputData(input);
+  filter->SetNumberOfSubdivisions(levels);
+  filter->Update();
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(filter->GetOutput());
+  return out;
+}
+
+// Butterfly (no OpenSubdiv counterpart) refines each UV island with its own rules, the seams
+// as the island's boundaries, and the surface whole: split at seams, the fixtures give the
+// positions of the welded mesh without texture coordinates; on a flat regular grid of two
+// islands whose coordinates are a linear map of the position (shifted per island), every
+// output point keeps its island's map, since the butterfly's inner and 4-point rules both
+// reproduce linear data there.
+TEST(FaceVaryingFilters, ButterflyRefinesIslandsAndLeavesPositionsAlone)
+{
+  const int levels = 2;
+  for (const SeamedMesh& fixture : SeamedMeshes())
+  {
+    if (fixture.Mesh.Name.find("non-manifold") != std::string::npos)
+      continue; // (a non-manifold seam vertex is pinned in the channel only)
+    const SeamedMesh seamed = Triangulated(fixture);
+    vtkSmartPointer<vtkPolyData> split = Butterfly(SplitAtSeams(seamed), levels);
+    vtkSmartPointer<vtkPolyData> whole = Butterfly(subdtest::ToPolyData(seamed.Mesh), levels);
+    ASSERT_NE(split->GetPointData()->GetTCoords(), nullptr) << seamed.Mesh.Name;
+    EXPECT_EQ(split->GetNumberOfPolys(), whole->GetNumberOfPolys()) << seamed.Mesh.Name;
+    const auto a = SortedPoints(split), b = SortedPoints(whole);
+    ASSERT_EQ(a.size(), b.size()) << seamed.Mesh.Name;
+    for (size_t i = 0; i < a.size(); ++i)
+      for (int d = 0; d < 3; ++d)
+        EXPECT_NEAR(a[i][d], b[i][d], 1e-12) << seamed.Mesh.Name;
+  }
+
+  std::vector<int> halves;
+  for (int j = 0; j < 6; ++j)
+    for (int i = 0; i < 8; ++i)
+      halves.push_back(i >= 4 ? 1 : 0);
+  const SeamedMesh flat = Triangulated(ByIslands(Grid(8, 6, false, false), halves, "flat-grid-2-islands"));
+  vtkSmartPointer<vtkPolyData> out = Butterfly(SplitAtSeams(flat), 3);
+  vtkDataArray* uv = out->GetPointData()->GetTCoords();
+  ASSERT_NE(uv, nullptr);
+  int checked = 0, onSeam = 0;
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p)
+  {
+    const double* x = out->GetPoint(p);
+    // (Two cage edges from the island's corners, where the 4-point rule meets a turn of the
+    // boundary and no rule reproduces linear data.)
+    if (x[0] < 2 || x[0] > 6 || x[1] < 2 || x[1] > 4)
+      continue;
+    double error = 1e300;
+    for (int island = 0; island < 2; ++island) // ByIslands' map
+      error = std::min(error, std::abs(uv->GetComponent(p, 0) - (x[0] + 0.3 * x[1] + 0.7 * x[2] + 5.0 * island)) +
+          std::abs(uv->GetComponent(p, 1) - (0.2 * x[0] - x[1] + 0.4 * x[2])));
+    EXPECT_LT(error, 1e-12) << "point " << p;
+    ++checked;
+    onSeam += x[0] == 4.0;
+  }
+  EXPECT_GT(checked, 500);
+  EXPECT_GT(onSeam, 30); // each side of the seam, split
 }
 }
