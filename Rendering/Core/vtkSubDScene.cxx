@@ -17,7 +17,9 @@
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
 #include "vtkPolyData.h"
+#include "vtkImageData.h"
 #include "vtkPolyDataMapper.h"
+#include "vtkTexture.h"
 #include "vtkPolyDataNormals.h"
 #include "vtkProperty.h"
 #include "vtkRenderWindow.h"
@@ -310,15 +312,51 @@ void PlaceCamera(vtkCamera* camera, const vtkBoundingBox& box, const std::vector
   camera->SetViewUp(0.0, 0.0, 1.0);
 }
 
-// The actor of a prepared surface `mesh`: coloured by its active scalars through `table`, or
-// plain for COLOR_NONE.
-vtkSmartPointer<vtkActor> SurfaceActor(vtkPolyData* mesh, int coloring, vtkLookupTable* table)
+// A checker of 8 x 8 squares per unit of texture space, repeated, its squares sharp.
+vtkSmartPointer<vtkTexture> CheckerTexture()
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(8, 8, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  for (int j = 0; j < 8; ++j)
+  {
+    for (int i = 0; i < 8; ++i)
+    {
+      auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer(i, j, 0));
+      const bool light = (i + j) % 2 == 0;
+      rgb[0] = light ? 235 : 60;
+      rgb[1] = light ? 235 : 90;
+      rgb[2] = light ? 225 : 140;
+    }
+  }
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOff();
+  texture->RepeatOn();
+  texture->MipmapOff();
+  return texture;
+}
+
+// Whether the view of `mesh` shows the checker (ShowTexture and texture coordinates).
+bool Textured(vtkPolyData* mesh, bool showTexture)
+{
+  return showTexture && mesh->GetPointData()->GetTCoords() != nullptr;
+}
+
+// The actor of a prepared surface `mesh`: checkered (`textured`), coloured by its active
+// scalars through `table`, or plain for COLOR_NONE.
+vtkSmartPointer<vtkActor> SurfaceActor(vtkPolyData* mesh, int coloring, vtkLookupTable* table, bool textured)
 {
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(mesh);
   auto actor = vtkSmartPointer<vtkActor>::New();
   actor->SetMapper(mapper);
-  if (coloring == vtkSubDScene::COLOR_NONE)
+  if (textured)
+  {
+    mapper->ScalarVisibilityOff();
+    actor->SetTexture(CheckerTexture());
+  }
+  else if (coloring == vtkSubDScene::COLOR_NONE)
   {
     mapper->ScalarVisibilityOff();
     actor->GetProperty()->SetColor(SurfaceColor[0], SurfaceColor[1], SurfaceColor[2]);
@@ -377,7 +415,9 @@ void vtkSubDScene::AddViewRenderer(
   const double size = box.IsValid() ? box.GetDiagonalLength() : 1.0;
   vtkSmartPointer<vtkRenderer> renderer = GridRenderer(k, columns, rows);
   renderer->SetActiveCamera(this->Internals->Camera);
-  renderer->AddActor(SurfaceActor(this->Internals->Prepared[k].Mesh, this->Coloring, table));
+  vtkPolyData* prepared = this->Internals->Prepared[k].Mesh;
+  const bool textured = Textured(prepared, this->ShowTexture);
+  renderer->AddActor(SurfaceActor(prepared, this->Coloring, table, textured));
   if (this->ShowWireframe && view.Surface->GetNumberOfPolys() > 0)
   {
     renderer->AddActor(subdrender::WireframeActor(view.Surface));
@@ -406,7 +446,7 @@ void vtkSubDScene::AddViewRenderer(
   {
     renderer->AddActor2D(TitleActor(view.Title, this->ViewSize[0]));
   }
-  if (this->ShowScalarBar && this->Coloring != COLOR_NONE && view.Surface->GetNumberOfPolys() > 0)
+  if (this->ShowScalarBar && this->Coloring != COLOR_NONE && view.Surface->GetNumberOfPolys() > 0 && !textured)
   {
     renderer->AddActor2D(ScalarBarActor(table, this->Coloring));
   }
@@ -526,6 +566,7 @@ void vtkSubDScene::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ColorMap: " << GetColorMapName(this->ColorMap) << "\n";
   os << indent << "CageOpacity: " << this->CageOpacity << "\n";
   os << indent << "ShowWireframe: " << (this->ShowWireframe ? "On" : "Off") << "\n";
+  os << indent << "ShowTexture: " << (this->ShowTexture ? "On" : "Off") << "\n";
   os << indent << "CageSelection: " << this->CageSelection[0] << " " << this->CageSelection[1] << "\n";
   os << indent << "ViewSize: " << this->ViewSize[0] << " x " << this->ViewSize[1] << "\n";
   os << indent << "ViewAzimuth: " << this->ViewAzimuth << "\n";

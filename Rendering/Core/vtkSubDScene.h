@@ -21,6 +21,7 @@
  * coloured by sharpness from orange (barely semi-sharp) to magenta (infinitely sharp); the
  * surface's own crease lines (its line cells, as SubD's filters output them, with their
  * decayed sharpness) in the same colours; optionally the refined mesh's edges (ShowWireframe);
+ * optionally a checker texture on surfaces with texture coordinates (ShowTexture);
  * and a selected cage edge or vertex in cyan (the explorer's crease editing). Shading uses
  * point normals split at 60 degrees, so sharp creases look sharp.
  *
@@ -171,6 +172,18 @@ public:
 
   ///@{
   /**
+   * Draw surfaces that have texture coordinates (TCoords) with a checker texture instead of
+   * their colouring (default off): 8 x 8 squares per unit of texture space, so that a seam
+   * whose two sides disagree, or a stretched or folded map, shows at a glance. Surfaces
+   * without texture coordinates keep their colouring.
+   */
+  vtkSetMacro(ShowTexture, bool);
+  vtkGetMacro(ShowTexture, bool);
+  vtkBooleanMacro(ShowTexture, bool);
+  ///@}
+
+  ///@{
+  /**
    * Mark the cage edge (a, b), or the cage vertex a when b < 0, in every view; a < 0 marks
    * nothing (the default).
    */
@@ -257,6 +270,7 @@ protected:
   int ColorMap = COLORMAP_COOL_TO_WARM;
   double CageOpacity = 1.0;
   bool ShowWireframe = false;
+  bool ShowTexture = false;
   vtkIdType CageSelection[2] = { -1, -1 };
   int ViewSize[2] = { 400, 400 };
   double ViewAzimuth = 30.0;

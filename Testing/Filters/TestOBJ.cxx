@@ -11,6 +11,7 @@
 
 #include "SubDFilterTestSupport.h"
 #include "SubDTempFiles.h"
+#include "SubDTexturedCube.h"
 
 #include "vtkCellData.h"
 #include "vtkDataArray.h"
@@ -242,20 +243,6 @@ TEST(OBJ, TextureSeamsSurviveSubdivisionAndRoundTrip)
   }
 }
 
-// A cube with a cross unwrap: the four sides in a strip (one seam where it closes), the caps on
-// side 0.
-std::string CrossUnwrapOBJ()
-{
-  std::string text = "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
-  const char* vt[] = { "0 0", "1 0", "2 0", "3 0", "4 0", "0 1", "1 1", "2 1", "3 1", "4 1", "0 2", "1 2", "0 -1",
-    "1 -1" };
-  for (const char* t : vt)
-    text += std::string("vt ") + t + "\n";
-  text += "f 1/1 2/2 6/7 5/6\nf 2/2 3/3 7/8 6/7\nf 3/3 4/4 8/9 7/8\nf 4/4 1/5 5/10 8/9\n" // sides
-          "f 5/6 6/7 7/12 8/11\nf 1/1 4/13 3/14 2/2\n";                                 // caps
-  return text;
-}
-
 using Corners = std::set<std::array<double, 5>>;
 
 // The points of a mesh with their texture coordinates, as a set.
@@ -305,7 +292,7 @@ void ExpectSameCorners(const Corners& a, const Corners& b, double tolerance)
 TEST(OBJ, VTKsSplitReadingWeldsToTheSameResult)
 {
   const std::string path = TempPath("cross.obj");
-  std::ofstream(path) << CrossUnwrapOBJ();
+  std::ofstream(path) << subdtest::CrossUnwrappedCubeOBJ();
   subdtest::Messages messages;
   vtkSmartPointer<vtkPolyData> ours = ReadOBJ(path, messages);
   vtkNew<vtkOBJReader> vtkReader;
@@ -344,7 +331,7 @@ void WriteGLTF(vtkPolyData* mesh, const std::string& path)
 TEST(GLTF, SplitTrianglesWeldToTheSeamedResultAndRoundTrip)
 {
   const std::string path = TempPath("cross-tris.obj"), gltf = TempPath("cross.gltf"), refinedPath = TempPath("cc.gltf");
-  std::ofstream(path) << CrossUnwrapOBJ();
+  std::ofstream(path) << subdtest::CrossUnwrappedCubeOBJ();
   subdtest::Messages messages;
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputData(ReadOBJ(path, messages));

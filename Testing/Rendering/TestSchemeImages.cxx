@@ -5,10 +5,13 @@
 // OSMesa (this program links libOSMesa first), DISPLAY unset.
 #include "SubDBuiltinCages.h"
 #include "SubDImageTestSupport.h"
+#include "SubDMeshIO.h"
+#include "SubDTexturedCube.h"
 
 #include "vtkCellArray.h"
 #include "vtkMath.h"
 #include "vtkPlatonicSolidSource.h"
+#include "vtkPointData.h"
 #include "vtkPolyData.h"
 #include "vtkRenderWindow.h"
 #include "vtkSmartPointer.h"
@@ -26,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
 #include <string>
 #include <tuple>
@@ -204,6 +208,55 @@ TEST(SceneImage, DooSabinCreasedCubeKeepsNoCageFace)
       surface->GetPoint(i, q);
       EXPECT_GT(vtkMath::Distance2BetweenPoints(p, q), 1e-18) << "loop corner " << loopCorner << " is point " << i;
     }
+  }
+}
+
+// A cube with a cross unwrap, split at its seams as VTK's readers deliver textured meshes,
+// checkered: subdivided as it is (no welding), it falls apart along the seams; welded, it is
+// the smooth cube with its texture seams intact. The welded surface is the one of the cube
+// without texture coordinates.
+TEST(SceneImage, CheckerTexturedSeamedCubeBeforeAndAfterWelding)
+{
+  const std::string path = std::string(SUBD_IMAGE_TEMP_DIR) + "/cross-unwrapped-cube.obj";
+  std::ofstream(path) << subdtest::CrossUnwrappedCubeOBJ();
+  std::string error;
+  vtkSmartPointer<vtkPolyData> cage = subdapp::ReadMesh(path, error);
+  ASSERT_TRUE(cage) << error;
+  ASSERT_NE(cage->GetPointData()->GetTCoords(), nullptr);
+  vtkNew<vtkSubDScene> scene;
+  scene->SetViewSize(300, 300);
+  scene->ShowTextureOn();
+  scene->ShowCageOff();
+  scene->SetViewAzimuth(-60.0);
+  vtkSmartPointer<vtkPolyData> welded;
+  for (const bool weld : { false, true })
+  {
+    vtkNew<vtkSubDCatmullClarkFilter> filter;
+    filter->SetInputData(cage);
+    filter->SetNumberOfSubdivisions(3);
+    filter->SetWeldCoincidentPoints(weld);
+    filter->Update();
+    auto surface = vtkSmartPointer<vtkPolyData>::New();
+    surface->ShallowCopy(filter->GetOutput());
+    ASSERT_NE(surface->GetPointData()->GetTCoords(), nullptr);
+    scene->AddView(surface, cage, weld ? "welded" : "split at seams");
+    welded = surface;
+  }
+  ASSERT_TRUE(scene->Render());
+  subdtest::CompareWithBaseline(scene->GetRenderWindow(), "scene_texture_seams");
+
+  // (Cage("cube") is the same unit cube, its faces in another order: round-off apart.)
+  vtkSmartPointer<vtkPolyData> plain = Subdivide(AllSchemes()[0], Cage("cube"), 3);
+  for (vtkIdType i = 0; i < welded->GetNumberOfPoints(); ++i)
+  {
+    double p[3], q[3], nearest = 1e300;
+    welded->GetPoint(i, p);
+    for (vtkIdType j = 0; j < plain->GetNumberOfPoints(); ++j)
+    {
+      plain->GetPoint(j, q);
+      nearest = std::min(nearest, vtkMath::Distance2BetweenPoints(p, q));
+    }
+    EXPECT_LT(nearest, 1e-24) << "point " << i;
   }
 }
 
