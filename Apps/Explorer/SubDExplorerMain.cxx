@@ -5,6 +5,7 @@
 #include "QVTKOpenGLNativeWidget.h"
 #include "vtkCellArray.h"
 #include "vtkPolyData.h"
+#include "vtkSubDSurfaceFilter.h"
 
 #include <QApplication>
 #include <QElapsedTimer>
@@ -45,6 +46,10 @@ void ApplyOptions(const ExplorerOptions& options, ExplorerWindow& window)
     window.SetCageOpacity(options.CageOpacity);
   if (given("--wireframe"))
     window.SetShowWireframe(true);
+  if (given("--texture"))
+    window.SetShowTexture(true);
+  if (given("--fvar-interpolation"))
+    window.SetFaceVaryingInterpolation(vtkSubDSurfaceFilter::FaceVaryingInterpolationFromName(options.FaceVarying.c_str()));
   if (given("--limit"))
     window.SetLimit(true);
 }

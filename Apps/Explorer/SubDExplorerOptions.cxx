@@ -5,6 +5,7 @@
 #include "SubDSchemeRegistry.h"
 
 #include "vtkSubDScene.h"
+#include "vtkSubDSurfaceFilter.h"
 
 #include <cstdlib>
 #include <sstream>
@@ -60,14 +61,16 @@ std::string ExplorerUsage()
          "                     [--levels N] [--color none|mean|gaussian|k1|k2] [--limit]\n"
          "                     [--colormap cool-to-warm|rainbow|black-body|grayscale]\n"
          "                     [--range symmetric|percentile] [--percentile P] [--no-cage]\n"
-         "                     [--cage-opacity O] [--wireframe] [--size WxH]\n"
+         "                     [--cage-opacity O] [--wireframe] [--texture] [--size WxH]\n"
+         "                     [--fvar-interpolation MODE]\n"
          "                     [--screenshot VIEWS.png] [--window-shot WINDOW.png]\n"
          "                     [--crease A-B=S]... [--corner V=S]... [--select A-B|V]\n"
          "                     [--export-cage CAGE.vtp] [--cancel-after MS] [--time-edits N]\n"
          "                     [--no-settings | --settings FILE.ini] [--print-state] [--quit]\n"
          "\n"
-         "Compares subdivision schemes side by side on a mesh (.vtp .vtk .obj .ply .stl .off)\n"
-         "or a built-in cage. --screenshot/--window-shot save pictures once the views are up to\n"
+         "Compares subdivision schemes side by side on a mesh (.vtp .vtk .obj .ply .stl .off\n"
+         ".gltf .glb) or a built-in cage. --texture shows a checker on surfaces with texture\n"
+         "coordinates, --fvar-interpolation sets how every view refines them (as subd's). --screenshot/--window-shot save pictures once the views are up to\n"
          "date; with --quit the app then exits (scripted use, e.g. under xvfb-run).\n"
          "--cancel-after MS presses Cancel MS milliseconds into the first update (as the\n"
          "Cancel button does) and reports whether the update stopped. --crease and --corner\n"
@@ -137,7 +140,7 @@ bool ParseSharpnessEdit(
 }
 
 // The options of what is subdivided and shown: --builtin, --views, --schemes, --levels,
-// --limit.
+// --limit, --fvar-interpolation.
 Parsed ParseSceneOption(ArgumentReader& arguments, ExplorerOptions& options, std::string& error)
 {
   const std::string arg = arguments.Current();
@@ -183,11 +186,25 @@ Parsed ParseSceneOption(ArgumentReader& arguments, ExplorerOptions& options, std
     options.Limit = true;
     return Parsed::Done;
   }
+  if (arg == "--fvar-interpolation")
+  {
+    if (!arguments.Value(options.FaceVarying, error))
+    {
+      return Parsed::Failed;
+    }
+    if (vtkSubDSurfaceFilter::FaceVaryingInterpolationFromName(options.FaceVarying.c_str()) < 0)
+    {
+      error = "--fvar-interpolation wants none, corners-only, corners-plus1, corners-plus2, boundaries or all, "
+              "not '" + options.FaceVarying + "'";
+      return Parsed::Failed;
+    }
+    return Parsed::Done;
+  }
   return Parsed::NotHere;
 }
 
 // The options of how the views look: --color, --colormap, --range, --percentile,
-// --cage-opacity, --no-cage, --wireframe, --size.
+// --cage-opacity, --no-cage, --wireframe, --texture, --size.
 Parsed ParseLookOption(ArgumentReader& arguments, ExplorerOptions& options, std::string& error)
 {
   const std::string arg = arguments.Current();
@@ -256,6 +273,11 @@ Parsed ParseLookOption(ArgumentReader& arguments, ExplorerOptions& options, std:
   if (arg == "--wireframe")
   {
     options.Wireframe = true;
+    return Parsed::Done;
+  }
+  if (arg == "--texture")
+  {
+    options.Texture = true;
     return Parsed::Done;
   }
   if (arg == "--size")

@@ -22,6 +22,8 @@ struct ExplorerOptions
   bool Cage = true;
   double CageOpacity = 1.0;
   bool Wireframe = false;
+  bool Texture = false;                        ///< --texture: the checker on textured surfaces
+  std::string FaceVarying = "corners-plus1";  ///< --fvar-interpolation, every view
   bool Limit = false; ///< project to the limit (and use exact curvature) where the scheme can
   long long SelectA = -1, SelectB = -1; ///< --select A-B or --select V
   std::string Screenshot; ///< PNG of the views, written once the views are up to date

@@ -14,6 +14,7 @@
 #include "vtkRenderWindowInteractor.h"
 #include "vtkRenderer.h"
 #include "vtkSubDScene.h"
+#include "vtkSubDSurfaceFilter.h"
 
 #include <QAction>
 #include <QApplication>
@@ -205,6 +206,10 @@ QGroupBox* ExplorerWindow::BuildGlobalControls()
   form->addRow(cageRow);
   this->ShowWireframe = new QCheckBox("Refined wireframe (W)");
   form->addRow(this->ShowWireframe);
+  this->ShowTexture = new QCheckBox("Checker texture (T)");
+  this->ShowTexture->setToolTip("Surfaces with texture coordinates: a checker instead of the colouring, so that "
+                                "seams and stretching show");
+  form->addRow(this->ShowTexture);
   return global;
 }
 
@@ -260,6 +265,15 @@ QGroupBox* ExplorerWindow::BuildViewControls(int v)
   view.CreaseMethod->setToolTip("How semi-sharp creases decay: one unit per level, or averaged along the "
                                 "crease first (OpenSubdiv's Chaikin)");
   viewForm->addRow("Creases", view.CreaseMethod);
+  view.FaceVarying = new QComboBox;
+  for (int mode = vtkSubDSurfaceFilter::FVAR_LINEAR_NONE; mode <= vtkSubDSurfaceFilter::FVAR_LINEAR_ALL; ++mode)
+  {
+    view.FaceVarying->addItem(vtkSubDSurfaceFilter::GetFaceVaryingInterpolationName(mode));
+  }
+  view.FaceVarying->setCurrentIndex(vtkSubDSurfaceFilter::FVAR_LINEAR_CORNERS_PLUS1);
+  view.FaceVarying->setToolTip("How texture coordinates are refined where UV seams split the mesh (OpenSubdiv's "
+                               "face-varying interpolation): what stays linear");
+  viewForm->addRow("UV seams", view.FaceVarying);
   view.Limit = new QCheckBox("Limit: project, exact curvature (L)");
   view.Limit->setToolTip("Move the points to the limit surface where the scheme has limit masks; Catmull-Clark "
                          "and Loop also colour by the limit's exact curvature");
@@ -286,6 +300,7 @@ void ExplorerWindow::ConnectViewControls(int v)
     const subdapp::SchemeEntry* entry = subdapp::FindScheme(scheme);
     changed.Boundary->setEnabled(!entry->Curve);
     changed.CreaseMethod->setEnabled(!entry->Curve);
+    changed.FaceVarying->setEnabled(!entry->Curve);
     changed.Limit->setEnabled(entry->LimitPositions);
     this->Updating = updating;
     if (!this->Updating)
@@ -304,6 +319,10 @@ void ExplorerWindow::ConnectViewControls(int v)
       this->UpdateViews();
   });
   connect(view.CreaseMethod, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this]() {
+    if (!this->Updating)
+      this->UpdateViews();
+  });
+  connect(view.FaceVarying, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this]() {
     if (!this->Updating)
       this->UpdateViews();
   });
@@ -338,6 +357,7 @@ void ExplorerWindow::ConnectGlobalControls()
       this->SetCageOpacity(value / 100.0);
   });
   connect(this->ShowWireframe, &QCheckBox::toggled, this, [this](bool show) { this->SetShowWireframe(show); });
+  connect(this->ShowTexture, &QCheckBox::toggled, this, [this](bool show) { this->SetShowTexture(show); });
 }
 
 void ExplorerWindow::BuildMenus()
@@ -377,6 +397,7 @@ void ExplorerWindow::BuildMenus()
     QKeySequence(Qt::Key_Minus));
   view->addAction("Toggle &cage", this, [this]() { this->ShowCage->toggle(); }, QKeySequence(Qt::Key_C));
   view->addAction("Toggle &wireframe", this, [this]() { this->ShowWireframe->toggle(); }, QKeySequence(Qt::Key_W));
+  view->addAction("Toggle checker &texture", this, [this]() { this->ShowTexture->toggle(); }, QKeySequence(Qt::Key_T));
   view->addAction("Toggle &limit (all views)", this, [this]() { this->SetLimit(!this->Views[0].Limit->isChecked()); },
     QKeySequence(Qt::Key_L));
   view->addAction("Next curvature &colouring", this,
@@ -576,6 +597,30 @@ void ExplorerWindow::SetShowWireframe(bool show)
   }
 }
 
+void ExplorerWindow::SetShowTexture(bool show)
+{
+  this->Scene->SetShowTexture(show);
+  this->SetQuietly([&]() { this->ShowTexture->setChecked(show); });
+  if (!this->Updating)
+  {
+    this->UpdateViews();
+  }
+}
+
+void ExplorerWindow::SetFaceVaryingInterpolation(int mode)
+{
+  this->SetQuietly([&]() {
+    for (ViewControls& view : this->Views)
+    {
+      view.FaceVarying->setCurrentIndex(mode);
+    }
+  });
+  if (!this->Updating)
+  {
+    this->UpdateViews();
+  }
+}
+
 void ExplorerWindow::SetLimit(bool limit)
 {
   this->SetQuietly([&]() {
@@ -678,6 +723,7 @@ subdapp::SchemeOptions ExplorerWindow::ViewOptions(int v) const
   options.Tension = view.Tension->value();
   options.TensionGiven = view.Tension->isEnabled();
   options.CreaseMethod = view.CreaseMethod->currentIndex();
+  options.FaceVaryingInterpolation = view.FaceVarying->currentIndex();
   options.ProjectToLimit = view.Limit->isChecked() && entry->LimitPositions;
   options.LimitCurvature = options.ProjectToLimit && entry->LimitCurvature &&
     this->Scene->GetColoring() != vtkSubDScene::COLOR_NONE;
@@ -1016,6 +1062,7 @@ void ExplorerWindow::UseSettings(std::unique_ptr<QSettings> settings)
       view.Boundary->setCurrentIndex(in.value("boundary", view.Boundary->currentIndex()).toInt());
       view.Tension->setValue(in.value("tension", view.Tension->value()).toDouble());
       view.CreaseMethod->setCurrentIndex(in.value("creaseMethod", view.CreaseMethod->currentIndex()).toInt());
+      view.FaceVarying->setCurrentIndex(in.value("fvarInterpolation", view.FaceVarying->currentIndex()).toInt());
       view.Limit->setChecked(in.value("limit", view.Limit->isChecked()).toBool());
       in.endGroup();
     }
@@ -1028,6 +1075,7 @@ void ExplorerWindow::UseSettings(std::unique_ptr<QSettings> settings)
     this->SetShowCage(in.value("cage", this->ShowCage->isChecked()).toBool());
     this->SetCageOpacity(in.value("cageOpacity", this->Scene->GetCageOpacity()).toDouble());
     this->SetShowWireframe(in.value("wireframe", this->ShowWireframe->isChecked()).toBool());
+    this->SetShowTexture(in.value("texture", this->ShowTexture->isChecked()).toBool());
     in.endGroup();
   });
   this->restoreGeometry(in.value("window/geometry").toByteArray());
@@ -1050,6 +1098,7 @@ void ExplorerWindow::SaveSettings()
     out.setValue("boundary", view.Boundary->currentIndex());
     out.setValue("tension", view.Tension->value());
     out.setValue("creaseMethod", view.CreaseMethod->currentIndex());
+    out.setValue("fvarInterpolation", view.FaceVarying->currentIndex());
     out.setValue("limit", view.Limit->isChecked());
     out.endGroup();
   }
@@ -1062,6 +1111,7 @@ void ExplorerWindow::SaveSettings()
   out.setValue("cage", this->ShowCage->isChecked());
   out.setValue("cageOpacity", this->Scene->GetCageOpacity());
   out.setValue("wireframe", this->ShowWireframe->isChecked());
+  out.setValue("texture", this->ShowTexture->isChecked());
   out.endGroup();
   out.setValue("window/geometry", this->saveGeometry());
   out.setValue("window/state", this->saveState());
@@ -1077,7 +1127,8 @@ std::string ExplorerWindow::DescribeState() const
     const ViewControls& view = this->Views[v];
     out << "view " << v + 1 << " " << view.Scheme->currentText().toStdString() << " boundary "
         << view.Boundary->currentText().toStdString() << " tension " << view.Tension->value() << " creases "
-        << view.CreaseMethod->currentText().toStdString() << " limit " << (view.Limit->isChecked() ? "on" : "off")
+        << view.CreaseMethod->currentText().toStdString() << " uv-seams "
+        << view.FaceVarying->currentText().toStdString() << " limit " << (view.Limit->isChecked() ? "on" : "off")
         << "\n";
   }
   out << "level " << this->LevelSlider->value() << "\n"
@@ -1086,7 +1137,8 @@ std::string ExplorerWindow::DescribeState() const
       << "range " << this->RangeMode->currentText().toStdString() << " " << this->RangePercentile->value() << "\n"
       << "cage " << (this->ShowCage->isChecked() ? "on" : "off") << " opacity " << this->Scene->GetCageOpacity()
       << "\n"
-      << "wireframe " << (this->ShowWireframe->isChecked() ? "on" : "off") << "\n";
+      << "wireframe " << (this->ShowWireframe->isChecked() ? "on" : "off") << "\n"
+      << "texture " << (this->ShowTexture->isChecked() ? "on" : "off") << "\n";
   return out.str();
 }
 }

@@ -63,6 +63,8 @@ public:
   void SetShowCage(bool show);
   void SetCageOpacity(double opacity); ///< in [0, 1]
   void SetShowWireframe(bool show);
+  void SetShowTexture(bool show); ///< the checker on surfaces with texture coordinates
+  void SetFaceVaryingInterpolation(int mode); ///< every view's
   void SetLimit(bool limit); ///< every view's Limit box
 
   /// Reads the layout (views, schemes and their options, level, colouring, overlays, window
@@ -121,6 +123,7 @@ private:
     QComboBox* Boundary = nullptr;
     QDoubleSpinBox* Tension = nullptr;
     QComboBox* CreaseMethod = nullptr;
+    QComboBox* FaceVarying = nullptr; ///< how texture coordinates are refined
     QCheckBox* Limit = nullptr;
     QLabel* Statistics = nullptr;
     vtkSmartPointer<vtkPolyData> Result;
@@ -183,6 +186,7 @@ private:
   QCheckBox* ShowCage = nullptr;
   QSlider* CageOpacity = nullptr;
   QCheckBox* ShowWireframe = nullptr;
+  QCheckBox* ShowTexture = nullptr;
   QLabel* CageLabel = nullptr;
   QLabel* SelectionLabel = nullptr;
   QDoubleSpinBox* Sharpness = nullptr;

@@ -80,15 +80,9 @@ bool ParseCreaseMethod(const std::string& text, int& method)
 // A face-varying interpolation mode by its name (vtkSubDSurfaceFilter's).
 bool ParseFaceVaryingInterpolation(const std::string& text, int& mode)
 {
-  for (int m = vtkSubDSurfaceFilter::FVAR_LINEAR_NONE; m <= vtkSubDSurfaceFilter::FVAR_LINEAR_ALL; ++m)
-  {
-    if (text == vtkSubDSurfaceFilter::GetFaceVaryingInterpolationName(m))
-    {
-      mode = m;
-      return true;
-    }
-  }
-  return false;
+  const int named = vtkSubDSurfaceFilter::FaceVaryingInterpolationFromName(text.c_str());
+  mode = named < 0 ? mode : named;
+  return named >= 0;
 }
 
 bool ParseBoundary(const std::string& text, int& rule)

@@ -39,6 +39,7 @@
 #include "vtkUnsignedCharArray.h"
 
 #include <algorithm>
+#include <cstring>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -306,6 +307,18 @@ const char* vtkSubDSurfaceFilter::GetBoundaryRuleAsString()
 const char* vtkSubDSurfaceFilter::GetFaceVaryingInterpolationName(int mode)
 {
   return subd::ToString(static_cast<subd::FaceVaryingInterpolation>(std::max(0, std::min(5, mode))));
+}
+
+int vtkSubDSurfaceFilter::FaceVaryingInterpolationFromName(const char* name)
+{
+  for (int mode = FVAR_LINEAR_NONE; name && mode <= FVAR_LINEAR_ALL; ++mode)
+  {
+    if (std::strcmp(name, GetFaceVaryingInterpolationName(mode)) == 0)
+    {
+      return mode;
+    }
+  }
+  return -1;
 }
 
 const char* vtkSubDSurfaceFilter::GetCreaseMethodAsString()

@@ -230,6 +230,8 @@ public:
   vtkGetMacro(FaceVaryingInterpolation, int);
   /// The mode's name as OpenSubdiv's and USD's users write it ("corners-plus1", ...).
   static const char* GetFaceVaryingInterpolationName(int mode);
+  /// The mode of that name, or -1 for any other.
+  static int FaceVaryingInterpolationFromName(const char* name);
   ///@}
 
   ///@{
