@@ -2,6 +2,7 @@
 
 #include "SubDDiscreteCurvature.h"
 #include "SubDSceneColoring.h"
+#include "SubDSeamShading.h"
 #include "SubDSceneOverlays.h"
 #include "vtkSubDOffscreenRenderWindow.h"
 
@@ -89,28 +90,40 @@ PreparedSurface PrepareSurface(vtkPolyData* surface, int coloring)
     return prepared;
   }
   vtkSmartPointer<vtkPolyData> mesh = subdrender::PolygonsOf(surface);
+  // Points split at texture seams: normals and curvature of the surface welded, so that no
+  // seam shows as a crease.
+  const std::vector<vtkIdType> weldOf = subdrender::FirstPointAtSamePosition(mesh);
+  vtkSmartPointer<vtkPolyData> whole = weldOf.empty() ? mesh : subdrender::WeldedPolygons(mesh, weldOf);
   const char* name = subdrender::CurvatureArrayName(coloring);
   if (name)
   {
-    const subdrender::PolygonAdjacency adjacency(mesh);
+    const subdrender::PolygonAdjacency adjacency(whole);
     vtkDataArray* curvature = mesh->GetPointData()->GetArray(name);
+    std::vector<bool> leftOut = adjacency.Boundary; // of the colour range
     if (!curvature)
     {
       // No limit curvature on the surface (ComputeCurvature): the discrete one of the mesh.
-      vtkSmartPointer<vtkDoubleArray> discrete = subdrender::DiscreteCurvature(mesh, adjacency, coloring);
+      vtkSmartPointer<vtkDoubleArray> discrete = subdrender::DiscreteCurvature(whole, adjacency, coloring);
+      for (size_t p = 0; p < weldOf.size(); ++p)
+      {
+        discrete->SetValue(static_cast<vtkIdType>(p), discrete->GetValue(weldOf[p]));
+        leftOut[p] = leftOut[p] || weldOf[p] != static_cast<vtkIdType>(p);
+      }
       mesh->GetPointData()->AddArray(discrete);
+      whole->GetPointData()->AddArray(discrete);
       curvature = discrete;
     }
-    subdrender::AppendInteriorValues(adjacency.Boundary, curvature, prepared.Values);
+    subdrender::AppendInteriorValues(leftOut, curvature, prepared.Values);
   }
   vtkNew<vtkPolyDataNormals> normals;
-  normals->SetInputData(mesh);
+  normals->SetInputData(whole);
   normals->SetFeatureAngle(60.0);
   normals->SplittingOn();
   normals->ConsistencyOff();
   normals->AutoOrientNormalsOff();
   normals->Update();
-  prepared.Mesh = normals->GetOutput();
+  prepared.Mesh = weldOf.empty() ? vtkSmartPointer<vtkPolyData>(normals->GetOutput())
+                                 : subdrender::SplitAsBoth(mesh, normals->GetOutput());
   if (name)
   {
     prepared.Mesh->GetPointData()->SetActiveScalars(name);

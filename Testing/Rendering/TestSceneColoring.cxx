@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cmath>
+#include <map>
 #include <string>
 
 namespace
@@ -160,6 +161,55 @@ TEST(SceneColoring, DiscreteCurvatureOfACylinder)
   EXPECT_NEAR(mean[1], 0.5 * k, 0.01 * k);
   const std::array<double, 2> gauss = RangeOf(mesh, vtkSubDScene::COLOR_GAUSSIAN_CURVATURE, percentile, 100.0);
   EXPECT_NEAR(0.5 * (gauss[0] + gauss[1]), 0.0, 1e-3 * k * k);
+}
+
+// The sphere split along a seam, as a textured surface comes (a point per side, at one
+// position): its curvature is the sphere's, the seam no boundary. The Gaussian curvature's
+// range over all of it (the extremes) is the unsplit sphere's; seen as a boundary, the seam's
+// angle deficits (about pi) would widen it a hundredfold.
+TEST(SceneColoring, SeamsAreNoBoundary)
+{
+  vtkSmartPointer<vtkPolyData> sphere = Sphere();
+  vtkNew<vtkPoints> points;
+  points->DeepCopy(sphere->GetPoints());
+  vtkNew<vtkCellArray> polys;
+  vtkIdType n;
+  const vtkIdType* ids;
+  std::map<vtkIdType, vtkIdType> copyOf;
+  for (vtkIdType f = 0; f < sphere->GetPolys()->GetNumberOfCells(); ++f)
+  {
+    sphere->GetPolys()->GetCellAtId(f, n, ids);
+    double c[3] = { 0, 0, 0 }, p[3];
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      sphere->GetPoint(ids[k], p);
+      c[0] += p[0];
+      c[1] += p[1];
+    }
+    const bool quarter = c[0] > 0 && c[1] > 0; // its faces get points of their own
+    polys->InsertNextCell(n);
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      vtkIdType id = ids[k];
+      if (quarter)
+      {
+        const auto inserted = copyOf.emplace(id, points->GetNumberOfPoints());
+        if (inserted.second)
+          points->InsertNextPoint(sphere->GetPoint(id));
+        id = inserted.first->second;
+      }
+      polys->InsertCellPoint(id);
+    }
+  }
+  vtkNew<vtkPolyData> split;
+  split->SetPoints(points);
+  split->SetPolys(polys);
+  ASSERT_GT(split->GetNumberOfPoints(), sphere->GetNumberOfPoints() + 100);
+  const int percentile = vtkSubDScene::RANGE_PERCENTILE;
+  const std::array<double, 2> whole = RangeOf(sphere, vtkSubDScene::COLOR_GAUSSIAN_CURVATURE, percentile, 100.0);
+  const std::array<double, 2> seamed = RangeOf(split, vtkSubDScene::COLOR_GAUSSIAN_CURVATURE, percentile, 100.0);
+  EXPECT_NEAR(seamed[0], whole[0], 1e-12);
+  EXPECT_NEAR(seamed[1], whole[1], 1e-12);
 }
 
 // Values spread evenly over [0, 1) with 1% of spikes at 1000: the percentile range is the
