@@ -6,10 +6,8 @@
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
-#include "vtkIdList.h"
-#include "vtkSMPTools.h"
+#include "vtkDoubleArray.h"
 #include "vtkSubDPointDataInterpolation.h"
-#include "vtkTypeInt32Array.h"
 
 #include <algorithm>
 #include <cmath>
@@ -123,18 +121,6 @@ subd::Index DropFacesRepeatedByWelding(
   }
   return dropped;
 }
-
-// The value of a refined channel for an array of type `type`: rounded and clamped for
-// integer types, as vertex data are (vtkSubDPointDataInterpolation).
-double StoredValue(vtkDataArray* array, double value)
-{
-  const int type = array->GetDataType();
-  if (type == VTK_FLOAT || type == VTK_DOUBLE)
-  {
-    return value;
-  }
-  return std::min(array->GetDataTypeMax(), std::max(array->GetDataTypeMin(), std::round(value)));
-}
 }
 
 vtkSubDSeams vtkSubDWeldCoincidentPoints(vtkPolyData* input, subd::FaceScreening& screened, bool byData,
@@ -213,188 +199,89 @@ bool vtkSubDRefineSeams(const subd::Scheme& scheme, const subd::Level& base, con
   return true;
 }
 
-namespace
-{
-// The split output's points and faces: a point per channel vertex that a face uses (in the
-// channel's order), then the unsplit points no face uses (ends of lines passed through);
-// the faces keep their sizes. `newOfOld` receives, per unsplit point, one of its new points.
-void MakeSplitTopology(vtkPolyData* output, const std::function<subd::Index(vtkIdType)>& finestFace,
-  vtkSubDSeamChannel& channel, std::vector<vtkIdType>& newOfOld)
+void vtkSubDSelectSplitOutput(const subd::MeshTopology& finest, const std::vector<subd::Index>& emitted,
+  vtkSubDSeamChannel& channel, std::vector<vtkIdType>& finestPointOfOutput, std::vector<vtkIdType>& outputPointOfFinest)
 {
   const subd::MeshTopology& values = channel.Hierarchy.Finest.Topology;
-  vtkCellArray* polys = output->GetPolys();
-  const vtkIdType numFaces = polys->GetNumberOfCells();
-  // The unsplit point of each channel vertex a face uses (-1: none uses it).
-  std::vector<vtkIdType> sourceOf(static_cast<size_t>(values.GetNumVertices()), -1);
-  vtkIdType n;
-  const vtkIdType* corners;
-  for (vtkIdType c = 0; c < numFaces; ++c)
+  // The finest mesh point of each channel vertex an output face uses (-1: none uses it).
+  std::vector<subd::Index> pointOfValue(static_cast<size_t>(values.GetNumVertices()), -1);
+  for (subd::Index f : emitted)
   {
-    polys->GetCellAtId(c, n, corners);
-    const subd::IndexSpan channelCorners = values.GetFaceVertices(finestFace(c));
-    for (vtkIdType k = 0; k < n; ++k)
+    const subd::IndexSpan points = finest.GetFaceVertices(f), corners = values.GetFaceVertices(f);
+    for (subd::Index k = 0; k < corners.size(); ++k)
     {
-      sourceOf[channelCorners[k]] = corners[k];
+      pointOfValue[corners[k]] = points[k];
     }
   }
-  std::vector<vtkIdType> newOfChannel(sourceOf.size(), -1);
-  newOfOld.assign(static_cast<size_t>(output->GetNumberOfPoints()), -1);
-  for (size_t v = 0; v < sourceOf.size(); ++v)
+  channel.OutputPointOfValue.assign(pointOfValue.size(), -1);
+  channel.ValueOfOutput.clear();
+  finestPointOfOutput.clear();
+  outputPointOfFinest.assign(static_cast<size_t>(finest.GetNumVertices()), -1);
+  for (size_t value = 0; value < pointOfValue.size(); ++value)
   {
-    if (sourceOf[v] >= 0)
+    if (pointOfValue[value] >= 0)
     {
-      newOfChannel[v] = static_cast<vtkIdType>(channel.SourcePoint.size());
-      newOfOld[sourceOf[v]] = newOfChannel[v];
-      channel.SourcePoint.push_back(sourceOf[v]);
-      channel.ChannelVertex.push_back(static_cast<subd::Index>(v));
-    }
-  }
-  for (vtkIdType p = 0; p < output->GetNumberOfPoints(); ++p)
-  {
-    if (newOfOld[p] < 0)
-    {
-      newOfOld[p] = static_cast<vtkIdType>(channel.SourcePoint.size());
-      channel.SourcePoint.push_back(p);
-      channel.ChannelVertex.push_back(-1);
-    }
-  }
-  vtkNew<vtkTypeInt32Array> offsets, connectivity;
-  offsets->SetNumberOfTuples(numFaces + 1);
-  offsets->SetValue(0, 0);
-  for (vtkIdType c = 0; c < numFaces; ++c)
-  {
-    offsets->SetValue(c + 1, offsets->GetValue(c) + static_cast<vtkTypeInt32>(polys->GetCellSize(c)));
-  }
-  connectivity->SetNumberOfTuples(offsets->GetValue(numFaces));
-  vtkSMPTools::For(0, numFaces, 4096, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType c = begin; c < end; ++c)
-    {
-      vtkTypeInt32* out = connectivity->GetPointer(offsets->GetValue(c));
-      for (subd::Index v : values.GetFaceVertices(finestFace(c)))
+      const vtkIdType o = static_cast<vtkIdType>(finestPointOfOutput.size());
+      channel.OutputPointOfValue[value] = o;
+      channel.ValueOfOutput.push_back(static_cast<vtkIdType>(value));
+      finestPointOfOutput.push_back(pointOfValue[value]);
+      if (outputPointOfFinest[pointOfValue[value]] < 0)
       {
-        *out++ = static_cast<vtkTypeInt32>(newOfChannel[v]);
-      }
-    }
-  });
-  channel.Faces = vtkSmartPointer<vtkCellArray>::New();
-  channel.Faces->SetData(offsets, connectivity);
-}
-
-// The refined values of `array` (an input point-data array) at the channel's finest vertices.
-std::vector<double> RefinedValues(vtkDataArray* array, const vtkSubDSeamChannel& channel)
-{
-  const int components = array->GetNumberOfComponents();
-  std::vector<double> base(channel.UserValue.size() * static_cast<size_t>(components));
-  for (size_t u = 0; u < channel.UserValue.size(); ++u)
-  {
-    array->GetTuple(channel.UserValue[u], &base[u * components]);
-  }
-  std::vector<double> finest(static_cast<size_t>(channel.Hierarchy.GetNumFinestPoints()) * components);
-  channel.Hierarchy.Evaluate(base.data(), components, finest.data(), &vtkSubDPointDataInterpolation::SMPFor);
-  return finest;
-}
-
-// The face-varying array of `source` at the split points: the channel's values where a face
-// uses the point, 0 elsewhere (a point of a line passed through).
-vtkSmartPointer<vtkDataArray> FaceVaryingArray(vtkDataArray* source, bool normals, const vtkSubDSeamChannel& channel)
-{
-  const int components = source->GetNumberOfComponents();
-  const std::vector<double> values = RefinedValues(source, channel);
-  vtkSmartPointer<vtkDataArray> target = vtkSmartPointer<vtkDataArray>::Take(source->NewInstance());
-  target->SetName(source->GetName());
-  target->SetNumberOfComponents(components);
-  const vtkIdType numPoints = static_cast<vtkIdType>(channel.SourcePoint.size());
-  target->SetNumberOfTuples(numPoints);
-  vtkSMPTools::For(0, numPoints, 4096, [&](vtkIdType begin, vtkIdType end) {
-    for (vtkIdType p = begin; p < end; ++p)
-    {
-      const subd::Index v = channel.ChannelVertex[p];
-      const double* value = v < 0 ? nullptr : &values[static_cast<size_t>(v) * components];
-      const double length =
-        value && normals ? std::sqrt(value[0] * value[0] + value[1] * value[1] + value[2] * value[2]) : 1.0;
-      for (int c = 0; c < components; ++c)
-      {
-        target->SetComponent(p, c, value ? StoredValue(target, length > 0.0 ? value[c] / length : value[c]) : 0.0);
-      }
-    }
-  });
-  return target;
-}
-}
-
-void vtkSubDSplitAtSeams(vtkPolyData* input, const vtkSubDSeams& seams,
-  const std::function<subd::Index(vtkIdType)>& finestFace, vtkSubDSeamChannel& channel, vtkPolyData* output)
-{
-  std::vector<vtkIdType> newOfOld;
-  if (!channel.Faces)
-  {
-    MakeSplitTopology(output, finestFace, channel, newOfOld);
-  }
-  else
-  {
-    newOfOld.assign(static_cast<size_t>(output->GetNumberOfPoints()), -1);
-    for (size_t p = channel.SourcePoint.size(); p-- > 0;)
-    {
-      newOfOld[channel.SourcePoint[p]] = static_cast<vtkIdType>(p);
-    }
-  }
-  // Every array of the unsplit output, gathered at the split points' sources.
-  vtkNew<vtkIdList> sources;
-  sources->SetNumberOfIds(static_cast<vtkIdType>(channel.SourcePoint.size()));
-  std::copy(channel.SourcePoint.begin(), channel.SourcePoint.end(), sources->GetPointer(0));
-  auto gather = [&sources](vtkDataArray* array) {
-    vtkSmartPointer<vtkDataArray> split = vtkSmartPointer<vtkDataArray>::Take(array->NewInstance());
-    split->SetName(array->GetName());
-    split->SetNumberOfComponents(array->GetNumberOfComponents());
-    split->SetNumberOfTuples(sources->GetNumberOfIds());
-    array->GetTuples(sources, split);
-    return split;
-  };
-  vtkNew<vtkPoints> points;
-  points->SetData(gather(output->GetPoints()->GetData()));
-  vtkPointData* unsplit = output->GetPointData();
-  vtkNew<vtkPointData> split;
-  for (int a = 0; a < unsplit->GetNumberOfArrays(); ++a)
-  {
-    if (vtkDataArray* array = unsplit->GetArray(a))
-    {
-      split->AddArray(gather(array));
-      const int attribute = unsplit->IsArrayAnAttribute(a);
-      if (attribute >= 0)
-      {
-        split->SetActiveAttribute(split->GetNumberOfArrays() - 1, attribute);
+        outputPointOfFinest[pointOfValue[value]] = o;
       }
     }
   }
+  if (channel.ValueOfOutput.size() == pointOfValue.size())
+  {
+    channel.ValueOfOutput.clear(); // every value is output, in order
+  }
+}
+
+bool vtkSubDAddFaceVaryingArrays(vtkPolyData* input, const vtkSubDSeams& seams, const vtkSubDSeamChannel& channel,
+  const subd::ProgressCallback& progress, vtkPolyData* output)
+{
+  const vtkSubDPointDataInterpolation interpolation(channel.Hierarchy, vtkSubDPointDataInterpolation::SMPFor,
+    channel.ValueOfOutput.empty() ? nullptr : &channel.ValueOfOutput);
   vtkPointData* inPD = input->GetPointData();
+  vtkPointData* outPD = output->GetPointData();
+  const vtkIdType numBase = static_cast<vtkIdType>(channel.UserValue.size());
   for (int a : seams.Arrays)
   {
-    if (vtkDataArray* source = inPD->GetArray(a))
+    vtkDataArray* source = inPD->GetArray(a);
+    if (!source)
     {
-      const int attribute = inPD->IsArrayAnAttribute(a);
-      split->AddArray(FaceVaryingArray(source, attribute == vtkDataSetAttributes::NORMALS, channel));
-      if (attribute >= 0)
+      continue;
+    }
+    vtkNew<vtkDoubleArray> base; // the input's tuples at the base values
+    base->SetNumberOfComponents(source->GetNumberOfComponents());
+    base->SetNumberOfTuples(numBase);
+    for (vtkIdType u = 0; u < numBase; ++u)
+    {
+      base->SetTuple(u, source->GetTuple(channel.UserValue[u]));
+    }
+    const int attribute = inPD->IsArrayAnAttribute(a);
+    vtkSmartPointer<vtkDataArray> refined =
+      interpolation.Interpolate(base, source->GetDataType(), attribute == vtkDataSetAttributes::NORMALS, progress);
+    if (!refined)
+    {
+      return false;
+    }
+    refined->SetName(source->GetName());
+    const vtkIdType numRefined = refined->GetNumberOfTuples();
+    refined->Resize(output->GetNumberOfPoints()); // zeros at points no face uses
+    refined->SetNumberOfTuples(output->GetNumberOfPoints());
+    for (vtkIdType p = numRefined; p < output->GetNumberOfPoints(); ++p)
+    {
+      for (int c = 0; c < refined->GetNumberOfComponents(); ++c)
       {
-        split->SetActiveAttribute(split->GetNumberOfArrays() - 1, attribute);
+        refined->SetComponent(p, c, 0.0);
       }
     }
-  }
-  vtkNew<vtkCellArray> lines;
-  vtkIdType n;
-  const vtkIdType* ends;
-  vtkCellArray* oldLines = output->GetLines();
-  std::vector<vtkIdType> line;
-  for (oldLines->InitTraversal(); oldLines->GetNextCell(n, ends);)
-  {
-    line.assign(ends, ends + n);
-    for (vtkIdType& p : line)
+    outPD->AddArray(refined);
+    if (attribute >= 0)
     {
-      p = newOfOld[p];
+      outPD->SetActiveAttribute(outPD->GetNumberOfArrays() - 1, attribute);
     }
-    lines->InsertNextCell(n, line.data());
   }
-  output->SetPoints(points);
-  output->GetPointData()->ShallowCopy(split);
-  output->SetLines(lines);
-  output->SetPolys(channel.Faces);
+  return true;
 }

@@ -6,8 +6,8 @@
 // subdivided whole. Each point-data array whose values differ between welded points is then
 // face-varying: its values are refined as a channel (SubDFaceVarying.h) whose values are the
 // input's points with distinct data, so its seams are where the input was split and the data
-// differ, and the output is split there again, each side with its own values; the other
-// arrays stay vertex data.
+// differ, and the output is split there again, each side with its own values (the filter's
+// output points are the channel's); the other arrays stay vertex data.
 #ifndef vtkSubDSeams_h
 #define vtkSubDSeams_h
 
@@ -16,7 +16,6 @@
 #include "SubDRefiner.h"
 #include "vtkSmartPointer.h"
 
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -55,11 +54,10 @@ struct vtkSubDSeamChannel
 {
   subd::Hierarchy Hierarchy;
   subd::IndexArray UserValue; ///< per base channel vertex: its input point
-  // The split output's topology, made once: per output point, the unsplit output point and
-  // the channel's finest vertex it comes from (-1: a point no face uses), and the faces.
-  std::vector<vtkIdType> SourcePoint;
-  std::vector<subd::Index> ChannelVertex;
-  vtkSmartPointer<vtkCellArray> Faces;
+  // The split output, made once per topology: a point per finest channel vertex that an
+  // output face uses, in the channel's order.
+  std::vector<vtkIdType> OutputPointOfValue; ///< per finest channel vertex (-1: no output face uses it)
+  std::vector<vtkIdType> ValueOfOutput;      ///< per output point; empty when the identity
 };
 
 /// Refines the seams' channel of the mesh's base level `base` with the mesh's scheme.
@@ -68,11 +66,18 @@ struct vtkSubDSeamChannel
 bool vtkSubDRefineSeams(const subd::Scheme& scheme, const subd::Level& base, const vtkSubDSeams& seams,
   subd::FaceVaryingInterpolation mode, int levels, bool limit, vtkSubDSeamChannel& channel, std::string& error);
 
-/// Splits `output` (points, point data, faces and lines as the filter made them, its faces
-/// the finest faces `finestFace(c)` in order) at the seams: a point per channel vertex its
-/// faces use, carrying the channel's values in the face-varying arrays, the output point's
-/// values in the others. Lines keep one of the points at their ends.
-void vtkSubDSplitAtSeams(vtkPolyData* input, const vtkSubDSeams& seams,
-  const std::function<subd::Index(vtkIdType)>& finestFace, vtkSubDSeamChannel& channel, vtkPolyData* output);
+/// The output split at the seams: a point per finest channel vertex that one of the finest
+/// faces `emitted` uses (the channel's faces correspond to the mesh's corner for corner).
+/// Fills the channel's maps, per output point the finest mesh point it is
+/// (`finestPointOfOutput`) and per finest mesh point one of its output points, -1 for none
+/// (`outputPointOfFinest`).
+void vtkSubDSelectSplitOutput(const subd::MeshTopology& finest, const std::vector<subd::Index>& emitted,
+  vtkSubDSeamChannel& channel, std::vector<vtkIdType>& finestPointOfOutput, std::vector<vtkIdType>& outputPointOfFinest);
+
+/// Adds the face-varying arrays of `input` (seams.Arrays), refined by the channel, to the
+/// split output's point data (points beyond the channel's, ends of lines passed through, get
+/// zeros). False if `progress` asked to stop.
+bool vtkSubDAddFaceVaryingArrays(vtkPolyData* input, const vtkSubDSeams& seams, const vtkSubDSeamChannel& channel,
+  const subd::ProgressCallback& progress, vtkPolyData* output);
 
 #endif

@@ -184,7 +184,7 @@ public:
   {
     return this->CompactPoints ? this->OutputPointOfFinest[finestPoint] : finestPoint;
   }
-  void SelectOutput(bool someBaseVertexUnused);
+  void SelectOutput(bool someBaseVertexUnused, bool splitAtSeams);
   void AddGhostArrays(vtkPolyData* output, vtkIdType numLines, const std::vector<std::uint8_t>& lineIsCopy) const;
 };
 
@@ -234,15 +234,16 @@ void vtkSubDSurfaceFilter::vtkInternals::AddGhostArrays(
 
 // Which finest faces and points are output: all of them, except faces in holes, children of
 // ghost faces beyond the ghost levels asked for (another piece outputs them) and the points
-// no output face uses.
-void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
+// no output face uses; `splitAtSeams`: a point per value of the seams' channel instead
+// (vtkSubDSelectSplitOutput).
+void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused, bool splitAtSeams)
 {
   const subd::Level& finest = this->Hierarchy.Finest;
   this->EmittedFaces.clear();
   this->OutputPointOfFinest.clear();
   this->FinestPointOfOutput.clear();
   this->NumFinestFaces = this->Hierarchy.GetNumFinestFaces();
-  this->CompactPoints = someBaseVertexUnused || finest.HasHoles() || !this->FaceGhostLayer.empty();
+  this->CompactPoints = someBaseVertexUnused || finest.HasHoles() || !this->FaceGhostLayer.empty() || splitAtSeams;
   if (!this->CompactPoints)
   {
     return;
@@ -255,6 +256,12 @@ void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused)
     {
       this->EmittedFaces.push_back(f);
     }
+  }
+  if (splitAtSeams)
+  {
+    vtkSubDSelectSplitOutput(
+      finest.Topology, this->EmittedFaces, this->SeamChannel, this->FinestPointOfOutput, this->OutputPointOfFinest);
+    return;
   }
   const subd::Index numFinestPoints = finest.Topology.GetNumVertices();
   this->OutputPointOfFinest.assign(static_cast<size_t>(numFinestPoints), -1);
@@ -742,7 +749,7 @@ vtkSubDSurfaceFilter::Status vtkSubDSurfaceFilter::BuildRefinement(vtkPolyData* 
                                           : vtkSubDSeamLineCopies(cache.Hierarchy.Finest, cache.FaceGhostLayer, faceRank);
   cache.FaceIsGhost = std::move(mesh.FaceIsGhost);
   cache.OutputGhostLevels = outputGhostLevels;
-  cache.SelectOutput(someBaseVertexUnused);
+  cache.SelectOutput(someBaseVertexUnused, mesh.Seams.Any());
   cache.NumInputPoints = mesh.NumPoints;
   cache.InputDepth = mesh.Depth;
   cache.Offsets = std::move(mesh.Screened.Offsets);
@@ -804,10 +811,10 @@ vtkSubDSurfaceFilter::Status vtkSubDSurfaceFilter::WriteOutput(
     output->GetFieldData()->AddArray(depth);
   }
   cache.AddGhostArrays(output, static_cast<vtkIdType>(lineSharpness.size()), seams.LineIsCopy);
-  if (cache.Seams.Any())
+  if (cache.Seams.Any() &&
+    !vtkSubDAddFaceVaryingArrays(input, cache.Seams, cache.SeamChannel, this->EvaluationProgress(input, 0), output))
   {
-    vtkSubDSplitAtSeams(input, cache.Seams, [&cache](vtkIdType c) { return cache.FinestFace(c); }, cache.SeamChannel,
-      output);
+    return Status::Aborted;
   }
   return Status::Done;
 }
@@ -903,7 +910,7 @@ bool vtkSubDSurfaceFilter::InterpolatePointData(vtkPolyData* input, vtkSubDPoint
     if (this->IsReplacedByLimitNormals(inPD, a) ||
       std::find(cache.Seams.Arrays.begin(), cache.Seams.Arrays.end(), a) != cache.Seams.Arrays.end())
     {
-      continue; // replaced by the limit normals, or face-varying (vtkSubDSplitAtSeams)
+      continue; // replaced by the limit normals, or face-varying (vtkSubDAddFaceVaryingArrays)
     }
     const int attribute = inPD->IsArrayAnAttribute(a);
     vtkSmartPointer<vtkDataArray> out = interpolation.Interpolate(
@@ -1107,7 +1114,11 @@ vtkSmartPointer<vtkCellArray> vtkSubDSurfaceFilter::MakeOutputFaces()
     polys->SetData(vtkSubDAdoptVector(std::move(kernelOffsets)), vtkSubDAdoptVector(std::move(kernelVertices)));
     return polys;
   }
-  const subd::MeshTopology& topo = cache.Hierarchy.Finest.Topology;
+  // Split at seams, the corners are the channel's values (its faces are the finest faces).
+  const bool split = cache.Seams.Any();
+  const subd::MeshTopology& topo = split ? cache.SeamChannel.Hierarchy.Finest.Topology : cache.Hierarchy.Finest.Topology;
+  const std::vector<vtkIdType>& valueOutput = cache.SeamChannel.OutputPointOfValue;
+  auto outputPoint = [&](subd::Index v) { return split ? valueOutput[v] : cache.OutputPoint(v); };
   const vtkIdType numOut = cache.GetNumberOfOutputFaces();
   vtkNew<vtkTypeInt32Array> offsets;
   offsets->SetNumberOfTuples(numOut + 1);
@@ -1126,7 +1137,7 @@ vtkSmartPointer<vtkCellArray> vtkSubDSurfaceFilter::MakeOutputFaces()
       vtkTypeInt32* out = conn + off[c];
       for (subd::Index v : topo.GetFaceVertices(cache.FinestFace(c)))
       {
-        *out++ = static_cast<vtkTypeInt32>(cache.OutputPoint(v));
+        *out++ = static_cast<vtkTypeInt32>(outputPoint(v));
       }
     }
   });
