@@ -199,41 +199,48 @@ bool vtkSubDRefineSeams(const subd::Scheme& scheme, const subd::Level& base, con
   return true;
 }
 
-void vtkSubDSelectSplitOutput(const subd::MeshTopology& finest, const std::vector<subd::Index>& emitted,
+void vtkSubDSelectSplitOutput(const subd::MeshTopology& finest, const std::vector<subd::Index>* emitted,
   vtkSubDSeamChannel& channel, std::vector<vtkIdType>& finestPointOfOutput, std::vector<vtkIdType>& outputPointOfFinest)
 {
   const subd::MeshTopology& values = channel.Hierarchy.Finest.Topology;
+  const subd::Index numValues = values.GetNumVertices();
   // The finest mesh point of each channel vertex an output face uses (-1: none uses it).
-  std::vector<subd::Index> pointOfValue(static_cast<size_t>(values.GetNumVertices()), -1);
-  for (subd::Index f : emitted)
+  std::vector<subd::Index> pointOfValue(static_cast<size_t>(numValues), -1);
+  const subd::Index numFaces = emitted ? static_cast<subd::Index>(emitted->size()) : finest.GetNumFaces();
+  for (subd::Index c = 0; c < numFaces; ++c)
   {
+    const subd::Index f = emitted ? (*emitted)[c] : c;
     const subd::IndexSpan points = finest.GetFaceVertices(f), corners = values.GetFaceVertices(f);
     for (subd::Index k = 0; k < corners.size(); ++k)
     {
       pointOfValue[corners[k]] = points[k];
     }
   }
-  channel.OutputPointOfValue.assign(pointOfValue.size(), -1);
-  channel.ValueOfOutput.clear();
-  finestPointOfOutput.clear();
+  const auto numOutput = static_cast<size_t>(numValues - std::count(pointOfValue.begin(), pointOfValue.end(), -1));
+  const bool everyValue = numOutput == pointOfValue.size();
+  channel.OutputPointOfValue.assign(everyValue ? 0 : pointOfValue.size(), -1);
+  channel.ValueOfOutput.resize(everyValue ? 0 : numOutput);
+  finestPointOfOutput.resize(numOutput);
   outputPointOfFinest.assign(static_cast<size_t>(finest.GetNumVertices()), -1);
-  for (size_t value = 0; value < pointOfValue.size(); ++value)
+  vtkIdType o = 0;
+  for (subd::Index value = 0; value < numValues; ++value)
   {
-    if (pointOfValue[value] >= 0)
+    const subd::Index point = pointOfValue[value];
+    if (point < 0)
     {
-      const vtkIdType o = static_cast<vtkIdType>(finestPointOfOutput.size());
-      channel.OutputPointOfValue[value] = o;
-      channel.ValueOfOutput.push_back(static_cast<vtkIdType>(value));
-      finestPointOfOutput.push_back(pointOfValue[value]);
-      if (outputPointOfFinest[pointOfValue[value]] < 0)
-      {
-        outputPointOfFinest[pointOfValue[value]] = o;
-      }
+      continue;
     }
-  }
-  if (channel.ValueOfOutput.size() == pointOfValue.size())
-  {
-    channel.ValueOfOutput.clear(); // every value is output, in order
+    if (!everyValue)
+    {
+      channel.OutputPointOfValue[value] = o;
+      channel.ValueOfOutput[o] = value;
+    }
+    finestPointOfOutput[o] = point;
+    if (outputPointOfFinest[point] < 0)
+    {
+      outputPointOfFinest[point] = o;
+    }
+    ++o;
   }
 }
 

@@ -56,8 +56,9 @@ struct vtkSubDSeamChannel
   subd::IndexArray UserValue; ///< per base channel vertex: its input point
   // The split output, made once per topology: a point per finest channel vertex that an
   // output face uses, in the channel's order.
+  // Both empty when every value is output (the identity): the common case.
   std::vector<vtkIdType> OutputPointOfValue; ///< per finest channel vertex (-1: no output face uses it)
-  std::vector<vtkIdType> ValueOfOutput;      ///< per output point; empty when the identity
+  std::vector<vtkIdType> ValueOfOutput;      ///< per output point
 };
 
 /// Refines the seams' channel of the mesh's base level `base` with the mesh's scheme.
@@ -67,11 +68,12 @@ bool vtkSubDRefineSeams(const subd::Scheme& scheme, const subd::Level& base, con
   subd::FaceVaryingInterpolation mode, int levels, bool limit, vtkSubDSeamChannel& channel, std::string& error);
 
 /// The output split at the seams: a point per finest channel vertex that one of the finest
-/// faces `emitted` uses (the channel's faces correspond to the mesh's corner for corner).
+/// faces `emitted` (nullptr: all) uses (the channel's faces correspond to the mesh's corner
+/// for corner).
 /// Fills the channel's maps, per output point the finest mesh point it is
 /// (`finestPointOfOutput`) and per finest mesh point one of its output points, -1 for none
 /// (`outputPointOfFinest`).
-void vtkSubDSelectSplitOutput(const subd::MeshTopology& finest, const std::vector<subd::Index>& emitted,
+void vtkSubDSelectSplitOutput(const subd::MeshTopology& finest, const std::vector<subd::Index>* emitted,
   vtkSubDSeamChannel& channel, std::vector<vtkIdType>& finestPointOfOutput, std::vector<vtkIdType>& outputPointOfFinest);
 
 /// Adds the face-varying arrays of `input` (seams.Arrays), refined by the channel, to the

@@ -157,6 +157,7 @@ public:
   // input points) all are, and no maps are stored.
   bool CompactPoints = false;
   subd::Index NumFinestFaces = 0; // kept: the finest faces are handed to the output
+  bool AllFacesEmitted = true;                // else EmittedFaces lists them (holes, ghosts)
   std::vector<subd::Index> EmittedFaces;      // when holes exist: finest faces that are not holes
   std::vector<vtkIdType> OutputPointOfFinest; // when compacting: -1 where a finest point is unused
   std::vector<vtkIdType> FinestPointOfOutput;
@@ -174,11 +175,11 @@ public:
 
   vtkIdType GetNumberOfOutputFaces() const
   {
-    return this->CompactPoints ? static_cast<vtkIdType>(this->EmittedFaces.size()) : this->NumFinestFaces;
+    return this->AllFacesEmitted ? this->NumFinestFaces : static_cast<vtkIdType>(this->EmittedFaces.size());
   }
   subd::Index FinestFace(vtkIdType outputFace) const
   {
-    return this->CompactPoints ? this->EmittedFaces[outputFace] : static_cast<subd::Index>(outputFace);
+    return this->AllFacesEmitted ? static_cast<subd::Index>(outputFace) : this->EmittedFaces[outputFace];
   }
   vtkIdType OutputPoint(subd::Index finestPoint) const
   {
@@ -243,13 +244,14 @@ void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused,
   this->OutputPointOfFinest.clear();
   this->FinestPointOfOutput.clear();
   this->NumFinestFaces = this->Hierarchy.GetNumFinestFaces();
-  this->CompactPoints = someBaseVertexUnused || finest.HasHoles() || !this->FaceGhostLayer.empty() || splitAtSeams;
+  this->AllFacesEmitted = !finest.HasHoles() && this->FaceGhostLayer.empty();
+  this->CompactPoints = someBaseVertexUnused || !this->AllFacesEmitted || splitAtSeams;
   if (!this->CompactPoints)
   {
     return;
   }
   const subd::Index numFinestFaces = finest.Topology.GetNumFaces();
-  for (subd::Index f = 0; f < numFinestFaces; ++f)
+  for (subd::Index f = 0; f < numFinestFaces && !this->AllFacesEmitted; ++f)
   {
     if (!finest.IsFaceHole(f) &&
       (this->FaceGhostLayer.empty() || this->FaceGhostLayer[finest.GetFaceOrigin(f)] <= this->OutputGhostLevels))
@@ -259,15 +261,15 @@ void vtkSubDSurfaceFilter::vtkInternals::SelectOutput(bool someBaseVertexUnused,
   }
   if (splitAtSeams)
   {
-    vtkSubDSelectSplitOutput(
-      finest.Topology, this->EmittedFaces, this->SeamChannel, this->FinestPointOfOutput, this->OutputPointOfFinest);
+    vtkSubDSelectSplitOutput(finest.Topology, this->AllFacesEmitted ? nullptr : &this->EmittedFaces,
+      this->SeamChannel, this->FinestPointOfOutput, this->OutputPointOfFinest);
     return;
   }
   const subd::Index numFinestPoints = finest.Topology.GetNumVertices();
   this->OutputPointOfFinest.assign(static_cast<size_t>(numFinestPoints), -1);
-  for (subd::Index f : this->EmittedFaces)
+  for (vtkIdType c = 0; c < this->GetNumberOfOutputFaces(); ++c)
   {
-    for (subd::Index v : finest.Topology.GetFaceVertices(f))
+    for (subd::Index v : finest.Topology.GetFaceVertices(this->FinestFace(c)))
     {
       this->OutputPointOfFinest[v] = 0;
     }
@@ -1118,7 +1120,9 @@ vtkSmartPointer<vtkCellArray> vtkSubDSurfaceFilter::MakeOutputFaces()
   const bool split = cache.Seams.Any();
   const subd::MeshTopology& topo = split ? cache.SeamChannel.Hierarchy.Finest.Topology : cache.Hierarchy.Finest.Topology;
   const std::vector<vtkIdType>& valueOutput = cache.SeamChannel.OutputPointOfValue;
-  auto outputPoint = [&](subd::Index v) { return split ? valueOutput[v] : cache.OutputPoint(v); };
+  auto outputPoint = [&](subd::Index v) {
+    return !split ? cache.OutputPoint(v) : valueOutput.empty() ? v : valueOutput[v];
+  };
   const vtkIdType numOut = cache.GetNumberOfOutputFaces();
   vtkNew<vtkTypeInt32Array> offsets;
   offsets->SetNumberOfTuples(numOut + 1);

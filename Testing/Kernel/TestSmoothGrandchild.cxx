@@ -31,6 +31,14 @@ std::vector<double> Values(const subdtest::TestMesh& mesh, int components)
   return values;
 }
 
+// The mesh with two points that no face uses (as welded texture seams leave them).
+subdtest::TestMesh WithIsolatedPoints(subdtest::TestMesh mesh)
+{
+  mesh.Points.insert(mesh.Points.end(), { 3.0, 2.0, 1.0, -1.0, 0.5, 2.0 });
+  mesh.Name += "-isolated";
+  return mesh;
+}
+
 subd::Level WithSharpEdge(const subdtest::TestMesh& mesh)
 {
   const subd::MeshTopology topology = subd::MeshTopology::Build(mesh.NumVertices(), mesh.Offsets, mesh.Vertices);
@@ -41,8 +49,8 @@ subd::Level WithSharpEdge(const subdtest::TestMesh& mesh)
 }
 }
 
-// Catmull-Clark on quads and Loop, on a closed manifold grandparent with nothing sharp, no
-// hole and no isolated vertex: every row of the two levels below is smooth.
+// Catmull-Clark on quads and Loop, on a closed manifold grandparent with nothing sharp and no
+// hole: every row of the two levels below is smooth (or, at a point on no face, the point).
 TEST(SmoothGrandchild, TakenWhereEveryRowBelowIsSmooth)
 {
   const subd::CatmullClarkScheme catmullClark;
@@ -53,6 +61,8 @@ TEST(SmoothGrandchild, TakenWhereEveryRowBelowIsSmooth)
   EXPECT_TRUE(subd::HasSmoothGrandchild(catmullClark, subdtest::BaseLevel(subdtest::Grid(6, 5, true, true))));
   EXPECT_TRUE(subd::HasSmoothGrandchild(loop, subdtest::BaseLevel(bipyramid)));
   EXPECT_TRUE(subd::HasSmoothGrandchild(loop, subdtest::BaseLevel(cube.Triangulated())));
+  EXPECT_TRUE(subd::HasSmoothGrandchild(catmullClark, subdtest::BaseLevel(WithIsolatedPoints(cube))));
+  EXPECT_TRUE(subd::HasSmoothGrandchild(loop, subdtest::BaseLevel(WithIsolatedPoints(bipyramid))));
   // The house has a triangle and a pentagon: not until its faces are quads.
   EXPECT_FALSE(subd::HasSmoothGrandchild(catmullClark, subdtest::BaseLevel(house)));
   EXPECT_TRUE(subd::HasSmoothGrandchild(
@@ -85,7 +95,9 @@ TEST(SmoothGrandchild, SameLevelsAsTwoSplits)
   };
   const Case cases[] = { { catmullClark, subdtest::Cube().Jitter(0.1) },
     { catmullClark, subdtest::House(false).Jitter(0.1) }, { catmullClark, subdtest::Grid(6, 5, true, true).Jitter(0.05) },
-    { loop, subdtest::Bipyramid(7).Jitter(0.1) }, { loop, subdtest::Cube().Triangulated().Jitter(0.1) } };
+    { loop, subdtest::Bipyramid(7).Jitter(0.1) }, { loop, subdtest::Cube().Triangulated().Jitter(0.1) },
+    { catmullClark, WithIsolatedPoints(subdtest::Cube().Jitter(0.1)) },
+    { loop, WithIsolatedPoints(subdtest::Bipyramid(5).Jitter(0.1)) } };
   for (const Case& c : cases)
   {
     for (int levels = 2; levels <= 4; ++levels)

@@ -32,6 +32,15 @@ public:
   const View& GetBetween() const { return this->Between; }
 
 protected:
+  // A point on no face (a point of the input that no face uses) stays where it is, as
+  // PlanVertexRule plans it: a corner.
+  template <typename Entries>
+  static bool IsolatedVertexRow(Index v, Entries& entries)
+  {
+    entries.Parent(v, 1.0);
+    return true;
+  }
+
   View Between;
 };
 
@@ -66,6 +75,10 @@ public:
     const Index v = row - this->Number.VertexPoint(0);
     Index faces[MaxRing], corners[MaxRing], edges[MaxRing], numFaces, numEdges;
     this->Between.GetPointRelations(v, faces, corners, edges, numFaces, numEdges);
+    if (numFaces == 0)
+    {
+      return IsolatedVertexRow(v, entries);
+    }
     CatmullClarkSmoothVertexMask(
       v, numEdges, numFaces, [&](Index i) { return this->Number.EdgePoint(edges[i]); },
       [&](Index i) { return this->Number.FacePoint(faces[i]); }, entries);
@@ -102,6 +115,10 @@ public:
     const Index v = row - this->Number.VertexPoint(0);
     Index edges[MaxRing], numFaces, numEdges;
     this->Between.GetPointRelations(v, nullptr, nullptr, edges, numFaces, numEdges);
+    if (numFaces == 0)
+    {
+      return IsolatedVertexRow(v, entries);
+    }
     LoopSmoothVertexMask(
       v, numEdges, this->Beta(numEdges), [&](Index i) { return this->Number.EdgePoint(edges[i]); }, entries);
     return true;
@@ -153,17 +170,6 @@ SmoothGrandchild MakeWith(std::shared_ptr<const Level> grandparent, const Parall
   return result;
 }
 
-bool HasIsolatedVertex(const MeshTopology& topology)
-{
-  for (Index v = 0; v < topology.GetNumVertices(); ++v)
-  {
-    if (topology.GetNumVertexFaces(v) == 0)
-    {
-      return true;
-    }
-  }
-  return false;
-}
 }
 
 bool HasSmoothGrandchild(const Scheme& scheme, const Level& grandparent)
@@ -173,7 +179,7 @@ bool HasSmoothGrandchild(const Scheme& scheme, const Level& grandparent)
   const bool loop = dynamic_cast<const LoopScheme*>(&scheme) != nullptr;
   const bool viewed = (catmullClark && QuadSplitView::Reads(topology)) || (loop && TriangleSplitView::Reads(topology));
   return viewed && topology.HasEdges() && grandparent.FaceTagShift == 0 && topology.GetMaxValence() <= MaxRing &&
-    !grandparent.HasSharpFeatures() && !grandparent.HasHoles() && !HasIsolatedVertex(topology);
+    !grandparent.HasSharpFeatures() && !grandparent.HasHoles();
 }
 
 SmoothGrandchild MakeSmoothGrandchild(const Scheme& scheme, std::shared_ptr<const Level> grandparent)

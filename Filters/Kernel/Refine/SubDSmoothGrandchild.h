@@ -30,8 +30,8 @@ struct SmoothGrandchild
 };
 
 /// Whether `scheme` can make the two levels below `grandparent` at once: Catmull-Clark on
-/// quads or Loop, and a grandparent that is closed and manifold, with no sharp edge or
-/// vertex, no hole and no isolated vertex.
+/// quads or Loop, and a grandparent whose faces are closed and manifold, with no sharp edge
+/// or vertex and no hole (points on no face stay where they are).
 SUBDKERNEL_EXPORT bool HasSmoothGrandchild(const Scheme& scheme, const Level& grandparent);
 
 /// The two levels below `grandparent` (HasSmoothGrandchild must hold). The rows keep it.
