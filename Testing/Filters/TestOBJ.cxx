@@ -356,6 +356,31 @@ TEST(GLTF, SplitTrianglesWeldToTheSeamedResultAndRoundTrip)
   ExpectSameCorners(PointsWithTCoords(filter->GetOutput()), PointsWithTCoords(back), 1e-6);
 }
 
+// A scene's node transforms place its meshes: a unit square scaled by 2 in a child node,
+// moved by 10 along x in its parent, reads back as the square [10, 12] x [0, 2].
+TEST(GLTF, NodeTransformsAreApplied)
+{
+  const std::string path = TempPath("nodes.gltf");
+  // Four points (float x, y, z) and two triangles (uint32), base64.
+  std::ofstream(path) << R"({"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],)"
+                         R"("nodes":[{"children":[1],"translation":[10,0,0]},{"mesh":0,"scale":[2,2,2]}],)"
+                         R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"indices":1}]}],)"
+                         R"("buffers":[{"byteLength":72,"uri":"data:application/octet-stream;base64,)"
+                         R"(AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAACAPwAAgD8AAAAAAAAAAAAAgD8AAAAAAAAAAAEAAAACAAAAAAAAAAIAAAADAAAA"}],)"
+                         R"("bufferViews":[{"buffer":0,"byteLength":48},{"buffer":0,"byteOffset":48,"byteLength":24}],)"
+                         R"("accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3",)"
+                         R"("min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5125,"count":6,"type":"SCALAR"}]})";
+  subdtest::Messages messages;
+  vtkSmartPointer<vtkPolyData> mesh = ReadGLTF(path, messages);
+  EXPECT_EQ(messages.Errors, "");
+  ASSERT_EQ(mesh->GetNumberOfPoints(), 4);
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  const double expected[6] = { 10, 12, 0, 2, 0, 0 };
+  for (int k = 0; k < 6; ++k)
+    EXPECT_DOUBLE_EQ(bounds[k], expected[k]) << "bound " << k;
+}
+
 // A broken file gives an error naming the fault and an empty output (VTK 9.1's own reader
 // crashes on it).
 TEST(GLTF, BrokenReferencesAreErrorsNotCrashes)
