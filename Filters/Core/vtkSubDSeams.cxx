@@ -11,7 +11,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <numeric>
+#include <unordered_map>
 
 namespace
 {
@@ -28,23 +31,45 @@ bool SameTuple(vtkDataArray* array, vtkIdType p, vtkIdType q)
   return true;
 }
 
+// Exact positions as hash keys (-0 and +0 made one: they are the same position).
+struct Position
+{
+  double X[3];
+  bool operator==(const Position& other) const
+  {
+    return this->X[0] == other.X[0] && this->X[1] == other.X[1] && this->X[2] == other.X[2];
+  }
+};
+
+struct PositionHash
+{
+  size_t operator()(const Position& p) const
+  {
+    size_t h = 0;
+    for (double x : p.X)
+    {
+      const double normalized = x + 0.0;
+      std::uint64_t bits;
+      std::memcpy(&bits, &normalized, sizeof bits);
+      h = (h ^ (bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2)));
+    }
+    return h;
+  }
+};
+
 // Per input point, the first point at the same position (`first`, itself if none comes
 // before it) and the first at the same position with the same point data (`firstWithData`).
 void FirstAtSamePosition(vtkPolyData* input, std::vector<subd::Index>& first, std::vector<subd::Index>& firstWithData)
 {
   const vtkIdType n = input->GetNumberOfPoints();
-  std::vector<double> xyz(3 * static_cast<size_t>(n));
+  std::unordered_map<Position, subd::Index, PositionHash> firstAt(static_cast<size_t>(n));
+  first.resize(static_cast<size_t>(n));
   for (vtkIdType i = 0; i < n; ++i)
   {
-    input->GetPoint(i, &xyz[3 * i]);
+    Position p;
+    input->GetPoint(i, p.X);
+    first[i] = firstAt.emplace(p, static_cast<subd::Index>(i)).first->second;
   }
-  std::vector<subd::Index> order(static_cast<size_t>(n));
-  std::iota(order.begin(), order.end(), 0);
-  std::sort(order.begin(), order.end(), [&xyz](subd::Index a, subd::Index b) {
-    const double* p = &xyz[3 * static_cast<size_t>(a)];
-    const double* q = &xyz[3 * static_cast<size_t>(b)];
-    return std::lexicographical_compare(p, p + 3, q, q + 3) || (std::equal(p, p + 3, q) && a < b);
-  });
   vtkPointData* pd = input->GetPointData();
   auto sameData = [pd](vtkIdType p, vtkIdType q) {
     for (int a = 0; a < pd->GetNumberOfArrays(); ++a)
@@ -57,35 +82,32 @@ void FirstAtSamePosition(vtkPolyData* input, std::vector<subd::Index>& first, st
     }
     return true;
   };
-  first.resize(static_cast<size_t>(n));
-  std::iota(first.begin(), first.end(), 0);
-  firstWithData = first;
-  std::vector<subd::Index> kept; // the points of a run that others with their data weld to
-  for (size_t k = 0; k < order.size();)
+  // By data, a point goes to the first point at its position with its data, among a bounded
+  // number kept per position (never quadratic).
+  firstWithData.resize(static_cast<size_t>(n));
+  std::unordered_map<subd::Index, std::vector<subd::Index>> kept; // per first point
+  for (vtkIdType i = 0; i < n; ++i)
   {
-    const double* position = &xyz[3 * static_cast<size_t>(order[k])];
-    size_t end = k + 1;
-    while (end < order.size() && std::equal(position, position + 3, &xyz[3 * static_cast<size_t>(order[end])]))
+    firstWithData[i] = static_cast<subd::Index>(i);
+    if (first[i] == i)
     {
-      ++end;
+      continue;
     }
-    // The run holds one position, in increasing index. By data, a point goes to the first
-    // kept one with its data (among a bounded number: never quadratic).
-    kept.assign(1, order[k]);
-    for (size_t i = k + 1; i < end; ++i)
+    std::vector<subd::Index>& candidates = kept[first[i]];
+    if (candidates.empty())
     {
-      first[order[i]] = order[k];
-      const auto match = std::find_if(kept.begin(), kept.end(), [&](subd::Index q) { return sameData(order[i], q); });
-      if (match != kept.end())
-      {
-        firstWithData[order[i]] = *match;
-      }
-      else if (kept.size() < 64)
-      {
-        kept.push_back(order[i]);
-      }
+      candidates.push_back(first[i]);
     }
-    k = end;
+    const auto match =
+      std::find_if(candidates.begin(), candidates.end(), [&](subd::Index q) { return sameData(i, q); });
+    if (match != candidates.end())
+    {
+      firstWithData[i] = *match;
+    }
+    else if (candidates.size() < 64)
+    {
+      candidates.push_back(static_cast<subd::Index>(i));
+    }
   }
 }
 
