@@ -108,6 +108,88 @@ bool TimeEdits(ExplorerWindow& window, int count)
   report("scene (colouring, overlays, render)", scene);
   return true;
 }
+
+// The cage the options name (a file or a built-in), with their sharpness edits and
+// selection, exported if asked. False with `error` on failure.
+bool SetUpCage(const ExplorerOptions& options, ExplorerWindow& window, std::string& error)
+{
+  QString message;
+  bool done = true;
+  if (options.Load.empty())
+  {
+    window.LoadBuiltin(options.Builtin);
+  }
+  else
+  {
+    done = window.LoadFile(QString::fromStdString(options.Load), message);
+  }
+  for (size_t k = 0; done && k < options.Edits.size(); ++k)
+  {
+    const ExplorerOptions::SharpnessEdit& edit = options.Edits[k];
+    done = window.SetSharpness(edit.A, edit.B, edit.Sharpness, message);
+  }
+  if (!done)
+  {
+    error = message.toStdString();
+    return false;
+  }
+  if (options.SelectA >= 0 && !window.SelectCageElement(options.SelectA, options.SelectB))
+  {
+    error = "--select: " + std::to_string(options.SelectA) +
+      (options.SelectB >= 0 ? "-" + std::to_string(options.SelectB) : std::string()) +
+      " is not a vertex or an edge of the cage";
+    return false;
+  }
+  if (!options.ExportCage.empty() && !window.ExportCage(QString::fromStdString(options.ExportCage), message))
+  {
+    error = message.toStdString();
+    return false;
+  }
+  return true;
+}
+
+// The scripted steps once the first update is done (its cancel, timing, state, pictures);
+// returns the exit status they call for.
+int RunScriptedSteps(const ExplorerOptions& options, ExplorerWindow& window)
+{
+  int status = 0;
+  window.UpdateViews();
+  QElapsedTimer clock;
+  clock.start();
+  if (options.CancelAfter >= 0)
+  {
+    QTimer::singleShot(options.CancelAfter, &window, [&window, clock]() {
+      std::cout << "subd-explorer: cancel pressed after " << clock.elapsed() << " ms" << std::endl;
+      window.CancelUpdate();
+    });
+  }
+  window.WaitForUpdate();
+  if (options.CancelAfter >= 0)
+  {
+    std::cout << "subd-explorer: update " << (window.WasLastUpdateCancelled() ? "cancelled" : "completed")
+              << ", worker done after " << clock.elapsed() << " ms" << std::endl;
+  }
+  if (options.TimeEdits > 0 && !TimeEdits(window, options.TimeEdits))
+  {
+    status = 1;
+  }
+  if (options.PrintState)
+  {
+    std::cout << window.DescribeState() << std::flush;
+  }
+  QString message;
+  if (!options.Screenshot.empty() && !window.SaveViewsImage(QString::fromStdString(options.Screenshot), message))
+  {
+    std::cerr << "subd-explorer: " << message.toStdString() << "\n";
+    status = 1;
+  }
+  if (!options.WindowShot.empty() && !window.SaveWindowImage(QString::fromStdString(options.WindowShot), message))
+  {
+    std::cerr << "subd-explorer: " << message.toStdString() << "\n";
+    status = 1;
+  }
+  return status;
+}
 }
 
 int main(int argc, char* argv[])
@@ -142,84 +224,16 @@ int main(int argc, char* argv[])
     window.resize(options.Width, options.Height);
   }
   ApplyOptions(options, window);
-  if (!options.Load.empty())
+  if (!SetUpCage(options, window, error))
   {
-    QString message;
-    if (!window.LoadFile(QString::fromStdString(options.Load), message))
-    {
-      std::cerr << "subd-explorer: " << message.toStdString() << "\n";
-      return 1;
-    }
-  }
-  else
-  {
-    window.LoadBuiltin(options.Builtin);
-  }
-  for (const ExplorerOptions::SharpnessEdit& edit : options.Edits)
-  {
-    QString message;
-    if (!window.SetSharpness(edit.A, edit.B, edit.Sharpness, message))
-    {
-      std::cerr << "subd-explorer: " << message.toStdString() << "\n";
-      return 1;
-    }
-  }
-  if (options.SelectA >= 0 && !window.SelectCageElement(options.SelectA, options.SelectB))
-  {
-    std::cerr << "subd-explorer: --select: " << options.SelectA
-              << (options.SelectB >= 0 ? "-" + std::to_string(options.SelectB) : std::string())
-              << " is not a vertex or an edge of the cage\n";
+    std::cerr << "subd-explorer: " << error << "\n";
     return 1;
-  }
-  if (!options.ExportCage.empty())
-  {
-    QString message;
-    if (!window.ExportCage(QString::fromStdString(options.ExportCage), message))
-    {
-      std::cerr << "subd-explorer: " << message.toStdString() << "\n";
-      return 1;
-    }
   }
   window.show();
 
   int status = 0;
   QTimer::singleShot(0, &window, [&]() {
-    window.UpdateViews();
-    QElapsedTimer clock;
-    clock.start();
-    if (options.CancelAfter >= 0)
-    {
-      QTimer::singleShot(options.CancelAfter, &window, [&]() {
-        std::cout << "subd-explorer: cancel pressed after " << clock.elapsed() << " ms" << std::endl;
-        window.CancelUpdate();
-      });
-    }
-    window.WaitForUpdate();
-    if (options.CancelAfter >= 0)
-    {
-      std::cout << "subd-explorer: update " << (window.WasLastUpdateCancelled() ? "cancelled" : "completed")
-                << ", worker done after " << clock.elapsed() << " ms" << std::endl;
-    }
-    if (options.TimeEdits > 0 && !TimeEdits(window, options.TimeEdits))
-    {
-      status = 1;
-    }
-    if (options.PrintState)
-    {
-      std::cout << window.DescribeState() << std::flush;
-    }
-    QString message;
-    if (!options.Screenshot.empty() && !window.SaveViewsImage(QString::fromStdString(options.Screenshot), message))
-    {
-      std::cerr << "subd-explorer: " << message.toStdString() << "\n";
-      status = 1;
-    }
-    if (!options.WindowShot.empty() &&
-      !window.SaveWindowImage(QString::fromStdString(options.WindowShot), message))
-    {
-      std::cerr << "subd-explorer: " << message.toStdString() << "\n";
-      status = 1;
-    }
+    status = RunScriptedSteps(options, window);
     if (options.Quit)
     {
       QApplication::exit(status);

@@ -31,9 +31,11 @@ std::string TempPath(const std::string& name)
   return subdtest::ProcessTempPath("subd_obj_", name);
 }
 
-vtkSmartPointer<vtkPolyData> ReadOBJ(const std::string& path, subdtest::Messages& messages)
+// The file read by `Reader`, its messages in `messages`.
+template <typename Reader>
+vtkSmartPointer<vtkPolyData> Read(const std::string& path, subdtest::Messages& messages)
 {
-  vtkNew<vtkSubDOBJReader> reader;
+  vtkNew<Reader> reader;
   messages.Watch(reader);
   reader->SetFileName(path.c_str());
   reader->Update();
@@ -72,7 +74,7 @@ TEST(OBJ, TagsBecomeSubDArrays)
   const std::string path = TempPath("tagged.obj");
   std::ofstream(path) << TaggedCube;
   subdtest::Messages messages;
-  vtkSmartPointer<vtkPolyData> mesh = ReadOBJ(path, messages);
+  vtkSmartPointer<vtkPolyData> mesh = Read<vtkSubDOBJReader>(path, messages);
   EXPECT_EQ(messages.NumErrors, 0) << messages.Errors;
   EXPECT_NE(messages.Warnings.find("interpolateboundary"), std::string::npos);
   ASSERT_EQ(mesh->GetNumberOfPoints(), 8);
@@ -108,12 +110,12 @@ TEST(OBJ, RoundTripKeepsPointsFacesAndTags)
   const std::string path = TempPath("tagged.obj"), again = TempPath("again.obj");
   std::ofstream(path) << TaggedCube;
   subdtest::Messages messages;
-  vtkSmartPointer<vtkPolyData> mesh = ReadOBJ(path, messages);
+  vtkSmartPointer<vtkPolyData> mesh = Read<vtkSubDOBJReader>(path, messages);
   vtkNew<vtkSubDOBJWriter> writer;
   writer->SetInputData(mesh);
   writer->SetFileName(again.c_str());
   ASSERT_EQ(writer->Write(), 1);
-  vtkSmartPointer<vtkPolyData> back = ReadOBJ(again, messages);
+  vtkSmartPointer<vtkPolyData> back = Read<vtkSubDOBJReader>(again, messages);
   ASSERT_EQ(back->GetNumberOfPoints(), mesh->GetNumberOfPoints());
   ASSERT_EQ(back->GetNumberOfCells(), mesh->GetNumberOfCells());
   EXPECT_EQ(subdtest::Coordinates(back), subdtest::Coordinates(mesh));
@@ -157,7 +159,7 @@ TEST(OBJ, BrokenFilesNameTheProblem)
     const std::string path = TempPath("broken" + std::to_string(k++) + ".obj");
     std::ofstream(path) << c.first;
     subdtest::Messages messages;
-    vtkSmartPointer<vtkPolyData> mesh = ReadOBJ(path, messages);
+    vtkSmartPointer<vtkPolyData> mesh = Read<vtkSubDOBJReader>(path, messages);
     EXPECT_NE(messages.Errors.find(c.second), std::string::npos) << c.second << " in: " << messages.Errors;
     EXPECT_EQ(mesh->GetNumberOfPoints(), 0);
   }
@@ -187,7 +189,7 @@ TEST(OBJ, TextureSeamsSurviveSubdivisionAndRoundTrip)
   const std::string path = TempPath("islands.obj"), out = TempPath("islands-cc.obj");
   std::ofstream(path) << text;
   subdtest::Messages messages;
-  vtkSmartPointer<vtkPolyData> mesh = ReadOBJ(path, messages);
+  vtkSmartPointer<vtkPolyData> mesh = Read<vtkSubDOBJReader>(path, messages);
   EXPECT_EQ(messages.Errors, "");
   ASSERT_EQ(mesh->GetNumberOfPoints(), 24); // a point per (vertex, texture coordinate)
   ASSERT_NE(mesh->GetPointData()->GetTCoords(), nullptr);
@@ -206,7 +208,7 @@ TEST(OBJ, TextureSeamsSurviveSubdivisionAndRoundTrip)
   const std::string plainPath = TempPath("plain.obj");
   std::ofstream(plainPath) << "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
                               "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n";
-  plain->SetInputData(ReadOBJ(plainPath, messages));
+  plain->SetInputData(Read<vtkSubDOBJReader>(plainPath, messages));
   plain->SetNumberOfSubdivisions(2);
   plain->Update();
   std::set<std::array<double, 3>> a, b;
@@ -220,7 +222,7 @@ TEST(OBJ, TextureSeamsSurviveSubdivisionAndRoundTrip)
   writer->SetInputData(refined);
   writer->SetFileName(out.c_str());
   ASSERT_EQ(writer->Write(), 1);
-  vtkSmartPointer<vtkPolyData> back = ReadOBJ(out, messages);
+  vtkSmartPointer<vtkPolyData> back = Read<vtkSubDOBJReader>(out, messages);
   // (Points of two islands with the same position and coordinates read back as one.)
   ASSERT_EQ(back->GetNumberOfPolys(), refined->GetNumberOfPolys());
   vtkDataArray* backCoords = back->GetPointData()->GetTCoords();
@@ -294,7 +296,7 @@ TEST(OBJ, VTKsSplitReadingWeldsToTheSameResult)
   const std::string path = TempPath("cross.obj");
   std::ofstream(path) << subdtest::CrossUnwrappedCubeOBJ();
   subdtest::Messages messages;
-  vtkSmartPointer<vtkPolyData> ours = ReadOBJ(path, messages);
+  vtkSmartPointer<vtkPolyData> ours = Read<vtkSubDOBJReader>(path, messages);
   vtkNew<vtkOBJReader> vtkReader;
   vtkReader->SetFileName(path.c_str());
   vtkReader->Update();
@@ -303,17 +305,6 @@ TEST(OBJ, VTKsSplitReadingWeldsToTheSameResult)
   ASSERT_NE(split->GetPointData()->GetTCoords(), nullptr);
   // (vtkOBJReader's points are floats: the two agree to float precision.)
   ExpectSameCorners(RefinedCorners(ours, 96), RefinedCorners(split, 96), 1e-6);
-}
-
-vtkSmartPointer<vtkPolyData> ReadGLTF(const std::string& path, subdtest::Messages& messages)
-{
-  vtkNew<vtkSubDGLTFReader> reader;
-  messages.Watch(reader);
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(reader->GetOutput());
-  return out;
 }
 
 void WriteGLTF(vtkPolyData* mesh, const std::string& path)
@@ -334,11 +325,11 @@ TEST(GLTF, SplitTrianglesWeldToTheSeamedResultAndRoundTrip)
   std::ofstream(path) << subdtest::CrossUnwrappedCubeOBJ();
   subdtest::Messages messages;
   vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(ReadOBJ(path, messages));
+  triangles->SetInputData(Read<vtkSubDOBJReader>(path, messages));
   triangles->Update();
   vtkPolyData* cage = triangles->GetOutput();
   WriteGLTF(cage, gltf);
-  vtkSmartPointer<vtkPolyData> split = ReadGLTF(gltf, messages);
+  vtkSmartPointer<vtkPolyData> split = Read<vtkSubDGLTFReader>(gltf, messages);
   EXPECT_EQ(messages.Errors, "");
   ASSERT_EQ(split->GetNumberOfPolys(), 12);
   ASSERT_NE(split->GetPointData()->GetTCoords(), nullptr);
@@ -350,7 +341,7 @@ TEST(GLTF, SplitTrianglesWeldToTheSeamedResultAndRoundTrip)
   filter->SetNumberOfSubdivisions(2);
   filter->Update();
   WriteGLTF(filter->GetOutput(), refinedPath);
-  vtkSmartPointer<vtkPolyData> back = ReadGLTF(refinedPath, messages);
+  vtkSmartPointer<vtkPolyData> back = Read<vtkSubDGLTFReader>(refinedPath, messages);
   EXPECT_EQ(messages.Errors, "");
   EXPECT_EQ(back->GetNumberOfPolys(), 2 * filter->GetOutput()->GetNumberOfPolys()); // quads as two triangles
   ExpectSameCorners(PointsWithTCoords(filter->GetOutput()), PointsWithTCoords(back), 1e-6);
@@ -371,7 +362,7 @@ TEST(GLTF, NodeTransformsAreApplied)
                          R"("accessors":[{"bufferView":0,"componentType":5126,"count":4,"type":"VEC3",)"
                          R"("min":[0,0,0],"max":[1,1,0]},{"bufferView":1,"componentType":5125,"count":6,"type":"SCALAR"}]})";
   subdtest::Messages messages;
-  vtkSmartPointer<vtkPolyData> mesh = ReadGLTF(path, messages);
+  vtkSmartPointer<vtkPolyData> mesh = Read<vtkSubDGLTFReader>(path, messages);
   EXPECT_EQ(messages.Errors, "");
   ASSERT_EQ(mesh->GetNumberOfPoints(), 4);
   double bounds[6];
@@ -388,7 +379,7 @@ TEST(GLTF, BrokenReferencesAreErrorsNotCrashes)
   const std::string path = TempPath("broken.gltf");
   std::ofstream(path) << R"({"asset":{"version":"2.0"},"meshes":[{"primitives":[{"attributes":{"POSITION":5}}]}]})";
   subdtest::Messages messages;
-  vtkSmartPointer<vtkPolyData> mesh = ReadGLTF(path, messages);
+  vtkSmartPointer<vtkPolyData> mesh = Read<vtkSubDGLTFReader>(path, messages);
   EXPECT_NE(messages.Errors.find("refers to accessors[5]"), std::string::npos) << messages.Errors;
   EXPECT_EQ(mesh->GetNumberOfPoints(), 0);
 }
