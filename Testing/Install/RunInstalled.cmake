@@ -1,7 +1,7 @@
 # Installs SubD into a scratch prefix, builds Examples/Installed against it with
 # find_package(SubD), runs it, and imports the installed Python package.
 #   cmake -DBUILD=dir -DSOURCE=dir -DWORK=dir -DGENERATOR=Ninja -DPYTHON=python3
-#         -DPYTHON_DESTINATION=lib/python3/dist-packages [-DWITH_PYTHON=ON]
+#         -DSITE_DESTINATION=lib/python3.11/dist-packages [-DWITH_PYTHON=ON]
 #         [-DPVBATCH=pvbatch -DPARAVIEW_PYTHONPATH=dir] -P RunInstalled.cmake
 # With PVBATCH, the installed ParaView plugin is loaded in pvbatch and runs a filter.
 file(REMOVE_RECURSE "${WORK}")
@@ -23,10 +23,15 @@ if (NOT last_output MATCHES "Loop, 2 levels: 64 -> 1024 triangles, normals: yes"
   message(FATAL_ERROR "unexpected output from the installed example")
 endif ()
 if (WITH_PYTHON)
-  set(ENV{PYTHONPATH} "${prefix}/${PYTHON_DESTINATION}")
+  # The install leaves a subd.pth in the directory the interpreter searches under /usr/local
+  # (SITE_DESTINATION there): with that directory a site directory, `import subd` works with
+  # no PYTHONPATH and no LD_LIBRARY_PATH (the modules find the libraries by their RUNPATH).
   file(WRITE "${WORK}/check.py"
+    "import site, sys\n"
+    "assert '/usr/local/${SITE_DESTINATION}' in site.getsitepackages(), site.getsitepackages()\n"
+    "site.addsitedir(sys.argv[1])\n"
     "import subd\nf = subd.vtkSubDCatmullClarkFilter()\nprint(f.GetClassName(), 'Catmull' in f.__doc__)\n")
-  run("${PYTHON}" "${WORK}/check.py")
+  run(env -u PYTHONPATH -u LD_LIBRARY_PATH "${PYTHON}" "${WORK}/check.py" "${prefix}/${SITE_DESTINATION}")
   if (NOT last_output MATCHES "vtkSubDCatmullClarkFilter True")
     message(FATAL_ERROR "the installed Python package does not work")
   endif ()

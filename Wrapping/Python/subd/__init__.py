@@ -1,7 +1,8 @@
 """SubD: subdivision surfaces and curves as VTK filters.
 
 Importing this package loads VTK's Python modules it depends on, then the wrapped SubD
-classes, e.g. ``subd.vtkSubDCatmullClarkFilter``.
+classes, e.g. ``subd.vtkSubDCatmullClarkFilter``, and the calls that do a job at once:
+``subd.subdivide((points, faces), scheme="loop", levels=3)``, ``subd.read``, ``subd.write``.
 """
 from vtkmodules import vtkCommonCore as _vtkCommonCore  # noqa: F401  (registers VTK types)
 from .SubDFilters import *  # noqa: F401,F403
@@ -11,4 +12,7 @@ from vtkmodules import vtkRenderingOpenGL2 as _vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules import vtkRenderingFreeType as _vtkRenderingFreeType  # noqa: F401
 from .SubDRendering import *  # noqa: F401,F403
 
-__all__ = [name for name in dir() if name.startswith("vtkSubD")]
+from ._api import Mesh, make_filter, read, subdivide, to_arrays, write  # noqa: E402
+
+__all__ = [name for name in dir() if name.startswith("vtkSubD")] + [
+    "Mesh", "make_filter", "read", "subdivide", "to_arrays", "write"]
