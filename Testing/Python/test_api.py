@@ -177,3 +177,69 @@ def test_reading_errors():
         subd.read("/no/such/file.obj")
     with pytest.raises(ValueError, match="unknown file type"):
         subd.read(__file__)
+
+
+def test_limit_surface_is_the_filters_and_its_samples_are_the_limit_points():
+    tessellation = subd.limit_surface((CUBE_POINTS, CUBE_FACES), resolution=4, curvature=True)
+    filter_ = subd.vtkSubDLimitFilter()
+    filter_.SetResolution(4)
+    filter_.SetComputeCurvature(True)
+    points, offsets, connectivity = arrays_of(run_filter(filter_, polydata_by_hand(CUBE_POINTS, CUBE_FACES)))
+    assert np.array_equal(tessellation.points, points)
+    assert np.array_equal(flat_faces(tessellation.faces)[1], connectivity)
+    assert tessellation.cell_data["FaceId"].shape == (len(offsets) - 1,)
+    # At (u, v) = (0, 0) of face f, the limit point of its first corner, which the limit masks
+    # of the refinement give too (another evaluation of the same surface).
+    corners = subd.subdivide((CUBE_POINTS, CUBE_FACES), levels=0, limit=True).points
+    samples = subd.limit_surface((CUBE_POINTS, CUBE_FACES), samples=(range(6), np.zeros((6, 2))))
+    expected = corners[[face[0] for face in CUBE_FACES]]
+    assert np.allclose(samples.points, expected, rtol=0, atol=1e-12)
+
+
+def test_an_interpolating_cage_has_its_limit_points_on_the_targets():
+    targets = subd.subdivide((CUBE_POINTS, CUBE_FACES), levels=1)
+    cage = subd.interpolate((targets.points, targets.faces))
+    limit = subd.subdivide((cage.points, cage.faces), levels=0, limit=True)
+    assert np.allclose(limit.points, targets.points, rtol=0, atol=1e-9)
+    assert np.max(np.abs(cage.points - targets.points)) > 1e-3  # the cage moved
+    some = subd.interpolate((targets.points, targets.faces), targets=[0, 1, 2])
+    assert np.array_equal(some.points[3:], targets.points[3:])  # the others keep their place
+    with pytest.raises(ValueError, match="targets must be point ids"):
+        subd.interpolate((targets.points, targets.faces), targets=[99])
+
+
+def test_refine_curve_is_the_curve_filters():
+    points = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 1]], dtype=np.float64)
+    for scheme, index in (("chaikin", 0), ("bspline", 1), ("four-point", 2)):
+        refined, lines = subd.refine_curve((points, [[0, 1, 2, 3]]), scheme=scheme, levels=3, closed=True)
+        filter_ = subd.vtkSubDCurveFilter()
+        filter_.SetScheme(index)
+        filter_.SetNumberOfSubdivisions(3)
+        filter_.SetClosed(True)
+        curve = vtkPolyData()
+        curve.SetPoints(polydata_by_hand(points, []).GetPoints())
+        cells = vtkCellArray()
+        cells.InsertNextCell(4, [0, 1, 2, 3])
+        curve.SetLines(cells)
+        expected = run_filter(filter_, curve)
+        assert np.array_equal(refined, numpy_support.vtk_to_numpy(expected.GetPoints().GetData())), scheme
+        assert len(lines) == 1
+    with pytest.raises(ValueError, match="tension applies to the four-point"):
+        subd.refine_curve((points, None), tension=0.1)
+    with pytest.raises(ValueError, match="polyline 0 names a point outside"):
+        subd.refine_curve((points, [[0, 7]]))
+
+
+def test_meshio_formats_go_through_from_and_to_meshio(tmp_path):
+    import meshio  # python3-meshio (scripts/setup)
+    result = subd.subdivide((CUBE_POINTS, CUBE_FACES), scheme="doo-sabin", levels=1)  # triangles and quads
+    path = tmp_path / "ds.vtu"
+    meshio.write(path, subd.to_meshio(result))
+    back = subd.from_meshio(meshio.read(path))
+    assert np.array_equal(back.points, result.points)
+    offsets, _ = back.faces
+    assert sorted(np.diff(offsets)) == sorted(np.diff(result.faces[0]))
+    # The same surface, whatever the order of its faces.
+    again = subd.subdivide(back, levels=1)
+    direct = subd.subdivide(result, levels=1)
+    assert np.allclose(np.sort(again.points, axis=0), np.sort(direct.points, axis=0), rtol=0, atol=1e-12)

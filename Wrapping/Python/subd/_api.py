@@ -116,6 +116,101 @@ def make_filter(scheme="catmull-clark", levels=2, boundary="edge-only", crease_m
     return filter_
 
 
+LIMIT_SCHEMES = ("catmull-clark", "loop")
+INTERPOLATING_SCHEMES = ("catmull-clark", "loop", "doo-sabin")
+CURVE_SCHEMES = ("chaikin", "bspline", "four-point")
+
+
+def limit_surface(mesh, scheme="catmull-clark", resolution=4, samples=None, boundary="edge-only",
+                  crease_method="uniform", creases=None, corners=None, holes=None, normals=True,
+                  curvature=False, derivatives=False):
+    """The exact limit surface of a cage (vtkSubDLimitFilter), tessellated or sampled.
+
+    Without samples: a watertight tessellation with `resolution` segments per face edge
+    (quads for catmull-clark, triangles for loop), each cell with "FaceId", its cage face.
+    samples: (face_ids, uv): the limit at those (face, u, v), as points (a Mesh with no faces,
+    or a vtkPolyData of vertices); uv in the unit square of a quad, the unit triangle of a
+    triangle. normals, curvature, derivatives: "Normals", the curvature arrays, "dPdu"/"dPdv".
+    Other options as for subdivide.
+    """
+    polydata, as_arrays = _to_polydata(mesh)
+    _add_sharp_features(polydata, creases, corners, holes)
+    filter_ = _filters.vtkSubDLimitFilter()
+    filter_.SetScheme(_choice("scheme", scheme, LIMIT_SCHEMES))
+    filter_.SetResolution(_integer_in("resolution", resolution, 1, 1024))
+    filter_.SetBoundaryRule(_choice("boundary", boundary, BOUNDARY_RULES))
+    filter_.SetCreaseMethod(_choice("crease_method", crease_method, CREASE_METHODS))
+    filter_.SetComputeNormals(bool(normals))
+    filter_.SetComputeCurvature(bool(curvature))
+    filter_.SetComputeDerivatives(bool(derivatives))
+    if samples is not None:
+        filter_.SetInputData(1, _locations(samples))
+    output = _run(filter_, polydata)
+    return to_arrays(output) if as_arrays else output
+
+
+def interpolate(mesh, scheme="catmull-clark", targets=None, levels=None, boundary="edge-only",
+                crease_method="uniform", creases=None, corners=None, holes=None):
+    """A cage whose limit surface passes through the mesh's vertices (vtkSubDInterpolateFilter).
+
+    scheme: catmull-clark, loop or doo-sabin. targets: the vertex ids to pass through (default:
+    all); the others keep their positions. levels: instead of the cage, its surface refined
+    that many levels. Other options as for subdivide. A system that has no unique solution is
+    a RuntimeError naming the cause.
+    """
+    polydata, as_arrays = _to_polydata(mesh)
+    _add_sharp_features(polydata, creases, corners, holes)
+    filter_ = _filters.vtkSubDInterpolateFilter()
+    filter_.SetScheme(_choice("scheme", scheme, INTERPOLATING_SCHEMES))
+    filter_.SetBoundaryRule(_choice("boundary", boundary, BOUNDARY_RULES))
+    filter_.SetCreaseMethod(_choice("crease_method", crease_method, CREASE_METHODS))
+    if targets is not None:
+        ids = np.asarray(list(targets), dtype=np.int64)
+        if ids.size and (ids.min() < 0 or ids.max() >= polydata.GetNumberOfPoints()):
+            raise ValueError("targets must be point ids in [0, %d)" % polydata.GetNumberOfPoints())
+        tags = np.zeros(polydata.GetNumberOfPoints(), np.uint8)
+        tags[ids] = 1
+        polydata.GetPointData().AddArray(_named(tags, "Interpolate"))
+    if levels is not None:
+        filter_.SetOutputRefinedSurface(True)
+        filter_.SetNumberOfSubdivisions(_integer_in("levels", levels, 1, 8))
+    output = _run(filter_, polydata)
+    return to_arrays(output) if as_arrays else output
+
+
+def refine_curve(curve, scheme="bspline", levels=2, tension=None, closed=False, limit=False, tangents=False):
+    """Refines polylines (vtkSubDCurveFilter): Chaikin, the cubic B-spline or the 4-point scheme.
+
+    curve: a vtkPolyData with lines, or a pair (points, polylines): points (N, 3), polylines a
+    list of index sequences (or None: one polyline through every point in order).
+    tension: the 4-point scheme's w in [0, 0.125] (default 1/16). closed: every polyline is
+    closed. limit: project to the limit curve. tangents: add the unit limit "Tangents".
+    Returns a vtkPolyData, or a pair (points, polylines) of arrays for arrays in.
+    """
+    polydata, as_arrays = _curve_polydata(curve)
+    filter_ = _filters.vtkSubDCurveFilter()
+    filter_.SetScheme(_choice("scheme", scheme, CURVE_SCHEMES))
+    filter_.SetNumberOfSubdivisions(_integer_in("levels", levels, 0, 30))
+    if tension is not None:
+        if scheme != "four-point":
+            raise ValueError("tension applies to the four-point scheme, not to %s" % scheme)
+        w = _number("tension", tension)
+        if not 0.0 <= w <= 0.125:
+            raise ValueError("tension must be in [0, 0.125], not %r" % tension)
+        filter_.SetTension(w)
+    filter_.SetClosed(bool(closed))
+    filter_.SetProjectToLimit(bool(limit))
+    filter_.SetComputeTangents(bool(tangents))
+    output = _run(filter_, polydata)
+    if not as_arrays:
+        return output
+    lines = output.GetLines()
+    offsets = numpy_support.vtk_to_numpy(lines.GetOffsetsArray()).astype(np.int64)
+    connectivity = numpy_support.vtk_to_numpy(lines.GetConnectivityArray()).astype(np.int64)
+    points = numpy_support.vtk_to_numpy(output.GetPoints().GetData()).astype(np.float64)
+    return points, [connectivity[offsets[k]:offsets[k + 1]] for k in range(len(offsets) - 1)]
+
+
 def read(path):
     """The mesh in `path` (.vtp .vtk .obj .ply .stl .off .gltf .glb) as a vtkPolyData."""
     reader = _reader_for(os.fspath(path))
@@ -160,6 +255,47 @@ def to_arrays(polydata):
     return Mesh(points, faces, _crease_rows(polydata), point_data, cell_data)
 
 
+def from_meshio(mesh):
+    """A Mesh of a meshio.Mesh's polygons (its triangle, quad and polygon blocks, in order)
+    and point data, ready for subdivide: every format meshio reads works. Other blocks
+    (lines, volumes) are left out with a RuntimeWarning naming them."""
+    faces, skipped = [], []
+    for block in mesh.cells:
+        if block.type in ("triangle", "quad") or block.type.startswith("polygon"):
+            faces.extend(np.asarray(block.data, dtype=np.int64))
+        else:
+            skipped.append(block.type)
+    if skipped:
+        warnings.warn("from_meshio: blocks that are not polygons left out: %s" % ", ".join(skipped),
+                      RuntimeWarning, stacklevel=2)
+    points = np.asarray(mesh.points, dtype=np.float64)
+    if points.ndim == 2 and points.shape[1] == 2:
+        points = np.column_stack([points, np.zeros(len(points))])
+    offsets, connectivity = _faces(faces, len(points))
+    sizes = np.diff(offsets)
+    faces_out = (connectivity.reshape(-1, int(sizes[0])) if len(sizes) and np.all(sizes == sizes[0])
+                 else (offsets, connectivity))
+    point_data = {name: np.asarray(values) for name, values in mesh.point_data.items()}
+    return Mesh(_points(points), faces_out, np.zeros((0, 3)), point_data, {})
+
+
+def to_meshio(mesh):
+    """A meshio.Mesh of a mesh (vtkPolyData, Mesh or (points, faces)): its faces in blocks by
+    corner count (triangle, quad, polygon) and its point data; write it with meshio.write."""
+    import meshio
+
+    arrays = mesh if isinstance(mesh, Mesh) else to_arrays(_to_polydata(mesh)[0])
+    offsets, connectivity = (arrays.faces if isinstance(arrays.faces, tuple)
+                             else (np.arange(0, arrays.faces.size + 1, arrays.faces.shape[1]), arrays.faces.ravel()))
+    sizes = np.diff(offsets)
+    cells = []
+    for size in sorted(set(sizes.tolist())):
+        rows = np.flatnonzero(sizes == size)
+        block = connectivity[offsets[rows][:, None] + np.arange(size)]
+        cells.append(({3: "triangle", 4: "quad"}.get(size, "polygon"), block))
+    return meshio.Mesh(arrays.points, cells, point_data=dict(arrays.point_data))
+
+
 # --- arguments ---
 
 def _integer_in(name, value, lowest, highest):
@@ -201,9 +337,7 @@ def _to_polydata(mesh):
         return polydata, True
     if not isinstance(mesh, (tuple, list)) or len(mesh) != 2:
         raise TypeError("mesh must be a vtkPolyData or a (points, faces) pair, not %s" % type(mesh).__name__)
-    points = np.asarray(mesh[0], dtype=np.float64)
-    if points.ndim != 2 or points.shape[1] != 3:
-        raise ValueError("points must be an (N, 3) array, not of shape %s" % (points.shape,))
+    points = _points(mesh[0])
     offsets, connectivity = _faces(mesh[1], len(points))
     polydata = vtkPolyData()
     vtk_points = vtkPoints()
@@ -214,6 +348,54 @@ def _to_polydata(mesh):
                   numpy_support.numpy_to_vtkIdTypeArray(connectivity, deep=1))
     polydata.SetPolys(cells)
     return polydata, True
+
+
+def _points(values):
+    points = np.asarray(values, dtype=np.float64)
+    if points.ndim != 2 or points.shape[1] != 3:
+        raise ValueError("points must be an (N, 3) array, not of shape %s" % (points.shape,))
+    return points
+
+
+def _curve_polydata(curve):
+    if isinstance(curve, vtkPolyData):
+        copy = vtkPolyData()
+        copy.ShallowCopy(curve)
+        return copy, False
+    if not isinstance(curve, (tuple, list)) or len(curve) != 2:
+        raise TypeError("curve must be a vtkPolyData or a (points, polylines) pair, not %s" % type(curve).__name__)
+    points = _points(curve[0])
+    polylines = [np.arange(len(points))] if curve[1] is None else [np.asarray(line) for line in curve[1]]
+    lines = vtkCellArray()
+    for k, line in enumerate(polylines):
+        if line.ndim != 1 or len(line) < 2 or not np.issubdtype(line.dtype, np.integer):
+            raise ValueError("polyline %d must be a sequence of 2 or more point ids" % k)
+        if line.min() < 0 or line.max() >= len(points):
+            raise ValueError("polyline %d names a point outside [0, %d)" % (k, len(points)))
+        lines.InsertNextCell(len(line), [int(i) for i in line])
+    polydata = vtkPolyData()
+    vtk_points = vtkPoints()
+    vtk_points.SetData(numpy_support.numpy_to_vtk(points, deep=1))
+    polydata.SetPoints(vtk_points)
+    polydata.SetLines(lines)
+    return polydata, True
+
+
+def _locations(samples):
+    """The second input of vtkSubDLimitFilter: points with "FaceId" and "FaceUV"."""
+    if not isinstance(samples, (tuple, list)) or len(samples) != 2:
+        raise TypeError("samples must be a pair (face_ids, uv)")
+    faces = np.asarray(samples[0], dtype=np.int64).ravel()
+    uv = np.asarray(samples[1], dtype=np.float64)
+    if uv.shape != (len(faces), 2):
+        raise ValueError("samples' uv must be a (%d, 2) array, not of shape %s" % (len(faces), uv.shape))
+    locations = vtkPolyData()
+    vtk_points = vtkPoints()
+    vtk_points.SetNumberOfPoints(len(faces))
+    locations.SetPoints(vtk_points)
+    locations.GetPointData().AddArray(_named(faces, "FaceId"))
+    locations.GetPointData().AddArray(_named(uv, "FaceUV"))
+    return locations
 
 
 def _as_pair(mesh):
