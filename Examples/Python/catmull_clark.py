@@ -1,34 +1,23 @@
-"""Example: Catmull-Clark subdivision from Python.
+"""Example: Catmull-Clark subdivision from Python, numpy in and numpy out.
 
 Run with Debian's python3 and the build's package on the path:
     PYTHONPATH=build/lib/python3/dist-packages /usr/bin/python3 Examples/Python/catmull_clark.py
 """
 import sys
 
+import numpy as np
 import subd
-from vtkmodules.vtkFiltersCore import vtkCleanPolyData
-from vtkmodules.vtkFiltersSources import vtkCubeSource
-from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+CUBE_POINTS = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]])
+CUBE_FACES = [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]]
 
 
 def main(output="cube-smooth-python.vtp", levels=3):
-    cube = vtkCubeSource()
-    merge = vtkCleanPolyData()  # weld the cube's per-face points into one closed surface
-    merge.SetInputConnection(cube.GetOutputPort())
-
-    smooth = subd.vtkSubDCatmullClarkFilter()
-    smooth.SetInputConnection(merge.GetOutputPort())
-    smooth.SetNumberOfSubdivisions(levels)
-    smooth.SetBoundaryRuleToEdgeAndCorner()
-
-    writer = vtkXMLPolyDataWriter()
-    writer.SetInputConnection(smooth.GetOutputPort())
-    writer.SetFileName(output)
-    writer.Write()
-
-    result = smooth.GetOutput()
-    print("wrote %s: %d quads, %d points" % (output, result.GetNumberOfPolys(), result.GetNumberOfPoints()))
-    return 0 if result.GetNumberOfPolys() == 6 * 4 ** levels else 1
+    mesh = subd.subdivide((CUBE_POINTS, CUBE_FACES), scheme="catmull-clark", levels=levels, normals=True)
+    subd.write(mesh, output)
+    print("wrote %s: %d quads, %d points, normals %s" % (
+        output, len(mesh.faces), len(mesh.points), mesh.point_data["Normals"].shape))
+    return 0 if mesh.faces.shape == (6 * 4 ** levels, 4) else 1
 
 
 if __name__ == "__main__":

@@ -1,8 +1,7 @@
 """Example: surfaces and curves through given points, from Python.
 
-1. A coarse triangulated sphere: vtkSubDInterpolateFilter finds the Loop cage whose limit
-   surface passes through the sphere's vertices except the poles (tagged by the point-data
-   array "Interpolate"); vtkSubDLoopFilter then refines it.
+1. A coarse triangulated sphere: subd.interpolate finds the Loop cage whose limit surface
+   passes through the sphere's vertices except the poles; subd.subdivide then refines it.
 2. Scattered samples of a height field with a hole in the middle: vtkSubDBSplineSurfaceFilter
    fits a bicubic B-spline (least squares, with shape equations so the hole stays solvable).
 3. An open zigzag: vtkSubDCurveInterpolateFilter gives the Chaikin curve through its points.
@@ -13,8 +12,9 @@ Each result is written to <prefix>-*.vtp. Run with Debian's python3 and the buil
 import math
 import sys
 
+import numpy as np
 import subd
-from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkIntArray, vtkPoints
+from vtkmodules.vtkCommonCore import vtkDoubleArray, vtkPoints
 from vtkmodules.vtkCommonDataModel import vtkCellArray, vtkPolyData
 from vtkmodules.vtkFiltersSources import vtkSphereSource
 from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
@@ -32,32 +32,16 @@ def loop_through_sphere(prefix):
     source.SetThetaResolution(8)
     source.SetPhiResolution(6)
     source.Update()
-    sphere = source.GetOutput()
-    tags = vtkIntArray()
-    tags.SetName("Interpolate")
-    for v in range(sphere.GetNumberOfPoints()):
-        tags.InsertNextValue(0 if abs(sphere.GetPoint(v)[2]) > 0.49 else 1)  # not the poles
-    sphere.GetPointData().AddArray(tags)
-
-    solve = subd.vtkSubDInterpolateFilter()
-    solve.SetInputData(sphere)
-    solve.SetSchemeToLoop()
-    solve.Update()
+    sphere = subd.to_arrays(source.GetOutput())
+    targets = np.flatnonzero(np.abs(sphere.points[:, 2]) <= 0.49)  # not the poles
+    cage = subd.interpolate((sphere.points, sphere.faces), scheme="loop", targets=targets)
     # The limit points of the solved cage: Loop at level 0, projected to the limit.
-    limit = subd.vtkSubDLoopFilter()
-    limit.SetInputConnection(solve.GetOutputPort())
-    limit.SetNumberOfSubdivisions(0)
-    limit.ProjectToLimitOn()
-    limit.Update()
-    worst = max(math.dist(sphere.GetPoint(v), limit.GetOutput().GetPoint(v))
-                for v in range(sphere.GetNumberOfPoints()) if tags.GetValue(v))
-    print("Loop cage through %d of %d sphere points: residual %.2g, largest miss %.2g" % (
-        solve.GetNumberOfTaggedPoints(), sphere.GetNumberOfPoints(), solve.GetResidual(), worst))
-    refine = subd.vtkSubDLoopFilter()
-    refine.SetInputConnection(solve.GetOutputPort())
-    refine.SetNumberOfSubdivisions(3)
-    refine.Update()
-    return write(refine.GetOutput(), prefix + "-loop.vtp") and worst < 1e-9
+    limit = subd.subdivide((cage.points, cage.faces), scheme="loop", levels=0, limit=True)
+    worst = np.max(np.linalg.norm(limit.points[targets] - sphere.points[targets], axis=1))
+    print("Loop cage through %d of %d sphere points: largest miss %.2g" % (len(targets), len(sphere.points), worst))
+    surface = subd.subdivide((cage.points, cage.faces), scheme="loop", levels=3)
+    subd.write(surface, prefix + "-loop.vtp")
+    return worst < 1e-9
 
 
 def fit_height_field(prefix):

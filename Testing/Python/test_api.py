@@ -211,7 +211,7 @@ def test_an_interpolating_cage_has_its_limit_points_on_the_targets():
 def test_refine_curve_is_the_curve_filters():
     points = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 1]], dtype=np.float64)
     for scheme, index in (("chaikin", 0), ("bspline", 1), ("four-point", 2)):
-        refined, lines = subd.refine_curve((points, [[0, 1, 2, 3]]), scheme=scheme, levels=3, closed=True)
+        refined, lines, _ = subd.refine_curve((points, [[0, 1, 2, 3]]), scheme=scheme, levels=3, closed=True)
         filter_ = subd.vtkSubDCurveFilter()
         filter_.SetScheme(index)
         filter_.SetNumberOfSubdivisions(3)

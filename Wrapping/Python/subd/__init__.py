@@ -12,9 +12,9 @@ from vtkmodules import vtkRenderingOpenGL2 as _vtkRenderingOpenGL2  # noqa: F401
 from vtkmodules import vtkRenderingFreeType as _vtkRenderingFreeType  # noqa: F401
 from .SubDRendering import *  # noqa: F401,F403
 
-from ._api import (Mesh, from_meshio, interpolate, limit_surface, make_filter, read,  # noqa: E402
+from ._api import (Curve, Mesh, from_meshio, interpolate, limit_surface, make_filter, read,  # noqa: E402
                    refine_curve, subdivide, to_arrays, to_meshio, write)
 
 __all__ = [name for name in dir() if name.startswith("vtkSubD")] + [
-    "Mesh", "from_meshio", "interpolate", "limit_surface", "make_filter", "read", "refine_curve", "subdivide",
+    "Curve", "Mesh", "from_meshio", "interpolate", "limit_surface", "make_filter", "read", "refine_curve", "subdivide",
     "to_arrays", "to_meshio", "write"]

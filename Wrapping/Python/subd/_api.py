@@ -25,6 +25,10 @@ points: (N, 3) float64. faces: (F, k) int64 when every face has k corners, else 
 float64 rows (i, j, sharpness), the crease edges (pass them back in to refine further).
 point_data, cell_data: dicts of name -> array (cell_data per face)."""
 
+Curve = collections.namedtuple("Curve", "points polylines point_data")
+Curve.__doc__ = """Polylines as arrays, as refine_curve returns them for arrays in: points (N, 3)
+float64, polylines a list of int64 index arrays, point_data a dict of name -> array."""
+
 SURFACE_SCHEMES = {
     "catmull-clark": _filters.vtkSubDCatmullClarkFilter,
     "loop": _filters.vtkSubDLoopFilter,
@@ -178,16 +182,20 @@ def interpolate(mesh, scheme="catmull-clark", targets=None, levels=None, boundar
     return to_arrays(output) if as_arrays else output
 
 
-def refine_curve(curve, scheme="bspline", levels=2, tension=None, closed=False, limit=False, tangents=False):
+def refine_curve(curve, scheme="bspline", levels=2, tension=None, closed=False, corners=None, limit=False,
+                 tangents=False):
     """Refines polylines (vtkSubDCurveFilter): Chaikin, the cubic B-spline or the 4-point scheme.
 
     curve: a vtkPolyData with lines, or a pair (points, polylines): points (N, 3), polylines a
     list of index sequences (or None: one polyline through every point in order).
     tension: the 4-point scheme's w in [0, 0.125] (default 1/16). closed: every polyline is
-    closed. limit: project to the limit curve. tangents: add the unit limit "Tangents".
-    Returns a vtkPolyData, or a pair (points, polylines) of arrays for arrays in.
+    closed. corners: {vertex: sharpness} or (K, 2) rows: sharp vertices (10 keeps a sharp tip).
+    limit: project to the limit curve. tangents: add the unit limit "Tangents".
+    Returns a vtkPolyData, or a Curve of arrays for arrays in.
     """
     polydata, as_arrays = _curve_polydata(curve)
+    if corners is not None:
+        _add_corners(polydata, corners)
     filter_ = _filters.vtkSubDCurveFilter()
     filter_.SetScheme(_choice("scheme", scheme, CURVE_SCHEMES))
     filter_.SetNumberOfSubdivisions(_integer_in("levels", levels, 0, 30))
@@ -208,7 +216,8 @@ def refine_curve(curve, scheme="bspline", levels=2, tension=None, closed=False, 
     offsets = numpy_support.vtk_to_numpy(lines.GetOffsetsArray()).astype(np.int64)
     connectivity = numpy_support.vtk_to_numpy(lines.GetConnectivityArray()).astype(np.int64)
     points = numpy_support.vtk_to_numpy(output.GetPoints().GetData()).astype(np.float64)
-    return points, [connectivity[offsets[k]:offsets[k + 1]] for k in range(len(offsets) - 1)]
+    polylines = [connectivity[offsets[k]:offsets[k + 1]] for k in range(len(offsets) - 1)]
+    return Curve(points, polylines, dict(_arrays(output.GetPointData())))
 
 
 def read(path):
@@ -222,9 +231,14 @@ def read(path):
 
 
 def write(mesh, path):
-    """Writes `mesh` (a vtkPolyData, a Mesh or a (points, faces) pair) to `path`, the format
-    chosen by its extension (.vtp .vtk .obj .ply .stl .off .gltf)."""
-    polydata = _to_polydata(mesh)[0]
+    """Writes `mesh` (a vtkPolyData, a Mesh, a Curve or a (points, faces) pair) to `path`, the
+    format chosen by its extension (.vtp .vtk .obj .ply .stl .off .gltf)."""
+    if isinstance(mesh, Curve):
+        polydata = _curve_polydata((mesh.points, mesh.polylines))[0]
+        for name, values in mesh.point_data.items():
+            polydata.GetPointData().AddArray(_named(values, name))
+    else:
+        polydata = _to_polydata(mesh)[0]
     writer = _writer_for(os.fspath(path))
     writer.SetFileName(os.fspath(path))
     if _extension(os.fspath(path)) == ".stl":  # STL holds triangles only
