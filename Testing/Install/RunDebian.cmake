@@ -21,14 +21,6 @@ endforeach ()
 set(root "${WORK}/root")
 run(dpkg-deb -x "${debs}" "${root}")
 run(env -u LD_LIBRARY_PATH "${root}/usr/bin/subd" --levels 1 -o "${WORK}/cube.vtp")
-file(WRITE "${WORK}/check.py"
-  "import site, sys\n"
-  "assert '/usr/lib/python3/dist-packages' in site.getsitepackages(), site.getsitepackages()\n"
-  "site.addsitedir(sys.argv[1] + '/usr/lib/python3/dist-packages')\n"
-  "import subd\n"
-  "mesh = subd.subdivide(([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]]), levels=2)\n"
-  "print('faces', len(mesh.faces), subd.__file__)\n")
-run(env -u PYTHONPATH -u LD_LIBRARY_PATH "${PYTHON}" "${WORK}/check.py" "${root}")
-if (NOT last_output MATCHES "faces 16 .*/root/usr/lib/python3/dist-packages/subd/__init__.py")
-  message(FATAL_ERROR "the packaged Python module does not work")
-endif ()
+import_installed_subd("${PYTHON}" "${root}/usr/lib/python3/dist-packages" "/usr/lib/python3/dist-packages"
+  "mesh = subd.subdivide(([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]], [[0, 1, 2, 3]]), levels=2)\nprint('faces', len(mesh.faces), subd.__file__)"
+  "faces 16 .*/root/usr/lib/python3/dist-packages/subd/__init__.py")

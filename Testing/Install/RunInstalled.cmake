@@ -26,15 +26,9 @@ if (WITH_PYTHON)
   # The install leaves a subd.pth in the directory the interpreter searches under /usr/local
   # (SITE_DESTINATION there): with that directory a site directory, `import subd` works with
   # no PYTHONPATH and no LD_LIBRARY_PATH (the modules find the libraries by their RUNPATH).
-  file(WRITE "${WORK}/check.py"
-    "import site, sys\n"
-    "assert '/usr/local/${SITE_DESTINATION}' in site.getsitepackages(), site.getsitepackages()\n"
-    "site.addsitedir(sys.argv[1])\n"
-    "import subd\nf = subd.vtkSubDCatmullClarkFilter()\nprint(f.GetClassName(), 'Catmull' in f.__doc__)\n")
-  run(env -u PYTHONPATH -u LD_LIBRARY_PATH "${PYTHON}" "${WORK}/check.py" "${prefix}/${SITE_DESTINATION}")
-  if (NOT last_output MATCHES "vtkSubDCatmullClarkFilter True")
-    message(FATAL_ERROR "the installed Python package does not work")
-  endif ()
+  import_installed_subd("${PYTHON}" "${prefix}/${SITE_DESTINATION}" "/usr/local/${SITE_DESTINATION}"
+    "f = subd.vtkSubDCatmullClarkFilter()\nprint(f.GetClassName(), 'Catmull' in f.__doc__)"
+    "vtkSubDCatmullClarkFilter True")
 endif ()
 if (PVBATCH)
   set(plugin "${prefix}/lib/paraview-5.11/plugins/SubD/SubD.so")
