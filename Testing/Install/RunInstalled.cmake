@@ -1,7 +1,8 @@
 # Installs SubD into a scratch prefix, builds Examples/Installed against it with
 # find_package(SubD), runs it, and imports the installed Python package.
 #   cmake -DBUILD=dir -DSOURCE=dir -DWORK=dir -DGENERATOR=Ninja -DPYTHON=python3
-#         -DSITE_DESTINATION=lib/python3.11/dist-packages [-DWITH_PYTHON=ON]
+#         -DPYTHON_DESTINATION=lib/python3/dist-packages -DSITE_DESTINATION=lib/python3.11/dist-packages
+#         [-DWITH_PYTHON=ON]
 #         [-DPVBATCH=pvbatch -DPARAVIEW_PYTHONPATH=dir] -P RunInstalled.cmake
 # With PVBATCH, the installed ParaView plugin is loaded in pvbatch and runs a filter.
 file(REMOVE_RECURSE "${WORK}")
@@ -29,6 +30,16 @@ if (WITH_PYTHON)
   import_installed_subd("${PYTHON}" "${prefix}/${SITE_DESTINATION}" "/usr/local/${SITE_DESTINATION}"
     "f = subd.vtkSubDCatmullClarkFilter()\nprint(f.GetClassName(), 'Catmull' in f.__doc__)"
     "vtkSubDCatmullClarkFilter True")
+  # Staged for /usr/local (DESTDIR, as packagers install): the .pth names the final place,
+  # and the package is there under the stage.
+  set(stage "${WORK}/stage")
+  run(env "DESTDIR=${stage}" "${CMAKE_COMMAND}" --install "${BUILD}" --prefix /usr/local)
+  file(READ "${stage}/usr/local/${SITE_DESTINATION}/subd.pth" pth)
+  if (NOT pth STREQUAL "/usr/local/${PYTHON_DESTINATION}\n")
+    message(FATAL_ERROR "subd.pth names '${pth}', not /usr/local/${PYTHON_DESTINATION}")
+  endif ()
+  import_installed_subd("${PYTHON}" "${stage}/usr/local/${PYTHON_DESTINATION}" "/usr/local/${SITE_DESTINATION}"
+    "print(subd.__file__)" "${stage}/usr/local/${PYTHON_DESTINATION}/subd/__init__.py")
 endif ()
 if (PVBATCH)
   set(plugin "${prefix}/lib/paraview-5.11/plugins/SubD/SubD.so")
