@@ -243,3 +243,20 @@ def test_meshio_formats_go_through_from_and_to_meshio(tmp_path):
     again = subd.subdivide(back, levels=1)
     direct = subd.subdivide(result, levels=1)
     assert np.allclose(np.sort(again.points, axis=0), np.sort(direct.points, axis=0), rtol=0, atol=1e-12)
+
+
+def test_the_option_names_are_the_programs():
+    """The schemes, boundary rules and crease methods by the names `subd --help` gives them."""
+    import os
+    import re
+    import subprocess
+
+    text = subprocess.run([os.environ["SUBD_EXECUTABLE"], "--help"], capture_output=True, text=True).stdout
+    scheme_list = text[text.index("\n  --scheme NAME"):text.index("\n  --levels N")]
+    schemes = re.findall(r"^ {23}([a-z0-9-]+): ", scheme_list, re.M)
+    surfaces = [name for name in schemes if name not in subd._api.CURVE_SCHEMES]
+    assert surfaces == list(subd._api.SURFACE_SCHEMES)
+    assert [name for name in schemes if name in subd._api.CURVE_SCHEMES] == list(subd._api.CURVE_SCHEMES)
+    for rule in subd._api.BOUNDARY_RULES:
+        assert re.search(r"^ {23}%s: " % rule, text, re.M), rule
+    assert "--crease-method" in text and all(method in text for method in subd._api.CREASE_METHODS)
