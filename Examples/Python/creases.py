@@ -14,7 +14,8 @@ import sys
 import numpy as np
 import subd
 
-BOX_POINTS = 2.0 * np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]]) - 1
+UNIT_CUBE = np.array([[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]])
+BOX_POINTS = 2.0 * UNIT_CUBE - 1
 BOX_FACES = [[0, 3, 2, 1], [4, 5, 6, 7], [0, 1, 5, 4], [1, 2, 6, 5], [2, 3, 7, 6], [3, 0, 4, 7]]
 CORNER = 6  # the point (1, 1, 1), and its three edges:
 CORNER_EDGES = [(6, 5), (6, 7), (6, 2)]

@@ -32,7 +32,8 @@ def main(prefix="out"):
     at = subd.limit_surface(cage, scheme="loop", samples=([0, 0, 0], uv), curvature=True)
     gauss = at.point_data["Gauss_Curvature"]
     for (u, v), point, k in zip(uv, at.points, gauss):
-        print("  face 0 at (%.2f, %.2f): point (%.3f, %.3f, %.3f), Gaussian curvature %.3f" % ((u, v) + tuple(point) + (k,)))
+        print("  face 0 at (%.2f, %.2f): point (%.3f, %.3f, %.3f), Gaussian curvature %.3f"
+              % ((u, v) + tuple(point) + (k,)))
     ok = mean.min() > 0 and len(at.points) == 3 and np.all(gauss > 0)
     return 0 if ok else 1
 

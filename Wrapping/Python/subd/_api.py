@@ -440,7 +440,8 @@ def _faces(faces, num_points):
         connectivity = (np.concatenate(lists).astype(np.int64) if lists else np.zeros(0, np.int64))
     sizes = np.diff(offsets)
     if np.any(sizes < 3):
-        raise ValueError("face %d has %d corners: a polygon needs 3 or more" % (np.argmax(sizes < 3), sizes[np.argmax(sizes < 3)]))
+        short = int(np.argmax(sizes < 3))
+        raise ValueError("face %d has %d corners: a polygon needs 3 or more" % (short, sizes[short]))
     bad = np.flatnonzero((connectivity < 0) | (connectivity >= num_points))
     if bad.size:
         face = int(np.searchsorted(offsets, bad[0], side="right") - 1)
