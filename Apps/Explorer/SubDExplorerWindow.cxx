@@ -48,6 +48,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace subdexplorer
 {
@@ -520,6 +521,16 @@ void ExplorerWindow::SetQuietly(Setter&& set)
   this->Updating = updating;
 }
 
+template <typename Setter>
+void ExplorerWindow::SetControlsAndUpdate(Setter&& set)
+{
+  this->SetQuietly(std::forward<Setter>(set));
+  if (!this->Updating)
+  {
+    this->UpdateViews();
+  }
+}
+
 void ExplorerWindow::SetColoring(const std::string& coloring)
 {
   const int value = vtkSubDScene::ColoringFromName(coloring.c_str());
@@ -528,11 +539,8 @@ void ExplorerWindow::SetColoring(const std::string& coloring)
     return;
   }
   this->Scene->SetColoring(value);
-  this->SetQuietly([&]() { this->Coloring->setCurrentIndex(value); });
-  if (!this->Updating)
-  {
-    this->UpdateViews(); // exact curvature may now be needed (or no longer)
-  }
+  // (An update: exact curvature may now be needed, or no longer.)
+  this->SetControlsAndUpdate([&]() { this->Coloring->setCurrentIndex(value); });
 }
 
 void ExplorerWindow::SetColorMap(const std::string& map)
@@ -543,96 +551,65 @@ void ExplorerWindow::SetColorMap(const std::string& map)
     return;
   }
   this->Scene->SetColorMap(value);
-  this->SetQuietly([&]() { this->ColorMap->setCurrentIndex(value); });
-  if (!this->Updating)
-  {
-    this->UpdateViews();
-  }
+  this->SetControlsAndUpdate([&]() { this->ColorMap->setCurrentIndex(value); });
 }
 
 void ExplorerWindow::SetColorRange(bool symmetric, double percentile)
 {
   this->Scene->SetRangeMode(symmetric ? vtkSubDScene::RANGE_SYMMETRIC : vtkSubDScene::RANGE_PERCENTILE);
   this->Scene->SetRangePercentile(percentile);
-  this->SetQuietly([&]() {
+  this->SetControlsAndUpdate([&]() {
     this->RangeMode->setCurrentIndex(symmetric ? 0 : 1);
     this->RangePercentile->setValue(static_cast<int>(std::lround(this->Scene->GetRangePercentile())));
   });
-  if (!this->Updating)
-  {
-    this->UpdateViews();
-  }
 }
 
 void ExplorerWindow::SetShowCage(bool show)
 {
   this->Scene->SetShowCage(show);
-  this->SetQuietly([&]() {
+  this->SetControlsAndUpdate([&]() {
     this->ShowCage->setChecked(show);
     this->CageOpacity->setEnabled(show);
   });
-  if (!this->Updating)
-  {
-    this->UpdateViews();
-  }
 }
 
 void ExplorerWindow::SetCageOpacity(double opacity)
 {
   this->Scene->SetCageOpacity(opacity);
-  this->SetQuietly([&]() { this->CageOpacity->setValue(static_cast<int>(std::lround(100.0 * this->Scene->GetCageOpacity()))); });
-  if (!this->Updating)
-  {
-    this->UpdateViews();
-  }
+  const int percent = static_cast<int>(std::lround(100.0 * this->Scene->GetCageOpacity()));
+  this->SetControlsAndUpdate([&]() { this->CageOpacity->setValue(percent); });
 }
 
 void ExplorerWindow::SetShowWireframe(bool show)
 {
   this->Scene->SetShowWireframe(show);
-  this->SetQuietly([&]() { this->ShowWireframe->setChecked(show); });
-  if (!this->Updating)
-  {
-    this->UpdateViews();
-  }
+  this->SetControlsAndUpdate([&]() { this->ShowWireframe->setChecked(show); });
 }
 
 void ExplorerWindow::SetShowTexture(bool show)
 {
   this->Scene->SetShowTexture(show);
-  this->SetQuietly([&]() { this->ShowTexture->setChecked(show); });
-  if (!this->Updating)
-  {
-    this->UpdateViews();
-  }
+  this->SetControlsAndUpdate([&]() { this->ShowTexture->setChecked(show); });
 }
 
 void ExplorerWindow::SetFaceVaryingInterpolation(int mode)
 {
-  this->SetQuietly([&]() {
+  this->SetControlsAndUpdate([&]() {
     for (ViewControls& view : this->Views)
     {
       view.FaceVarying->setCurrentIndex(mode);
     }
   });
-  if (!this->Updating)
-  {
-    this->UpdateViews();
-  }
 }
 
 void ExplorerWindow::SetLimit(bool limit)
 {
-  this->SetQuietly([&]() {
+  this->SetControlsAndUpdate([&]() {
     for (ViewControls& view : this->Views)
     {
       view.Limit->setChecked(limit);
     }
   });
-  if (!this->Updating)
-  {
-    this->UpdateViews();
-  }
 }
 
 bool ExplorerWindow::SetSharpness(vtkIdType a, vtkIdType b, double sharpness, QString& error)

@@ -156,6 +156,9 @@ private:
   /// Sets a control without triggering an update.
   template <typename Setter>
   void SetQuietly(Setter&& set);
+  /// Sets controls quietly, then updates the views (unless an update is being set up).
+  template <typename Setter>
+  void SetControlsAndUpdate(Setter&& set);
   void ShowProgress();
   void FinishUpdate();
   void OpenDialog();
