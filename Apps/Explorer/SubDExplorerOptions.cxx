@@ -99,6 +99,13 @@ Parsed DoneIf(bool ok)
   return ok ? Parsed::Done : Parsed::Failed;
 }
 
+// Failed, saying why in `error`.
+Parsed Fail(const std::string& why, std::string& error)
+{
+  error = why;
+  return Parsed::Failed;
+}
+
 // Parses the comma-separated scheme names `text` into `schemes`; false with `error` at an
 // unknown one.
 bool ParseSchemes(const std::string& text, std::vector<std::string>& schemes, std::string& error)
@@ -203,35 +210,26 @@ Parsed ParseSceneOption(ArgumentReader& arguments, ExplorerOptions& options, std
   return Parsed::NotHere;
 }
 
-// The options of how the views look: --color, --colormap, --range, --percentile,
-// --cage-opacity, --no-cage, --wireframe, --texture, --size.
-Parsed ParseLookOption(ArgumentReader& arguments, ExplorerOptions& options, std::string& error)
+// The options of how the views are coloured: --color, --colormap, --range, --percentile.
+Parsed ParseColorOption(ArgumentReader& arguments, ExplorerOptions& options, std::string& error)
 {
   const std::string arg = arguments.Current();
   std::string text;
-  auto fail = [&error](const std::string& message) {
-    error = message;
-    return Parsed::Failed;
+  // A named setting: its value read, then checked by `known`.
+  auto named = [&](const std::string& value, bool known, const char* wants) {
+    return known ? Parsed::Done : Fail(arg + " wants " + wants + ", not '" + value + "'", error);
   };
   if (arg == "--color")
   {
-    if (!arguments.Value(options.Color, error))
-    {
-      return Parsed::Failed;
-    }
-    return vtkSubDScene::ColoringFromName(options.Color.c_str()) < 0
-      ? fail("--color wants none, mean, gaussian, k1 or k2, not '" + options.Color + "'")
-      : Parsed::Done;
+    return !arguments.Value(options.Color, error) ? Parsed::Failed
+      : named(options.Color, vtkSubDScene::ColoringFromName(options.Color.c_str()) >= 0,
+          "none, mean, gaussian, k1 or k2");
   }
   if (arg == "--colormap")
   {
-    if (!arguments.Value(options.ColorMap, error))
-    {
-      return Parsed::Failed;
-    }
-    return vtkSubDScene::ColorMapFromName(options.ColorMap.c_str()) < 0
-      ? fail("--colormap wants cool-to-warm, rainbow, black-body or grayscale, not '" + options.ColorMap + "'")
-      : Parsed::Done;
+    return !arguments.Value(options.ColorMap, error) ? Parsed::Failed
+      : named(options.ColorMap, vtkSubDScene::ColorMapFromName(options.ColorMap.c_str()) >= 0,
+          "cool-to-warm, rainbow, black-body or grayscale");
   }
   if (arg == "--range")
   {
@@ -239,18 +237,38 @@ Parsed ParseLookOption(ArgumentReader& arguments, ExplorerOptions& options, std:
     {
       return Parsed::Failed;
     }
-    if (text != "symmetric" && text != "percentile")
-    {
-      return fail("--range wants symmetric or percentile, not '" + text + "'");
-    }
     options.RangeSymmetric = text == "symmetric";
-    return Parsed::Done;
+    return named(text, text == "symmetric" || text == "percentile", "symmetric or percentile");
   }
   if (arg == "--percentile")
   {
     return DoneIf(arguments.Value(text, error) &&
       IntegerIn(text, 50, 100, "--percentile wants an integer in 50..100", options.RangePercentile, error));
   }
+  return Parsed::NotHere;
+}
+
+// The options of what the views show beside the surfaces, and the window's size:
+// --cage-opacity, --no-cage, --wireframe, --texture, --size.
+Parsed ParseDisplayOption(ArgumentReader& arguments, ExplorerOptions& options, std::string& error)
+{
+  const std::string arg = arguments.Current();
+  static const struct
+  {
+    const char* Name;
+    bool ExplorerOptions::*Member;
+    bool Value;
+  } switches[] = { { "--no-cage", &ExplorerOptions::Cage, false },
+    { "--wireframe", &ExplorerOptions::Wireframe, true }, { "--texture", &ExplorerOptions::Texture, true } };
+  for (const auto& option : switches)
+  {
+    if (arg == option.Name)
+    {
+      options.*option.Member = option.Value;
+      return Parsed::Done;
+    }
+  }
+  std::string text;
   if (arg == "--cage-opacity")
   {
     if (!arguments.Value(text, error))
@@ -259,26 +277,8 @@ Parsed ParseLookOption(ArgumentReader& arguments, ExplorerOptions& options, std:
     }
     char* end = nullptr;
     options.CageOpacity = std::strtod(text.c_str(), &end);
-    if (text.empty() || *end != '\0' || !(options.CageOpacity >= 0.0 && options.CageOpacity <= 1.0))
-    {
-      return fail("--cage-opacity wants a number in [0, 1], not '" + text + "'");
-    }
-    return Parsed::Done;
-  }
-  if (arg == "--no-cage")
-  {
-    options.Cage = false;
-    return Parsed::Done;
-  }
-  if (arg == "--wireframe")
-  {
-    options.Wireframe = true;
-    return Parsed::Done;
-  }
-  if (arg == "--texture")
-  {
-    options.Texture = true;
-    return Parsed::Done;
+    const bool valid = !text.empty() && *end == '\0' && options.CageOpacity >= 0.0 && options.CageOpacity <= 1.0;
+    return valid ? Parsed::Done : Fail("--cage-opacity wants a number in [0, 1], not '" + text + "'", error);
   }
   if (arg == "--size")
   {
@@ -289,11 +289,8 @@ Parsed ParseLookOption(ArgumentReader& arguments, ExplorerOptions& options, std:
     const auto x = text.find('x');
     options.Width = x == std::string::npos ? 0 : std::atoi(text.substr(0, x).c_str());
     options.Height = x == std::string::npos ? 0 : std::atoi(text.substr(x + 1).c_str());
-    if (options.Width < 200 || options.Height < 200 || options.Width > 8192 || options.Height > 8192)
-    {
-      return fail("--size wants WxH, each in 200..8192, not '" + text + "'");
-    }
-    return Parsed::Done;
+    const bool valid = options.Width >= 200 && options.Height >= 200 && options.Width <= 8192 && options.Height <= 8192;
+    return valid ? Parsed::Done : Fail("--size wants WxH, each in 200..8192, not '" + text + "'", error);
   }
   return Parsed::NotHere;
 }
@@ -405,18 +402,10 @@ bool ParseExplorerOptions(int argc, char* argv[], ExplorerOptions& options, std:
   {
     const std::string arg = arguments.Current();
     options.Given.insert(arg);
-    Parsed parsed = ParseSceneOption(arguments, options, error);
-    if (parsed == Parsed::NotHere)
+    Parsed parsed = Parsed::NotHere;
+    for (auto* parse : { &ParseSceneOption, &ParseColorOption, &ParseDisplayOption, &ParseEditOption, &ParseRunOption })
     {
-      parsed = ParseLookOption(arguments, options, error);
-    }
-    if (parsed == Parsed::NotHere)
-    {
-      parsed = ParseEditOption(arguments, options, error);
-    }
-    if (parsed == Parsed::NotHere)
-    {
-      parsed = ParseRunOption(arguments, options, error);
+      parsed = parsed == Parsed::NotHere ? parse(arguments, options, error) : parsed;
     }
     if (parsed == Parsed::Failed || (parsed == Parsed::NotHere && !TakeFileName(arg, options, error)))
     {
