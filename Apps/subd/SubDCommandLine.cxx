@@ -185,7 +185,16 @@ enum class Parsed
   Done,
   Failed ///< `error` says why
 };
+
+// Failed, saying why in `error`.
+Parsed Fail(const std::string& why, std::string& error)
+{
+  error = why;
+  return Parsed::Failed;
+}
+
 Parsed ParseSchemeOption(ArgumentReader& arguments, CommandLine& cmd, std::string& error);
+Parsed ParseSurfaceSetting(ArgumentReader& arguments, CommandLine& cmd, std::string& error);
 Parsed ParsePictureOption(ArgumentReader& arguments, CommandLine& cmd, std::string& error);
 bool TakeFileName(const std::string& arg, CommandLine& cmd, std::string& positionalOutput, std::string& error);
 bool TakePositionalOutput(const std::string& positionalOutput, CommandLine& cmd, std::string& error);
@@ -287,8 +296,11 @@ bool ParseCommandLine(int argc, char* argv[], CommandLine& cmd, std::string& err
     {
       return false;
     }
-    Parsed parsed = ParseSchemeOption(arguments, cmd, error);
-    parsed = parsed == Parsed::NotHere ? ParsePictureOption(arguments, cmd, error) : parsed;
+    Parsed parsed = Parsed::NotHere;
+    for (auto* parse : { &ParseSchemeOption, &ParseSurfaceSetting, &ParsePictureOption })
+    {
+      parsed = parsed == Parsed::NotHere ? parse(arguments, cmd, error) : parsed;
+    }
     if (parsed == Parsed::Failed)
     {
       return false;
@@ -495,94 +507,87 @@ std::string UnknownSchemeError(const std::string& name)
   return error + ")";
 }
 
-// The scheme and its settings (and subd-mpi's threads): the options both programs share.
+// The scheme, the levels (and subd-mpi's threads): options both programs share.
 Parsed ParseSchemeOption(ArgumentReader& arguments, CommandLine& cmd, std::string& error)
 {
   const std::string arg = arguments.Current();
-  auto value = [&](std::string& out) { return arguments.Value(out, error); };
-  auto fail = [&error](const std::string& message) {
-    error = message;
-    return Parsed::Failed;
-  };
   std::string text;
-  // A surface option naming one of a few settings.
-  auto named = [&](bool (*parse)(const std::string&, int&), int& setting, const char* wants) {
-    cmd.SurfaceOptions.push_back(arg);
-    if (!value(text))
-    {
-      return Parsed::Failed;
-    }
-    return parse(text, setting) ? Parsed::Done : fail(arg + " wants " + wants + ", not '" + text + "'");
-  };
   if (arg == "--scheme")
   {
-    if (!value(cmd.Scheme))
+    if (!arguments.Value(cmd.Scheme, error))
     {
       return Parsed::Failed;
     }
-    if (!FindScheme(cmd.Scheme))
-    {
-      return fail(UnknownSchemeError(cmd.Scheme));
-    }
+    return FindScheme(cmd.Scheme) ? Parsed::Done : Fail(UnknownSchemeError(cmd.Scheme), error);
   }
-  else if (arg == "--levels" || arg == "--threads")
+  if (arg == "--levels" || arg == "--threads")
   {
     const bool levels = arg == "--levels";
     int& number = levels ? cmd.Options.Levels : cmd.Threads;
     const int low = levels ? 0 : 1, high = levels ? 30 : 1024;
-    if (!value(text))
+    if (!arguments.Value(text, error))
     {
       return Parsed::Failed;
     }
-    if (!ParseInt(text, number) || number < low || number > high)
-    {
-      return fail(arg + " wants an integer in " + std::to_string(low) + ".." + std::to_string(high) + ", not '" +
-        text + "'");
-    }
+    const bool valid = ParseInt(text, number) && number >= low && number <= high;
+    return valid ? Parsed::Done
+                 : Fail(arg + " wants an integer in " + std::to_string(low) + ".." + std::to_string(high) +
+                       ", not '" + text + "'", error);
   }
-  else if (arg == "--boundary")
+  return Parsed::NotHere;
+}
+
+// The surface schemes' settings both programs share: --boundary, --crease-method,
+// --fvar-interpolation (named settings), --tension, --feature-angle.
+Parsed ParseSurfaceSetting(ArgumentReader& arguments, CommandLine& cmd, std::string& error)
+{
+  const std::string arg = arguments.Current();
+  std::string text;
+  // A surface option naming one of a few settings.
+  auto named = [&](bool (*parse)(const std::string&, int&), int& setting, const char* wants) {
+    cmd.SurfaceOptions.push_back(arg);
+    if (!arguments.Value(text, error))
+    {
+      return Parsed::Failed;
+    }
+    return parse(text, setting) ? Parsed::Done : Fail(arg + " wants " + wants + ", not '" + text + "'", error);
+  };
+  if (arg == "--boundary")
   {
     return named(ParseBoundary, cmd.Options.BoundaryRule, "none, edge-only or edge-and-corner");
   }
-  else if (arg == "--tension")
-  {
-    if (!value(text))
-    {
-      return Parsed::Failed;
-    }
-    if (!ParseDouble(text, cmd.Options.Tension))
-    {
-      return fail("--tension wants a number, not '" + text + "'");
-    }
-    cmd.Options.TensionGiven = true;
-  }
-  else if (arg == "--crease-method")
+  if (arg == "--crease-method")
   {
     return named(ParseCreaseMethod, cmd.Options.CreaseMethod, "uniform or chaikin");
   }
-  else if (arg == "--fvar-interpolation")
+  if (arg == "--fvar-interpolation")
   {
     return named(ParseFaceVaryingInterpolation, cmd.Options.FaceVaryingInterpolation,
       "none, corners-only, corners-plus1, corners-plus2, boundaries or all");
   }
-  else if (arg == "--feature-angle")
+  if (arg == "--tension")
   {
-    cmd.SurfaceOptions.push_back(arg);
-    if (!value(text))
+    if (!arguments.Value(text, error))
     {
       return Parsed::Failed;
     }
-    if (!ParseDouble(text, cmd.Options.FeatureAngle) || cmd.Options.FeatureAngle <= 0.0 ||
-      cmd.Options.FeatureAngle > 180.0)
-    {
-      return fail("--feature-angle wants degrees in (0, 180], not '" + text + "'");
-    }
+    cmd.Options.TensionGiven = true;
+    return ParseDouble(text, cmd.Options.Tension) ? Parsed::Done
+                                                  : Fail("--tension wants a number, not '" + text + "'", error);
   }
-  else
+  if (arg == "--feature-angle")
   {
-    return Parsed::NotHere;
+    cmd.SurfaceOptions.push_back(arg);
+    if (!arguments.Value(text, error))
+    {
+      return Parsed::Failed;
+    }
+    double& angle = cmd.Options.FeatureAngle;
+    return ParseDouble(text, angle) && angle > 0.0 && angle <= 180.0
+      ? Parsed::Done
+      : Fail("--feature-angle wants degrees in (0, 180], not '" + text + "'", error);
   }
-  return Parsed::Done;
+  return Parsed::NotHere;
 }
 
 // subd's pictures: --image, --compare, --color (its name checked by CheckImageOptions, which
