@@ -1,5 +1,7 @@
 #include "vtkSubDSeams.h"
 
+#include "SubDCoincidentPoints.h"
+
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkNew.h"
@@ -11,8 +13,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <numeric>
 #include <unordered_map>
 
@@ -31,45 +31,17 @@ bool SameTuple(vtkDataArray* array, vtkIdType p, vtkIdType q)
   return true;
 }
 
-// Exact positions as hash keys (-0 and +0 made one: they are the same position).
-struct Position
-{
-  double X[3];
-  bool operator==(const Position& other) const
-  {
-    return this->X[0] == other.X[0] && this->X[1] == other.X[1] && this->X[2] == other.X[2];
-  }
-};
-
-struct PositionHash
-{
-  size_t operator()(const Position& p) const
-  {
-    size_t h = 0;
-    for (double x : p.X)
-    {
-      const double normalized = x + 0.0;
-      std::uint64_t bits;
-      std::memcpy(&bits, &normalized, sizeof bits);
-      h = (h ^ (bits + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2)));
-    }
-    return h;
-  }
-};
-
 // Per input point, the first point at the same position (`first`, itself if none comes
 // before it) and the first at the same position with the same point data (`firstWithData`).
 void FirstAtSamePosition(vtkPolyData* input, std::vector<subd::Index>& first, std::vector<subd::Index>& firstWithData)
 {
   const vtkIdType n = input->GetNumberOfPoints();
-  std::unordered_map<Position, subd::Index, PositionHash> firstAt(static_cast<size_t>(n));
-  first.resize(static_cast<size_t>(n));
+  std::vector<double> xyz(3 * static_cast<size_t>(n));
   for (vtkIdType i = 0; i < n; ++i)
   {
-    Position p;
-    input->GetPoint(i, p.X);
-    first[i] = firstAt.emplace(p, static_cast<subd::Index>(i)).first->second;
+    input->GetPoint(i, &xyz[3 * static_cast<size_t>(i)]);
   }
+  first = subd::FirstPointAtSamePosition(xyz.data(), static_cast<subd::Index>(n));
   vtkPointData* pd = input->GetPointData();
   auto sameData = [pd](vtkIdType p, vtkIdType q) {
     for (int a = 0; a < pd->GetNumberOfArrays(); ++a)

@@ -1,11 +1,12 @@
 #include "SubDSeamShading.h"
 
+#include "SubDCoincidentPoints.h"
+
 #include "vtkCellArray.h"
 #include "vtkDataArray.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
 
-#include <array>
 #include <map>
 #include <utility>
 
@@ -14,17 +15,18 @@ namespace subdrender
 std::vector<vtkIdType> FirstPointAtSamePosition(vtkPolyData* mesh)
 {
   const vtkIdType n = mesh->GetNumberOfPoints();
-  std::map<std::array<double, 3>, vtkIdType> first;
-  std::vector<vtkIdType> weldOf(static_cast<size_t>(n));
-  bool any = false;
+  std::vector<double> xyz(3 * static_cast<size_t>(n));
   for (vtkIdType p = 0; p < n; ++p)
   {
-    std::array<double, 3> x;
-    mesh->GetPoint(p, x.data());
-    weldOf[p] = first.emplace(x, p).first->second;
-    any = any || weldOf[p] != p;
+    mesh->GetPoint(p, &xyz[3 * static_cast<size_t>(p)]);
   }
-  return any ? weldOf : std::vector<vtkIdType>();
+  const std::vector<subd::Index> first = subd::FirstPointAtSamePosition(xyz.data(), static_cast<subd::Index>(n));
+  bool any = false;
+  for (vtkIdType p = 0; p < n && !any; ++p)
+  {
+    any = first[p] != p;
+  }
+  return any ? std::vector<vtkIdType>(first.begin(), first.end()) : std::vector<vtkIdType>();
 }
 
 vtkSmartPointer<vtkPolyData> WeldedPolygons(vtkPolyData* mesh, const std::vector<vtkIdType>& weldOf)
@@ -46,8 +48,34 @@ vtkSmartPointer<vtkPolyData> WeldedPolygons(vtkPolyData* mesh, const std::vector
 vtkSmartPointer<vtkPolyData> SplitAsBoth(vtkPolyData* split, vtkPolyData* shaded)
 {
   vtkDataArray* normals = shaded->GetPointData()->GetNormals();
-  std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> pointOf;
-  std::vector<std::pair<vtkIdType, vtkIdType>> sources;
+  // A split point has one shaded point but where the normals split at a sharp edge: the first
+  // pair of each split point is kept in arrays, the others (few) in a map.
+  std::vector<vtkIdType> firstShaded(static_cast<size_t>(split->GetNumberOfPoints()), -1);
+  std::vector<vtkIdType> firstOutput(firstShaded.size(), -1);
+  std::map<std::pair<vtkIdType, vtkIdType>, vtkIdType> otherOutput;
+  std::vector<std::pair<vtkIdType, vtkIdType>> sources; // per output point
+  auto outputPoint = [&](vtkIdType a, vtkIdType b) {
+    const auto next = static_cast<vtkIdType>(sources.size());
+    if (firstShaded[a] < 0)
+    {
+      firstShaded[a] = b;
+      firstOutput[a] = next;
+    }
+    else if (firstShaded[a] != b)
+    {
+      const auto inserted = otherOutput.emplace(std::make_pair(a, b), next);
+      if (!inserted.second)
+      {
+        return inserted.first->second;
+      }
+    }
+    else
+    {
+      return firstOutput[a];
+    }
+    sources.emplace_back(a, b);
+    return next;
+  };
   vtkNew<vtkCellArray> polys;
   vtkIdType n, m;
   const vtkIdType *a, *b;
@@ -60,13 +88,7 @@ vtkSmartPointer<vtkPolyData> SplitAsBoth(vtkPolyData* split, vtkPolyData* shaded
     polys->InsertNextCell(n);
     for (vtkIdType k = 0; k < n; ++k)
     {
-      const auto key = std::make_pair(a[k], b[k]);
-      const auto inserted = pointOf.emplace(key, static_cast<vtkIdType>(sources.size()));
-      if (inserted.second)
-      {
-        sources.push_back(key);
-      }
-      polys->InsertCellPoint(inserted.first->second);
+      polys->InsertCellPoint(outputPoint(a[k], b[k]));
     }
   }
   const vtkIdType numPoints = static_cast<vtkIdType>(sources.size());

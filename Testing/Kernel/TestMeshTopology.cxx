@@ -1,4 +1,5 @@
 // Kernel unit tests: topology construction, tags, and face screening.
+#include "SubDCoincidentPoints.h"
 #include "SubDDualSplit.h"
 #include "SubDFaceBlocks.h"
 #include "SubDMeshTopology.h"
@@ -11,6 +12,8 @@
 #include "SubDTriangleSplit.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include <algorithm>
 #include <atomic>
@@ -763,4 +766,13 @@ TEST(FaceBlocks, FacesInElementOrderFromFewRanges)
       ASSERT_EQ(faces.Holes[f], expectedOrigins[f] % 2);
     }
   }
+}
+
+// Points at one position, found exactly: each names the first point there, -0 and +0 are one
+// position, points a rounding apart are not.
+TEST(CoincidentPoints, FirstPointAtSamePosition)
+{
+  const double xyz[] = { 0, 0, 0, 1, 2, 3, -0.0, 0, -0.0, 1, 2, 3, 1, 2, std::nextafter(3.0, 4.0), 1, 2, 3 };
+  const std::vector<subd::Index> first = subd::FirstPointAtSamePosition(xyz, 6);
+  EXPECT_EQ(first, (std::vector<subd::Index>{ 0, 1, 0, 1, 4, 1 }));
 }
