@@ -100,6 +100,12 @@ Size Number(const Json::Value& object, const char* key, Size fallback, const std
   {
     throw Problem(where + ": '" + key + "' is not a non-negative integer");
   }
+  // Counts and byte sizes up to a terabyte: the sums and products of the checks below cannot
+  // overflow, which a hostile file's huge values would make them do.
+  if (value.asLargestUInt() > (Size(1) << 40))
+  {
+    throw Problem(where + ": '" + key + "' is larger than a file this reader takes");
+  }
   return value.asLargestUInt();
 }
 
@@ -253,7 +259,7 @@ struct Checker
       const Size element = component * components;
       const Size stride = Number(views[static_cast<Json::ArrayIndex>(view)], "byteStride", element, where);
       const Size end = Number(accessor, "byteOffset", 0, where) + (count - 1) * stride + element;
-      if (stride < element || end > this->ViewLengths[view])
+      if (stride < element || stride > 252 || end > this->ViewLengths[view]) // (glTF: strides up to 252)
       {
         throw Problem(where + " reads past the end of its buffer view");
       }

@@ -323,6 +323,9 @@ gltf_faults = {
     "node-cycle": (lambda d: d["nodes"].append({"children": [1]}) or d["nodes"][0].update(children=[1]), "own ancestor"),
     "no-position": (lambda d: d["meshes"][0]["primitives"][0].update(attributes={}), "no position"),
     "version-1": (lambda d: d["asset"].update(version="1.0"), "2\\.0"),
+    # Values whose sums would overflow 64 bits in the byte-range checks.
+    "huge-count": (lambda d: d["accessors"][1].update(count=2**62), "larger than"),
+    "huge-offset": (lambda d: d["bufferViews"][1].update(byteOffset=2**64 - 8), "larger than|malformed"),
 }
 for name, (edit, message) in sorted(gltf_faults.items()):
     write_text("gltf-" + name + ".gltf", json.dumps(gltf_cube(edit)[0]))
