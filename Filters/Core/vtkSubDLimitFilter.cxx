@@ -6,11 +6,14 @@
 #include "vtkSubDCage.h"
 #include "vtkSubDInterpolationSupport.h"
 #include "vtkSubDInputFaces.h"
+#include "vtkSubDAdaptiveTessellation.h"
 #include "vtkSubDLimitGeometry.h"
+#include "vtkSubDMemoryBudget.h"
 #include "vtkSubDOutOfMemory.h"
 #include "vtkSubDPieces.h"
 #include "vtkSubDPointDataInterpolation.h"
 #include "vtkSubDSharpFeatures.h"
+#include "vtkSubDUniformTessellation.h"
 
 #include "vtkCellArray.h"
 #include "vtkCellData.h"
@@ -40,17 +43,6 @@ vtkStandardNewMacro(vtkSubDLimitFilter);
 
 namespace
 {
-// A point of the tessellation: a cage vertex, a point on a cage edge (t segments from its
-// first vertex), on a segment inside a polygon, or inside a face.
-using SampleKey = std::array<vtkIdType, 4>;
-
-struct FaceGrid
-{
-  subd::Index Face;
-  std::vector<subd::FaceSample> Owned; ///< samples this face evaluates
-  std::vector<vtkIdType> OwnedIds;     ///< their output points
-};
-
 // The tessellation's cell data: each cell gets its input cell's ("FaceId" names it), and in a
 // piece with ghost faces, "vtkGhostType" marks the cells of ghost faces.
 void AddCellData(vtkPolyData* input, vtkIdTypeArray* cellFace, bool piece, vtkPolyData* output)
@@ -84,19 +76,9 @@ void AddCellData(vtkPolyData* input, vtkIdTypeArray* cellFace, bool piece, vtkPo
   }
 }
 
-// The samples of the output, grouped by the face that owns (evaluates) each, and the output
-// cells with their input cells ("FaceId").
-struct Samples
-{
-  std::vector<FaceGrid> Grids;
-  vtkIdType Count = 0;
-  vtkNew<vtkCellArray> Cells;
-  vtkNew<vtkIdTypeArray> CellFace;
-};
-
 // Samples at given (face, u, v) locations (point-data "FaceId", "FaceUV", optional
 // "SubFace"), one vertex cell each. False, with `error`, for locations that name no polygon.
-bool ReadLocations(vtkDataSet* locations, const vtkSubDCage& cage, Samples& samples, std::string& error)
+bool ReadLocations(vtkDataSet* locations, const vtkSubDCage& cage, vtkSubDLimitSamples& samples, std::string& error)
 {
   vtkDataArray* ids = locations->GetPointData()->GetArray("FaceId");
   vtkDataArray* uv = locations->GetPointData()->GetArray("FaceUV");
@@ -134,172 +116,6 @@ bool ReadLocations(vtkDataSet* locations, const vtkSubDCage& cage, Samples& samp
     samples.Cells->InsertNextCell(1, &i);
   }
   return true;
-}
-
-// A watertight tessellation of the cage's faces at resolution R: triangles split into R^2
-// triangles, quads into R x R quads, other polygons into one (R/2) x (R/2) grid of quads per
-// corner. A point shared by faces (on a cage vertex or edge) is made once, owned by the first
-// face that meets it.
-class Tessellation
-{
-public:
-  Tessellation(const vtkSubDCage& cage, int resolution, Samples& samples)
-    : Cage(cage)
-    , Topo(cage.Level.Topology)
-    , R(resolution)
-    , Out(samples)
-  {
-  }
-  void AddTriangle(subd::Index f);
-  void AddPolygon(subd::Index f);
-
-private:
-  enum Kind
-  {
-    Vertex,
-    Edge,
-    Inside,
-    Spoke,
-    Centre
-  };
-  // The key of the point `t` segments (of R along the edge) from corner k toward the next
-  // corner along edge k of face f.
-  SampleKey EdgeKey(subd::Index f, subd::Index k, int t) const
-  {
-    const subd::IndexSpan fv = this->Topo.GetFaceVertices(f);
-    const subd::Index e = this->Topo.GetFaceEdges(f)[k];
-    if (t == 0)
-      return { Vertex, fv[k], 0, 0 };
-    if (t == this->R)
-      return { Vertex, fv[(k + 1) % fv.size()], 0, 0 };
-    const bool forward = this->Topo.GetEdgeVertices(e)[0] == fv[k];
-    return { Edge, e, forward ? t : this->R - t, 0 };
-  }
-  // The output point of `key`, made (and owned by `grid`) if new.
-  vtkIdType Point(FaceGrid& grid, const SampleKey& key, double u, double v, subd::Index subFace)
-  {
-    auto found = this->IdOf.emplace(key, this->Out.Count);
-    if (found.second)
-    {
-      subd::FaceSample s;
-      s.U = u;
-      s.V = v;
-      s.SubFace = subFace;
-      grid.Owned.push_back(s);
-      grid.OwnedIds.push_back(this->Out.Count++);
-    }
-    return found.first->second;
-  }
-  void AddCell(subd::Index f, vtkIdType size, const vtkIdType* ids)
-  {
-    this->Out.Cells->InsertNextCell(size, ids);
-    this->Out.CellFace->InsertNextValue(this->Cage.FaceCell[f]);
-  }
-  void AddCornerGrid(FaceGrid& grid, subd::Index k);
-
-  const vtkSubDCage& Cage;
-  const subd::MeshTopology& Topo;
-  const int R;
-  Samples& Out;
-  std::map<SampleKey, vtkIdType> IdOf;
-};
-
-void Tessellation::AddTriangle(subd::Index f)
-{
-  // (i, j) with i + j <= R: corners (0,0), (R,0), (0,R).
-  FaceGrid grid{ f, {}, {} };
-  const int R = this->R;
-  auto index = [R](int i, int j) { return static_cast<size_t>(j * (R + 1) + i); };
-  std::vector<vtkIdType> ids(static_cast<size_t>((R + 1) * (R + 1)), -1);
-  for (int j = 0; j <= R; ++j)
-  {
-    for (int i = 0; i + j <= R; ++i)
-    {
-      SampleKey key{ Inside, f, i, j };
-      if (j == 0)
-        key = this->EdgeKey(f, 0, i);
-      else if (i + j == R)
-        key = this->EdgeKey(f, 1, j);
-      else if (i == 0)
-        key = this->EdgeKey(f, 2, R - j);
-      ids[index(i, j)] = this->Point(grid, key, static_cast<double>(i) / R, static_cast<double>(j) / R, 0);
-    }
-  }
-  for (int j = 0; j < R; ++j)
-  {
-    for (int i = 0; i + j < R; ++i)
-    {
-      const vtkIdType up[3] = { ids[index(i, j)], ids[index(i + 1, j)], ids[index(i, j + 1)] };
-      this->AddCell(f, 3, up);
-      if (i + j + 1 < R)
-      {
-        const vtkIdType down[3] = { ids[index(i + 1, j)], ids[index(i + 1, j + 1)], ids[index(i, j + 1)] };
-        this->AddCell(f, 3, down);
-      }
-    }
-  }
-  this->Out.Grids.push_back(std::move(grid));
-}
-
-void Tessellation::AddPolygon(subd::Index f)
-{
-  FaceGrid grid{ f, {}, {} };
-  const bool quad = this->Topo.GetFaceSize(f) == 4;
-  for (subd::Index k = 0; k < (quad ? 1 : this->Topo.GetFaceSize(f)); ++k)
-  {
-    this->AddCornerGrid(grid, k);
-  }
-  this->Out.Grids.push_back(std::move(grid));
-}
-
-// Quads: one R x R grid (k = 0); other polygons: per corner k an S x S grid, S = R/2, with
-// (0,0) at corner k, (S,0) at the middle of edge k, (S,S) at the centre.
-void Tessellation::AddCornerGrid(FaceGrid& grid, subd::Index k)
-{
-  const subd::Index f = grid.Face;
-  const subd::Index n = this->Topo.GetFaceSize(f);
-  const bool whole = n == 4;
-  const int S = whole ? this->R : this->R / 2;
-  std::vector<vtkIdType> ids(static_cast<size_t>((S + 1) * (S + 1)));
-  for (int j = 0; j <= S; ++j)
-  {
-    for (int i = 0; i <= S; ++i)
-    {
-      SampleKey key{ Inside, f, k * (S + 1) * (S + 1) + j * (S + 1) + i, 0 };
-      if (whole)
-      {
-        if (j == 0)
-          key = this->EdgeKey(f, 0, i);
-        else if (i == S)
-          key = this->EdgeKey(f, 1, j);
-        else if (j == S)
-          key = this->EdgeKey(f, 2, S - i);
-        else if (i == 0)
-          key = this->EdgeKey(f, 3, S - j);
-      }
-      else if (i == S && j == S)
-        key = { Centre, f, 0, 0 };
-      else if (j == 0)
-        key = this->EdgeKey(f, k, i);
-      else if (i == 0)
-        key = this->EdgeKey(f, (k + n - 1) % n, this->R - j);
-      else if (i == S)
-        key = { Spoke, f, k, j };
-      else if (j == S)
-        key = { Spoke, f, (k + n - 1) % n, i };
-      ids[static_cast<size_t>(j * (S + 1) + i)] =
-        this->Point(grid, key, static_cast<double>(i) / S, static_cast<double>(j) / S, k);
-    }
-  }
-  auto id = [&](int a, int b) { return ids[static_cast<size_t>(b * (S + 1) + a)]; };
-  for (int j = 0; j < S; ++j)
-  {
-    for (int i = 0; i < S; ++i)
-    {
-      const vtkIdType quad[4] = { id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1) };
-      this->AddCell(f, 4, quad);
-    }
-  }
 }
 
 // A cage point-data array carried to the samples, evaluated in double with the limit weights
@@ -356,7 +172,7 @@ void AddCarriedArrays(const std::vector<CarriedArray>& carried, vtkIdType numSam
 // Evaluates every sample, face by face in parallel: its position into `xyz`, its derivatives
 // into `geometry`, the carried arrays. Returns the first face's error, if any.
 std::string EvaluateSamples(const subd::LimitEvaluator& evaluator, const vtkSubDCage& cage,
-  const std::vector<FaceGrid>& grids, double* xyz, vtkSubDLimitGeometry& geometry, std::vector<CarriedArray>& carried)
+  const std::vector<vtkSubDFaceSamples>& grids, double* xyz, vtkSubDLimitGeometry& geometry, std::vector<CarriedArray>& carried)
 {
   std::mutex errorMutex;
   std::string firstError;
@@ -364,7 +180,7 @@ std::string EvaluateSamples(const subd::LimitEvaluator& evaluator, const vtkSubD
     std::vector<subd::LimitStencil> stencils;
     for (vtkIdType g = begin; g < end; ++g)
     {
-      const FaceGrid& grid = grids[g];
+      const vtkSubDFaceSamples& grid = grids[g];
       std::string faceError;
       if (!evaluator.EvaluateFace(grid.Face, grid.Owned, stencils, faceError))
       {
@@ -391,40 +207,109 @@ std::string EvaluateSamples(const subd::LimitEvaluator& evaluator, const vtkSubD
   return firstError;
 }
 
-// Tessellates the faces a piece outputs: its own, and the first `outputGhostLevels` layers of
-// ghost faces; triangles for Loop, quads for Catmull-Clark.
-void TessellateFaces(const vtkSubDCage& cage, const std::vector<std::uint8_t>& ghostLayer, int outputGhostLevels,
-  bool quads, int resolution, Samples& samples)
+
+// The faces a piece outputs: its own, and the first `outputGhostLevels` layers of ghost faces;
+// not the holes.
+std::vector<subd::Index> OutputFaces(
+  const vtkSubDCage& cage, const std::vector<std::uint8_t>& ghostLayer, int outputGhostLevels)
 {
-  const subd::MeshTopology& topo = cage.Level.Topology;
-  bool polygons = false;
-  for (subd::Index f = 0; f < topo.GetNumFaces() && quads; ++f)
+  std::vector<subd::Index> faces;
+  for (subd::Index f = 0; f < cage.Level.Topology.GetNumFaces(); ++f)
   {
-    polygons = polygons || topo.GetFaceSize(f) != 4;
-  }
-  // Other polygons than quads take a grid per corner of half the resolution: an even one.
-  Tessellation tessellation(cage, polygons ? 2 * ((resolution + 1) / 2) : resolution, samples);
-  for (subd::Index f = 0; f < topo.GetNumFaces(); ++f)
-  {
-    if (cage.Level.FaceIsHole[f] || (!ghostLayer.empty() && ghostLayer[f] > outputGhostLevels))
+    if (!cage.Level.FaceIsHole[f] && (ghostLayer.empty() || ghostLayer[f] <= outputGhostLevels))
     {
-      continue;
-    }
-    if (quads)
-    {
-      tessellation.AddPolygon(f);
-    }
-    else
-    {
-      tessellation.AddTriangle(f);
+      faces.push_back(f);
     }
   }
+  return faces;
+}
+
+// The level each face asks for, from the input's cell-data array `name`. False, with the
+// reason, when the array is missing.
+bool ReadFaceLevels(vtkPolyData* input, const char* name, const vtkSubDCage& cage, std::vector<int>& levels,
+  std::string& error)
+{
+  vtkDataArray* array = name ? input->GetCellData()->GetArray(name) : nullptr;
+  if (!array)
+  {
+    error = std::string("Selective tessellation needs the cell-data array \"") + (name ? name : "") +
+      "\" (the level each polygon asks for), which the input does not have";
+    return false;
+  }
+  levels.assign(static_cast<size_t>(cage.Level.Topology.GetNumFaces()), 0);
+  for (subd::Index f = 0; f < cage.Level.Topology.GetNumFaces(); ++f)
+  {
+    const double level = array->GetComponent(cage.FaceCell[f], 0);
+    levels[f] = std::isfinite(level) ? static_cast<int>(std::max(0.0, std::min(level, 64.0))) : 0;
+  }
+  return true;
+}
+
+// The largest distance allowed, in the cage's units: `tolerance` times the diagonal of the
+// cage's bounding box unless `absolute`.
+double AbsoluteTolerance(const vtkSubDCage& cage, double tolerance, bool absolute)
+{
+  if (absolute || cage.Points.empty())
+  {
+    return tolerance;
+  }
+  double lo[3], hi[3];
+  for (int j = 0; j < 3; ++j)
+  {
+    lo[j] = hi[j] = cage.Points[j];
+  }
+  for (size_t i = 0; i < cage.Points.size(); i += 3)
+  {
+    for (int j = 0; j < 3; ++j)
+    {
+      lo[j] = std::min(lo[j], cage.Points[i + j]);
+      hi[j] = std::max(hi[j], cage.Points[i + j]);
+    }
+  }
+  const double d[3] = { hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] };
+  return tolerance * std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+}
+
+// "FaceId", "FaceUV", "SubFace": where each point of a tessellation was evaluated.
+void AddLocations(const vtkSubDCage& cage, const vtkSubDLimitSamples& samples, vtkPointData* pd)
+{
+  vtkNew<vtkIdTypeArray> ids;
+  vtkNew<vtkDoubleArray> uv;
+  vtkNew<vtkIdTypeArray> sub;
+  ids->SetName("FaceId");
+  uv->SetName("FaceUV");
+  sub->SetName("SubFace");
+  uv->SetNumberOfComponents(2);
+  ids->SetNumberOfTuples(samples.Count);
+  uv->SetNumberOfTuples(samples.Count);
+  sub->SetNumberOfTuples(samples.Count);
+  for (const vtkSubDFaceSamples& grid : samples.Grids)
+  {
+    for (size_t s = 0; s < grid.Owned.size(); ++s)
+    {
+      const vtkIdType id = grid.OwnedIds[s];
+      ids->SetValue(id, cage.FaceCell[grid.Face]);
+      uv->SetTypedComponent(id, 0, grid.Owned[s].U);
+      uv->SetTypedComponent(id, 1, grid.Owned[s].V);
+      sub->SetValue(id, grid.Owned[s].SubFace);
+    }
+  }
+  pd->AddArray(ids);
+  pd->AddArray(uv);
+  pd->AddArray(sub);
 }
 }
 
 vtkSubDLimitFilter::vtkSubDLimitFilter()
+  : MaximumMemory(vtkSubDDefaultMemoryBudget())
 {
   this->SetNumberOfInputPorts(2);
+  this->SetRefineLevelArrayName("RefineLevel");
+}
+
+vtkSubDLimitFilter::~vtkSubDLimitFilter()
+{
+  this->SetRefineLevelArrayName(nullptr);
 }
 
 int vtkSubDLimitFilter::FillInputPortInformation(int port, vtkInformation* info)
@@ -513,16 +398,17 @@ int vtkSubDLimitFilter::Execute(
     vtkErrorMacro(<< error << ".");
     return 0;
   }
-  Samples samples;
+  vtkSubDLimitSamples samples;
   samples.CellFace->SetName("FaceId");
   if (locations && !ReadLocations(locations, cage, samples, error))
   {
     vtkErrorMacro(<< error << ".");
     return 0;
   }
-  if (!locations)
+  if (!locations &&
+    !this->Tessellate(input, cage, evaluator, OutputFaces(cage, ghostLayer, request.OutputGhostLevels), samples))
   {
-    TessellateFaces(cage, ghostLayer, request.OutputGhostLevels, quads, this->Resolution, samples);
+    return 0;
   }
 
   vtkNew<vtkPoints> points;
@@ -549,8 +435,55 @@ int vtkSubDLimitFilter::Execute(
     AddCellData(input, samples.CellFace, !ghostLayer.empty(), output);
   }
   AddCarriedArrays(carried, samples.Count, output);
+  if (this->ComputeLocations && !locations)
+  {
+    AddLocations(cage, samples, output->GetPointData());
+  }
   geometry.AddTo(output->GetPointData(), this);
   return 1;
+}
+
+bool vtkSubDLimitFilter::Tessellate(vtkPolyData* input, const vtkSubDCage& cage,
+  const subd::LimitEvaluator& evaluator, const std::vector<subd::Index>& faces, vtkSubDLimitSamples& samples)
+{
+  const bool quads = this->Scheme == CATMULL_CLARK;
+  if (this->Tessellation == UNIFORM)
+  {
+    vtkSubDTessellateUniform(cage, faces, quads, this->Resolution, samples);
+    return true;
+  }
+  std::string error;
+  vtkSubDAdaptiveSettings settings;
+  if (this->Tessellation == ADAPTIVE)
+  {
+    if (!(this->Tolerance > 0.0) || !std::isfinite(this->Tolerance))
+    {
+      vtkErrorMacro(<< "Tolerance must be a positive number, not " << this->Tolerance << ".");
+      return false;
+    }
+    settings.Tolerance = AbsoluteTolerance(cage, this->Tolerance, this->ToleranceIsAbsolute);
+  }
+  else if (!ReadFaceLevels(input, this->RefineLevelArrayName, cage, settings.FaceLevels, error))
+  {
+    vtkErrorMacro(<< error << ".");
+    return false;
+  }
+  settings.MaximumLevel = this->MaximumLevel;
+  // A cell becomes about three triangles with two points, their arrays and their bookkeeping.
+  settings.MaximumCells = this->MaximumMemory * 1024.0 * 1024.0 / 400.0;
+  vtkSubDAdaptiveResult result;
+  if (!vtkSubDTessellateAdaptive(cage, evaluator, quads, faces, settings, samples, result, error))
+  {
+    vtkErrorMacro(<< vtkSubDSentence(error));
+    return false;
+  }
+  if (result.NumTrianglesOffTolerance > 0)
+  {
+    vtkWarningMacro(<< result.NumTrianglesOffTolerance << " triangles are farther than the tolerance ("
+                    << settings.Tolerance << ") from the limit surface at MaximumLevel " << this->MaximumLevel
+                    << ": raise MaximumLevel for them.");
+  }
+  return true;
 }
 
 void vtkSubDLimitFilter::PrintSelf(ostream& os, vtkIndent indent)
@@ -558,9 +491,18 @@ void vtkSubDLimitFilter::PrintSelf(ostream& os, vtkIndent indent)
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Scheme: " << (this->Scheme == CATMULL_CLARK ? "Catmull-Clark" : "Loop") << "\n";
   os << indent << "Resolution: " << this->Resolution << "\n";
+  static const char* const tessellations[] = { "Uniform", "Adaptive", "Selective" };
+  os << indent << "Tessellation: " << tessellations[this->Tessellation] << "\n";
+  os << indent << "Tolerance: " << this->Tolerance << (this->ToleranceIsAbsolute ? " (absolute)" : " (of the diagonal)")
+     << "\n";
+  os << indent << "MaximumLevel: " << this->MaximumLevel << "\n";
+  os << indent << "RefineLevelArrayName: " << (this->RefineLevelArrayName ? this->RefineLevelArrayName : "(none)")
+     << "\n";
+  os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
   os << indent << "BoundaryRule: " << this->BoundaryRule << "\n";
   os << indent << "CreaseMethod: " << this->CreaseMethod << "\n";
   os << indent << "ComputeNormals: " << (this->ComputeNormals ? "On" : "Off") << "\n";
   os << indent << "ComputeCurvature: " << (this->ComputeCurvature ? "On" : "Off") << "\n";
   os << indent << "ComputeDerivatives: " << (this->ComputeDerivatives ? "On" : "Off") << "\n";
+  os << indent << "ComputeLocations: " << (this->ComputeLocations ? "On" : "Off") << "\n";
 }

@@ -12,6 +12,19 @@
  *   tessellation of the limit surface: points on shared edges and vertices are evaluated
  *   once and shared; Catmull-Clark gives quads, Loop triangles; each cell has the cell data
  *   of the input cell it comes from, and "FaceId" names that cell; or
+ * - adaptively (Tessellation ADAPTIVE): triangles within Tolerance of the limit surface
+ *   (relative to the cage's bounding-box diagonal, or in the cage's units with
+ *   ToleranceIsAbsolute), measured at each triangle's edge midpoints and centroid, with as few
+ *   triangles as the refinement finds: each face's domain (a Catmull-Clark polygon that is not a
+ *   quad: the quad at each corner) is a quadtree, split where the chords stray from the surface,
+ *   down to MaximumLevel (2^MaximumLevel segments per face edge); a cell next to finer cells
+ *   is a fan around its centre through their points, so the mesh is watertight, with no cracks
+ *   and no T-junctions, across faces as within them. Triangles the deepest level could not
+ *   bring within the tolerance are counted in a warning;
+ * - selectively (Tessellation SELECTIVE): each face refined to the level its cell-data array
+ *   RefineLevelArrayName (default "RefineLevel") asks for (clamped to 0..MaximumLevel), its
+ *   points those of the uniform tessellation at Resolution 2^level, with the same crack-free
+ *   fans where levels meet. Both give triangles, with "FaceId" as above;
  * - at the locations given on the second input (SetLocationsConnection): any vtkDataSet
  *   whose point data has "FaceId" (the input cell id of a polygon) and "FaceUV" (2
  *   components: (u, v) in the unit square of a quad, corners 0..3 at (0,0), (1,0), (1,1),
@@ -19,6 +32,13 @@
  *   Catmull-Clark polygon that is not a quad "SubFace" (the corner k whose quad is meant,
  *   with (0,0) at the corner, (1,0) at the middle of the edge to the next corner, (1,1) at the
  *   centre). The output has one vertex cell per location, and the locations' point data.
+ *
+ * With ComputeLocations, each point of a tessellation also carries where it was evaluated:
+ * point data "FaceId", "FaceUV" and "SubFace" as the locations input takes them (a point shared
+ * by faces names one of them), so that the output can be evaluated again, as locations.
+ *
+ * Adaptive and selective tessellations refuse, before making them, more cells than
+ * MaximumMemory (MiB) allows; a Tolerance that is not a positive number is an error.
  *
  * Each output point carries the cage's point data, evaluated with the same limit weights,
  * and on request the limit surface's "Normals" (ComputeNormals, default on), curvature
@@ -63,6 +83,17 @@
 #include "SubDFiltersModule.h" // for export macro
 #include "vtkPolyDataAlgorithm.h"
 
+#include <cstdint> // for subd::Index
+#include <vector>
+
+struct vtkSubDCage;
+struct vtkSubDLimitSamples;
+namespace subd
+{
+using Index = std::int32_t;
+class LimitEvaluator;
+}
+
 class SUBDFILTERS_EXPORT vtkSubDLimitFilter : public vtkPolyDataAlgorithm
 {
 public:
@@ -90,6 +121,55 @@ public:
   vtkGetMacro(Resolution, int);
   ///@}
 
+  enum Tessellations
+  {
+    UNIFORM = 0,
+    ADAPTIVE = 1,
+    SELECTIVE = 2
+  };
+
+  ///@{
+  /// How a tessellation is made (default UNIFORM; see the class description). Ignored when
+  /// locations are given.
+  vtkSetClampMacro(Tessellation, int, UNIFORM, SELECTIVE);
+  vtkGetMacro(Tessellation, int);
+  void SetTessellationToUniform() { this->SetTessellation(UNIFORM); }
+  void SetTessellationToAdaptive() { this->SetTessellation(ADAPTIVE); }
+  void SetTessellationToSelective() { this->SetTessellation(SELECTIVE); }
+  ///@}
+
+  ///@{
+  /// ADAPTIVE: the largest distance from a triangle to the limit surface, a fraction of the
+  /// cage's bounding-box diagonal (default 1e-3), or in the cage's units when
+  /// ToleranceIsAbsolute is on (default off). Must be a positive number.
+  vtkSetMacro(Tolerance, double);
+  vtkGetMacro(Tolerance, double);
+  vtkSetMacro(ToleranceIsAbsolute, bool);
+  vtkGetMacro(ToleranceIsAbsolute, bool);
+  vtkBooleanMacro(ToleranceIsAbsolute, bool);
+  ///@}
+
+  ///@{
+  /// ADAPTIVE and SELECTIVE: the deepest level a face is refined to, 2^level segments along
+  /// its edges (default 12, 0..24).
+  vtkSetClampMacro(MaximumLevel, int, 0, 24);
+  vtkGetMacro(MaximumLevel, int);
+  ///@}
+
+  ///@{
+  /// SELECTIVE: the cell-data array of the level each input polygon asks for (default
+  /// "RefineLevel").
+  vtkSetStringMacro(RefineLevelArrayName);
+  vtkGetStringMacro(RefineLevelArrayName);
+  ///@}
+
+  ///@{
+  /// ADAPTIVE and SELECTIVE: the most memory (MiB) the output may take; a request that would
+  /// exceed it is refused before allocation (default half the physical memory).
+  vtkSetClampMacro(MaximumMemory, double, 1.0, 1.0e9);
+  vtkGetMacro(MaximumMemory, double);
+  ///@}
+
   ///@{
   /// As vtkSubDSurfaceFilter: 0 none, 1 edge only (default), 2 edge and corner.
   vtkSetClampMacro(BoundaryRule, int, 0, 2);
@@ -110,6 +190,9 @@ public:
   vtkSetMacro(ComputeDerivatives, bool);
   vtkGetMacro(ComputeDerivatives, bool);
   vtkBooleanMacro(ComputeDerivatives, bool);
+  vtkSetMacro(ComputeLocations, bool);
+  vtkGetMacro(ComputeLocations, bool);
+  vtkBooleanMacro(ComputeLocations, bool);
   ///@}
 
   /// The locations to evaluate at (optional second input; see the class description).
@@ -117,7 +200,7 @@ public:
 
 protected:
   vtkSubDLimitFilter();
-  ~vtkSubDLimitFilter() override = default;
+  ~vtkSubDLimitFilter() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   /// Passes the requested piece upstream with one layer of ghost cells (plus those asked of the
@@ -126,6 +209,9 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// RequestData's work; RequestData runs it and turns running out of memory into an error.
   int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  /// The tessellation of `faces` the settings ask for; false after an error.
+  bool Tessellate(vtkPolyData* input, const vtkSubDCage& cage, const subd::LimitEvaluator& evaluator,
+    const std::vector<subd::Index>& faces, vtkSubDLimitSamples& samples);
 
   int Scheme = CATMULL_CLARK;
   int Resolution = 4;
@@ -134,6 +220,13 @@ protected:
   bool ComputeNormals = true;
   bool ComputeCurvature = false;
   bool ComputeDerivatives = false;
+  bool ComputeLocations = false;
+  int Tessellation = UNIFORM;
+  double Tolerance = 1e-3;
+  bool ToleranceIsAbsolute = false;
+  int MaximumLevel = 12;
+  char* RefineLevelArrayName = nullptr;
+  double MaximumMemory;
 
 private:
   vtkSubDLimitFilter(const vtkSubDLimitFilter&) = delete;

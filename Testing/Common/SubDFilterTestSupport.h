@@ -8,15 +8,21 @@
 #include "vtkCallbackCommand.h"
 #include "vtkCellArray.h"
 #include "vtkCellArrayIterator.h"
+#include "vtkCellData.h"
 #include "vtkCommand.h"
+#include "vtkFeatureEdges.h"
+#include "vtkFloatArray.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkSmartPointer.h"
 
-#include <string>
+#include <array>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <string>
 #include <vector>
 
 namespace subdtest
@@ -131,6 +137,50 @@ inline double LargestDistanceToNearestPoint(vtkPolyData* a, vtkPolyData* b)
     worst = std::max(worst, distance);
   }
   return worst;
+}
+
+// Adds crease lines (one 2-point line per pair) with a "Sharpness" array (unless empty).
+inline void AddCreases(vtkPolyData* mesh, const std::vector<std::array<vtkIdType, 2>>& edges,
+  const std::vector<float>& sharpness)
+{
+  vtkNew<vtkCellArray> lines;
+  for (const auto& e : edges)
+    lines->InsertNextCell(2, e.data());
+  mesh->SetLines(lines);
+  if (!sharpness.empty())
+  {
+    vtkNew<vtkFloatArray> s;
+    s->SetName("Sharpness");
+    s->SetNumberOfTuples(mesh->GetNumberOfCells());
+    s->Fill(0.0);
+    for (size_t i = 0; i < sharpness.size(); ++i)
+      s->SetValue(static_cast<vtkIdType>(i), sharpness[i]); // lines come first in cell order
+    mesh->GetCellData()->AddArray(s);
+  }
+}
+
+inline void AddCornerSharpness(vtkPolyData* mesh, const std::map<vtkIdType, float>& corners)
+{
+  vtkNew<vtkFloatArray> s;
+  s->SetName("CornerSharpness");
+  s->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  s->Fill(0.0);
+  for (const auto& c : corners)
+    s->SetValue(c.first, c.second);
+  mesh->GetPointData()->AddArray(s);
+}
+
+// The edges of `mesh` used by one polygon only or by more than two: 0 for a watertight surface.
+inline vtkIdType OpenOrNonManifoldEdges(vtkPolyData* mesh)
+{
+  vtkNew<vtkFeatureEdges> edges;
+  edges->SetInputData(mesh);
+  edges->BoundaryEdgesOn();
+  edges->NonManifoldEdgesOn();
+  edges->FeatureEdgesOff();
+  edges->ManifoldEdgesOff();
+  edges->Update();
+  return edges->GetOutput()->GetNumberOfCells();
 }
 }
 

@@ -27,6 +27,8 @@
 
 namespace
 {
+using subdtest::AddCornerSharpness;
+using subdtest::AddCreases;
 using subdtest::Messages;
 using subdtest::ToPolyData;
 
@@ -40,37 +42,6 @@ subdtest::TestMesh Torus(bool triangles)
 {
   subdtest::TestMesh torus = subdtest::Grid(6, 5, true, true).Jitter(0.05);
   return triangles ? torus.Triangulated() : torus;
-}
-
-// Adds crease lines (one 2-point line per pair) with a "Sharpness" array (unless empty).
-void AddCreases(vtkPolyData* mesh, const std::vector<std::array<vtkIdType, 2>>& edges,
-  const std::vector<float>& sharpness)
-{
-  vtkNew<vtkCellArray> lines;
-  for (const auto& e : edges)
-    lines->InsertNextCell(2, e.data());
-  mesh->SetLines(lines);
-  if (!sharpness.empty())
-  {
-    vtkNew<vtkFloatArray> s;
-    s->SetName("Sharpness");
-    s->SetNumberOfTuples(mesh->GetNumberOfCells());
-    s->Fill(0.0);
-    for (size_t i = 0; i < sharpness.size(); ++i)
-      s->SetValue(static_cast<vtkIdType>(i), sharpness[i]); // lines come first in cell order
-    mesh->GetCellData()->AddArray(s);
-  }
-}
-
-void AddCornerSharpness(vtkPolyData* mesh, const std::map<vtkIdType, float>& corners)
-{
-  vtkNew<vtkFloatArray> s;
-  s->SetName("CornerSharpness");
-  s->SetNumberOfTuples(mesh->GetNumberOfPoints());
-  s->Fill(0.0);
-  for (const auto& c : corners)
-    s->SetValue(c.first, c.second);
-  mesh->GetPointData()->AddArray(s);
 }
 
 // A torus with a crease of varying semi-sharp sharpness, a crease loop, a branch, and

@@ -34,6 +34,7 @@
 
 namespace
 {
+using subdtest::OpenOrNonManifoldEdges;
 using subdtest::ToPolyData;
 
 // Locations (face cell id, u, v, and the sub-face of a polygon) as the second input of
@@ -61,18 +62,6 @@ vtkSmartPointer<vtkPolyData> Locations(const std::vector<std::array<double, 4>>&
   locations->GetPointData()->AddArray(uv);
   locations->GetPointData()->AddArray(sub);
   return locations;
-}
-
-vtkIdType OpenOrNonManifoldEdges(vtkPolyData* mesh)
-{
-  vtkNew<vtkFeatureEdges> edges;
-  edges->SetInputData(mesh);
-  edges->BoundaryEdgesOn();
-  edges->NonManifoldEdgesOn();
-  edges->FeatureEdgesOff();
-  edges->ManifoldEdgesOff();
-  edges->Update();
-  return edges->GetOutput()->GetNumberOfCells();
 }
 
 double Norm(const double v[3])
