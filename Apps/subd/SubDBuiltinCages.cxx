@@ -7,7 +7,10 @@
 #include "vtkPoints.h"
 #include "vtkPolyData.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <map>
 #include <cstdlib>
 #include <utility>
 
@@ -130,6 +133,65 @@ vtkSmartPointer<vtkPolyData> Torus()
     {
       auto id = [&](int a, int b) { return static_cast<vtkIdType>(((a % around) * tube) + (b % tube)); };
       faces.push_back({ id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1) });
+    }
+  }
+  return MakePolyData(xyz, faces);
+}
+
+// A machined block, 2 x 1.4 x 1: each side a grid of quads, four across its flat middle, with
+// support loops 0.08 from the rims, as a modeller holds an edge tight: large flat regions and
+// tight rounding (what the adaptive tessellation, --tolerance, is for).
+vtkSmartPointer<vtkPolyData> RoundedBox()
+{
+  const double half[3] = { 1.0, 0.7, 0.5 }, support = 0.08;
+  std::vector<double> lines[3]; // the grid lines along each axis
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const double h = half[axis];
+    lines[axis] = { -h };
+    for (int i = 0; i <= 4; ++i)
+    {
+      lines[axis].push_back(-h + support + (2 * (h - support)) * i / 4.0);
+    }
+    lines[axis].push_back(h);
+  }
+  std::vector<double> xyz;
+  std::map<std::array<int, 3>, vtkIdType> ids; // grid position -> point
+  auto point = [&](const std::array<int, 3>& at) {
+    auto found = ids.emplace(at, static_cast<vtkIdType>(ids.size()));
+    if (found.second)
+    {
+      xyz.insert(xyz.end(), { lines[0][at[0]], lines[1][at[1]], lines[2][at[2]] });
+    }
+    return found.first->second;
+  };
+  const int last = static_cast<int>(lines[0].size()) - 1;
+  std::vector<std::vector<vtkIdType>> faces;
+  for (int axis = 0; axis < 3; ++axis)
+  {
+    const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+    for (int side : { 0, last })
+    {
+      for (int i = 0; i < last; ++i)
+      {
+        for (int j = 0; j < last; ++j)
+        {
+          std::vector<vtkIdType> quad;
+          for (const auto& c : { std::array<int, 2>{ i, j }, { i + 1, j }, { i + 1, j + 1 }, { i, j + 1 } })
+          {
+            std::array<int, 3> at;
+            at[axis] = side;
+            at[a] = c[0];
+            at[b] = c[1];
+            quad.push_back(point(at));
+          }
+          if (side == 0)
+          {
+            std::reverse(quad.begin(), quad.end()); // counter-clockwise seen from outside
+          }
+          faces.push_back(quad);
+        }
+      }
     }
   }
   return MakePolyData(xyz, faces);
@@ -280,7 +342,7 @@ std::vector<std::string> BuiltinCurveNames()
 std::vector<std::string> BuiltinCageNames()
 {
   return { "cube", "creased-cube", "pyramid", "open-grid", "tetrahedron", "octahedron", "torus", "letter-l",
-    "mixed-tri-quad", "valence-3", "valence-4", "valence-5", "valence-6", "valence-7", "valence-8" };
+    "mixed-tri-quad", "rounded-box", "valence-3", "valence-4", "valence-5", "valence-6", "valence-7", "valence-8" };
 }
 
 vtkSmartPointer<vtkPolyData> MakeBuiltinCage(const std::string& name)
@@ -320,6 +382,10 @@ vtkSmartPointer<vtkPolyData> MakeBuiltinCage(const std::string& name)
   if (name == "mixed-tri-quad")
   {
     return MixedTriQuad();
+  }
+  if (name == "rounded-box")
+  {
+    return RoundedBox();
   }
   if (name.rfind("valence-", 0) == 0)
   {

@@ -142,6 +142,9 @@ const OptionUse OptionUses[] = {
   { "--color", Use::SubdOnly, PictureReason }, { "--view-size", Use::SubdOnly, PictureReason },
   { "--no-cage", Use::SubdOnly, PictureReason }, { "--tangents", Use::SubdOnly, CurveReason },
   { "--closed", Use::SubdOnly, CurveReason },
+  { "--tolerance", Use::SubdOnly,
+    "the adaptive tessellation refines each face as its neighbours' refinement asks, across the whole mesh "
+    "(run subd)" },
   { "--interpolate", Use::SubdOnly,
     "its solve couples every point of the mesh (write the cage with subd --interpolate --levels 0, "
     "then subdivide that with subd-mpi)" },
@@ -208,7 +211,7 @@ std::string UsageText(Program program)
     return MpiUsageText();
   }
   std::ostringstream out;
-  out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--boundary RULE] [--tension W]\n"
+  out << "usage: subd [INPUT] [--scheme NAME] [--levels N] [--tolerance EPS] [--boundary RULE] [--tension W]\n"
          "            [--crease-method METHOD] [--feature-angle DEG] [--limit] [--normals]\n"
          "            [--curvature] [--collapse-repeated-corners] [--no-weld] [--fvar-interpolation MODE]\n"
          "            [--smooth-triangles]\n"
@@ -373,7 +376,12 @@ std::string SchemeOptionsHelp(Program program)
     }
   }
   out << "  --levels N         number of subdivision levels, 0..30 (default 2)\n"
-         "  --boundary RULE    boundary interpolation, OpenSubdiv's meanings (default edge-only):\n"
+      << (subd ? "  --tolerance EPS    catmull-clark and loop: instead of refining, tessellate the limit\n"
+                 "                     surface into triangles within EPS (a fraction of the bounding-box\n"
+                 "                     diagonal) of it, crack-free, fine only where the surface curves;\n"
+                 "                     --levels is then the deepest level (default 12)\n"
+               : "")
+      << "  --boundary RULE    boundary interpolation, OpenSubdiv's meanings (default edge-only):\n"
          "                       none: faces at the boundary become holes (shape, not output)\n"
          "                       edge-only: boundary edges are sharp creases\n"
          "                       edge-and-corner: also pin vertices that have a single face\n"
@@ -483,7 +491,7 @@ std::string MpiUsageText()
       << InputAndOutputHelp(Program::SubdMpi)
       << "  --threads T        threads per rank, 1..1024 (default: the node's cores shared among\n"
          "                     the ranks on it)\n"
-      << GeneralHelp() << "\nRefused, as subd's only (pictures, curves, interpolation):\n ";
+      << GeneralHelp() << "\nRefused, as subd's only (pictures, curves, interpolation, adaptive tessellation):\n ";
   for (const OptionUse& use : OptionUses)
   {
     if (use.Programs == Use::SubdOnly)
@@ -529,6 +537,7 @@ Parsed ParseSchemeOption(ArgumentReader& arguments, CommandLine& cmd, std::strin
     {
       return Parsed::Failed;
     }
+    cmd.LevelsGiven = cmd.LevelsGiven || levels;
     const bool valid = ParseInt(text, number) && number >= low && number <= high;
     return valid ? Parsed::Done
                  : Fail(arg + " wants an integer in " + std::to_string(low) + ".." + std::to_string(high) +
@@ -574,6 +583,18 @@ Parsed ParseSurfaceSetting(ArgumentReader& arguments, CommandLine& cmd, std::str
     cmd.Options.TensionGiven = true;
     return ParseDouble(text, cmd.Options.Tension) ? Parsed::Done
                                                   : Fail("--tension wants a number, not '" + text + "'", error);
+  }
+  if (arg == "--tolerance")
+  {
+    cmd.SurfaceOptions.push_back(arg);
+    if (!arguments.Value(text, error))
+    {
+      return Parsed::Failed;
+    }
+    double& tolerance = cmd.Options.Tolerance;
+    return ParseDouble(text, tolerance) && tolerance > 0.0 && tolerance < 1.0
+      ? Parsed::Done
+      : Fail("--tolerance wants a fraction of the bounding-box diagonal in (0, 1), not '" + text + "'", error);
   }
   if (arg == "--feature-angle")
   {
@@ -767,6 +788,43 @@ bool CheckTension(const CommandLine& cmd, std::string& error)
   return true;
 }
 
+// --tolerance: the limit surface of catmull-clark or loop, tessellated on its own (one scheme,
+// none of the refinement's settings), --levels its deepest level (default 12).
+bool CheckTolerance(CommandLine& cmd, std::string& error)
+{
+  if (!(cmd.Options.Tolerance > 0.0))
+  {
+    return true;
+  }
+  if (cmd.Scheme != "catmull-clark" && cmd.Scheme != "loop")
+  {
+    error = "--tolerance tessellates the limit surface of catmull-clark or loop, not of " + cmd.Scheme;
+    return false;
+  }
+  if (!cmd.Compare.empty())
+  {
+    error = "--tolerance tessellates one scheme's limit surface: it cannot be combined with --compare";
+    return false;
+  }
+  for (const char* refinementOnly :
+    { "--no-weld", "--fvar-interpolation", "--smooth-triangles", "--collapse-repeated-corners", "--feature-angle" })
+  {
+    if (std::find(cmd.SurfaceOptions.begin(), cmd.SurfaceOptions.end(), refinementOnly) != cmd.SurfaceOptions.end())
+    {
+      error = std::string(refinementOnly) + " applies to refinement, not to --tolerance's tessellation of the limit";
+      return false;
+    }
+  }
+  if (cmd.LevelsGiven && cmd.Options.Levels > 24)
+  {
+    error = "with --tolerance, --levels is the deepest level of the tessellation, 0..24, not " +
+      std::to_string(cmd.Options.Levels);
+    return false;
+  }
+  cmd.Options.Levels = cmd.LevelsGiven ? cmd.Options.Levels : 12;
+  return true;
+}
+
 // The options together: what one asks of another, and the built-in cage (or curve) by default.
 bool CheckCombinations(CommandLine& cmd, std::string& error)
 {
@@ -804,7 +862,7 @@ bool CheckCombinations(CommandLine& cmd, std::string& error)
     error = misplaced.front() + " applies to " + (curve ? "surface" : "curve") + " schemes, not to " + cmd.Scheme;
     return false;
   }
-  if (!CheckTension(cmd, error))
+  if (!CheckTension(cmd, error) || !CheckTolerance(cmd, error))
   {
     return false;
   }
@@ -837,6 +895,10 @@ std::string DefaultOutputPath(const CommandLine& cmd)
     {
       stem = stem.substr(0, dot);
     }
+  }
+  if (cmd.Options.Tolerance > 0.0)
+  {
+    return stem + "-" + cmd.Scheme + "-adaptive.vtp";
   }
   return stem + "-" + cmd.Scheme + "-L" + std::to_string(cmd.Options.Levels) +
     (cmd.Tool == Program::SubdMpi ? ".pvtp" : ".vtp");

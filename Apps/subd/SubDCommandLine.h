@@ -33,6 +33,7 @@ struct CommandLine
   int ViewSize[2] = { 500, 500 };   ///< pixels per view
   bool Cage = true;                 ///< overlay the control cage
   bool Interpolate = false;         ///< solve for the cage whose limit passes through the input
+  bool LevelsGiven = false;         ///< --levels was given (with --tolerance: the deepest level)
   bool Compress = false;            ///< .vtp: zlib-compressed arrays (smaller, slower to write)
   bool Quiet = false;
   bool Help = false;
@@ -51,7 +52,8 @@ std::string UsageText(Program program = Program::Subd);
 /// True when a mesh file is written: always, except with --image and no --output.
 bool WritesMesh(const CommandLine& cmd);
 
-/// Output path when none was given: "<input stem>-<scheme>-L<levels>.vtp" (subd-mpi: .pvtp).
+/// Output path when none was given: "<input stem>-<scheme>-L<levels>.vtp" (subd-mpi: .pvtp;
+/// with --tolerance "<input stem>-<scheme>-adaptive.vtp").
 std::string DefaultOutputPath(const CommandLine& cmd);
 }
 

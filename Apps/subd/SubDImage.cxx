@@ -9,15 +9,23 @@
 #include "vtkSmartPointer.h"
 #include "vtkSubDScene.h"
 
+#include <sstream>
 #include <vector>
 
 namespace subdapp
 {
 namespace
 {
-std::string TitleOf(const std::string& scheme, int levels)
+// "loop, 3 levels", or for an adaptive tessellation "loop limit, tolerance 0.001".
+std::string TitleOf(const std::string& scheme, const SchemeOptions& options)
 {
-  return scheme + ", " + std::to_string(levels) + (levels == 1 ? " level" : " levels");
+  if (options.Tolerance > 0.0)
+  {
+    std::ostringstream title;
+    title << scheme << " limit, tolerance " << options.Tolerance;
+    return title.str();
+  }
+  return scheme + ", " + std::to_string(options.Levels) + (options.Levels == 1 ? " level" : " levels");
 }
 }
 
@@ -40,17 +48,18 @@ bool RenderImage(const CommandLine& cmd, vtkPolyData* cage, vtkPolyData* result,
   sceneMessages.Watch(scene->GetRenderWindow());
   scene->SetColoring(vtkSubDScene::ColoringFromName(cmd.Color.c_str()));
   scene->SetShowCage(cmd.Cage);
+  scene->SetShowWireframe(cmd.Options.Tolerance > 0.0); // an adaptive tessellation shows its triangles
   scene->SetViewSize(cmd.ViewSize[0], cmd.ViewSize[1]);
   std::vector<vtkSmartPointer<vtkPolyData>> keep; // the compared results outlive their filters
   if (cmd.Compare.empty())
   {
-    scene->AddView(result, cage, TitleOf(cmd.Scheme, cmd.Options.Levels).c_str());
+    scene->AddView(result, cage, TitleOf(cmd.Scheme, cmd.Options).c_str());
   }
   for (const std::string& name : cmd.Compare)
   {
     if (name == cmd.Scheme) // subdivided already
     {
-      scene->AddView(result, cage, TitleOf(name, cmd.Options.Levels).c_str());
+      scene->AddView(result, cage, TitleOf(name, cmd.Options).c_str());
       continue;
     }
     MessageCollector messages;
@@ -63,7 +72,7 @@ bool RenderImage(const CommandLine& cmd, vtkPolyData* cage, vtkPolyData* result,
       return false;
     }
     keep.push_back(copy);
-    scene->AddView(copy, cage, TitleOf(name, cmd.Options.Levels).c_str());
+    scene->AddView(copy, cage, TitleOf(name, cmd.Options).c_str());
   }
   if (!scene->WritePNG(cmd.Image.c_str()))
   {

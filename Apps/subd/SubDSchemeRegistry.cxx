@@ -11,6 +11,7 @@
 #include "vtkSubDCurveInterpolateFilter.h"
 #include "vtkSubDDooSabinFilter.h"
 #include "vtkSubDInterpolateFilter.h"
+#include "vtkSubDLimitFilter.h"
 #include "vtkSubDLinearFilter.h"
 #include "vtkSubDLoopFilter.h"
 #include "vtkSubDMidpointFilter.h"
@@ -47,11 +48,40 @@ vtkSmartPointer<vtkPolyDataAlgorithm> MakeSurfaceFilter(const SchemeOptions& opt
   return NewSurfaceFilter<Filter>(options);
 }
 
+// With a tolerance: the limit surface's adaptive tessellation (vtkSubDLimitFilter), the
+// levels its deepest level.
+vtkSmartPointer<vtkPolyDataAlgorithm> MakeAdaptiveTessellation(const SchemeOptions& options, int scheme)
+{
+  auto filter = vtkSmartPointer<vtkSubDLimitFilter>::New();
+  filter->SetScheme(scheme);
+  filter->SetTessellationToAdaptive();
+  filter->SetTolerance(options.Tolerance);
+  filter->SetMaximumLevel(options.Levels);
+  filter->SetBoundaryRule(options.BoundaryRule);
+  filter->SetCreaseMethod(options.CreaseMethod);
+  filter->SetComputeNormals(options.LimitNormals);
+  filter->SetComputeCurvature(options.LimitCurvature);
+  return filter;
+}
+
 vtkSmartPointer<vtkPolyDataAlgorithm> MakeCatmullClark(const SchemeOptions& options)
 {
+  if (options.Tolerance > 0.0)
+  {
+    return MakeAdaptiveTessellation(options, vtkSubDLimitFilter::CATMULL_CLARK);
+  }
   auto filter = NewSurfaceFilter<vtkSubDCatmullClarkFilter>(options);
   filter->SetSmoothTriangles(options.SmoothTriangles);
   return filter;
+}
+
+vtkSmartPointer<vtkPolyDataAlgorithm> MakeLoop(const SchemeOptions& options)
+{
+  if (options.Tolerance > 0.0)
+  {
+    return MakeAdaptiveTessellation(options, vtkSubDLimitFilter::LOOP);
+  }
+  return NewSurfaceFilter<vtkSubDLoopFilter>(options);
 }
 
 vtkSmartPointer<vtkPolyDataAlgorithm> MakeButterfly(const SchemeOptions& options)
@@ -88,7 +118,7 @@ const std::vector<SchemeEntry>& Schemes()
       false, true, true, &MakeCatmullClark, vtkSubDInterpolateFilter::CATMULL_CLARK,
       nullptr },
     { "loop", "Loop: triangles (other polygons are triangulated first; approximating, C2 where regular)",
-      false, true, true, &MakeSurfaceFilter<vtkSubDLoopFilter>, vtkSubDInterpolateFilter::LOOP, nullptr },
+      false, true, true, &MakeLoop, vtkSubDInterpolateFilter::LOOP, nullptr },
     { "butterfly", "modified butterfly: interpolating, triangles (other polygons are triangulated), --tension W",
       false, true, false, &MakeButterfly, -1, "interpolates its points already" },
     { "doo-sabin", "Doo-Sabin: corner cutting of any polygons (approximating, C1; biquadratic where regular)",

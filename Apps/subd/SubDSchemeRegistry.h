@@ -29,6 +29,8 @@ struct SchemeOptions
   bool Weld = true;                      // surfaces: weld points split at seams
   int FaceVaryingInterpolation = 2;      // vtkSubDSurfaceFilter::FVAR_LINEAR_CORNERS_PLUS1
   bool SmoothTriangles = false;          // catmull-clark: OpenSubdiv's smooth triangle rule
+  double Tolerance = 0.0; // > 0: catmull-clark and loop tessellate their limit surface to this
+                          // fraction of the bounding-box diagonal, at most Levels deep
 };
 
 /// Whether two option sets configure a filter alike (the explorer reuses a view's result).
@@ -39,7 +41,8 @@ inline bool operator==(const SchemeOptions& a, const SchemeOptions& b)
     a.ProjectToLimit == b.ProjectToLimit && a.LimitNormals == b.LimitNormals &&
     a.LimitCurvature == b.LimitCurvature && a.Tangents == b.Tangents && a.Closed == b.Closed &&
     a.CollapseRepeatedCorners == b.CollapseRepeatedCorners && a.Weld == b.Weld &&
-    a.FaceVaryingInterpolation == b.FaceVaryingInterpolation && a.SmoothTriangles == b.SmoothTriangles;
+    a.FaceVaryingInterpolation == b.FaceVaryingInterpolation && a.SmoothTriangles == b.SmoothTriangles &&
+    a.Tolerance == b.Tolerance;
 }
 inline bool operator!=(const SchemeOptions& a, const SchemeOptions& b)
 {

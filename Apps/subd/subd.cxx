@@ -140,7 +140,16 @@ void PrintSummary(const subdapp::CommandLine& cmd, const subdapp::SchemeEntry& s
     std::cout << "interpolating " << (scheme.Curve ? "polygons" : "cage") << " through " << interpolation.NumTagged
               << " points (residual " << interpolation.Residual << ") -> ";
   }
-  std::cout << cmd.Scheme << ", " << cmd.Options.Levels << " level(s) -> " << result->GetNumberOfPoints() << " points, ";
+  if (cmd.Options.Tolerance > 0.0)
+  {
+    std::cout << cmd.Scheme << " limit within " << cmd.Options.Tolerance << " of the diagonal (levels <= "
+              << cmd.Options.Levels << ") -> " << result->GetNumberOfPoints() << " points, ";
+  }
+  else
+  {
+    std::cout << cmd.Scheme << ", " << cmd.Options.Levels << " level(s) -> " << result->GetNumberOfPoints()
+              << " points, ";
+  }
   if (scheme.Curve)
   {
     std::cout << result->GetNumberOfLines() << " curves";

@@ -4,8 +4,8 @@
 #include "vtkSubDPieces.h"
 #include "vtkSubDSharpFeatures.h"
 
-bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::RepeatedCorners repeated, subd::BoundaryRule rule,
-  subd::CreaseMethod creasing, vtkSubDCage& cage, std::string& error, std::string& warning)
+bool vtkSubDReadCage(vtkPolyData* input, vtkSubDCageFaces kind, subd::RepeatedCorners repeated,
+  subd::BoundaryRule rule, subd::CreaseMethod creasing, vtkSubDCage& cage, std::string& error, std::string& warning)
 {
   const vtkIdType numPoints = input && input->GetPoints() ? input->GetNumberOfPoints() : 0;
   const vtkSubDInputFaces faces = input ? vtkSubDGatherFaces(input) : vtkSubDInputFaces();
@@ -27,14 +27,20 @@ bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::RepeatedCorners r
   {
     return false;
   }
+  const subd::Index split =
+    kind == vtkSubDCageFaces::Triangulated ? vtkSubDTriangulateFaces(screened, input->GetPoints()) : 0;
+  if (split > 0)
+  {
+    warning += (warning.empty() ? "" : "; ") + vtkSubDSplitPolygonsWarning(split);
+  }
   for (subd::Index f : screened.KeptFaces)
   {
     cage.FaceCell.push_back(faces.CellIdOf(f, numPolys));
   }
-  for (size_t f = 0; f + 1 < screened.Offsets.size(); ++f)
+  for (size_t f = 0; f + 1 < screened.Offsets.size() && kind == vtkSubDCageFaces::Triangles; ++f)
   {
     const subd::Index size = screened.Offsets[f + 1] - screened.Offsets[f];
-    if (triangles && size != 3)
+    if (size != 3)
     {
       error = "cell " + std::to_string(cage.FaceCell[f]) + " has " + std::to_string(size) +
         " points; Loop needs triangles (use vtkTriangleFilter)";
@@ -67,9 +73,15 @@ bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::RepeatedCorners r
   std::vector<subd::Index> unmatched;
   const subd::BaseTags tags = features.ToBaseTags(topology, input->GetPoints(), 0.0, creasing, unmatched);
   cage.Level = subd::MakeBaseLevel(std::move(topology), tags, rule);
+  // A polygon split into triangles is no face of its own: locations cannot name it.
   for (size_t f = 0; f < cage.FaceCell.size(); ++f)
   {
-    cage.FaceOfCell.emplace(cage.FaceCell[f], static_cast<subd::Index>(f));
+    const bool whole = (f == 0 || cage.FaceCell[f - 1] != cage.FaceCell[f]) &&
+      (f + 1 == cage.FaceCell.size() || cage.FaceCell[f + 1] != cage.FaceCell[f]);
+    if (whole)
+    {
+      cage.FaceOfCell.emplace(cage.FaceCell[f], static_cast<subd::Index>(f));
+    }
   }
   return true;
 }

@@ -22,13 +22,23 @@ struct vtkSubDCage
   std::vector<std::uint8_t> FaceIsGhost;            ///< 1 for a ghost cell of a piece; empty if none is
 };
 
+/// How the cage's faces are taken: as they are (Catmull-Clark), triangles only (Loop on a
+/// given cage), or with other polygons split into triangles as the Loop filter splits them.
+enum class vtkSubDCageFaces
+{
+  Polygons,
+  Triangles,
+  Triangulated
+};
+
 /// Reads `input`'s polygons (screened as vtkSubDSurfaceFilter screens them: degenerate ones
 /// dropped and polygons repeating a point kept or collapsed, as `repeated` says, with a
-/// warning), their ghost marks (a piece of a distributed mesh: the non-manifold
-/// warning counts only its own faces) and sharp features into `cage`. `triangles`: every face must be a
-/// triangle (Loop). False, with the reason in `error`, for no polygons, a non-finite point,
-/// an id outside the points, or a face of the wrong kind.
-bool vtkSubDReadCage(vtkPolyData* input, bool triangles, subd::RepeatedCorners repeated, subd::BoundaryRule rule,
-  subd::CreaseMethod creasing, vtkSubDCage& cage, std::string& error, std::string& warning);
+/// warning), their ghost marks (a piece of a distributed mesh: the non-manifold warning counts
+/// only its own faces) and sharp features into `cage`. Triangulated: polygons with more than
+/// three corners are split (with a warning), and are then not in FaceOfCell. False, with the
+/// reason in `error`, for no polygons, a non-finite point, an id outside the points, or (as
+/// `faces` asks) a face that is not a triangle.
+bool vtkSubDReadCage(vtkPolyData* input, vtkSubDCageFaces faces, subd::RepeatedCorners repeated,
+  subd::BoundaryRule rule, subd::CreaseMethod creasing, vtkSubDCage& cage, std::string& error, std::string& warning);
 
 #endif

@@ -1,6 +1,7 @@
 #include "vtkSubDInputFaces.h"
 
 #include "SubDMeshTopology.h"
+#include "SubDPolygonTriangulation.h"
 #include "vtkSubDPointDataInterpolation.h"
 
 #include "vtkCellArray.h"
@@ -220,4 +221,51 @@ std::string vtkSubDNonManifoldWarning(const subd::MeshTopology& topology, const 
   const std::string vertexCount = knowsVertices ? ", " + std::to_string(vertices) + " non-manifold vertices" : "";
   return "Input is non-manifold (" + std::to_string(edges) + " edges with more than two faces or inconsistent " +
     "orientation" + vertexCount + "); they are subdivided as infinitely sharp";
+}
+
+subd::Index vtkSubDTriangulateFaces(subd::FaceScreening& faces, vtkPoints* points)
+{
+  const size_t numFaces = faces.KeptFaces.size();
+  subd::Index split = 0;
+  for (size_t f = 0; f < numFaces && split == 0; ++f)
+  {
+    split += faces.Offsets[f + 1] - faces.Offsets[f] > 3;
+  }
+  if (split == 0)
+  {
+    return 0;
+  }
+  split = 0;
+  subd::IndexArray offsets{ 0 }, vertices, kept;
+  std::vector<subd::Index> local;
+  std::vector<double> xyz;
+  for (size_t f = 0; f < numFaces; ++f)
+  {
+    const subd::Index* corners = faces.Vertices.data() + faces.Offsets[f];
+    const subd::Index n = faces.Offsets[f + 1] - faces.Offsets[f];
+    split += n > 3;
+    xyz.resize(3 * static_cast<size_t>(n));
+    for (subd::Index k = 0; k < n; ++k)
+    {
+      points->GetPoint(corners[k], &xyz[3 * k]);
+    }
+    local.clear();
+    subd::TriangulatePolygon(xyz.data(), n, local);
+    for (size_t t = 0; t < local.size(); t += 3)
+    {
+      vertices.insert(vertices.end(), { corners[local[t]], corners[local[t + 1]], corners[local[t + 2]] });
+      offsets.push_back(static_cast<subd::Index>(vertices.size()));
+      kept.push_back(faces.KeptFaces[f]);
+    }
+  }
+  faces.Offsets.swap(offsets);
+  faces.Vertices.swap(vertices);
+  faces.KeptFaces.swap(kept);
+  return split;
+}
+
+std::string vtkSubDSplitPolygonsWarning(subd::Index split)
+{
+  return std::to_string(split) + " polygon(s) with more than 3 corners were split into triangles: this scheme "
+    "is defined on triangles only";
 }

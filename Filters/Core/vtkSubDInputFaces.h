@@ -44,6 +44,14 @@ vtkSubDInputFaces vtkSubDGatherFaces(vtkPolyData* input);
 bool vtkSubDScreenFaces(const vtkSubDInputFaces& faces, vtkIdType numPoints, vtkIdType numPolys,
   subd::RepeatedCorners repeated, subd::FaceScreening& screened, std::string& error, std::string& warning);
 
+/// Splits every face of `faces` with more than three corners into triangles (ear clipping, so
+/// that concave polygons come out right; SubDPolygonTriangulation.h), each triangle keeping
+/// its polygon's entry in KeptFaces. Returns how many faces were split.
+subd::Index vtkSubDTriangulateFaces(subd::FaceScreening& faces, vtkPoints* points);
+
+/// The warning for `split` polygons split into triangles (without a full stop).
+std::string vtkSubDSplitPolygonsWarning(subd::Index split);
+
 /// The first point with a NaN or infinite coordinate, or -1.
 vtkIdType vtkSubDFirstNonFinitePoint(vtkPoints* points);
 

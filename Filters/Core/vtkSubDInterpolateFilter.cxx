@@ -71,7 +71,8 @@ int vtkSubDInterpolateFilter::Execute(
   const subd::RepeatedCorners repeated = this->Scheme == DOO_SABIN ? subd::RepeatedCorners::Collapse
     : this->Scheme == LOOP                                         ? subd::RepeatedCorners::KeepInTriangles
                                                                    : subd::RepeatedCorners::Keep;
-  if (!vtkSubDReadCage(input, this->Scheme == LOOP, repeated, static_cast<subd::BoundaryRule>(this->BoundaryRule),
+  const vtkSubDCageFaces faces = this->Scheme == LOOP ? vtkSubDCageFaces::Triangles : vtkSubDCageFaces::Polygons;
+  if (!vtkSubDReadCage(input, faces, repeated, static_cast<subd::BoundaryRule>(this->BoundaryRule),
         static_cast<subd::CreaseMethod>(this->CreaseMethod), cage, error, warning))
   {
     return fail(error);

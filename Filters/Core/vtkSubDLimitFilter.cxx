@@ -362,7 +362,7 @@ int vtkSubDLimitFilter::Execute(
   const bool quads = this->Scheme == CATMULL_CLARK;
   vtkSubDCage cage;
   std::string error, warning;
-  const bool read = vtkSubDReadCage(input, !quads,
+  const bool read = vtkSubDReadCage(input, quads ? vtkSubDCageFaces::Polygons : vtkSubDCageFaces::Triangulated,
     quads ? subd::RepeatedCorners::Keep : subd::RepeatedCorners::KeepInTriangles,
     static_cast<subd::BoundaryRule>(this->BoundaryRule),
     static_cast<subd::CreaseMethod>(this->CreaseMethod), cage, error, warning);
@@ -480,8 +480,8 @@ bool vtkSubDLimitFilter::Tessellate(vtkPolyData* input, const vtkSubDCage& cage,
   if (result.NumTrianglesOffTolerance > 0)
   {
     vtkWarningMacro(<< result.NumTrianglesOffTolerance << " triangles are farther than the tolerance ("
-                    << settings.Tolerance << ") from the limit surface at MaximumLevel " << this->MaximumLevel
-                    << ": raise MaximumLevel for them.");
+                    << settings.Tolerance << " in the cage's units) from the limit surface at the deepest level "
+                    << "allowed (MaximumLevel " << this->MaximumLevel << ").");
   }
   return true;
 }

@@ -62,9 +62,11 @@
  * "CornerSharpness", "Hole"), with the same BoundaryRule and CreaseMethod, and its faces the
  * same way (polygons, then the triangles of strips; degenerate polygons dropped with a
  * warning; polygons that repeat a point kept as OpenSubdiv keeps them, the Loop scheme's
- * larger ones collapsed, as the Catmull-Clark and Loop filters do). Bad input (no polygons, NaN points, Loop on polygons that are not triangles, a
- * location outside its face or on a missing or hole face) is an error naming the culprit,
- * with an empty output.
+ * larger ones collapsed, as the Catmull-Clark and Loop filters do; for Loop, polygons with more
+ * than three corners split into triangles as vtkSubDLoopFilter splits them, with a warning).
+ * Bad input (no polygons, NaN points, a location outside its face or on a missing or hole face,
+ * or on a polygon Loop split into triangles) is an error naming the culprit, with an empty
+ * output.
  *
  * Pieces of a distributed mesh (as vtkSubDSurfaceFilter): the tessellation of a piece asks
  * upstream for one layer of ghost cells - the limit surface over a face depends on the faces

@@ -4,7 +4,6 @@
 
 #include "SubDLimitEvaluator.h"
 #include "SubDMeshValidation.h"
-#include "SubDPolygonTriangulation.h"
 #include "SubDMemoryEstimate.h"
 #include "SubDRefiner.h"
 #include "SubDRegularPatch.h"
@@ -51,50 +50,6 @@
 
 namespace
 {
-// Splits every face of more than three corners into triangles (ear clipping, so concave
-// polygons come out right; SubDPolygonTriangulation.h); each triangle keeps the input cell
-// of its polygon. Returns how many faces were split.
-subd::Index TriangulateFaces(subd::FaceScreening& faces, vtkPoints* points)
-{
-  const size_t numFaces = faces.KeptFaces.size();
-  subd::Index split = 0;
-  for (size_t f = 0; f < numFaces && split == 0; ++f)
-  {
-    split += faces.Offsets[f + 1] - faces.Offsets[f] > 3;
-  }
-  if (split == 0)
-  {
-    return 0;
-  }
-  split = 0;
-  subd::IndexArray offsets{ 0 }, vertices, kept;
-  std::vector<subd::Index> local;
-  std::vector<double> xyz;
-  for (size_t f = 0; f < numFaces; ++f)
-  {
-    const subd::Index* corners = faces.Vertices.data() + faces.Offsets[f];
-    const subd::Index n = faces.Offsets[f + 1] - faces.Offsets[f];
-    split += n > 3;
-    xyz.resize(3 * static_cast<size_t>(n));
-    for (subd::Index k = 0; k < n; ++k)
-    {
-      points->GetPoint(corners[k], &xyz[3 * k]);
-    }
-    local.clear();
-    subd::TriangulatePolygon(xyz.data(), n, local);
-    for (size_t t = 0; t < local.size(); t += 3)
-    {
-      vertices.insert(vertices.end(), { corners[local[t]], corners[local[t + 1]], corners[local[t + 2]] });
-      offsets.push_back(static_cast<subd::Index>(vertices.size()));
-      kept.push_back(faces.KeptFaces[f]);
-    }
-  }
-  faces.Offsets.swap(offsets);
-  faces.Vertices.swap(vertices);
-  faces.KeptFaces.swap(kept);
-  return split;
-}
-
 // The field data array recording how many steps of a depth-dependent scheme made a mesh.
 const char* const DepthArrayName = "SubDDepth";
 
@@ -469,11 +424,10 @@ bool vtkSubDSurfaceFilter::ScreenInputFaces(vtkPolyData* input, vtkInputMesh& me
   const subd::FaceScreening& screened = mesh.Screened;
   if (this->RequiresTriangles())
   {
-    const subd::Index split = TriangulateFaces(mesh.Screened, input->GetPoints());
+    const subd::Index split = vtkSubDTriangulateFaces(mesh.Screened, input->GetPoints());
     if (split > 0)
     {
-      vtkWarningMacro(<< split << " polygon(s) with more than 3 corners were split into "
-                      << "triangles: this scheme is defined on triangles only.");
+      vtkWarningMacro(<< vtkSubDSplitPolygonsWarning(split) << ".");
     }
   }
   if (this->WeldCoincidentPoints)

@@ -151,3 +151,21 @@ TEST(CommandLine, SubdMpiWritesAPvtp)
   EXPECT_TRUE(cmd.Warnings.empty());
 }
 }
+
+// --tolerance: the deepest level is --levels when given, else 12; the default output is named
+// for the adaptive tessellation.
+TEST(CommandLine, ToleranceTakesLevelsAsTheDeepestLevel)
+{
+  subdapp::CommandLine cmd;
+  std::string error;
+  ASSERT_TRUE(Parse(Program::Subd, { "part.obj", "--tolerance", "1e-3" }, cmd, error)) << error;
+  EXPECT_EQ(cmd.Options.Tolerance, 1e-3);
+  EXPECT_EQ(cmd.Options.Levels, 12);
+  EXPECT_EQ(subdapp::DefaultOutputPath(cmd), "part-catmull-clark-adaptive.vtp");
+  subdapp::CommandLine capped;
+  ASSERT_TRUE(Parse(Program::Subd, { "part.obj", "--scheme", "loop", "--levels", "5", "--tolerance", "0.01" }, capped,
+    error))
+    << error;
+  EXPECT_EQ(capped.Options.Levels, 5);
+  EXPECT_FALSE(cmd.Options == capped.Options);
+}
