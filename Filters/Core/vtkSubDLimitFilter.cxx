@@ -328,6 +328,13 @@ int vtkSubDLimitFilter::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  // An adaptive or selective face takes the points its neighbours' refinement puts on its
+  // edges, and theirs in turn: no number of ghost layers makes a piece's tessellation its own.
+  if (this->Tessellation != UNIFORM && !inputVector[1]->GetInformationObject(0))
+  {
+    vtkSubDRequestWholeInput(inputVector, 1);
+    return 1;
+  }
   vtkSubDRequestPieceWithGhosts(inputVector[0]->GetInformationObject(0), outInfo, 1);
   if (vtkInformation* locationsInfo = inputVector[1]->GetInformationObject(0))
   {
@@ -359,6 +366,12 @@ int vtkSubDLimitFilter::Execute(
   {
     return 1;
   }
+  // Adaptive and selective tessellations are made of the whole mesh, on the first piece.
+  const bool wholeMesh = this->Tessellation != UNIFORM && !locations;
+  if (wholeMesh && request.IsLaterPiece())
+  {
+    return 1;
+  }
   const bool quads = this->Scheme == CATMULL_CLARK;
   vtkSubDCage cage;
   std::string error, warning;
@@ -385,7 +398,7 @@ int vtkSubDLimitFilter::Execute(
     scheme.reset(new subd::LoopScheme);
   }
   // A piece tessellates its own faces, and the first OutputGhostLevels layers of ghost faces.
-  if (request.OneOfMany && cage.FaceIsGhost.empty() && !locations)
+  if (request.OneOfMany && cage.FaceIsGhost.empty() && !locations && !wholeMesh)
   {
     vtkWarningMacro(<< vtkSubDMissingGhostsWarning(request.Piece, 1));
   }

@@ -75,7 +75,9 @@
  * piece). Asked for ghost levels itself, it asks for that many more and adds the first layers
  * of ghost faces, marked in "vtkGhostType". A piece without polygons gives an empty output.
  * The locations are not split: each piece evaluates the locations it is given on the cells of
- * its own input.
+ * its own input. Adaptive and selective tessellations are made of the whole mesh (a face takes
+ * the points of its neighbours' refinement, and they those of theirs): the first piece asks
+ * upstream for all of it and holds the whole tessellation, the others are empty.
  *
  * @sa vtkSubDCatmullClarkFilter vtkSubDLoopFilter
  */

@@ -123,6 +123,38 @@ TEST_P(Pieces, EmptyPiecesAndOneFilterForAllPieces)
   EXPECT_EQ(ComparePieces(serial, raw, PieceTolerance(serial), scheme.SameCellData), "");
 }
 
+// The adaptive tessellation asked for pieces: made of the whole mesh on the first piece (the
+// serial tessellation, point for point), nothing on the others.
+TEST(LimitPieces, AdaptiveTessellationIsMadeWholeOnTheFirstPiece)
+{
+  const PieceTestCase test = PieceTestCases(false).front();
+  PieceSource source(PieceTestInput(test));
+  vtkNew<vtkSubDLimitFilter> limit;
+  limit->SetInputConnection(source.GetOutputPort());
+  limit->SetTessellationToAdaptive();
+  limit->SetTolerance(3e-3);
+  Messages messages;
+  messages.Watch(limit);
+  limit->UpdatePiece(0, 1, 0);
+  vtkNew<vtkPolyData> serial;
+  serial->DeepCopy(limit->GetOutput());
+  ASSERT_GT(serial->GetNumberOfPolys(), 0);
+  for (int p = 0; p < 3; ++p)
+  {
+    limit->UpdatePiece(p, 3, 1);
+    vtkPolyData* piece = limit->GetOutput();
+    ASSERT_EQ(piece->GetNumberOfPoints(), p == 0 ? serial->GetNumberOfPoints() : 0) << "piece " << p;
+    for (vtkIdType i = 0; i < piece->GetNumberOfPoints(); ++i)
+    {
+      double a[3], b[3];
+      piece->GetPoint(i, a);
+      serial->GetPoint(i, b);
+      EXPECT_TRUE(a[0] == b[0] && a[1] == b[1] && a[2] == b[2]) << "point " << i;
+    }
+  }
+  EXPECT_EQ(messages.NumErrors + messages.NumWarnings, 0) << messages.Errors << messages.Warnings;
+}
+
 // The limit surface's tessellation in pieces: the union of the pieces' tessellations of their
 // own faces is the whole tessellation (points, carried point data, each cell's input cell),
 // for Catmull-Clark on quads and Loop on triangles, with and without creases; asked for a
