@@ -38,6 +38,7 @@
 #include "vtkPolyData.h"
 #include "vtkStaticPointLocator.h"
 #include "vtkSubDCatmullClarkFilter.h"
+#include "vtkSubDLimitFilter.h"
 
 #include <gtest/gtest.h>
 
@@ -414,6 +415,85 @@ std::vector<OracleCase> SharpCases()
 
 INSTANTIATE_TEST_SUITE_P(SharpFeatures, SchemeOracle, ::testing::ValuesIn(SharpCases()), CaseName);
 
+// OpenSubdiv's limit surface of a fixture: its adaptive patches (Far::PatchTable, isolation
+// level 10, infinitely sharp patches, Gregory end caps, double precision) over the refined
+// and local points.
+class OsdLimitPatches
+{
+public:
+  explicit OsdLimitPatches(const OracleCase& c)
+    : Quads(c.Kind == SchemeKind::CatmullClark)
+  {
+    std::unique_ptr<Far::TopologyRefiner> refiner = CreateOsdRefiner(c.Mesh, c.Rule, c.Kind, c.Tags);
+    Far::PatchTableFactory::Options options(10);
+    options.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
+    options.useInfSharpPatch = true;
+    options.SetPatchPrecision<double>();
+    refiner->RefineAdaptive(options.GetRefineAdaptiveOptions());
+    this->Table.reset(Far::PatchTableFactory::Create(*refiner, options));
+    const int numRefined = refiner->GetNumVerticesTotal();
+    this->Values.resize(static_cast<size_t>(numRefined + this->Table->GetNumLocalPoints()));
+    for (Index v = 0; v < c.Mesh.NumVertices(); ++v)
+    {
+      std::copy(&c.Mesh.Points[3 * v], &c.Mesh.Points[3 * v] + 3, this->Values[v].P);
+    }
+    Far::PrimvarRefinerReal<double> primvar(*refiner);
+    Point3* src = this->Values.data();
+    for (int l = 1; l <= refiner->GetMaxLevel(); ++l)
+    {
+      Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
+      primvar.Interpolate(l, src, dst);
+      src = dst;
+    }
+    // The local points (Gregory end caps) from the double-precision stencils the options
+    // asked for (PatchTable::ComputeLocalPointValues reads the float table only).
+    if (const Far::StencilTableReal<double>* local = this->Table->GetLocalPointStencilTable<double>())
+    {
+      local->UpdateValues(this->Values.data(), this->Values.data() + numRefined);
+    }
+    this->Map.reset(new Far::PatchMap(*this->Table));
+    this->Ptex.reset(new Far::PtexIndices(*refiner));
+  }
+
+  /// The value and derivatives (PatchDerivative order) at (u, v) of face f, a quad
+  /// (Catmull-Clark) or triangle (Loop) of the fixture; false where no patch holds it.
+  bool Evaluate(Index f, double u, double v, double out[6][3]) const
+  {
+    const Far::PatchTable::PatchHandle* handle = this->Map->FindPatch(this->Ptex->GetFaceId(f), u, v);
+    if (!handle)
+    {
+      return false;
+    }
+    double w[6][20];
+    this->Table->EvaluateBasis(*handle, u, v, w[0], w[1], w[2], w[3], w[4], w[5]);
+    const Far::ConstIndexArray cvs = this->Table->GetPatchVertices(*handle);
+    // OpenSubdiv 3.5 negates all derivatives of a sub-triangle that is rotated by 180 degrees
+    // in its parent's parameters; that is right for the first derivatives and wrong for the
+    // second (two sign changes cancel). Undo it for the second.
+    const bool rotated = !this->Quads && this->Table->GetPatchParam(*handle).IsTriangleRotated();
+    for (int d = 0; d < 6; ++d)
+    {
+      const double sign = rotated && d >= 3 ? -1.0 : 1.0;
+      for (int x = 0; x < 3; ++x)
+      {
+        out[d][x] = 0.0;
+        for (int k = 0; k < cvs.size(); ++k)
+        {
+          out[d][x] += sign * w[d][k] * this->Values[cvs[k]].P[x];
+        }
+      }
+    }
+    return true;
+  }
+
+private:
+  bool Quads;
+  std::unique_ptr<Far::PatchTable> Table;
+  std::vector<Point3> Values;
+  std::unique_ptr<Far::PatchMap> Map;
+  std::unique_ptr<Far::PtexIndices> Ptex;
+};
+
 // Exact limit evaluation (SubDLimitEvaluator) against OpenSubdiv's adaptive patches
 // (Far::PatchTable, isolation level 10, infinitely sharp patches, double precision): on
 // regular, boundary and crease patches and their feature-adaptive refinements OpenSubdiv
@@ -432,36 +512,7 @@ TEST_P(LimitOracle, MatchesOpenSubdivPatches)
 {
   const OracleCase& c = GetParam();
   const bool quads = c.Kind == SchemeKind::CatmullClark;
-  std::unique_ptr<Far::TopologyRefiner> refiner = CreateOsdRefiner(c.Mesh, c.Rule, c.Kind, c.Tags);
-  Far::PatchTableFactory::Options options(10);
-  options.SetEndCapType(Far::PatchTableFactory::Options::ENDCAP_GREGORY_BASIS);
-  options.useInfSharpPatch = true;
-  options.SetPatchPrecision<double>();
-  refiner->RefineAdaptive(options.GetRefineAdaptiveOptions());
-  std::unique_ptr<Far::PatchTable> table(Far::PatchTableFactory::Create(*refiner, options));
-  const int numRefined = refiner->GetNumVerticesTotal();
-  std::vector<Point3> values(static_cast<size_t>(numRefined + table->GetNumLocalPoints()));
-  for (Index v = 0; v < c.Mesh.NumVertices(); ++v)
-  {
-    std::copy(&c.Mesh.Points[3 * v], &c.Mesh.Points[3 * v] + 3, values[v].P);
-  }
-  Far::PrimvarRefinerReal<double> primvar(*refiner);
-  Point3* src = values.data();
-  for (int l = 1; l <= refiner->GetMaxLevel(); ++l)
-  {
-    Point3* dst = src + refiner->GetLevel(l - 1).GetNumVertices();
-    primvar.Interpolate(l, src, dst);
-    src = dst;
-  }
-  // The local points (Gregory end caps) from the double-precision stencils the options asked
-  // for (PatchTable::ComputeLocalPointValues reads the float table only).
-  if (const Far::StencilTableReal<double>* local = table->GetLocalPointStencilTable<double>())
-  {
-    local->UpdateValues(values.data(), values.data() + numRefined);
-  }
-  const Far::PatchMap patchMap(*table);
-  const Far::PtexIndices ptex(*refiner);
-
+  const OsdLimitPatches osdPatches(c);
   const std::unique_ptr<subd::Scheme> scheme = MakeScheme(c.Kind);
   subd::MeshTopology topology = subd::MeshTopology::Build(c.Mesh.NumVertices(), c.Mesh.Offsets, c.Mesh.Vertices);
   const subd::BaseTags tags = ToBaseTags(c.Tags, topology);
@@ -495,30 +546,12 @@ TEST_P(LimitOracle, MatchesOpenSubdivPatches)
     ASSERT_TRUE(evaluator.EvaluateFace(f, samples, mine, error)) << error;
     for (size_t i = 0; i < samples.size(); ++i)
     {
-      const Far::PatchTable::PatchHandle* handle = patchMap.FindPatch(ptex.GetFaceId(f), samples[i].U, samples[i].V);
-      ASSERT_NE(handle, nullptr) << "face " << f;
-      double w[6][20];
-      table->EvaluateBasis(*handle, samples[i].U, samples[i].V, w[0], w[1], w[2], w[3], w[4], w[5]);
-      const Far::ConstIndexArray cvs = table->GetPatchVertices(*handle);
-      if (!quads && table->GetPatchParam(*handle).IsTriangleRotated())
-      {
-        // OpenSubdiv 3.5 negates all derivatives of a sub-triangle that is rotated by 180
-        // degrees in its parent's parameters; that is right for the first derivatives and
-        // wrong for the second (two sign changes cancel). Undo it for the second.
-        for (int d = 3; d < 6; ++d)
-          for (int k = 0; k < cvs.size(); ++k)
-            w[d][k] = -w[d][k];
-      }
+      double osdValues[6][3];
+      ASSERT_TRUE(osdPatches.Evaluate(f, samples[i].U, samples[i].V, osdValues)) << "face " << f;
       for (int d = 0; d < 6; ++d)
       {
-        double osd[3] = { 0, 0, 0 }, ours[3];
-        for (int k = 0; k < cvs.size(); ++k)
-        {
-          for (int x = 0; x < 3; ++x)
-          {
-            osd[x] += w[d][k] * values[cvs[k]].P[x];
-          }
-        }
+        const double* osd = osdValues[d];
+        double ours[3];
         mine[i].Apply(mine[i].Weights, d, c.Mesh.Points.data(), 3, ours);
         const double scale = std::max(size, std::sqrt(osd[0] * osd[0] + osd[1] * osd[1] + osd[2] * osd[2]));
         const double error = std::sqrt((osd[0] - ours[0]) * (osd[0] - ours[0]) + (osd[1] - ours[1]) * (osd[1] - ours[1]) +
@@ -552,6 +585,117 @@ std::vector<OracleCase> LimitCases()
 }
 
 INSTANTIATE_TEST_SUITE_P(Limit, LimitOracle, ::testing::ValuesIn(LimitCases()), CaseName);
+
+// A fixture with its sharp features as the filters read them: crease lines with "Sharpness",
+// "CornerSharpness", "Hole".
+vtkSmartPointer<vtkPolyData> TaggedPolyData(const subdtest::TestMesh& mesh, const SharpTags& tags)
+{
+  vtkSmartPointer<vtkPolyData> poly = subdtest::ToPolyData(mesh);
+  std::vector<std::array<vtkIdType, 2>> creases;
+  for (size_t k = 0; k + 1 < tags.CreasePairs.size(); k += 2)
+    creases.push_back({ tags.CreasePairs[k], tags.CreasePairs[k + 1] });
+  if (!creases.empty())
+    subdtest::AddCreases(poly, creases, tags.CreaseSharpness);
+  std::map<vtkIdType, float> corners;
+  for (size_t k = 0; k < tags.Corners.size(); ++k)
+    corners[tags.Corners[k]] = tags.CornerSharpness[k];
+  if (!corners.empty())
+    subdtest::AddCornerSharpness(poly, corners);
+  if (!tags.Holes.empty())
+  {
+    vtkNew<vtkIntArray> holes;
+    holes->SetName("Hole");
+    holes->SetNumberOfTuples(poly->GetNumberOfCells());
+    holes->Fill(0);
+    for (int f : tags.Holes)
+      holes->SetValue(poly->GetNumberOfLines() + f, 1); // lines come before polygons
+    poly->GetCellData()->AddArray(holes);
+  }
+  return poly;
+}
+
+// vtkSubDLimitFilter's adaptive tessellation, and its selective one with every face at level 2:
+// each point against OpenSubdiv's patches at the (face, u, v) it was evaluated at
+// (ComputeLocations), to the LimitOracle's tolerance. The fixtures of LimitOracle whose faces
+// are all quads (Catmull-Clark) or all triangles (Loop): OpenSubdiv's sub-face parameters of
+// other polygons are its own. Points within 2^-10 of a face corner are not compared: there
+// OpenSubdiv's end caps only approximate an extraordinary vertex (the limit points at
+// vertices have their own oracle test).
+class AdaptiveTessellationOracle : public ::testing::TestWithParam<OracleCase>
+{
+};
+
+TEST_P(AdaptiveTessellationOracle, PointsAreOpenSubdivsLimit)
+{
+  const OracleCase& c = GetParam();
+  const bool quads = c.Kind == SchemeKind::CatmullClark;
+  const OsdLimitPatches osdPatches(c);
+  vtkSmartPointer<vtkPolyData> cage = TaggedPolyData(c.Mesh, c.Tags);
+  vtkNew<vtkIntArray> levels;
+  levels->SetName("RefineLevel");
+  levels->SetNumberOfTuples(cage->GetNumberOfCells());
+  levels->Fill(2);
+  cage->GetCellData()->AddArray(levels);
+  const double size = subdtest::Diagonal(c.Mesh.Points), nearCorner = std::ldexp(1.0, -10);
+  for (int mode : { vtkSubDLimitFilter::ADAPTIVE, vtkSubDLimitFilter::SELECTIVE })
+  {
+    vtkNew<vtkSubDLimitFilter> limit;
+    limit->SetInputData(cage);
+    limit->SetScheme(quads ? vtkSubDLimitFilter::CATMULL_CLARK : vtkSubDLimitFilter::LOOP);
+    limit->SetBoundaryRule(static_cast<int>(c.Rule));
+    limit->SetCreaseMethod(c.Tags.Method == subd::CreaseMethod::Chaikin ? 1 : 0);
+    limit->SetTessellation(mode);
+    limit->SetTolerance(3e-3);
+    limit->ComputeNormalsOff();
+    limit->ComputeLocationsOn();
+    limit->Update();
+    vtkPolyData* out = limit->GetOutput();
+    ASSERT_GT(out->GetNumberOfPolys(), 0);
+    vtkDataArray* faceIds = out->GetPointData()->GetArray("FaceId");
+    vtkDataArray* uv = out->GetPointData()->GetArray("FaceUV");
+    ASSERT_TRUE(faceIds && uv);
+    double worst = 0.0;
+    int compared = 0;
+    for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+    {
+      const Index f = static_cast<Index>(faceIds->GetComponent(i, 0) - cage->GetNumberOfLines());
+      const double u = uv->GetComponent(i, 0), v = uv->GetComponent(i, 1);
+      const bool diagonal = !quads && u + v > 1.0 - nearCorner;
+      if ((std::min(u, 1.0 - u) < nearCorner || diagonal) && (std::min(v, 1.0 - v) < nearCorner || diagonal))
+        continue;
+      double osd[6][3], p[3];
+      ASSERT_TRUE(osdPatches.Evaluate(f, u, v, osd)) << "face " << f;
+      out->GetPoint(i, p);
+      const double error = std::sqrt((osd[0][0] - p[0]) * (osd[0][0] - p[0]) + (osd[0][1] - p[1]) * (osd[0][1] - p[1]) +
+                             (osd[0][2] - p[2]) * (osd[0][2] - p[2])) / size;
+      worst = std::max(worst, error);
+      EXPECT_LT(error, ChaikinTolerance(c)) << "point " << i << " of face " << f << " at (" << u << ", " << v << ")";
+      ++compared;
+    }
+    // Level 2 puts points inside every face; a flat fixture's adaptive tessellation has none.
+    EXPECT_TRUE(compared > 0 || mode == vtkSubDLimitFilter::ADAPTIVE);
+    std::printf("%s tessellation: %-40s %5d points, relative error %.1e\n",
+      mode == vtkSubDLimitFilter::ADAPTIVE ? "adaptive" : "selective", ::testing::PrintToString(c).c_str(), compared,
+      worst);
+  }
+}
+
+std::vector<OracleCase> AdaptiveTessellationCases()
+{
+  std::vector<OracleCase> cases;
+  for (const OracleCase& c : LimitCases())
+  {
+    const Index size = c.Kind == SchemeKind::CatmullClark ? 4 : 3;
+    bool uniform = true;
+    for (Index f = 0; f < c.Mesh.NumFaces(); ++f)
+      uniform = uniform && c.Mesh.Offsets[f + 1] - c.Mesh.Offsets[f] == size;
+    if (uniform)
+      cases.push_back(c);
+  }
+  return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Adaptive, AdaptiveTessellationOracle, ::testing::ValuesIn(AdaptiveTessellationCases()), CaseName);
 
 // The explorer's crease editing: the functions its sharpness spin box calls
 // (SubDCageEditing.h) edit a built-in cage, the scheme registry runs the filter as the
