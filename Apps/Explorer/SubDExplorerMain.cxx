@@ -34,6 +34,8 @@ void ApplyOptions(const ExplorerOptions& options, ExplorerWindow& window)
     window.SetViewCount(options.Views);
   if (given("--levels"))
     window.SetLevels(options.Levels);
+  if (given("--tolerance"))
+    window.SetTolerance(options.Tolerance);
   if (given("--color"))
     window.SetColoring(options.Color);
   if (given("--colormap"))

@@ -62,7 +62,7 @@ std::string ExplorerUsage()
          "                     [--colormap cool-to-warm|rainbow|black-body|grayscale]\n"
          "                     [--range symmetric|percentile] [--percentile P] [--no-cage]\n"
          "                     [--cage-opacity O] [--wireframe] [--texture] [--size WxH]\n"
-         "                     [--fvar-interpolation MODE]\n"
+         "                     [--fvar-interpolation MODE] [--tolerance EPS]\n"
          "                     [--screenshot VIEWS.png] [--window-shot WINDOW.png]\n"
          "                     [--crease A-B=S]... [--corner V=S]... [--select A-B|V]\n"
          "                     [--export-cage CAGE.vtp] [--cancel-after MS] [--time-edits N]\n"
@@ -70,8 +70,11 @@ std::string ExplorerUsage()
          "\n"
          "Compares subdivision schemes side by side on a mesh (.vtp .vtk .obj .ply .stl .off\n"
          ".gltf .glb) or a built-in cage. --texture shows a checker on surfaces with texture\n"
-         "coordinates, --fvar-interpolation sets how every view refines them (as subd's). --screenshot/--window-shot save pictures once the views are up to\n"
-         "date; with --quit the app then exits (scripted use, e.g. under xvfb-run).\n"
+         "coordinates, --fvar-interpolation sets how every view refines them (as subd's).\n"
+         "--tolerance EPS: the Catmull-Clark and Loop views tessellate their limit surface within\n"
+         "EPS of the cage's diagonal (as subd --tolerance), the level their deepest level.\n"
+         "--screenshot/--window-shot save pictures once the views are up to date; with --quit\n"
+         "the app then exits (scripted use, e.g. under xvfb-run).\n"
          "--cancel-after MS presses Cancel MS milliseconds into the first update (as the\n"
          "Cancel button does) and reports whether the update stopped. --crease and --corner\n"
          "set the sharpness of a cage edge or vertex as the Creases panel does; --select\n"
@@ -147,7 +150,7 @@ bool ParseSharpnessEdit(
 }
 
 // The options of what is subdivided and shown: --builtin, --views, --schemes, --levels,
-// --limit, --fvar-interpolation.
+// --limit, --tolerance, --fvar-interpolation.
 Parsed ParseSceneOption(ArgumentReader& arguments, ExplorerOptions& options, std::string& error)
 {
   const std::string arg = arguments.Current();
@@ -192,6 +195,18 @@ Parsed ParseSceneOption(ArgumentReader& arguments, ExplorerOptions& options, std
   {
     options.Limit = true;
     return Parsed::Done;
+  }
+  if (arg == "--tolerance")
+  {
+    if (!arguments.Value(text, error))
+    {
+      return Parsed::Failed;
+    }
+    char* end = nullptr;
+    options.Tolerance = std::strtod(text.c_str(), &end);
+    return *end == '\0' && options.Tolerance > 0.0 && options.Tolerance < 1.0
+      ? Parsed::Done
+      : Fail("--tolerance wants a fraction of the cage's diagonal in (0, 1), not '" + text + "'", error);
   }
   if (arg == "--fvar-interpolation")
   {

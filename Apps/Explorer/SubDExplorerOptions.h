@@ -25,6 +25,7 @@ struct ExplorerOptions
   bool Texture = false;                        ///< --texture: the checker on textured surfaces
   std::string FaceVarying = "corners-plus1";  ///< --fvar-interpolation, every view
   bool Limit = false; ///< project to the limit (and use exact curvature) where the scheme can
+  double Tolerance = 0.0; ///< > 0: Catmull-Clark and Loop views tessellate their limit adaptively
   long long SelectA = -1, SelectB = -1; ///< --select A-B or --select V
   std::string Screenshot; ///< PNG of the views, written once the views are up to date
   std::string WindowShot; ///< PNG of the whole window (controls included)

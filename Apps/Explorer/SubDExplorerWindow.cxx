@@ -54,6 +54,12 @@ namespace subdexplorer
 {
 namespace
 {
+// The schemes whose limit surface the Tolerance control tessellates.
+bool AdaptiveScheme(const subdapp::SchemeEntry* entry)
+{
+  return entry && (entry->Name == "catmull-clark" || entry->Name == "loop");
+}
+
 const char* const DefaultSchemes[ExplorerWindow::MaxViews] = { "catmull-clark", "loop", "butterfly", "doo-sabin" };
 
 // Ctrl+click selects the cage edge or vertex under the mouse (and is not passed on to the
@@ -167,6 +173,16 @@ QGroupBox* ExplorerWindow::BuildGlobalControls()
   levelRow->addWidget(this->LevelSlider);
   levelRow->addWidget(this->LevelLabel);
   form->addRow("Level", levelRow);
+  this->Tolerance = new QComboBox;
+  this->Tolerance->addItem("off: refine", 0.0);
+  for (double tolerance : { 1e-2, 3e-3, 1e-3, 3e-4, 1e-4 })
+  {
+    this->Tolerance->addItem(QString("limit within %1").arg(tolerance), tolerance);
+  }
+  this->Tolerance->setToolTip("Catmull-Clark and Loop: instead of refining, tessellate the limit surface into "
+                              "triangles within this fraction of the cage's diagonal, fine only where it curves "
+                              "(as deep as it needs, up to level 12). The view's F counts its triangles.");
+  form->addRow("Tolerance", this->Tolerance);
   this->Coloring = new QComboBox;
   for (int c = vtkSubDScene::COLOR_NONE; c <= vtkSubDScene::COLOR_MINIMUM_CURVATURE; ++c)
   {
@@ -342,6 +358,10 @@ void ExplorerWindow::ConnectGlobalControls()
     if (!this->Updating)
       this->UpdateViews();
   });
+  connect(this->Tolerance, QOverload<int>::of(&QComboBox::currentIndexChanged), this, [this]() {
+    if (!this->Updating)
+      this->UpdateViews();
+  });
   connect(this->Coloring, &QComboBox::currentTextChanged, this,
     [this](const QString& text) { this->SetColoring(text.toStdString()); });
   connect(this->ColorMap, &QComboBox::currentTextChanged, this,
@@ -510,6 +530,22 @@ void ExplorerWindow::SetScheme(int view, const std::string& scheme)
 void ExplorerWindow::SetLevels(int levels)
 {
   this->LevelSlider->setValue(levels);
+}
+
+void ExplorerWindow::SetTolerance(double tolerance)
+{
+  int index = this->Tolerance->findData(tolerance);
+  if (index < 0)
+  {
+    this->Tolerance->addItem(QString("limit within %1").arg(tolerance), tolerance);
+    index = this->Tolerance->count() - 1;
+  }
+  this->Tolerance->setCurrentIndex(index);
+}
+
+double ExplorerWindow::GetTolerance() const
+{
+  return this->Tolerance->currentData().toDouble();
 }
 
 template <typename Setter>
@@ -704,6 +740,12 @@ subdapp::SchemeOptions ExplorerWindow::ViewOptions(int v) const
   options.ProjectToLimit = view.Limit->isChecked() && entry->LimitPositions;
   options.LimitCurvature = options.ProjectToLimit && entry->LimitCurvature &&
     this->Scene->GetColoring() != vtkSubDScene::COLOR_NONE;
+  if (AdaptiveScheme(entry) && this->GetTolerance() > 0.0)
+  {
+    options.Tolerance = this->GetTolerance();
+    options.Levels = 12; // as deep as the tolerance needs: subd --tolerance's default
+    options.LimitCurvature = this->Scene->GetColoring() != vtkSubDScene::COLOR_NONE;
+  }
   return options;
 }
 
@@ -834,9 +876,14 @@ void ExplorerWindow::RenderScene()
   for (int v = 0; v < this->ViewCount; ++v)
   {
     const ViewControls& view = this->Views[v];
-    const std::string title = view.Scheme->currentText().toStdString() + ", level " +
-      std::to_string(this->LevelSlider->value()) + (view.ResultOptions.ProjectToLimit ? ", limit" : "");
-    this->Scene->AddView(view.Result ? view.Result.GetPointer() : empty.GetPointer(), this->Cage, title.c_str());
+    std::ostringstream title;
+    title << view.Scheme->currentText().toStdString();
+    if (view.ResultOptions.Tolerance > 0.0)
+      title << " limit, tolerance " << view.ResultOptions.Tolerance;
+    else
+      title << ", level " << this->LevelSlider->value() << (view.ResultOptions.ProjectToLimit ? ", limit" : "");
+    this->Scene->AddView(
+      view.Result ? view.Result.GetPointer() : empty.GetPointer(), this->Cage, title.str().c_str());
   }
   if (this->VTKWidget->isVisible())
   {
@@ -1045,6 +1092,7 @@ void ExplorerWindow::UseSettings(std::unique_ptr<QSettings> settings)
     }
     this->SetViewCount(in.value("views", this->ViewCount).toInt());
     this->LevelSlider->setValue(in.value("level", this->LevelSlider->value()).toInt());
+    this->SetTolerance(in.value("tolerance", this->GetTolerance()).toDouble());
     this->SetColoring(in.value("coloring", this->Coloring->currentText()).toString().toStdString());
     this->SetColorMap(in.value("colorMap", this->ColorMap->currentText()).toString().toStdString());
     this->SetColorRange(in.value("rangeSymmetric", this->RangeMode->currentIndex() == 0).toBool(),
@@ -1081,6 +1129,7 @@ void ExplorerWindow::SaveSettings()
   }
   out.setValue("views", this->ViewCount);
   out.setValue("level", this->LevelSlider->value());
+  out.setValue("tolerance", this->GetTolerance());
   out.setValue("coloring", this->Coloring->currentText());
   out.setValue("colorMap", this->ColorMap->currentText());
   out.setValue("rangeSymmetric", this->RangeMode->currentIndex() == 0);
@@ -1109,6 +1158,12 @@ std::string ExplorerWindow::DescribeState() const
         << "\n";
   }
   out << "level " << this->LevelSlider->value() << "\n"
+      << "tolerance ";
+  if (this->GetTolerance() > 0.0)
+    out << this->GetTolerance() << "\n";
+  else
+    out << "off\n";
+  out
       << "color " << this->Coloring->currentText().toStdString() << "\n"
       << "colormap " << this->ColorMap->currentText().toStdString() << "\n"
       << "range " << this->RangeMode->currentText().toStdString() << " " << this->RangePercentile->value() << "\n"

@@ -56,6 +56,10 @@ public:
   void SetViewCount(int count); ///< 1, 2 or 4
   void SetScheme(int view, const std::string& scheme);
   void SetLevels(int levels);
+  /// Catmull-Clark and Loop views tessellate their limit surface within this fraction of the
+  /// cage's diagonal (0: they refine, as the other schemes).
+  void SetTolerance(double tolerance);
+  double GetTolerance() const;
   void SetColoring(const std::string& coloring); ///< none, mean, gaussian, k1, k2
   void SetColorMap(const std::string& map);      ///< cool-to-warm, rainbow, black-body, grayscale
   /// Symmetric about zero, or the central `percentile` percent of the values (vtkSubDScene).
@@ -181,6 +185,7 @@ private:
   int ViewCount = 1;
   QComboBox* Layout = nullptr;
   QSlider* LevelSlider = nullptr;
+  QComboBox* Tolerance = nullptr; ///< off (0), or the adaptive tessellation's tolerance
   QLabel* LevelLabel = nullptr;
   QComboBox* Coloring = nullptr;
   QComboBox* ColorMap = nullptr;
