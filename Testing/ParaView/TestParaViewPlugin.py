@@ -102,6 +102,37 @@ normals = limit_cc.GetPointData().GetArray("Normals")
 check(normals is not None and builtins.all(abs(math.hypot(*normals.GetTuple3(i)) - 1) < 1e-6
                                   for i in range(normals.GetNumberOfTuples())),
       "limit normals are unit vectors")
+# The adaptive tessellation: crack-free (every edge in two triangles) on the closed sphere,
+# fewer triangles at a looser tolerance; the selective one with every face at level 1 is the
+# uniform tessellation at resolution 2, point for point.
+def open_edges(mesh):
+    count = {}
+    for c in range(mesh.GetNumberOfCells()):
+        ids = mesh.GetCell(c).GetPointIds()
+        n = ids.GetNumberOfIds()
+        for k in range(n):
+            edge = tuple(sorted((ids.GetId(k), ids.GetId((k + 1) % n))))
+            count[edge] = count.get(edge, 0) + 1
+    return builtins.sum(1 for v in count.values() if v != 2)
+fine = fetch(pvs.SubDLimitSurface(Input=sphere, Scheme=1, Tessellation=1, Tolerance=1e-3))
+coarse = fetch(pvs.SubDLimitSurface(Input=sphere, Scheme=1, Tessellation=1, Tolerance=1e-2))
+check(open_edges(fine) == 0 and polys(coarse) < polys(fine),
+      "adaptive limit tessellation: watertight, %d triangles at 1e-3, %d at 1e-2" % (polys(fine), polys(coarse)))
+levels = pvs.ProgrammableFilter(Input=sphere)
+levels.Script = """
+import vtk
+out = self.GetOutput()
+out.ShallowCopy(self.GetInput())
+a = vtk.vtkIntArray()
+a.SetName("RefineLevel")
+a.SetNumberOfTuples(out.GetNumberOfCells())
+a.Fill(1)
+out.GetCellData().AddArray(a)
+"""
+selective = points_of(fetch(pvs.SubDLimitSurface(Input=levels, Scheme=1, Tessellation=2)))
+uniform = points_of(fetch(pvs.SubDLimitSurface(Input=sphere, Scheme=1, Resolution=2)))
+check(len(selective) == len(uniform) and builtins.all(nearest(p, uniform) < 1e-12 for p in selective),
+      "selective limit tessellation at level 1 = the uniform one at resolution 2")
 # A cube's Catmull-Clark limit is convex (its extraordinary vertices have valence 3; the
 # sphere's poles, of valence 12, are not: high valences pucker Catmull-Clark's limit).
 cube = pvs.Clean(Input=pvs.Box())
