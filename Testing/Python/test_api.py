@@ -2,6 +2,8 @@
 
 Run by ctest through pytest (Testing/Python/CMakeLists.txt).
 """
+import collections
+
 import numpy as np
 import pytest
 import subd
@@ -194,6 +196,37 @@ def test_limit_surface_is_the_filters_and_its_samples_are_the_limit_points():
     samples = subd.limit_surface((CUBE_POINTS, CUBE_FACES), samples=(range(6), np.zeros((6, 2))))
     expected = corners[[face[0] for face in CUBE_FACES]]
     assert np.allclose(samples.points, expected, rtol=0, atol=1e-12)
+
+
+def test_adaptive_and_selective_limit_tessellations_are_the_filters():
+    adaptive = subd.limit_surface((CUBE_POINTS, CUBE_FACES), tolerance=1e-3, locations=True)
+    filter_ = subd.vtkSubDLimitFilter()
+    filter_.SetTessellationToAdaptive()
+    filter_.SetTolerance(1e-3)
+    points, offsets, connectivity = arrays_of(run_filter(filter_, polydata_by_hand(CUBE_POINTS, CUBE_FACES)))
+    assert np.array_equal(adaptive.points, points)
+    assert np.array_equal(flat_faces(adaptive.faces)[1], connectivity)
+    assert adaptive.point_data["FaceUV"].shape == (len(points), 2)
+    edges = collections.Counter()
+    for face in np.asarray(adaptive.faces):
+        for k in range(3):
+            edges[tuple(sorted((face[k], face[(k + 1) % 3])))] += 1
+    assert set(edges.values()) == {2}, "watertight"
+    # Every face at level 2: the uniform tessellation at resolution 4, point for point.
+    selective = subd.limit_surface((CUBE_POINTS, CUBE_FACES), refine_levels=[2] * 6)
+    uniform = subd.limit_surface((CUBE_POINTS, CUBE_FACES), resolution=4)
+    assert len(selective.points) == len(uniform.points)
+    assert np.allclose(np.sort(selective.points, axis=0), np.sort(uniform.points, axis=0), rtol=0, atol=1e-12)
+
+
+@pytest.mark.parametrize("bad, error", [
+    (dict(tolerance=0), ValueError), (dict(tolerance=-1e-3), ValueError), (dict(tolerance=float("nan")), ValueError),
+    (dict(tolerance="fine"), TypeError), (dict(tolerance=1e-3, refine_levels=[1] * 6), ValueError),
+    (dict(refine_levels=[1] * 5), ValueError), (dict(refine_levels=[0.5] * 6), ValueError),
+    (dict(tolerance=1e-3, max_level=25), ValueError)])
+def test_bad_tessellation_requests(bad, error):
+    with pytest.raises(error):
+        subd.limit_surface((CUBE_POINTS, CUBE_FACES), **bad)
 
 
 def test_an_interpolating_cage_has_its_limit_points_on_the_targets():

@@ -127,11 +127,18 @@ CURVE_SCHEMES = ("chaikin", "bspline", "four-point")
 
 def limit_surface(mesh, scheme="catmull-clark", resolution=4, samples=None, boundary="edge-only",
                   crease_method="uniform", creases=None, corners=None, holes=None, normals=True,
-                  curvature=False, derivatives=False):
+                  curvature=False, derivatives=False, tolerance=None, tolerance_is_absolute=False,
+                  refine_levels=None, max_level=12, locations=False):
     """The exact limit surface of a cage (vtkSubDLimitFilter), tessellated or sampled.
 
     Without samples: a watertight tessellation with `resolution` segments per face edge
-    (quads for catmull-clark, triangles for loop), each cell with "FaceId", its cage face.
+    (quads for catmull-clark, triangles for loop), each cell with "FaceId", its cage face; or
+    tolerance: triangles within that distance of the limit surface (a fraction of the cage's
+    bounding-box diagonal, or in its units with tolerance_is_absolute), refined only where the
+    surface curves, crack-free; or refine_levels: per cage face, the level it is refined to
+    (the uniform tessellation at resolution 2^level there), crack-free where levels meet. Both
+    go at most max_level deep. locations: add the "FaceId", "FaceUV", "SubFace" point data each
+    point was evaluated at.
     samples: (face_ids, uv): the limit at those (face, u, v), as points (a Mesh with no faces,
     or a vtkPolyData of vertices); uv in the unit square of a quad, the unit triangle of a
     triangle. normals, curvature, derivatives: "Normals", the curvature arrays, "dPdu"/"dPdv".
@@ -147,6 +154,27 @@ def limit_surface(mesh, scheme="catmull-clark", resolution=4, samples=None, boun
     filter_.SetComputeNormals(bool(normals))
     filter_.SetComputeCurvature(bool(curvature))
     filter_.SetComputeDerivatives(bool(derivatives))
+    filter_.SetComputeLocations(bool(locations))
+    filter_.SetMaximumLevel(_integer_in("max_level", max_level, 0, 24))
+    if sum(x is not None for x in (samples, tolerance, refine_levels)) > 1:
+        raise ValueError("give at most one of samples, tolerance and refine_levels")
+    if tolerance is not None:
+        tolerance = _number("tolerance", tolerance)
+        if not (np.isfinite(tolerance) and tolerance > 0):
+            raise ValueError("tolerance must be a positive number, not %r" % tolerance)
+        filter_.SetTessellationToAdaptive()
+        filter_.SetTolerance(tolerance)
+        filter_.SetToleranceIsAbsolute(bool(tolerance_is_absolute))
+    if refine_levels is not None:
+        levels = np.asarray(refine_levels)
+        faces = polydata.GetNumberOfPolys()
+        if levels.shape != (faces,) or not np.issubdtype(levels.dtype, np.integer):
+            raise ValueError("refine_levels must be one integer per face (%d), not %s %s"
+                             % (faces, levels.dtype, levels.shape))
+        cell_levels = np.zeros(polydata.GetNumberOfCells(), np.int32)
+        cell_levels[polydata.GetNumberOfVerts() + polydata.GetNumberOfLines():][:faces] = levels
+        polydata.GetCellData().AddArray(_named(cell_levels, "RefineLevel"))
+        filter_.SetTessellationToSelective()
     if samples is not None:
         filter_.SetInputData(1, _locations(samples))
     output = _run(filter_, polydata)
