@@ -71,6 +71,12 @@ struct Cell
   std::array<P2, 4> C;
   int NumCorners;
   std::array<int, 2> Depth; ///< times halved along u and along v (a triangle: both alike)
+  /// A leaf: a quad's triangles split it along corners 1-3 (else 0-2) when it has no points
+  /// of finer cells on its sides; whether its triangles are farther than the tolerance from
+  /// the surface (at the deepest level), as last checked with `CheckedVertices` vertices.
+  bool SecondDiagonal = false;
+  bool Off = false;
+  size_t CheckedVertices = 0;
 };
 
 /// How a cell splits: a quad across u (at its u midpoint), across v, or both; a triangle
@@ -105,21 +111,6 @@ std::vector<Cell> Children(const Cell& c, int split)
       return { { { a, ab, m, da }, 4, depth }, { { ab, b, bc, m }, 4, depth }, { { m, bc, cc, cd }, 4, depth },
         { { da, m, cd, d }, 4, depth } };
   }
-}
-
-/// The points a cell is judged by (and splits at): its side midpoints and a quad's centre.
-std::vector<P2> SplitPoints(const Cell& c)
-{
-  std::vector<P2> points;
-  for (int i = 0; i < c.NumCorners; ++i)
-  {
-    points.push_back(Mid(c.C[i], c.C[(i + 1) % c.NumCorners]));
-  }
-  if (c.NumCorners == 4)
-  {
-    points.push_back(Mid(c.C[0], c.C[2]));
-  }
-  return points;
 }
 
 // A point of the output, the same from every domain that meets it: a cage vertex, a point of a
@@ -165,7 +156,6 @@ struct Domain
   int TargetDepth; ///< selective: the depth its face asks for
   std::vector<Cell> Active, Leaves;
   std::unordered_map<std::uint64_t, SurfacePoint> Known; ///< the surface at points evaluated
-  long long OffTolerance = 0;
 };
 
 /// A cell's triangles: its corners and the points of finer cells on its sides, in order
@@ -175,6 +165,59 @@ struct Triangulation
   std::vector<P2> Vertices;
   std::vector<std::array<int, 3>> Triangles;
 };
+
+/// The domains of one face of the cage (several for a Catmull-Clark polygon that is not a
+/// quad): evaluated together, so that the face's neighbourhood is refined once per batch.
+struct FaceGroup
+{
+  size_t First, Last;
+};
+
+/// Samples of one face to evaluate in one call: points of its domains' grids, kept in their
+/// Known (a point two of the face's domains share, evaluated once for both), and loose points
+/// (centroids, midpoints of fan edges) read back by index.
+struct Batch
+{
+  using Destination = std::pair<Domain*, std::uint64_t>;
+  std::vector<subd::FaceSample> At;
+  std::vector<Destination> Grid; ///< per sample: where a grid point goes (nullptr: loose)
+  std::vector<std::pair<size_t, Destination>> Copies; ///< a sample that goes to a second domain too
+  std::unordered_map<Key, size_t, KeyHash> Shared;     ///< the samples of points on domain sides
+  std::vector<SurfacePoint> Values;
+
+  size_t AddLoose(const subd::FaceSample& s)
+  {
+    this->At.push_back(s);
+    this->Grid.emplace_back(nullptr, 0);
+    return this->At.size() - 1;
+  }
+  static subd::FaceSample GridSample(const Domain& d, P2 p)
+  {
+    subd::FaceSample s;
+    s.U = static_cast<double>(p.X) / N;
+    s.V = static_cast<double>(p.Y) / N;
+    s.SubFace = d.Sub;
+    return s;
+  }
+};
+
+/// The parameters of the centroid of the triangle a, b, c of domain d.
+subd::FaceSample CentroidSample(const Domain& d, P2 a, P2 b, P2 c)
+{
+  subd::FaceSample s;
+  s.U = (static_cast<double>(a.X) + b.X + c.X) / (3.0 * N);
+  s.V = (static_cast<double>(a.Y) + b.Y + c.Y) / (3.0 * N);
+  s.SubFace = d.Sub;
+  return s;
+}
+
+Vec3 Centroid(const Vec3& a, const Vec3& b, const Vec3& c)
+{
+  return { { (a[0] + b[0] + c[0]) / 3.0, (a[1] + b[1] + c[1]) / 3.0, (a[2] + b[2] + c[2]) / 3.0 } };
+}
+
+/// A quad's two triangles along either diagonal: (0 1 2, 0 2 3), or (1 2 3, 1 3 0).
+constexpr int QuadTriangles[2][2][3] = { { { 0, 1, 2 }, { 0, 2, 3 } }, { { 1, 2, 3 }, { 1, 3, 0 } } };
 
 class AdaptiveTessellator
 {
@@ -194,26 +237,21 @@ public:
 private:
   void MakeDomains(const std::vector<subd::Index>& faces);
   bool RefineAll();
-  void Refine(Domain& d);
-  int WantedSplit(const Domain& d, const Cell& c) const;
-  void Evaluate(Domain& d, const std::vector<subd::FaceSample>& at, std::vector<SurfacePoint>& out);
-  void EvaluateMissing(Domain& d, const std::vector<P2>& points);
+  void Refine(const FaceGroup& group);
+  int Judge(const Domain& d, Cell& c, const SurfacePoint* centroids) const;
+  void Evaluate(subd::Index face, Batch& batch);
+  /// Asks `batch` for the surface at grid point p of the domain, unless known.
+  void Request(Batch& batch, size_t domain, P2 p);
+  /// The surface at every cage vertex of `faces`, once each (VertexPoints).
+  bool EvaluateCageVertices(const std::vector<subd::Index>& faces);
   void RecordPresence();
   Triangulation Triangulate(size_t domain, const Cell& c) const;
   void AddHanging(size_t domain, P2 a, P2 b, std::vector<P2>& out) const;
-  bool SplitOffTolerance(Domain& d);
-  void Emit(vtkSubDLimitSamples& samples) const;
+  bool SplitOffTolerance(const FaceGroup& group);
+  long long Emit(vtkSubDLimitSamples& samples) const;
 
   Key KeyOf(size_t domain, P2 p) const;
   Key EdgePoint(subd::Index f, subd::Index k, Coord t) const;
-  subd::FaceSample SampleAt(const Domain& d, P2 p) const
-  {
-    subd::FaceSample s;
-    s.U = static_cast<double>(p.X) / N;
-    s.V = static_cast<double>(p.Y) / N;
-    s.SubFace = d.Sub;
-    return s;
-  }
   bool Fail(const std::string& message);
 
   const vtkSubDCage& Cage;
@@ -222,6 +260,8 @@ private:
   const bool Quads;
   const vtkSubDAdaptiveSettings& Settings;
   std::vector<Domain> Domains;
+  std::vector<FaceGroup> Groups;
+  std::vector<SurfacePoint> VertexPoints; ///< per cage vertex: shared by all its faces' domains
   std::unordered_set<Key, KeyHash> Present; ///< every corner of every leaf
   std::atomic<long long> NumCells{ 0 };
   std::atomic<bool> Failed{ false };
@@ -308,10 +348,11 @@ void AdaptiveTessellator::MakeDomains(const std::vector<subd::Index>& faces)
     const int level = this->Settings.FaceLevels.empty() ? 0 : this->Settings.FaceLevels[f];
     const int maxDepth = std::max(this->Settings.MaximumLevel - offset, 0);
     Domain d{ f, 0, this->Quads ? (corners ? DomainKind::CornerQuad : DomainKind::Quad) : DomainKind::Triangle,
-      maxDepth, std::min(std::max(level - offset, 0), maxDepth), {}, {}, {}, 0 };
+      maxDepth, std::min(std::max(level - offset, 0), maxDepth), {}, {}, {} };
     const Cell root = this->Quads ? Cell{ { P2{ 0, 0 }, P2{ N, 0 }, P2{ N, N }, P2{ 0, N } }, 4, { 0, 0 } }
                                   : Cell{ { P2{ 0, 0 }, P2{ N, 0 }, P2{ 0, N }, P2{} }, 3, { 0, 0 } };
     d.Active.push_back(root);
+    this->Groups.push_back({ this->Domains.size(), this->Domains.size() + (corners ? n : 1) });
     for (subd::Index k = 0; k < (corners ? n : 1); ++k)
     {
       d.Sub = k;
@@ -321,63 +362,111 @@ void AdaptiveTessellator::MakeDomains(const std::vector<subd::Index>& faces)
   this->NumCells += static_cast<long long>(this->Domains.size());
 }
 
-void AdaptiveTessellator::Evaluate(Domain& d, const std::vector<subd::FaceSample>& at, std::vector<SurfacePoint>& out)
+void AdaptiveTessellator::Evaluate(subd::Index face, Batch& batch)
 {
   std::vector<subd::LimitStencil> stencils;
   std::string error;
-  out.assign(at.size(), SurfacePoint());
-  if (at.empty())
+  batch.Values.assign(batch.At.size(), SurfacePoint());
+  if (batch.At.empty())
   {
     return;
   }
-  if (!this->Evaluator.EvaluateFace(d.Face, at, stencils, error))
+  if (!this->Evaluator.EvaluateFace(face, batch.At, stencils, error, 3)) // positions and tangents
   {
-    this->Fail("cell " + std::to_string(this->Cage.FaceCell[d.Face]) + ": " + error);
+    this->Fail("cell " + std::to_string(this->Cage.FaceCell[face]) + ": " + error);
     return;
   }
-  for (size_t i = 0; i < at.size(); ++i)
+  for (size_t i = 0; i < batch.At.size(); ++i)
   {
-    SurfacePoint& s = out[i];
+    SurfacePoint& s = batch.Values[i];
     double du[3], dv[3];
     stencils[i].Apply(stencils[i].Weights, subd::PatchValue, this->Cage.Points.data(), 3, s.P.data());
     stencils[i].Apply(stencils[i].Weights, subd::PatchDu, this->Cage.Points.data(), 3, du);
     stencils[i].Apply(stencils[i].Weights, subd::PatchDv, this->Cage.Points.data(), 3, dv);
     s.Normal = { { du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2], du[0] * dv[1] - du[1] * dv[0] } };
     const double length = std::sqrt(s.Normal[0] * s.Normal[0] + s.Normal[1] * s.Normal[1] + s.Normal[2] * s.Normal[2]);
-    const double scale = std::sqrt((du[0] * du[0] + du[1] * du[1] + du[2] * du[2]) * (dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]));
+    const double scale =
+      std::sqrt((du[0] * du[0] + du[1] * du[1] + du[2] * du[2]) * (dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]));
     s.HasNormal = length > 1e-12 * scale && length > 0.0;
     for (double& x : s.Normal)
     {
       x = s.HasNormal ? x / length : 0.0;
     }
-  }
-}
-
-void AdaptiveTessellator::EvaluateMissing(Domain& d, const std::vector<P2>& points)
-{
-  std::vector<P2> missing;
-  std::vector<subd::FaceSample> at;
-  for (const P2& p : points)
-  {
-    if (d.Known.count(Pack(p)) == 0)
+    if (batch.Grid[i].first)
     {
-      missing.push_back(p);
-      at.push_back(this->SampleAt(d, p));
-      d.Known[Pack(p)]; // reserved: a point listed twice is evaluated once
+      batch.Grid[i].first->Known[batch.Grid[i].second] = s;
     }
   }
-  std::vector<SurfacePoint> positions;
-  this->Evaluate(d, at, positions);
-  for (size_t i = 0; i < missing.size(); ++i)
+  for (const auto& copy : batch.Copies)
   {
-    d.Known[Pack(missing[i])] = positions[i];
+    copy.second.first->Known[copy.second.second] = batch.Values[copy.first];
   }
 }
 
-// Selective: both ways until the face's level. Adaptive: a quad across u when a side along u
-// strays from the surface, across v likewise, both ways when only its centre does (a twist);
-// a triangle into four when any side or its centre strays.
-int AdaptiveTessellator::WantedSplit(const Domain& d, const Cell& c) const
+void AdaptiveTessellator::Request(Batch& batch, size_t domain, P2 p)
+{
+  Domain& d = this->Domains[domain];
+  auto reserved = d.Known.emplace(Pack(p), SurfacePoint());
+  if (!reserved.second)
+  {
+    return;
+  }
+  const Key key = this->KeyOf(domain, p);
+  if (key[0] == VertexKey)
+  {
+    reserved.first->second = this->VertexPoints[key[1]];
+    return;
+  }
+  if (key[0] != InsideKey)
+  {
+    auto shared = batch.Shared.emplace(key, batch.At.size());
+    if (!shared.second)
+    {
+      batch.Copies.emplace_back(shared.first->second, Batch::Destination(&d, Pack(p)));
+      return;
+    }
+  }
+  batch.At.push_back(Batch::GridSample(d, p));
+  batch.Grid.emplace_back(&d, Pack(p));
+}
+
+bool AdaptiveTessellator::EvaluateCageVertices(const std::vector<subd::Index>& faces)
+{
+  // Each vertex from the first of the faces that has it, at that face's corner.
+  std::vector<std::pair<subd::Index, subd::Index>> from(static_cast<size_t>(this->Topo.GetNumVertices()),
+    { subd::InvalidIndex, 0 });
+  for (subd::Index f : faces)
+  {
+    const subd::IndexSpan fv = this->Topo.GetFaceVertices(f);
+    for (subd::Index k = 0; k < static_cast<subd::Index>(fv.size()); ++k)
+    {
+      from[fv[k]] = from[fv[k]].first == subd::InvalidIndex ? std::make_pair(f, k) : from[fv[k]];
+    }
+  }
+  this->VertexPoints.assign(from.size(), SurfacePoint());
+  vtkSMPTools::For(0, static_cast<vtkIdType>(from.size()), [&](vtkIdType begin, vtkIdType end) {
+    for (vtkIdType v = begin; v < end && !this->Failed; ++v)
+    {
+      if (from[v].first == subd::InvalidIndex)
+      {
+        continue;
+      }
+      Batch batch;
+      batch.AddLoose(subd::LimitEvaluator::CornerSample(this->Topo.GetFaceSize(from[v].first), from[v].second,
+        this->Quads));
+      this->Evaluate(from[v].first, batch);
+      this->VertexPoints[v] = batch.Values[0];
+    }
+  });
+  return !this->Failed;
+}
+
+// How a cell splits. Selective: both ways until the face's level. Adaptive: a quad across u
+// when a side along u strays from the surface, across v likewise, both ways when only its
+// diagonal or its triangles' centroids do (a twist); a triangle into four when any side or its
+// centroid strays. A leaf keeps the diagonal nearer the surface and whether it strays.
+// `centroids`: the surface at the centroids of the cell's triangles (a quad's: QuadTriangles).
+int AdaptiveTessellator::Judge(const Domain& d, Cell& c, const SurfacePoint* centroids) const
 {
   const int allowed = (c.Depth[0] < d.MaxDepth ? SplitU : 0) | (c.Depth[1] < d.MaxDepth ? SplitV : 0);
   if (!this->Settings.FaceLevels.empty())
@@ -389,72 +478,113 @@ int AdaptiveTessellator::WantedSplit(const Domain& d, const Cell& c) const
     const P2 a = c.C[i], b = c.C[(i + 1) % c.NumCorners];
     return Distance(at(Mid(a, b)), Mean(at(a).P, at(b).P));
   };
+  auto centroidError = [&](const int (&t)[3], const SurfacePoint& centroid) {
+    return Distance(centroid, Centroid(at(c.C[t[0]]).P, at(c.C[t[1]]).P, at(c.C[t[2]]).P));
+  };
   const double tolerance = this->Settings.Tolerance;
+  int wanted = NoSplit;
   if (c.NumCorners == 3)
   {
-    return std::max({ sideError(0), sideError(1), sideError(2) }) > tolerance ? allowed : NoSplit;
+    const int all[3] = { 0, 1, 2 };
+    const double error = std::max({ sideError(0), sideError(1), sideError(2), centroidError(all, centroids[0]) });
+    wanted = error > tolerance ? SplitBoth : NoSplit;
   }
-  const SurfacePoint& centre = at(Mid(c.C[0], c.C[2]));
-  const double centreError =
-    std::min(Distance(centre, Mean(at(c.C[0]).P, at(c.C[2]).P)), Distance(centre, Mean(at(c.C[1]).P, at(c.C[3]).P)));
-  int wanted = (std::max(sideError(0), sideError(2)) > tolerance ? SplitU : 0) |
-    (std::max(sideError(1), sideError(3)) > tolerance ? SplitV : 0);
-  if (wanted == NoSplit && centreError > tolerance)
+  else
   {
-    wanted = SplitBoth;
+    const SurfacePoint& centre = at(Mid(c.C[0], c.C[2]));
+    double diagonal[2];
+    for (int k = 0; k < 2; ++k)
+    {
+      const int a = QuadTriangles[k][0][0], b = QuadTriangles[k][0][2];
+      diagonal[k] = std::max({ Distance(centre, Mean(at(c.C[a]).P, at(c.C[b]).P)),
+        centroidError(QuadTriangles[k][0], centroids[2 * k]), centroidError(QuadTriangles[k][1], centroids[2 * k + 1]) });
+    }
+    c.SecondDiagonal = diagonal[1] < diagonal[0];
+    wanted = (std::max(sideError(0), sideError(2)) > tolerance ? SplitU : 0) |
+      (std::max(sideError(1), sideError(3)) > tolerance ? SplitV : 0);
+    if (wanted == NoSplit && diagonal[c.SecondDiagonal ? 1 : 0] > tolerance)
+    {
+      wanted = SplitBoth;
+    }
   }
+  c.Off = wanted != NoSplit;
+  c.CheckedVertices = static_cast<size_t>(c.NumCorners);
   return wanted & allowed;
 }
 
-// Splits the domain's active cells, level by level, until none wants to split.
-void AdaptiveTessellator::Refine(Domain& d)
+// Splits the active cells of a face's domains, level by level, until none wants to split:
+// per level one evaluation of their corners, side midpoints, centres and triangles' centroids.
+void AdaptiveTessellator::Refine(const FaceGroup& group)
 {
-  std::vector<P2> points;
-  for (const Cell& c : d.Active)
-  {
-    points.insert(points.end(), c.C.begin(), c.C.begin() + c.NumCorners);
-  }
-  this->EvaluateMissing(d, points);
+  const bool adaptive = this->Settings.FaceLevels.empty();
   std::vector<Cell> next;
-  while (!d.Active.empty() && !this->Failed)
+  for (bool active = true; active && !this->Failed;)
   {
-    points.clear();
-    for (const Cell& c : d.Active)
+    Batch batch;
+    std::vector<size_t> centroids; // per active cell, its first centroid sample
+    for (size_t i = group.First; i < group.Last; ++i)
     {
-      const std::vector<P2> split = SplitPoints(c);
-      points.insert(points.end(), split.begin(), split.end());
-    }
-    this->EvaluateMissing(d, points);
-    next.clear();
-    for (const Cell& c : d.Active)
-    {
-      if (const int split = this->WantedSplit(d, c))
+      Domain& d = this->Domains[i];
+      for (const Cell& c : d.Active)
       {
-        const std::vector<Cell> children = Children(c, split);
-        next.insert(next.end(), children.begin(), children.end());
-      }
-      else
-      {
-        d.Leaves.push_back(c);
+        const int n = c.NumCorners;
+        for (int k = 0; k < n; ++k)
+        {
+          this->Request(batch, i, c.C[k]);
+          this->Request(batch, i, Mid(c.C[k], c.C[(k + 1) % n]));
+        }
+        if (n == 4)
+        {
+          this->Request(batch, i, Mid(c.C[0], c.C[2]));
+        }
+        centroids.push_back(batch.At.size());
+        for (int t = 0; adaptive && t < (n == 4 ? 4 : 1); ++t)
+        {
+          const int* v = n == 4 ? QuadTriangles[t / 2][t % 2] : nullptr;
+          batch.AddLoose(n == 4 ? CentroidSample(d, c.C[v[0]], c.C[v[1]], c.C[v[2]])
+                                : CentroidSample(d, c.C[0], c.C[1], c.C[2]));
+        }
       }
     }
-    if ((this->NumCells += static_cast<long long>(next.size())) > this->Settings.MaximumCells)
+    this->Evaluate(this->Domains[group.First].Face, batch);
+    active = false;
+    size_t cell = 0;
+    for (size_t i = group.First; i < group.Last && !this->Failed; ++i)
     {
-      this->Fail("the tessellation would need more than " + std::to_string(static_cast<long long>(
-        this->Settings.MaximumCells)) + " cells, more than MaximumMemory allows: use a larger tolerance, "
-        "a lower MaximumLevel, or a larger MaximumMemory");
+      Domain& d = this->Domains[i];
+      next.clear();
+      for (Cell& c : d.Active)
+      {
+        const SurfacePoint* judged = batch.Values.data() + centroids[cell++];
+        if (const int split = this->Judge(d, c, judged))
+        {
+          const std::vector<Cell> children = Children(c, split);
+          next.insert(next.end(), children.begin(), children.end());
+        }
+        else
+        {
+          d.Leaves.push_back(c);
+        }
+      }
+      if ((this->NumCells += static_cast<long long>(next.size())) > this->Settings.MaximumCells)
+      {
+        this->Fail("the tessellation would need more than " +
+          std::to_string(static_cast<long long>(this->Settings.MaximumCells)) +
+          " cells, more than MaximumMemory allows: use a larger tolerance, a lower MaximumLevel, or a larger "
+          "MaximumMemory");
+      }
+      d.Active.swap(next);
+      active = active || !d.Active.empty();
     }
-    d.Active.swap(next);
   }
-  d.Active.clear();
 }
 
 bool AdaptiveTessellator::RefineAll()
 {
-  vtkSMPTools::For(0, static_cast<vtkIdType>(this->Domains.size()), [this](vtkIdType begin, vtkIdType end) {
+  vtkSMPTools::For(0, static_cast<vtkIdType>(this->Groups.size()), [this](vtkIdType begin, vtkIdType end) {
     for (vtkIdType i = begin; i < end && !this->Failed; ++i)
     {
-      this->Refine(this->Domains[i]);
+      this->Refine(this->Groups[i]);
     }
   });
   return !this->Failed;
@@ -551,8 +681,8 @@ void ClipEars(const std::vector<P2>& polygon, std::vector<std::array<int, 3>>& t
   triangles.push_back({ left[0], left[1], left[2] });
 }
 
-// A cell with no point on its sides is one triangle, or a quad's two along the diagonal nearer
-// the surface; otherwise its polygon with the points of its finer neighbours, cut into
+// A cell with no point on its sides is one triangle, or a quad's two along the diagonal its
+// judgement chose; otherwise its polygon with the points of its finer neighbours, cut into
 // triangles corner by corner.
 Triangulation AdaptiveTessellator::Triangulate(size_t domain, const Cell& c) const
 {
@@ -564,13 +694,14 @@ Triangulation AdaptiveTessellator::Triangulate(size_t domain, const Cell& c) con
   }
   if (t.Vertices.size() == 4 && c.NumCorners == 4)
   {
-    const Domain& d = this->Domains[domain];
-    auto at = [&d](P2 p) -> const SurfacePoint& { return d.Known.at(Pack(p)); };
-    const SurfacePoint& centre = at(Mid(c.C[0], c.C[2]));
-    const bool first =
-      Distance(centre, Mean(at(c.C[0]).P, at(c.C[2]).P)) <= Distance(centre, Mean(at(c.C[1]).P, at(c.C[3]).P));
-    t.Triangles.push_back(first ? std::array<int, 3>{ 0, 1, 2 } : std::array<int, 3>{ 1, 2, 3 });
-    t.Triangles.push_back(first ? std::array<int, 3>{ 0, 2, 3 } : std::array<int, 3>{ 1, 3, 0 });
+    for (const auto& triangle : QuadTriangles[c.SecondDiagonal ? 1 : 0])
+    {
+      t.Triangles.push_back({ triangle[0], triangle[1], triangle[2] });
+    }
+  }
+  else if (t.Vertices.size() == 3)
+  {
+    t.Triangles.push_back({ 0, 1, 2 });
   }
   else
   {
@@ -579,88 +710,106 @@ Triangulation AdaptiveTessellator::Triangulate(size_t domain, const Cell& c) con
   return t;
 }
 
-// Checks every triangle of the domain's leaves at its edge midpoints and centroid; a leaf with
-// a triangle farther from the limit than the tolerance becomes active again, split. True when
-// some leaf was split. The domain's samples are evaluated in one call: away from regular
-// patches, each call refines the face's neighbourhood anew.
-bool AdaptiveTessellator::SplitOffTolerance(Domain& d)
+// Checks the triangles of the face's leaves that have points of finer neighbours on their
+// sides (the others were checked when judged) at their edge midpoints and centroids; a leaf
+// with a triangle farther from the limit than the tolerance becomes active again, split. True
+// when some leaf was split.
+bool AdaptiveTessellator::SplitOffTolerance(const FaceGroup& group)
 {
-  const size_t domain = static_cast<size_t>(&d - this->Domains.data());
-  std::vector<Triangulation> triangulations;
-  std::vector<size_t> first; // per leaf, its first sample: its vertices', then per triangle
-  std::vector<subd::FaceSample> at; // its three edge midpoints and its centroid
-  for (const Cell& c : d.Leaves)
+  struct Check
   {
-    triangulations.push_back(this->Triangulate(domain, c));
-    const Triangulation& t = triangulations.back();
-    first.push_back(at.size());
-    const size_t vertices = at.size();
-    for (const P2& v : t.Vertices)
+    size_t Domain, Leaf;
+    Triangulation Triangles;
+    size_t First; ///< its loose samples: per triangle three edge midpoints and the centroid
+  };
+  std::vector<Check> checks;
+  Batch batch;
+  for (size_t i = group.First; i < group.Last; ++i)
+  {
+    Domain& d = this->Domains[i];
+    for (size_t l = 0; l < d.Leaves.size(); ++l)
     {
-      at.push_back(this->SampleAt(d, v));
-    }
-    for (const std::array<int, 3>& tri : t.Triangles)
-    {
-      subd::FaceSample g = at[vertices + tri[0]];
-      g.U = g.V = 0.0;
-      for (int i = 0; i < 3; ++i)
+      Triangulation t = this->Triangulate(i, d.Leaves[l]);
+      if (t.Vertices.size() == d.Leaves[l].CheckedVertices)
       {
-        const subd::FaceSample a = at[vertices + tri[i]], b = at[vertices + tri[(i + 1) % 3]];
-        subd::FaceSample m = a;
-        m.U = 0.5 * (a.U + b.U);
-        m.V = 0.5 * (a.V + b.V);
-        at.push_back(m);
-        g.U += a.U / 3.0;
-        g.V += a.V / 3.0;
+        continue; // checked with these triangles (points on its sides are only ever added)
       }
-      at.push_back(g);
+      for (const P2& v : t.Vertices)
+      {
+        this->Request(batch, i, v);
+      }
+      const size_t first = batch.At.size();
+      for (const std::array<int, 3>& tri : t.Triangles)
+      {
+        const P2 a = t.Vertices[tri[0]], b = t.Vertices[tri[1]], c = t.Vertices[tri[2]];
+        for (const auto& edge : { std::make_pair(a, b), std::make_pair(b, c), std::make_pair(c, a) })
+        {
+          subd::FaceSample m = Batch::GridSample(d, edge.first);
+          const subd::FaceSample other = Batch::GridSample(d, edge.second);
+          m.U = 0.5 * (m.U + other.U);
+          m.V = 0.5 * (m.V + other.V);
+          batch.AddLoose(m);
+        }
+        batch.AddLoose(CentroidSample(d, a, b, c));
+      }
+      checks.push_back({ i, l, std::move(t), first });
     }
   }
-  std::vector<SurfacePoint> values;
-  this->Evaluate(d, at, values);
-  std::vector<Cell> kept;
-  d.OffTolerance = 0;
-  for (size_t l = 0; l < d.Leaves.size() && !this->Failed; ++l)
+  this->Evaluate(this->Domains[group.First].Face, batch);
+  std::vector<std::vector<bool>> split(group.Last - group.First);
+  for (size_t i = group.First; i < group.Last; ++i)
   {
-    const Triangulation& t = triangulations[l];
-    const SurfacePoint* corner = &values[first[l]];
-    const SurfacePoint* check = corner + t.Vertices.size();
+    split[i - group.First].assign(this->Domains[i].Leaves.size(), false);
+  }
+  for (const Check& check : checks)
+  {
+    const Domain& d = this->Domains[check.Domain];
+    auto at = [&d](P2 p) -> const Vec3& { return d.Known.at(Pack(p)).P; };
+    const SurfacePoint* sample = batch.Values.data() + check.First;
     bool off = false;
-    for (const std::array<int, 3>& tri : t.Triangles)
+    for (const std::array<int, 3>& tri : check.Triangles.Triangles)
     {
-      Vec3 centroid{ { 0, 0, 0 } };
-      for (int i = 0; i < 3; ++i)
-      {
-        off = off || Distance(check[i], Mean(corner[tri[i]].P, corner[tri[(i + 1) % 3]].P)) > this->Settings.Tolerance;
-        for (int j = 0; j < 3; ++j)
-        {
-          centroid[j] += corner[tri[i]].P[j] / 3.0;
-        }
-      }
-      off = off || Distance(check[3], centroid) > this->Settings.Tolerance;
-      check += 4;
+      const Vec3 &a = at(check.Triangles.Vertices[tri[0]]), &b = at(check.Triangles.Vertices[tri[1]]),
+                 &c = at(check.Triangles.Vertices[tri[2]]);
+      const double tolerance = this->Settings.Tolerance;
+      off = off || Distance(sample[0], Mean(a, b)) > tolerance || Distance(sample[1], Mean(b, c)) > tolerance ||
+        Distance(sample[2], Mean(c, a)) > tolerance || Distance(sample[3], Centroid(a, b, c)) > tolerance;
+      sample += 4;
     }
-    const Cell& c = d.Leaves[l];
-    const int allowed = (c.Depth[0] < d.MaxDepth ? SplitU : 0) | (c.Depth[1] < d.MaxDepth ? SplitV : 0);
-    if (off && allowed != NoSplit)
+    Cell& c = this->Domains[check.Domain].Leaves[check.Leaf];
+    split[check.Domain - group.First][check.Leaf] = off && (c.Depth[0] < d.MaxDepth || c.Depth[1] < d.MaxDepth);
+    c.Off = off;
+    c.CheckedVertices = check.Triangles.Vertices.size();
+  }
+  bool any = false;
+  for (size_t i = group.First; i < group.Last; ++i)
+  {
+    Domain& d = this->Domains[i];
+    std::vector<Cell> kept;
+    for (size_t l = 0; l < d.Leaves.size(); ++l)
     {
-      const std::vector<Cell> children = Children(c, allowed);
+      const Cell& c = d.Leaves[l];
+      if (!split[i - group.First][l])
+      {
+        kept.push_back(c);
+        continue;
+      }
+      const int allowed = (c.Depth[0] < d.MaxDepth ? SplitU : 0) | (c.Depth[1] < d.MaxDepth ? SplitV : 0);
+      const std::vector<Cell> children = Children(c, c.NumCorners == 3 ? SplitBoth : allowed);
       d.Active.insert(d.Active.end(), children.begin(), children.end());
     }
-    else
-    {
-      d.OffTolerance += off ? static_cast<long long>(t.Triangles.size()) : 0;
-      kept.push_back(c);
-    }
+    d.Leaves.swap(kept);
+    this->NumCells += static_cast<long long>(d.Active.size());
+    any = any || !d.Active.empty();
   }
-  d.Leaves.swap(kept);
-  this->NumCells += static_cast<long long>(d.Active.size());
-  return !d.Active.empty();
+  return any;
 }
 
 // The output: one point per key (owned by the first domain that meets it), the triangles.
-void AdaptiveTessellator::Emit(vtkSubDLimitSamples& samples) const
+// Returns how many are farther than the tolerance from the surface.
+long long AdaptiveTessellator::Emit(vtkSubDLimitSamples& samples) const
 {
+  long long off = 0;
   std::unordered_map<Key, vtkIdType, KeyHash> ids;
   for (size_t i = 0; i < this->Domains.size(); ++i)
   {
@@ -679,11 +828,12 @@ void AdaptiveTessellator::Emit(vtkSubDLimitSamples& samples) const
         auto found = ids.emplace(this->KeyOf(i, v), samples.Count);
         if (found.second)
         {
-          grid.Owned.push_back(this->SampleAt(d, v));
+          grid.Owned.push_back(Batch::GridSample(d, v));
           grid.OwnedIds.push_back(samples.Count++);
         }
         vertexIds.push_back(found.first->second);
       }
+      off += c.Off ? static_cast<long long>(t.Triangles.size()) : 0;
       for (const std::array<int, 3>& tri : t.Triangles)
       {
         const vtkIdType cell[3] = { vertexIds[tri[0]], vertexIds[tri[1]], vertexIds[tri[2]] };
@@ -692,24 +842,25 @@ void AdaptiveTessellator::Emit(vtkSubDLimitSamples& samples) const
       }
     }
   }
+  return off;
 }
 
 bool AdaptiveTessellator::Run(const std::vector<subd::Index>& faces, vtkSubDLimitSamples& samples,
   vtkSubDAdaptiveResult& result, std::string& error)
 {
   this->MakeDomains(faces);
-  bool splitAgain = this->RefineAll();
+  bool splitAgain = this->EvaluateCageVertices(faces) && this->RefineAll();
   while (splitAgain && !this->Failed)
   {
     this->RecordPresence();
     splitAgain = false;
-    if (this->Settings.FaceLevels.empty() && !getenv("NOVERIFY"))
+    if (this->Settings.FaceLevels.empty())
     {
       std::atomic<bool> split{ false };
-      vtkSMPTools::For(0, static_cast<vtkIdType>(this->Domains.size()), [&](vtkIdType begin, vtkIdType end) {
+      vtkSMPTools::For(0, static_cast<vtkIdType>(this->Groups.size()), [&](vtkIdType begin, vtkIdType end) {
         for (vtkIdType i = begin; i < end && !this->Failed; ++i)
         {
-          if (this->SplitOffTolerance(this->Domains[i]))
+          if (this->SplitOffTolerance(this->Groups[i]))
           {
             split = true;
           }
@@ -723,12 +874,7 @@ bool AdaptiveTessellator::Run(const std::vector<subd::Index>& faces, vtkSubDLimi
     error = this->Error;
     return false;
   }
-  result.NumTrianglesOffTolerance = 0;
-  for (const Domain& d : this->Domains)
-  {
-    result.NumTrianglesOffTolerance += d.OffTolerance;
-  }
-  this->Emit(samples);
+  result.NumTrianglesOffTolerance = this->Emit(samples);
   return true;
 }
 }

@@ -172,7 +172,8 @@ void AddCarriedArrays(const std::vector<CarriedArray>& carried, vtkIdType numSam
 // Evaluates every sample, face by face in parallel: its position into `xyz`, its derivatives
 // into `geometry`, the carried arrays. Returns the first face's error, if any.
 std::string EvaluateSamples(const subd::LimitEvaluator& evaluator, const vtkSubDCage& cage,
-  const std::vector<vtkSubDFaceSamples>& grids, double* xyz, vtkSubDLimitGeometry& geometry, std::vector<CarriedArray>& carried)
+  const std::vector<vtkSubDFaceSamples>& grids, int rows, double* xyz, vtkSubDLimitGeometry& geometry,
+  std::vector<CarriedArray>& carried)
 {
   std::mutex errorMutex;
   std::string firstError;
@@ -182,7 +183,7 @@ std::string EvaluateSamples(const subd::LimitEvaluator& evaluator, const vtkSubD
     {
       const vtkSubDFaceSamples& grid = grids[g];
       std::string faceError;
-      if (!evaluator.EvaluateFace(grid.Face, grid.Owned, stencils, faceError))
+      if (!evaluator.EvaluateFace(grid.Face, grid.Owned, stencils, faceError, rows))
       {
         std::lock_guard<std::mutex> lock(errorMutex);
         firstError = firstError.empty() ? "cell " + std::to_string(cage.FaceCell[grid.Face]) + ": " + faceError
@@ -430,7 +431,10 @@ int vtkSubDLimitFilter::Execute(
   double* xyz = static_cast<vtkDoubleArray*>(points->GetData())->GetPointer(0);
   vtkSubDLimitGeometry geometry(samples.Count, this->ComputeNormals, this->ComputeCurvature, this->ComputeDerivatives);
   std::vector<CarriedArray> carried = CarriedArrays(input, samples.Count);
-  error = EvaluateSamples(evaluator, cage, samples.Grids, xyz, geometry, carried);
+  // The stencil rows the arrays asked for need: curvature all, normals and derivatives the first.
+  const int rows = this->ComputeCurvature ? subd::NumPatchDerivatives
+    : (this->ComputeNormals || this->ComputeDerivatives ? 3 : 1);
+  error = EvaluateSamples(evaluator, cage, samples.Grids, rows, xyz, geometry, carried);
   if (!error.empty())
   {
     vtkErrorMacro(<< error << ".");

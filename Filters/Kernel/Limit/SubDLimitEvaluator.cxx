@@ -148,8 +148,9 @@ FaceSample LimitEvaluator::CornerSample(Index faceSize, Index corner, bool quads
 }
 
 bool LimitEvaluator::EvaluateFace(Index face, const std::vector<FaceSample>& samples, std::vector<LimitStencil>& out,
-  std::string& error) const
+  std::string& error, int rows) const
 {
+  rows = std::max(1, std::min(rows, static_cast<int>(NumPatchDerivatives)));
   out.assign(samples.size(), LimitStencil());
   if (!this->IsValid(error))
   {
@@ -239,7 +240,7 @@ bool LimitEvaluator::EvaluateFace(Index face, const std::vector<FaceSample>& sam
     std::vector<Pending> pending;
     for (size_t s = 0; s < samples.size(); ++s)
     {
-      pending.push_back({ { samples[s].U, samples[s].V }, &out[s], false, NumPatchDerivatives });
+      pending.push_back({ { samples[s].U, samples[s].V }, &out[s], false, rows });
     }
     return this->Descend(local, 0, pending, ParamFrame(), 0, error);
   }
@@ -252,7 +253,7 @@ bool LimitEvaluator::EvaluateFace(Index face, const std::vector<FaceSample>& sam
     {
       if (samples[s].SubFace == k)
       {
-        pending.push_back({ { samples[s].U, samples[s].V }, &out[s], false, NumPatchDerivatives });
+        pending.push_back({ { samples[s].U, samples[s].V }, &out[s], false, rows });
       }
     }
     if (!pending.empty())
@@ -374,7 +375,22 @@ bool LimitEvaluator::Descend(const LocalLevel& local, Index face, std::vector<Pe
   }
   const LocalLevel refined = RefineLocalLevel(this->TheScheme, local);
   std::vector<bool> placed(rest.size(), false);
-  for (Index child = 0; child < 4; ++child)
+  // A sample on the border of several children goes to the first: children at an irregular
+  // corner come last, so that it lands in a regular patch sooner (the surface is the same on
+  // both sides of a border inside a face).
+  std::vector<Index> children;
+  for (int irregularLast = 0; irregularLast < 2; ++irregularLast)
+  {
+    for (Index child = 0; child < 4; ++child)
+    {
+      const bool atIrregularCorner = child < size && !IsRegularCorner(local.Mesh, face, child, this->Kind);
+      if (atIrregularCorner == (irregularLast == 1))
+      {
+        children.push_back(child);
+      }
+    }
+  }
+  for (Index child : children)
   {
     const ParamFrame childFrame = ChildFrame(size, child);
     std::vector<Pending> inside;

@@ -71,9 +71,13 @@ public:
   bool IsValid(std::string& error) const;
 
   /// Evaluates the limit at `samples` of `face`. Returns false (with the reason) for a
-  /// hole, a sample outside the face, or a face the scheme cannot evaluate.
+  /// hole, a sample outside the face, or a face the scheme cannot evaluate. `rows`: the
+  /// leading rows of each stencil wanted (PatchDerivative order: 1 the position, 3 with the
+  /// first derivatives, NumPatchDerivatives all, with CurvatureWeights); the others may be 0.
+  /// Fewer rows spare the curvature near an extraordinary vertex, read 2^-CurvatureDepth away
+  /// (ten local refinements).
   bool EvaluateFace(Index face, const std::vector<FaceSample>& samples, std::vector<LimitStencil>& out,
-    std::string& error) const;
+    std::string& error, int rows = NumPatchDerivatives) const;
 
   /// Sample at corner `corner` of `face` (for a non-quad Catmull-Clark face: its sub-face's corner).
   static FaceSample CornerSample(Index faceSize, Index corner, bool quads);
