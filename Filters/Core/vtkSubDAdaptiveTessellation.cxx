@@ -250,8 +250,9 @@ private:
   bool SplitOffTolerance(const FaceGroup& group);
   long long Emit(vtkSubDLimitSamples& samples) const;
 
-  Key KeyOf(size_t domain, P2 p) const;
-  Key EdgePoint(subd::Index f, subd::Index k, Coord t) const;
+  /// The point's key; `sides`: one per side of a seam (the output's), else one per place.
+  Key KeyOf(size_t domain, P2 p, bool sides = false) const;
+  Key EdgePoint(subd::Index f, subd::Index k, Coord t, bool sides) const;
   bool Fail(const std::string& message);
 
   const vtkSubDCage& Cage;
@@ -279,21 +280,22 @@ bool AdaptiveTessellator::Fail(const std::string& message)
   return false;
 }
 
-Key AdaptiveTessellator::EdgePoint(subd::Index f, subd::Index k, Coord t) const
+Key AdaptiveTessellator::EdgePoint(subd::Index f, subd::Index k, Coord t, bool sides) const
 {
   const subd::IndexSpan fv = this->Topo.GetFaceVertices(f);
   const subd::Index n = static_cast<subd::Index>(fv.size());
   k = (k + n) % n;
+  const subd::Index next = (k + 1) % n;
   if (t == 0)
-    return { VertexKey, fv[k], 0, 0 };
+    return { VertexKey, fv[k], sides ? this->Cage.SeamSideOfCorner(f, k) : 0, 0 };
   if (t == 2 * N)
-    return { VertexKey, fv[(k + 1) % n], 0, 0 };
+    return { VertexKey, fv[next], sides ? this->Cage.SeamSideOfCorner(f, next) : 0, 0 };
   const subd::Index e = this->Topo.GetFaceEdges(f)[k];
   const bool forward = this->Topo.GetEdgeVertices(e)[0] == fv[k];
-  return { EdgeKey, e, forward ? t : 2 * N - t, 0 };
+  return { EdgeKey, e, forward ? t : 2 * N - t, sides ? this->Cage.SeamSideOfEdge(f, k) : 0 };
 }
 
-Key AdaptiveTessellator::KeyOf(size_t domain, P2 p) const
+Key AdaptiveTessellator::KeyOf(size_t domain, P2 p, bool sides) const
 {
   const Domain& d = this->Domains[domain];
   const Key inside{ InsideKey, static_cast<std::int64_t>(domain), p.X, p.Y };
@@ -301,21 +303,21 @@ Key AdaptiveTessellator::KeyOf(size_t domain, P2 p) const
   {
     case DomainKind::Quad:
       if (p.Y == 0)
-        return this->EdgePoint(d.Face, 0, 2 * p.X);
+        return this->EdgePoint(d.Face, 0, 2 * p.X, sides);
       if (p.X == N)
-        return this->EdgePoint(d.Face, 1, 2 * p.Y);
+        return this->EdgePoint(d.Face, 1, 2 * p.Y, sides);
       if (p.Y == N)
-        return this->EdgePoint(d.Face, 2, 2 * (N - p.X));
+        return this->EdgePoint(d.Face, 2, 2 * (N - p.X), sides);
       if (p.X == 0)
-        return this->EdgePoint(d.Face, 3, 2 * (N - p.Y));
+        return this->EdgePoint(d.Face, 3, 2 * (N - p.Y), sides);
       return inside;
     case DomainKind::Triangle:
       if (p.Y == 0)
-        return this->EdgePoint(d.Face, 0, 2 * p.X);
+        return this->EdgePoint(d.Face, 0, 2 * p.X, sides);
       if (p.X + p.Y == N)
-        return this->EdgePoint(d.Face, 1, 2 * p.Y);
+        return this->EdgePoint(d.Face, 1, 2 * p.Y, sides);
       if (p.X == 0)
-        return this->EdgePoint(d.Face, 2, 2 * (N - p.Y));
+        return this->EdgePoint(d.Face, 2, 2 * (N - p.Y), sides);
       return inside;
     case DomainKind::CornerQuad:
     default:
@@ -326,9 +328,9 @@ Key AdaptiveTessellator::KeyOf(size_t domain, P2 p) const
       if (p.X == N && p.Y == N)
         return { CentreKey, d.Face, 0, 0 };
       if (p.Y == 0)
-        return this->EdgePoint(d.Face, d.Sub, p.X);
+        return this->EdgePoint(d.Face, d.Sub, p.X, sides);
       if (p.X == 0)
-        return this->EdgePoint(d.Face, d.Sub - 1, 2 * N - p.Y);
+        return this->EdgePoint(d.Face, d.Sub - 1, 2 * N - p.Y, sides);
       if (p.X == N)
         return { SpokeKey, d.Face, d.Sub, p.Y };
       if (p.Y == N)
@@ -810,7 +812,7 @@ bool AdaptiveTessellator::SplitOffTolerance(const FaceGroup& group)
 long long AdaptiveTessellator::Emit(vtkSubDLimitSamples& samples) const
 {
   long long off = 0;
-  std::unordered_map<Key, vtkIdType, KeyHash> ids;
+  std::unordered_map<Key, vtkIdType, KeyHash> ids, places; // per point, per place (a seam's sides share one)
   for (size_t i = 0; i < this->Domains.size(); ++i)
   {
     const Domain& d = this->Domains[i];
@@ -825,9 +827,14 @@ long long AdaptiveTessellator::Emit(vtkSubDLimitSamples& samples) const
       std::vector<vtkIdType> vertexIds;
       for (const P2& v : t.Vertices)
       {
-        auto found = ids.emplace(this->KeyOf(i, v), samples.Count);
+        auto found = ids.emplace(this->KeyOf(i, v, true), samples.Count);
         if (found.second)
         {
+          auto first = places.emplace(this->KeyOf(i, v), samples.Count);
+          if (!first.second)
+          {
+            samples.SamePlace.emplace_back(samples.Count, first.first->second);
+          }
           grid.Owned.push_back(Batch::GridSample(d, v));
           grid.OwnedIds.push_back(samples.Count++);
         }
@@ -839,6 +846,7 @@ long long AdaptiveTessellator::Emit(vtkSubDLimitSamples& samples) const
         const vtkIdType cell[3] = { vertexIds[tri[0]], vertexIds[tri[1]], vertexIds[tri[2]] };
         samples.Cells->InsertNextCell(3, cell);
         samples.CellFace->InsertNextValue(this->Cage.FaceCell[d.Face]);
+        samples.CellLevels.push_back(std::max(c.Depth[0], c.Depth[1]) + (d.Kind == DomainKind::CornerQuad ? 1 : 0));
       }
     }
   }

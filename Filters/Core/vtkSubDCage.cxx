@@ -4,8 +4,13 @@
 #include "vtkSubDPieces.h"
 #include "vtkSubDSharpFeatures.h"
 
+#include "vtkPointData.h"
+
+#include <algorithm>
+
 bool vtkSubDReadCage(vtkPolyData* input, vtkSubDCageFaces kind, subd::RepeatedCorners repeated,
-  subd::BoundaryRule rule, subd::CreaseMethod creasing, vtkSubDCage& cage, std::string& error, std::string& warning)
+  subd::BoundaryRule rule, subd::CreaseMethod creasing, vtkSubDCage& cage, std::string& error, std::string& warning,
+  bool weld)
 {
   const vtkIdType numPoints = input && input->GetPoints() ? input->GetNumberOfPoints() : 0;
   const vtkSubDInputFaces faces = input ? vtkSubDGatherFaces(input) : vtkSubDInputFaces();
@@ -32,6 +37,27 @@ bool vtkSubDReadCage(vtkPolyData* input, vtkSubDCageFaces kind, subd::RepeatedCo
   if (split > 0)
   {
     warning += (warning.empty() ? "" : "; ") + vtkSubDSplitPolygonsWarning(split);
+  }
+  if (weld)
+  {
+    subd::Index dropped = 0;
+    cage.Seams = vtkSubDWeldCoincidentPoints(input, screened, false, dropped);
+    // Corner sharpness and a piece's ghost marks are no data to carry.
+    vtkPointData* pd = input->GetPointData();
+    std::vector<int>& arrays = cage.Seams.Arrays;
+    arrays.erase(std::remove_if(arrays.begin(), arrays.end(), [&](int a) {
+      return pd->GetArray(a) == input->GetPointGhostArray() ||
+        (pd->GetArray(a)->GetName() && std::string(pd->GetArray(a)->GetName()) == "CornerSharpness");
+    }), arrays.end());
+    if (arrays.empty())
+    {
+      cage.Seams.ValueOfCorner.clear();
+    }
+    if (dropped > 0)
+    {
+      warning += (warning.empty() ? "" : "; ") + std::to_string(dropped) +
+        " polygon(s) that welding left with a repeated point were dropped";
+    }
   }
   for (subd::Index f : screened.KeptFaces)
   {
@@ -84,4 +110,31 @@ bool vtkSubDReadCage(vtkPolyData* input, vtkSubDCageFaces kind, subd::RepeatedCo
     }
   }
   return true;
+}
+
+void vtkSubDMakeCageChannel(vtkSubDCage& cage, subd::FaceVaryingInterpolation mode)
+{
+  if (cage.HasChannel())
+  {
+    cage.Channel = subd::MakeFaceVaryingBase(cage.Level, cage.Seams.ValueOfCorner.data(), mode);
+  }
+}
+
+std::int64_t vtkSubDCage::SeamSideOfCorner(subd::Index f, subd::Index k) const
+{
+  return this->HasChannel() ? this->Channel.Values.Topology.GetFaceVertices(f)[k] + 1 : 0;
+}
+
+std::int64_t vtkSubDCage::SeamSideOfEdge(subd::Index f, subd::Index k) const
+{
+  if (!this->HasChannel())
+  {
+    return 0;
+  }
+  const subd::IndexSpan values = this->Channel.Values.Topology.GetFaceVertices(f);
+  const subd::Index n = static_cast<subd::Index>(values.size());
+  const subd::Index e = this->Level.Topology.GetFaceEdges(f)[k];
+  const bool forward = this->Level.Topology.GetEdgeVertices(e)[0] == this->Level.Topology.GetFaceVertices(f)[k];
+  const std::int64_t a = values[k], b = values[(k + 1) % n];
+  return forward ? (a << 32) + b + 1 : (b << 32) + a + 1;
 }

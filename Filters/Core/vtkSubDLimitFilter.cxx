@@ -13,6 +13,7 @@
 #include "vtkSubDPieces.h"
 #include "vtkSubDPointDataInterpolation.h"
 #include "vtkSubDSharpFeatures.h"
+#include "vtkSubDSurfaceFilter.h"
 #include "vtkSubDUniformTessellation.h"
 
 #include "vtkCellArray.h"
@@ -23,6 +24,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkPoints.h"
@@ -31,6 +33,7 @@
 #include "vtkStreamingDemandDrivenPipeline.h"
 #include "vtkUnsignedCharArray.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <map>
@@ -126,13 +129,15 @@ struct CarriedArray
   vtkDataArray* Input;
   int Components;
   bool Normals;
+  bool FaceVarying; ///< over the channel's vertices (cage.Seams.Arrays), not the cage's points
   std::vector<double> Cage, Samples;
 };
 
-std::vector<CarriedArray> CarriedArrays(vtkPolyData* input, vtkIdType numSamples)
+std::vector<CarriedArray> CarriedArrays(vtkPolyData* input, const vtkSubDCage& cage, vtkIdType numSamples)
 {
   std::vector<CarriedArray> carried;
   vtkPointData* inPD = input->GetPointData();
+  const std::vector<int>& faceVarying = cage.Seams.Arrays;
   for (int a = 0; a < inPD->GetNumberOfArrays(); ++a)
   {
     vtkDataArray* array = inPD->GetArray(a);
@@ -143,11 +148,14 @@ std::vector<CarriedArray> CarriedArrays(vtkPolyData* input, vtkIdType numSamples
       continue;
     }
     CarriedArray c{ array, array->GetNumberOfComponents(), inPD->IsArrayAnAttribute(a) == vtkDataSetAttributes::NORMALS,
-      {}, {} };
-    c.Cage.resize(static_cast<size_t>(array->GetNumberOfTuples()) * c.Components);
-    for (vtkIdType i = 0; i < array->GetNumberOfTuples(); ++i)
+      std::find(faceVarying.begin(), faceVarying.end(), a) != faceVarying.end(), {}, {} };
+    // A face-varying array's values are those of the input points the channel's vertices are.
+    const vtkIdType numValues =
+      c.FaceVarying ? static_cast<vtkIdType>(cage.Channel.UserValue.size()) : array->GetNumberOfTuples();
+    c.Cage.resize(static_cast<size_t>(numValues) * c.Components);
+    for (vtkIdType i = 0; i < numValues; ++i)
     {
-      array->GetTuple(i, c.Cage.data() + i * c.Components);
+      array->GetTuple(c.FaceVarying ? cage.Channel.UserValue[i] : i, c.Cage.data() + i * c.Components);
     }
     c.Samples.resize(static_cast<size_t>(numSamples) * c.Components);
     carried.push_back(std::move(c));
@@ -171,19 +179,20 @@ void AddCarriedArrays(const std::vector<CarriedArray>& carried, vtkIdType numSam
 
 // Evaluates every sample, face by face in parallel: its position into `xyz`, its derivatives
 // into `geometry`, the carried arrays. Returns the first face's error, if any.
-std::string EvaluateSamples(const subd::LimitEvaluator& evaluator, const vtkSubDCage& cage,
-  const std::vector<vtkSubDFaceSamples>& grids, int rows, double* xyz, vtkSubDLimitGeometry& geometry,
-  std::vector<CarriedArray>& carried)
+std::string EvaluateSamples(const subd::LimitEvaluator& evaluator, const subd::LimitEvaluator* channel,
+  const vtkSubDCage& cage, const std::vector<vtkSubDFaceSamples>& grids, int rows, double* xyz,
+  vtkSubDLimitGeometry& geometry, std::vector<CarriedArray>& carried)
 {
   std::mutex errorMutex;
   std::string firstError;
   vtkSMPTools::For(0, static_cast<vtkIdType>(grids.size()), [&](vtkIdType begin, vtkIdType end) {
-    std::vector<subd::LimitStencil> stencils;
+    std::vector<subd::LimitStencil> stencils, channelStencils;
     for (vtkIdType g = begin; g < end; ++g)
     {
       const vtkSubDFaceSamples& grid = grids[g];
       std::string faceError;
-      if (!evaluator.EvaluateFace(grid.Face, grid.Owned, stencils, faceError, rows))
+      if (!evaluator.EvaluateFace(grid.Face, grid.Owned, stencils, faceError, rows) ||
+        (channel && !channel->EvaluateFace(grid.Face, grid.Owned, channelStencils, faceError, 1)))
       {
         std::lock_guard<std::mutex> lock(errorMutex);
         firstError = firstError.empty() ? "cell " + std::to_string(cage.FaceCell[grid.Face]) + ": " + faceError
@@ -199,7 +208,8 @@ std::string EvaluateSamples(const subd::LimitEvaluator& evaluator, const vtkSubD
         geometry.Set(id, d, c);
         for (CarriedArray& array : carried)
         {
-          stencils[s].Apply(stencils[s].Weights, subd::PatchValue, array.Cage.data(), array.Components,
+          const subd::LimitStencil& stencil = array.FaceVarying ? channelStencils[s] : stencils[s];
+          stencil.Apply(stencil.Weights, subd::PatchValue, array.Cage.data(), array.Components,
             array.Samples.data() + id * array.Components);
         }
       }
@@ -378,8 +388,8 @@ int vtkSubDLimitFilter::Execute(
   std::string error, warning;
   const bool read = vtkSubDReadCage(input, quads ? vtkSubDCageFaces::Polygons : vtkSubDCageFaces::Triangulated,
     quads ? subd::RepeatedCorners::Keep : subd::RepeatedCorners::KeepInTriangles,
-    static_cast<subd::BoundaryRule>(this->BoundaryRule),
-    static_cast<subd::CreaseMethod>(this->CreaseMethod), cage, error, warning);
+    static_cast<subd::BoundaryRule>(this->BoundaryRule), static_cast<subd::CreaseMethod>(this->CreaseMethod), cage,
+    error, warning, this->WeldCoincidentPoints);
   if (!warning.empty())
   {
     vtkWarningMacro(<< vtkSubDSentence(warning));
@@ -412,6 +422,13 @@ int vtkSubDLimitFilter::Execute(
     vtkErrorMacro(<< error << ".");
     return 0;
   }
+  // Data that differ across welded points (texture coordinates at seams): their channel's limit.
+  vtkSubDMakeCageChannel(cage, static_cast<subd::FaceVaryingInterpolation>(this->FaceVaryingInterpolation));
+  std::unique_ptr<subd::LimitEvaluator> channel;
+  if (cage.HasChannel())
+  {
+    channel.reset(new subd::LimitEvaluator(*scheme, cage.Channel.Values));
+  }
   vtkSubDLimitSamples samples;
   samples.CellFace->SetName("FaceId");
   if (locations && !ReadLocations(locations, cage, samples, error))
@@ -430,15 +447,26 @@ int vtkSubDLimitFilter::Execute(
   points->SetNumberOfPoints(samples.Count);
   double* xyz = static_cast<vtkDoubleArray*>(points->GetData())->GetPointer(0);
   vtkSubDLimitGeometry geometry(samples.Count, this->ComputeNormals, this->ComputeCurvature, this->ComputeDerivatives);
-  std::vector<CarriedArray> carried = CarriedArrays(input, samples.Count);
+  std::vector<CarriedArray> carried = CarriedArrays(input, cage, samples.Count);
   // The stencil rows the arrays asked for need: curvature all, normals and derivatives the first.
   const int rows = this->ComputeCurvature ? subd::NumPatchDerivatives
     : (this->ComputeNormals || this->ComputeDerivatives ? 3 : 1);
-  error = EvaluateSamples(evaluator, cage, samples.Grids, rows, xyz, geometry, carried);
+  error = EvaluateSamples(evaluator, channel.get(), cage, samples.Grids, rows, xyz, geometry, carried);
   if (!error.empty())
   {
     vtkErrorMacro(<< error << ".");
     return 0;
+  }
+  // The sides of a seam are one place: one position, one normal, the same vertex data.
+  for (const std::pair<vtkIdType, vtkIdType>& same : samples.SamePlace)
+  {
+    std::copy(xyz + 3 * same.second, xyz + 3 * same.second + 3, xyz + 3 * same.first);
+    geometry.Copy(same.first, same.second);
+    for (CarriedArray& array : carried)
+    {
+      const size_t n = static_cast<size_t>(array.Components);
+      std::copy_n(array.Samples.begin() + same.second * n, array.FaceVarying ? 0 : n, array.Samples.begin() + same.first * n);
+    }
   }
   output->SetPoints(points);
   if (locations)
@@ -450,6 +478,14 @@ int vtkSubDLimitFilter::Execute(
   {
     output->SetPolys(samples.Cells);
     AddCellData(input, samples.CellFace, !ghostLayer.empty(), output);
+    if (!samples.CellLevels.empty())
+    {
+      vtkNew<vtkIntArray> levels;
+      levels->SetName("RefineLevel");
+      levels->SetNumberOfTuples(static_cast<vtkIdType>(samples.CellLevels.size()));
+      std::copy(samples.CellLevels.begin(), samples.CellLevels.end(), levels->GetPointer(0));
+      output->GetCellData()->AddArray(levels);
+    }
   }
   AddCarriedArrays(carried, samples.Count, output);
   if (this->ComputeLocations && !locations)
@@ -518,6 +554,9 @@ void vtkSubDLimitFilter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "MaximumMemory: " << this->MaximumMemory << " MiB\n";
   os << indent << "BoundaryRule: " << this->BoundaryRule << "\n";
   os << indent << "CreaseMethod: " << this->CreaseMethod << "\n";
+  os << indent << "WeldCoincidentPoints: " << (this->WeldCoincidentPoints ? "On" : "Off") << "\n";
+  os << indent << "FaceVaryingInterpolation: "
+     << vtkSubDSurfaceFilter::GetFaceVaryingInterpolationName(this->FaceVaryingInterpolation) << "\n";
   os << indent << "ComputeNormals: " << (this->ComputeNormals ? "On" : "Off") << "\n";
   os << indent << "ComputeCurvature: " << (this->ComputeCurvature ? "On" : "Off") << "\n";
   os << indent << "ComputeDerivatives: " << (this->ComputeDerivatives ? "On" : "Off") << "\n";

@@ -24,7 +24,8 @@
  * - selectively (Tessellation SELECTIVE): each face refined to the level its cell-data array
  *   RefineLevelArrayName (default "RefineLevel") asks for (clamped to 0..MaximumLevel), its
  *   points those of the uniform tessellation at Resolution 2^level, with the same crack-free
- *   fans where levels meet. Both give triangles, with "FaceId" as above;
+ *   fans where levels meet. Both give triangles, with "FaceId" as above and "RefineLevel",
+ *   the level of the quadtree cell each lies in;
  * - at the locations given on the second input (SetLocationsConnection): any vtkDataSet
  *   whose point data has "FaceId" (the input cell id of a polygon) and "FaceUV" (2
  *   components: (u, v) in the unit square of a quad, corners 0..3 at (0,0), (1,0), (1,1),
@@ -175,6 +176,18 @@ public:
   ///@}
 
   ///@{
+  /// As vtkSubDSurfaceFilter: points with identical coordinates are one vertex (default on),
+  /// and point data that differ between them (texture coordinates at seams) are face-varying,
+  /// their limit that of OpenSubdiv's FaceVaryingInterpolation mode (default corners-plus1,
+  /// vtkSubDSurfaceFilter::FVAR_*); the output is split at such seams, a point per side.
+  vtkSetMacro(WeldCoincidentPoints, bool);
+  vtkGetMacro(WeldCoincidentPoints, bool);
+  vtkBooleanMacro(WeldCoincidentPoints, bool);
+  vtkSetClampMacro(FaceVaryingInterpolation, int, 0, 5);
+  vtkGetMacro(FaceVaryingInterpolation, int);
+  ///@}
+
+  ///@{
   /// As vtkSubDSurfaceFilter: 0 none, 1 edge only (default), 2 edge and corner.
   vtkSetClampMacro(BoundaryRule, int, 0, 2);
   vtkGetMacro(BoundaryRule, int);
@@ -225,6 +238,8 @@ protected:
   bool ComputeCurvature = false;
   bool ComputeDerivatives = false;
   bool ComputeLocations = false;
+  bool WeldCoincidentPoints = true;
+  int FaceVaryingInterpolation = 2;
   int Tessellation = UNIFORM;
   double Tolerance = 1e-3;
   bool ToleranceIsAbsolute = false;

@@ -108,6 +108,21 @@ bool vtkSubDLimitGeometry::SetMean(vtkIdType i, const std::vector<subd::SurfaceG
   return ok;
 }
 
+void vtkSubDLimitGeometry::Copy(vtkIdType to, vtkIdType from)
+{
+  for (vtkDataArray* array : { static_cast<vtkDataArray*>(this->Normals), static_cast<vtkDataArray*>(this->Mean),
+         static_cast<vtkDataArray*>(this->Gauss), static_cast<vtkDataArray*>(this->Maximum),
+         static_cast<vtkDataArray*>(this->Minimum), static_cast<vtkDataArray*>(this->MaximumDirection),
+         static_cast<vtkDataArray*>(this->MinimumDirection), static_cast<vtkDataArray*>(this->Du),
+         static_cast<vtkDataArray*>(this->Dv) })
+  {
+    if (array->GetNumberOfTuples() > std::max(to, from))
+    {
+      array->SetTuple(to, from, array);
+    }
+  }
+}
+
 void vtkSubDLimitGeometry::AddTo(vtkPointData* pd, vtkObject* filter) const
 {
   if (this->NumUndefined > 0 && (this->WithNormals || this->WithCurvature))

@@ -36,6 +36,8 @@ public:
   /// Point i as the mean of several evaluations (the sides of a crease): unit mean normal,
   /// mean curvature values, the first one's directions and derivatives.
   bool SetMean(vtkIdType i, const std::vector<subd::SurfaceGeometry>& sides, const double d[6][3]);
+  /// Point `to` as point `from` (the same place evaluated twice: one value for both).
+  void Copy(vtkIdType to, vtkIdType from);
 
   /// Adds the arrays to `pd` (replacing arrays of the same names; the normals become the
   /// active normals), and gives `filter`'s warning for the undefined points.

@@ -8,6 +8,7 @@
 #include "vtkIdTypeArray.h"
 #include "vtkNew.h"
 
+#include <utility>
 #include <vector>
 
 /// The samples one face of the cage evaluates, and the output points they become.
@@ -26,6 +27,12 @@ struct vtkSubDLimitSamples
   vtkIdType Count = 0;
   vtkNew<vtkCellArray> Cells;
   vtkNew<vtkIdTypeArray> CellFace;
+  /// Adaptive and selective tessellations: per cell, the level of the quadtree cell it lies in
+  /// (as a face's level: 2^level segments per face edge); empty otherwise.
+  std::vector<int> CellLevels;
+  /// (point, the first point at its place) for each point on the second side of a seam: the
+  /// sides share their position and vertex data, and take them from one evaluation.
+  std::vector<std::pair<vtkIdType, vtkIdType>> SamePlace;
 };
 
 #endif

@@ -6,7 +6,7 @@
 namespace
 {
 // A point of the tessellation: a cage vertex, a point on a cage edge (t segments from its
-// first vertex), on a segment inside a polygon, or inside a face.
+// first vertex), on a segment inside a polygon, or inside a face; on a seam, one per side.
 using SampleKey = std::array<vtkIdType, 4>;
 
 // A watertight tessellation of the cage's faces at resolution R: triangles split into R^2
@@ -41,12 +41,13 @@ private:
   {
     const subd::IndexSpan fv = this->Topo.GetFaceVertices(f);
     const subd::Index e = this->Topo.GetFaceEdges(f)[k];
+    const subd::Index next = (k + 1) % static_cast<subd::Index>(fv.size());
     if (t == 0)
-      return { Vertex, fv[k], 0, 0 };
+      return { Vertex, fv[k], this->Cage.SeamSideOfCorner(f, k), 0 };
     if (t == this->R)
-      return { Vertex, fv[(k + 1) % fv.size()], 0, 0 };
+      return { Vertex, fv[next], this->Cage.SeamSideOfCorner(f, next), 0 };
     const bool forward = this->Topo.GetEdgeVertices(e)[0] == fv[k];
-    return { Edge, e, forward ? t : this->R - t, 0 };
+    return { Edge, e, forward ? t : this->R - t, this->Cage.SeamSideOfEdge(f, k) };
   }
   // The output point of `key`, made (and owned by `grid`) if new.
   vtkIdType Point(vtkSubDFaceSamples& grid, const SampleKey& key, double u, double v, subd::Index subFace)
@@ -54,6 +55,16 @@ private:
     auto found = this->IdOf.emplace(key, this->Out.Count);
     if (found.second)
     {
+      SampleKey place = key; // the key without its side of a seam
+      if (key[0] == Vertex)
+        place[2] = 0;
+      if (key[0] == Edge)
+        place[3] = 0;
+      auto first = this->PointAt.emplace(place, this->Out.Count);
+      if (!first.second)
+      {
+        this->Out.SamePlace.emplace_back(this->Out.Count, first.first->second);
+      }
       subd::FaceSample s;
       s.U = u;
       s.V = v;
@@ -75,6 +86,7 @@ private:
   const int R;
   vtkSubDLimitSamples& Out;
   std::map<SampleKey, vtkIdType> IdOf;
+  std::map<SampleKey, vtkIdType> PointAt; ///< the first point at each place (seams have two)
 };
 
 void Tessellation::AddTriangle(subd::Index f)

@@ -3,10 +3,15 @@
 // the surface is flat, equal to the uniform tessellation where a face asks for a level, and
 // clear about bad requests.
 #include "SubDFilterTestSupport.h"
+#include "SubDTempFiles.h"
+#include "SubDTexturedCube.h"
+#include "vtkSubDCatmullClarkFilter.h"
 #include "vtkSubDLimitFilter.h"
+#include "vtkSubDOBJReader.h"
 
 #include "vtkCellData.h"
 #include "vtkCellLocator.h"
+#include "vtkCleanPolyData.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdTypeArray.h"
 #include "vtkIntArray.h"
@@ -20,6 +25,7 @@
 
 #include <array>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <set>
 
@@ -384,4 +390,57 @@ TEST(AdaptiveTessellation, BadRequestsGiveClearErrors)
   subdtest::Messages selective = run([](vtkSubDLimitFilter* f) { f->SetTessellationToSelective(); }, cells);
   EXPECT_NE(selective.Errors.find("\"RefineLevel\""), std::string::npos) << selective.Errors;
   EXPECT_EQ(cells, 0);
+}
+
+// A cube cut along seven edges by its texture unwrap, read split at the seams: the limit
+// tessellations weld it (one surface, no cracks) and split their output there again, each
+// side with its texture coordinates from the face-varying channel's limit. Checked against
+// vtkSubDCatmullClarkFilter at level 2 projected to the limit (its channel through limit masks,
+// another evaluation of the same limit): the uniform tessellation at resolution 4 has its
+// points, each with its coordinates.
+TEST(AdaptiveTessellation, TextureSeamsAreSplitWithTheFaceVaryingLimit)
+{
+  const std::string path = subdtest::ProcessTempPath("adaptive_", "cross.obj");
+  std::ofstream(path) << subdtest::CrossUnwrappedCubeOBJ();
+  vtkNew<vtkSubDOBJReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  vtkPolyData* cage = reader->GetOutput();
+  ASSERT_NE(cage->GetPointData()->GetTCoords(), nullptr);
+  vtkNew<vtkSubDCatmullClarkFilter> refine;
+  refine->SetInputData(cage);
+  refine->SetNumberOfSubdivisions(2);
+  refine->ProjectToLimitOn();
+  refine->Update();
+  vtkPolyData* reference = refine->GetOutput();
+  vtkSmartPointer<vtkPolyData> uniform = Tessellate(cage, false, vtkSubDLimitFilter::UNIFORM, 0, 4);
+  ASSERT_EQ(uniform->GetNumberOfPoints(), reference->GetNumberOfPoints());
+  vtkDataArray* uv = uniform->GetPointData()->GetArray("TCoords");
+  vtkDataArray* referenceUV = reference->GetPointData()->GetTCoords();
+  ASSERT_TRUE(uv && referenceUV);
+  for (vtkIdType i = 0; i < uniform->GetNumberOfPoints(); ++i)
+  {
+    double p[3], t[2], best = 1.0;
+    uniform->GetPoint(i, p);
+    uv->GetTuple(i, t);
+    for (vtkIdType j = 0; j < reference->GetNumberOfPoints(); ++j)
+    {
+      double q[3], s[2];
+      reference->GetPoint(j, q);
+      referenceUV->GetTuple(j, s);
+      best = std::min(best, std::max({ std::abs(p[0] - q[0]), std::abs(p[1] - q[1]), std::abs(p[2] - q[2]),
+                              std::abs(t[0] - s[0]), std::abs(t[1] - s[1]) }));
+    }
+    EXPECT_LT(best, 1e-12) << "point " << i;
+  }
+  // Adaptive: split at the seams (more points than places), watertight once the sides are one.
+  vtkSmartPointer<vtkPolyData> adaptive = Tessellate(cage, false, vtkSubDLimitFilter::ADAPTIVE, 1e-3);
+  ASSERT_NE(adaptive->GetPointData()->GetArray("TCoords"), nullptr);
+  vtkNew<vtkCleanPolyData> merged;
+  merged->SetInputData(adaptive);
+  merged->PointMergingOn();
+  merged->SetTolerance(0.0);
+  merged->Update();
+  EXPECT_GT(adaptive->GetNumberOfPoints(), merged->GetOutput()->GetNumberOfPoints());
+  EXPECT_EQ(OpenOrNonManifoldEdges(merged->GetOutput()), 0) << "cracks";
 }
