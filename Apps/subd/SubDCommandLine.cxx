@@ -806,8 +806,7 @@ bool CheckTolerance(CommandLine& cmd, std::string& error)
     error = "--tolerance tessellates one scheme's limit surface: it cannot be combined with --compare";
     return false;
   }
-  for (const char* refinementOnly :
-    { "--no-weld", "--fvar-interpolation", "--smooth-triangles", "--collapse-repeated-corners", "--feature-angle" })
+  for (const char* refinementOnly : { "--smooth-triangles", "--collapse-repeated-corners", "--feature-angle" })
   {
     if (std::find(cmd.SurfaceOptions.begin(), cmd.SurfaceOptions.end(), refinementOnly) != cmd.SurfaceOptions.end())
     {

@@ -61,6 +61,8 @@ vtkSmartPointer<vtkPolyDataAlgorithm> MakeAdaptiveTessellation(const SchemeOptio
   filter->SetCreaseMethod(options.CreaseMethod);
   filter->SetComputeNormals(options.LimitNormals);
   filter->SetComputeCurvature(options.LimitCurvature);
+  filter->SetWeldCoincidentPoints(options.Weld);
+  filter->SetFaceVaryingInterpolation(options.FaceVaryingInterpolation);
   return filter;
 }
 

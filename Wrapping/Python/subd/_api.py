@@ -101,11 +101,7 @@ def make_filter(scheme="catmull-clark", levels=2, boundary="edge-only", crease_m
     filter_.SetComputeCurvature(bool(curvature))
     filter_.SetWeldCoincidentPoints(bool(weld))
     filter_.SetCollapseRepeatedCorners(bool(collapse_repeated_corners))
-    mode = _filters.vtkSubDSurfaceFilter.FaceVaryingInterpolationFromName(str(fvar_interpolation))
-    if mode < 0:
-        raise ValueError("fvar_interpolation %r is not one of none, corners-only, corners-plus1, corners-plus2, "
-                         "boundaries, all" % (fvar_interpolation,))
-    filter_.SetFaceVaryingInterpolation(mode)
+    filter_.SetFaceVaryingInterpolation(_fvar_mode(fvar_interpolation))
     if tension is not None:
         if scheme != "butterfly":
             raise ValueError("tension applies to the butterfly scheme, not to %s" % scheme)
@@ -128,7 +124,8 @@ CURVE_SCHEMES = ("chaikin", "bspline", "four-point")
 def limit_surface(mesh, scheme="catmull-clark", resolution=4, samples=None, boundary="edge-only",
                   crease_method="uniform", creases=None, corners=None, holes=None, normals=True,
                   curvature=False, derivatives=False, tolerance=None, tolerance_is_absolute=False,
-                  refine_levels=None, max_level=12, locations=False):
+                  refine_levels=None, max_level=12, locations=False, weld=True,
+                  fvar_interpolation="corners-plus1"):
     """The exact limit surface of a cage (vtkSubDLimitFilter), tessellated or sampled.
 
     Without samples: a watertight tessellation with `resolution` segments per face edge
@@ -138,7 +135,8 @@ def limit_surface(mesh, scheme="catmull-clark", resolution=4, samples=None, boun
     surface curves, crack-free; or refine_levels: per cage face, the level it is refined to
     (the uniform tessellation at resolution 2^level there), crack-free where levels meet. Both
     go at most max_level deep. locations: add the "FaceId", "FaceUV", "SubFace" point data each
-    point was evaluated at.
+    point was evaluated at. weld, fvar_interpolation: as for subdivide (texture coordinates
+    split at seams follow the face-varying limit; the output is split there again).
     samples: (face_ids, uv): the limit at those (face, u, v), as points (a Mesh with no faces,
     or a vtkPolyData of vertices); uv in the unit square of a quad, the unit triangle of a
     triangle. normals, curvature, derivatives: "Normals", the curvature arrays, "dPdu"/"dPdv".
@@ -155,6 +153,8 @@ def limit_surface(mesh, scheme="catmull-clark", resolution=4, samples=None, boun
     filter_.SetComputeCurvature(bool(curvature))
     filter_.SetComputeDerivatives(bool(derivatives))
     filter_.SetComputeLocations(bool(locations))
+    filter_.SetWeldCoincidentPoints(bool(weld))
+    filter_.SetFaceVaryingInterpolation(_fvar_mode(fvar_interpolation))
     filter_.SetMaximumLevel(_integer_in("max_level", max_level, 0, 24))
     if sum(x is not None for x in (samples, tolerance, refine_levels)) > 1:
         raise ValueError("give at most one of samples, tolerance and refine_levels")
@@ -346,6 +346,14 @@ def _integer_in(name, value, lowest, highest):
     if not lowest <= value <= highest:
         raise ValueError("%s must be in %d..%d, not %d" % (name, lowest, highest, value))
     return int(value)
+
+
+def _fvar_mode(value):
+    mode = _filters.vtkSubDSurfaceFilter.FaceVaryingInterpolationFromName(str(value))
+    if mode < 0:
+        raise ValueError("fvar_interpolation %r is not one of none, corners-only, corners-plus1, corners-plus2, "
+                         "boundaries, all" % (value,))
+    return mode
 
 
 def _number(name, value):
