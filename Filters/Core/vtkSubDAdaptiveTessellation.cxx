@@ -77,6 +77,7 @@ struct Cell
   bool SecondDiagonal = false;
   bool Off = false;
   size_t CheckedVertices = 0;
+  bool Recheck = false; ///< its triangles' check found one off, and it can split: to split again
 };
 
 /// How a cell splits: a quad across u (at its u midpoint), across v, or both; a triangle
@@ -216,6 +217,21 @@ Vec3 Centroid(const Vec3& a, const Vec3& b, const Vec3& c)
   return { { (a[0] + b[0] + c[0]) / 3.0, (a[1] + b[1] + c[1]) / 3.0, (a[2] + b[2] + c[2]) / 3.0 } };
 }
 
+/// A leaf whose triangles are to be checked, and where its check samples start in the batch:
+/// per triangle its three edge midpoints and its centroid.
+struct LeafCheck
+{
+  size_t Domain, Leaf;
+  Triangulation Triangles;
+  size_t First;
+};
+
+/// The ways a cell may still split: along u and v while below its domain's deepest level.
+int AllowedSplit(const Domain& d, const Cell& c)
+{
+  return (c.Depth[0] < d.MaxDepth ? SplitU : 0) | (c.Depth[1] < d.MaxDepth ? SplitV : 0);
+}
+
 /// A quad's two triangles along either diagonal: (0 1 2, 0 2 3), or (1 2 3, 1 3 0).
 constexpr int QuadTriangles[2][2][3] = { { { 0, 1, 2 }, { 0, 2, 3 } }, { { 1, 2, 3 }, { 1, 3, 0 } } };
 
@@ -247,6 +263,8 @@ private:
   void RecordPresence();
   Triangulation Triangulate(size_t domain, const Cell& c) const;
   void AddHanging(size_t domain, P2 a, P2 b, std::vector<P2>& out) const;
+  std::vector<LeafCheck> GatherChecks(const FaceGroup& group, Batch& batch);
+  bool Strays(const LeafCheck& check, const SurfacePoint* sample) const;
   bool SplitOffTolerance(const FaceGroup& group);
   long long Emit(vtkSubDLimitSamples& samples) const;
 
@@ -470,7 +488,7 @@ bool AdaptiveTessellator::EvaluateCageVertices(const std::vector<subd::Index>& f
 // `centroids`: the surface at the centroids of the cell's triangles (a quad's: QuadTriangles).
 int AdaptiveTessellator::Judge(const Domain& d, Cell& c, const SurfacePoint* centroids) const
 {
-  const int allowed = (c.Depth[0] < d.MaxDepth ? SplitU : 0) | (c.Depth[1] < d.MaxDepth ? SplitV : 0);
+  const int allowed = AllowedSplit(d, c);
   if (!this->Settings.FaceLevels.empty())
   {
     return c.Depth[0] < d.TargetDepth ? allowed : NoSplit;
@@ -712,23 +730,14 @@ Triangulation AdaptiveTessellator::Triangulate(size_t domain, const Cell& c) con
   return t;
 }
 
-// Checks the triangles of the face's leaves that have points of finer neighbours on their
-// sides (the others were checked when judged) at their edge midpoints and centroids; a leaf
-// with a triangle farther from the limit than the tolerance becomes active again, split. True
-// when some leaf was split.
-bool AdaptiveTessellator::SplitOffTolerance(const FaceGroup& group)
+// The leaves of the face whose triangles were not checked with the points now on their sides,
+// their vertices and check points asked of `batch`.
+std::vector<LeafCheck> AdaptiveTessellator::GatherChecks(const FaceGroup& group, Batch& batch)
 {
-  struct Check
-  {
-    size_t Domain, Leaf;
-    Triangulation Triangles;
-    size_t First; ///< its loose samples: per triangle three edge midpoints and the centroid
-  };
-  std::vector<Check> checks;
-  Batch batch;
+  std::vector<LeafCheck> checks;
   for (size_t i = group.First; i < group.Last; ++i)
   {
-    Domain& d = this->Domains[i];
+    const Domain& d = this->Domains[i];
     for (size_t l = 0; l < d.Leaves.size(); ++l)
     {
       Triangulation t = this->Triangulate(i, d.Leaves[l]);
@@ -757,47 +766,60 @@ bool AdaptiveTessellator::SplitOffTolerance(const FaceGroup& group)
       checks.push_back({ i, l, std::move(t), first });
     }
   }
-  this->Evaluate(this->Domains[group.First].Face, batch);
-  std::vector<std::vector<bool>> split(group.Last - group.First);
-  for (size_t i = group.First; i < group.Last; ++i)
+  return checks;
+}
+
+// Whether a triangle of the check strays from the surface at an edge midpoint or its centroid
+// (`sample`: per triangle those four).
+bool AdaptiveTessellator::Strays(const LeafCheck& check, const SurfacePoint* sample) const
+{
+  const Domain& d = this->Domains[check.Domain];
+  auto at = [&d](P2 p) -> const Vec3& { return d.Known.at(Pack(p)).P; };
+  const double tolerance = this->Settings.Tolerance;
+  for (const std::array<int, 3>& tri : check.Triangles.Triangles)
   {
-    split[i - group.First].assign(this->Domains[i].Leaves.size(), false);
-  }
-  for (const Check& check : checks)
-  {
-    const Domain& d = this->Domains[check.Domain];
-    auto at = [&d](P2 p) -> const Vec3& { return d.Known.at(Pack(p)).P; };
-    const SurfacePoint* sample = batch.Values.data() + check.First;
-    bool off = false;
-    for (const std::array<int, 3>& tri : check.Triangles.Triangles)
+    const Vec3 &a = at(check.Triangles.Vertices[tri[0]]), &b = at(check.Triangles.Vertices[tri[1]]),
+               &c = at(check.Triangles.Vertices[tri[2]]);
+    if (Distance(sample[0], Mean(a, b)) > tolerance || Distance(sample[1], Mean(b, c)) > tolerance ||
+      Distance(sample[2], Mean(c, a)) > tolerance || Distance(sample[3], Centroid(a, b, c)) > tolerance)
     {
-      const Vec3 &a = at(check.Triangles.Vertices[tri[0]]), &b = at(check.Triangles.Vertices[tri[1]]),
-                 &c = at(check.Triangles.Vertices[tri[2]]);
-      const double tolerance = this->Settings.Tolerance;
-      off = off || Distance(sample[0], Mean(a, b)) > tolerance || Distance(sample[1], Mean(b, c)) > tolerance ||
-        Distance(sample[2], Mean(c, a)) > tolerance || Distance(sample[3], Centroid(a, b, c)) > tolerance;
-      sample += 4;
+      return true;
     }
-    Cell& c = this->Domains[check.Domain].Leaves[check.Leaf];
-    split[check.Domain - group.First][check.Leaf] = off && (c.Depth[0] < d.MaxDepth || c.Depth[1] < d.MaxDepth);
-    c.Off = off;
+    sample += 4;
+  }
+  return false;
+}
+
+// Checks the triangles of the face's leaves that have points of finer neighbours on their
+// sides (the others were checked when judged) at their edge midpoints and centroids; a leaf
+// with a triangle farther from the limit than the tolerance becomes active again, split. True
+// when some leaf was split.
+bool AdaptiveTessellator::SplitOffTolerance(const FaceGroup& group)
+{
+  Batch batch;
+  const std::vector<LeafCheck> checks = this->GatherChecks(group, batch);
+  this->Evaluate(this->Domains[group.First].Face, batch);
+  for (const LeafCheck& check : checks)
+  {
+    Domain& d = this->Domains[check.Domain];
+    Cell& c = d.Leaves[check.Leaf];
+    c.Off = this->Strays(check, batch.Values.data() + check.First);
     c.CheckedVertices = check.Triangles.Vertices.size();
+    c.Recheck = c.Off && AllowedSplit(d, c) != NoSplit;
   }
   bool any = false;
   for (size_t i = group.First; i < group.Last; ++i)
   {
     Domain& d = this->Domains[i];
     std::vector<Cell> kept;
-    for (size_t l = 0; l < d.Leaves.size(); ++l)
+    for (const Cell& c : d.Leaves)
     {
-      const Cell& c = d.Leaves[l];
-      if (!split[i - group.First][l])
+      if (!c.Recheck)
       {
         kept.push_back(c);
         continue;
       }
-      const int allowed = (c.Depth[0] < d.MaxDepth ? SplitU : 0) | (c.Depth[1] < d.MaxDepth ? SplitV : 0);
-      const std::vector<Cell> children = Children(c, c.NumCorners == 3 ? SplitBoth : allowed);
+      const std::vector<Cell> children = Children(c, AllowedSplit(d, c));
       d.Active.insert(d.Active.end(), children.begin(), children.end());
     }
     d.Leaves.swap(kept);

@@ -8,6 +8,34 @@
 
 #include <algorithm>
 
+namespace
+{
+// The input's points welded where they coincide (vtkSubDSeams.h), and the arrays that differ
+// there; faces that welding leaves with a repeated point are dropped, with a warning.
+vtkSubDSeams WeldSeams(vtkPolyData* input, subd::FaceScreening& screened, std::string& warning)
+{
+  subd::Index dropped = 0;
+  vtkSubDSeams seams = vtkSubDWeldCoincidentPoints(input, screened, false, dropped);
+  // Corner sharpness and a piece's ghost marks are no data to carry.
+  vtkPointData* pd = input->GetPointData();
+  std::vector<int>& arrays = seams.Arrays;
+  arrays.erase(std::remove_if(arrays.begin(), arrays.end(), [&](int a) {
+    return pd->GetArray(a) == input->GetPointGhostArray() ||
+      (pd->GetArray(a)->GetName() && std::string(pd->GetArray(a)->GetName()) == "CornerSharpness");
+  }), arrays.end());
+  if (arrays.empty())
+  {
+    seams.ValueOfCorner.clear();
+  }
+  if (dropped > 0)
+  {
+    warning += (warning.empty() ? "" : "; ") + std::to_string(dropped) +
+      " polygon(s) that welding left with a repeated point were dropped";
+  }
+  return seams;
+}
+}
+
 bool vtkSubDReadCage(vtkPolyData* input, vtkSubDCageFaces kind, subd::RepeatedCorners repeated,
   subd::BoundaryRule rule, subd::CreaseMethod creasing, vtkSubDCage& cage, std::string& error, std::string& warning,
   bool weld)
@@ -40,24 +68,7 @@ bool vtkSubDReadCage(vtkPolyData* input, vtkSubDCageFaces kind, subd::RepeatedCo
   }
   if (weld)
   {
-    subd::Index dropped = 0;
-    cage.Seams = vtkSubDWeldCoincidentPoints(input, screened, false, dropped);
-    // Corner sharpness and a piece's ghost marks are no data to carry.
-    vtkPointData* pd = input->GetPointData();
-    std::vector<int>& arrays = cage.Seams.Arrays;
-    arrays.erase(std::remove_if(arrays.begin(), arrays.end(), [&](int a) {
-      return pd->GetArray(a) == input->GetPointGhostArray() ||
-        (pd->GetArray(a)->GetName() && std::string(pd->GetArray(a)->GetName()) == "CornerSharpness");
-    }), arrays.end());
-    if (arrays.empty())
-    {
-      cage.Seams.ValueOfCorner.clear();
-    }
-    if (dropped > 0)
-    {
-      warning += (warning.empty() ? "" : "; ") + std::to_string(dropped) +
-        " polygon(s) that welding left with a repeated point were dropped";
-    }
+    cage.Seams = WeldSeams(input, screened, warning);
   }
   for (subd::Index f : screened.KeptFaces)
   {

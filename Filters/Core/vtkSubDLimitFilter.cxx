@@ -46,10 +46,12 @@ vtkStandardNewMacro(vtkSubDLimitFilter);
 
 namespace
 {
-// The tessellation's cell data: each cell gets its input cell's ("FaceId" names it), and in a
-// piece with ghost faces, "vtkGhostType" marks the cells of ghost faces.
-void AddCellData(vtkPolyData* input, vtkIdTypeArray* cellFace, bool piece, vtkPolyData* output)
+// The tessellation's cell data: each cell gets its input cell's ("FaceId" names it) and, from an
+// adaptive or selective tessellation, its level ("RefineLevel"); in a piece with ghost faces,
+// "vtkGhostType" marks the cells of ghost faces.
+void AddCellData(vtkPolyData* input, const vtkSubDLimitSamples& samples, bool piece, vtkPolyData* output)
 {
+  vtkIdTypeArray* cellFace = samples.CellFace;
   const vtkIdType numCells = cellFace->GetNumberOfTuples();
   vtkNew<vtkIdList> sources, targets;
   sources->SetNumberOfIds(numCells);
@@ -64,6 +66,14 @@ void AddCellData(vtkPolyData* input, vtkIdTypeArray* cellFace, bool piece, vtkPo
   outCD->CopyData(input->GetCellData(), sources, targets);
   outCD->RemoveArray(vtkDataSetAttributes::GhostArrayName()); // the input's, remade below
   outCD->AddArray(cellFace);
+  if (!samples.CellLevels.empty())
+  {
+    vtkNew<vtkIntArray> levels;
+    levels->SetName("RefineLevel");
+    levels->SetNumberOfTuples(numCells);
+    std::copy(samples.CellLevels.begin(), samples.CellLevels.end(), levels->GetPointer(0));
+    outCD->AddArray(levels);
+  }
   if (piece)
   {
     vtkUnsignedCharArray* inputMarks = input->GetCellGhostArray(); // looked up once, not per cell
@@ -180,9 +190,10 @@ void AddCarriedArrays(const std::vector<CarriedArray>& carried, vtkIdType numSam
 // Evaluates every sample, face by face in parallel: its position into `xyz`, its derivatives
 // into `geometry`, the carried arrays. Returns the first face's error, if any.
 std::string EvaluateSamples(const subd::LimitEvaluator& evaluator, const subd::LimitEvaluator* channel,
-  const vtkSubDCage& cage, const std::vector<vtkSubDFaceSamples>& grids, int rows, double* xyz,
+  const vtkSubDCage& cage, const vtkSubDLimitSamples& samples, int rows, double* xyz,
   vtkSubDLimitGeometry& geometry, std::vector<CarriedArray>& carried)
 {
+  const std::vector<vtkSubDFaceSamples>& grids = samples.Grids;
   std::mutex errorMutex;
   std::string firstError;
   vtkSMPTools::For(0, static_cast<vtkIdType>(grids.size()), [&](vtkIdType begin, vtkIdType end) {
@@ -215,6 +226,17 @@ std::string EvaluateSamples(const subd::LimitEvaluator& evaluator, const subd::L
       }
     }
   });
+  // The sides of a seam are one place: one position, one normal, the same vertex data.
+  for (const std::pair<vtkIdType, vtkIdType>& same : samples.SamePlace)
+  {
+    std::copy(xyz + 3 * same.second, xyz + 3 * same.second + 3, xyz + 3 * same.first);
+    geometry.Copy(same.first, same.second);
+    for (CarriedArray& array : carried)
+    {
+      const size_t n = array.FaceVarying ? 0 : static_cast<size_t>(array.Components);
+      std::copy_n(array.Samples.begin() + same.second * n, n, array.Samples.begin() + same.first * n);
+    }
+  }
   return firstError;
 }
 
@@ -385,29 +407,13 @@ int vtkSubDLimitFilter::Execute(
   }
   const bool quads = this->Scheme == CATMULL_CLARK;
   vtkSubDCage cage;
-  std::string error, warning;
-  const bool read = vtkSubDReadCage(input, quads ? vtkSubDCageFaces::Polygons : vtkSubDCageFaces::Triangulated,
-    quads ? subd::RepeatedCorners::Keep : subd::RepeatedCorners::KeepInTriangles,
-    static_cast<subd::BoundaryRule>(this->BoundaryRule), static_cast<subd::CreaseMethod>(this->CreaseMethod), cage,
-    error, warning, this->WeldCoincidentPoints);
-  if (!warning.empty())
+  std::string error;
+  if (!this->ReadCage(input, cage))
   {
-    vtkWarningMacro(<< vtkSubDSentence(warning));
-  }
-  if (!read)
-  {
-    vtkErrorMacro(<< error << ".");
     return 0;
   }
-  std::unique_ptr<subd::Scheme> scheme;
-  if (quads)
-  {
-    scheme.reset(new subd::CatmullClarkScheme);
-  }
-  else
-  {
-    scheme.reset(new subd::LoopScheme);
-  }
+  const std::unique_ptr<subd::Scheme> scheme(
+    quads ? static_cast<subd::Scheme*>(new subd::CatmullClarkScheme) : new subd::LoopScheme);
   // A piece tessellates its own faces, and the first OutputGhostLevels layers of ghost faces.
   if (request.OneOfMany && cage.FaceIsGhost.empty() && !locations && !wholeMesh)
   {
@@ -451,22 +457,11 @@ int vtkSubDLimitFilter::Execute(
   // The stencil rows the arrays asked for need: curvature all, normals and derivatives the first.
   const int rows = this->ComputeCurvature ? subd::NumPatchDerivatives
     : (this->ComputeNormals || this->ComputeDerivatives ? 3 : 1);
-  error = EvaluateSamples(evaluator, channel.get(), cage, samples.Grids, rows, xyz, geometry, carried);
+  error = EvaluateSamples(evaluator, channel.get(), cage, samples, rows, xyz, geometry, carried);
   if (!error.empty())
   {
     vtkErrorMacro(<< error << ".");
     return 0;
-  }
-  // The sides of a seam are one place: one position, one normal, the same vertex data.
-  for (const std::pair<vtkIdType, vtkIdType>& same : samples.SamePlace)
-  {
-    std::copy(xyz + 3 * same.second, xyz + 3 * same.second + 3, xyz + 3 * same.first);
-    geometry.Copy(same.first, same.second);
-    for (CarriedArray& array : carried)
-    {
-      const size_t n = static_cast<size_t>(array.Components);
-      std::copy_n(array.Samples.begin() + same.second * n, array.FaceVarying ? 0 : n, array.Samples.begin() + same.first * n);
-    }
   }
   output->SetPoints(points);
   if (locations)
@@ -477,15 +472,7 @@ int vtkSubDLimitFilter::Execute(
   else
   {
     output->SetPolys(samples.Cells);
-    AddCellData(input, samples.CellFace, !ghostLayer.empty(), output);
-    if (!samples.CellLevels.empty())
-    {
-      vtkNew<vtkIntArray> levels;
-      levels->SetName("RefineLevel");
-      levels->SetNumberOfTuples(static_cast<vtkIdType>(samples.CellLevels.size()));
-      std::copy(samples.CellLevels.begin(), samples.CellLevels.end(), levels->GetPointer(0));
-      output->GetCellData()->AddArray(levels);
-    }
+    AddCellData(input, samples, !ghostLayer.empty(), output);
   }
   AddCarriedArrays(carried, samples.Count, output);
   if (this->ComputeLocations && !locations)
@@ -494,6 +481,25 @@ int vtkSubDLimitFilter::Execute(
   }
   geometry.AddTo(output->GetPointData(), this);
   return 1;
+}
+
+bool vtkSubDLimitFilter::ReadCage(vtkPolyData* input, vtkSubDCage& cage)
+{
+  const bool quads = this->Scheme == CATMULL_CLARK;
+  std::string error, warning;
+  const bool read = vtkSubDReadCage(input, quads ? vtkSubDCageFaces::Polygons : vtkSubDCageFaces::Triangulated,
+    quads ? subd::RepeatedCorners::Keep : subd::RepeatedCorners::KeepInTriangles,
+    static_cast<subd::BoundaryRule>(this->BoundaryRule), static_cast<subd::CreaseMethod>(this->CreaseMethod), cage,
+    error, warning, this->WeldCoincidentPoints);
+  if (!warning.empty())
+  {
+    vtkWarningMacro(<< vtkSubDSentence(warning));
+  }
+  if (!read)
+  {
+    vtkErrorMacro(<< error << ".");
+  }
+  return read;
 }
 
 bool vtkSubDLimitFilter::Tessellate(vtkPolyData* input, const vtkSubDCage& cage,

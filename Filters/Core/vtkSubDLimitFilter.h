@@ -226,6 +226,8 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   /// RequestData's work; RequestData runs it and turns running out of memory into an error.
   int Execute(vtkInformation*, vtkInformationVector**, vtkInformationVector*);
+  /// Reads the input's polygons and sharp features as the settings ask; false after an error.
+  bool ReadCage(vtkPolyData* input, vtkSubDCage& cage);
   /// The tessellation of `faces` the settings ask for; false after an error.
   bool Tessellate(vtkPolyData* input, const vtkSubDCage& cage, const subd::LimitEvaluator& evaluator,
     const std::vector<subd::Index>& faces, vtkSubDLimitSamples& samples);

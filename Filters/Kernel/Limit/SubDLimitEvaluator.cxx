@@ -268,6 +268,24 @@ bool LimitEvaluator::EvaluateFace(Index face, const std::vector<FaceSample>& sam
   return true;
 }
 
+namespace
+{
+// The children of `face` in the order a sample on the border of several goes to the first:
+// those at an irregular corner last, so that it lands in a regular patch sooner (the surface
+// is the same on both sides of a border inside a face).
+std::vector<Index> ChildOrder(const Level& level, Index face, Index size, PatchKind kind)
+{
+  std::vector<Index> children, irregular;
+  for (Index child = 0; child < 4; ++child)
+  {
+    const bool atIrregularCorner = child < size && !IsRegularCorner(level, face, child, kind);
+    (atIrregularCorner ? irregular : children).push_back(child);
+  }
+  children.insert(children.end(), irregular.begin(), irregular.end());
+  return children;
+}
+}
+
 bool LimitEvaluator::Descend(const LocalLevel& local, Index face, std::vector<Pending>& pending,
   const ParamFrame& frame, int depth, std::string& error) const
 {
@@ -375,22 +393,7 @@ bool LimitEvaluator::Descend(const LocalLevel& local, Index face, std::vector<Pe
   }
   const LocalLevel refined = RefineLocalLevel(this->TheScheme, local);
   std::vector<bool> placed(rest.size(), false);
-  // A sample on the border of several children goes to the first: children at an irregular
-  // corner come last, so that it lands in a regular patch sooner (the surface is the same on
-  // both sides of a border inside a face).
-  std::vector<Index> children;
-  for (int irregularLast = 0; irregularLast < 2; ++irregularLast)
-  {
-    for (Index child = 0; child < 4; ++child)
-    {
-      const bool atIrregularCorner = child < size && !IsRegularCorner(local.Mesh, face, child, this->Kind);
-      if (atIrregularCorner == (irregularLast == 1))
-      {
-        children.push_back(child);
-      }
-    }
-  }
-  for (Index child : children)
+  for (Index child : ChildOrder(local.Mesh, face, size, this->Kind))
   {
     const ParamFrame childFrame = ChildFrame(size, child);
     std::vector<Pending> inside;
