@@ -221,7 +221,7 @@ Vec3 Centroid(const Vec3& a, const Vec3& b, const Vec3& c)
 /// per triangle its three edge midpoints and its centroid.
 struct LeafCheck
 {
-  size_t Domain, Leaf;
+  size_t DomainIndex, LeafIndex;
   Triangulation Triangles;
   size_t First;
 };
@@ -773,7 +773,7 @@ std::vector<LeafCheck> AdaptiveTessellator::GatherChecks(const FaceGroup& group,
 // (`sample`: per triangle those four).
 bool AdaptiveTessellator::Strays(const LeafCheck& check, const SurfacePoint* sample) const
 {
-  const Domain& d = this->Domains[check.Domain];
+  const Domain& d = this->Domains[check.DomainIndex];
   auto at = [&d](P2 p) -> const Vec3& { return d.Known.at(Pack(p)).P; };
   const double tolerance = this->Settings.Tolerance;
   for (const std::array<int, 3>& tri : check.Triangles.Triangles)
@@ -801,8 +801,8 @@ bool AdaptiveTessellator::SplitOffTolerance(const FaceGroup& group)
   this->Evaluate(this->Domains[group.First].Face, batch);
   for (const LeafCheck& check : checks)
   {
-    Domain& d = this->Domains[check.Domain];
-    Cell& c = d.Leaves[check.Leaf];
+    Domain& d = this->Domains[check.DomainIndex];
+    Cell& c = d.Leaves[check.LeafIndex];
     c.Off = this->Strays(check, batch.Values.data() + check.First);
     c.CheckedVertices = check.Triangles.Vertices.size();
     c.Recheck = c.Off && AllowedSplit(d, c) != NoSplit;
