@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <map>
-#include <unordered_map>
+#include <utility>
+#include <vector>
 
 namespace subd
 {
@@ -52,9 +53,16 @@ bool Unfold(const Level& level, Index face, PatchKind kind, std::map<Lattice, Pa
   const MeshTopology& topo = level.Topology;
   const Index size = kind == PatchKind::BSpline ? 4 : 3;
   const IndexSpan corners = topo.GetFaceVertices(face);
-  std::unordered_map<Index, Lattice> where;
+  // The lattice position of each point placed: a few dozen at most, so a flat list (a hash
+  // map's node per point made allocation the cost of every patch gathered).
+  std::vector<std::pair<Index, Lattice>> where;
+  where.reserve(32);
+  auto find = [&where](Index v) {
+    return std::find_if(where.begin(), where.end(), [v](const std::pair<Index, Lattice>& w) { return w.first == v; });
+  };
+  auto at = [&](Index v) { return find(v)->second; }; // v is placed: a corner or a fan's point
   auto place = [&](Index v, Lattice p) {
-    auto known = where.find(v);
+    auto known = find(v);
     if (known != where.end())
     {
       return known->second == p;
@@ -64,7 +72,7 @@ bool Unfold(const Level& level, Index face, PatchKind kind, std::map<Lattice, Pa
     {
       return false;
     }
-    where.emplace(v, p);
+    where.emplace_back(v, p);
     return true;
   };
   const Lattice start[4] = { { 1, 1 }, { 2, 1 }, { 2, 2 }, { 1, 2 } };
@@ -92,7 +100,7 @@ bool Unfold(const Level& level, Index face, PatchKind kind, std::map<Lattice, Pa
       if (h == InvalidIndex && size == 3)
       {
         const Index c = gv[(k + 2) % 3];
-        const Lattice pa = where.at(a), pb = where.at(b), pc = where.at(c);
+        const Lattice pa = at(a), pb = at(b), pc = at(c);
         const Lattice phantom{ pa[0] + pb[0] - pc[0], pa[1] + pb[1] - pc[1] };
         if (!pointAt.emplace(phantom, Across(a, b, c)).second)
         {
@@ -110,10 +118,10 @@ bool Unfold(const Level& level, Index face, PatchKind kind, std::map<Lattice, Pa
       }
       const IndexSpan hv = topo.GetFaceVertices(h);
       const Index r = topo.FindCorner(b, h); // h runs b -> a
-      const Lattice pa = where.at(a), pb = where.at(b);
+      const Lattice pa = at(a), pb = at(b);
       if (size == 3)
       {
-        const Lattice pc = where.at(gv[(k + 2) % 3]);
+        const Lattice pc = at(gv[(k + 2) % 3]);
         if (!place(hv[(r + 2) % 3], { pa[0] + pb[0] - pc[0], pa[1] + pb[1] - pc[1] }))
         {
           return false;
@@ -121,7 +129,7 @@ bool Unfold(const Level& level, Index face, PatchKind kind, std::map<Lattice, Pa
       }
       else
       {
-        const Lattice pc = where.at(gv[(k + 2) % 4]), pd = where.at(gv[(k + 3) % 4]);
+        const Lattice pc = at(gv[(k + 2) % 4]), pd = at(gv[(k + 3) % 4]);
         if (!place(hv[(r + 2) % 4], { 2 * pa[0] - pd[0], 2 * pa[1] - pd[1] }) ||
           !place(hv[(r + 3) % 4], { 2 * pb[0] - pc[0], 2 * pb[1] - pc[1] }))
         {

@@ -1,39 +1,88 @@
 #include "SubDMeshTopology.h"
 
 #include <numeric>
-#include <unordered_map>
+#include <utility>
+#include <vector>
 
 namespace subd
 {
+namespace
+{
+// This topology's indices to a piece's: open addressing in two flat arrays. A piece is small
+// and made for every local refinement of the limit evaluator: a hash map's node per entry
+// made the allocator most of that work.
+class IndexMap
+{
+public:
+  explicit IndexMap(size_t expected)
+  {
+    size_t size = 16;
+    while (size < 2 * expected)
+    {
+      size *= 2;
+    }
+    this->Keys.assign(size, InvalidIndex);
+    this->Values.resize(size);
+  }
+  /// The value of `key`, and whether it was new (then `value` was stored for it).
+  std::pair<Index, bool> Emplace(Index key, Index value)
+  {
+    const size_t mask = this->Keys.size() - 1;
+    size_t slot = (static_cast<size_t>(key) * 0x9E3779B97F4A7C15ull >> 17) & mask;
+    while (this->Keys[slot] != InvalidIndex)
+    {
+      if (this->Keys[slot] == key)
+      {
+        return { this->Values[slot], false };
+      }
+      slot = (slot + 1) & mask;
+    }
+    this->Keys[slot] = key;
+    this->Values[slot] = value;
+    return { value, true };
+  }
+
+private:
+  std::vector<Index> Keys, Values;
+};
+}
+
 // A piece is small (the faces around a face or a vertex): its relations are worked out
-// serially, with hash maps from this topology's numbering to the piece's.
+// serially, with maps from this topology's numbering to the piece's.
 MeshTopology MeshTopology::ExtractFaces(
   const std::vector<Index>& faces, std::vector<Index>& points, std::vector<Index>& edges) const
 {
-  std::unordered_map<Index, Index> pointOf, edgeOf;
+  size_t corners = 0;
+  for (Index f : faces)
+  {
+    corners += static_cast<size_t>(this->GetFaceSize(f));
+  }
+  IndexMap pointOf(points.size() + corners), edgeOf(corners);
   for (size_t p = 0; p < points.size(); ++p)
   {
-    pointOf.emplace(points[p], static_cast<Index>(p));
+    pointOf.Emplace(points[p], static_cast<Index>(p));
   }
   edges.clear();
   MeshTopology piece;
+  piece.FaceVertices.reserve(corners);
+  piece.FaceEdges.reserve(corners);
   for (Index f : faces)
   {
     const IndexSpan fv = this->GetFaceVertices(f), fe = this->GetFaceEdges(f);
     for (Index k = 0; k < fv.size(); ++k)
     {
-      const auto point = pointOf.emplace(fv[k], static_cast<Index>(points.size()));
+      const std::pair<Index, bool> point = pointOf.Emplace(fv[k], static_cast<Index>(points.size()));
       if (point.second)
       {
         points.push_back(fv[k]);
       }
-      piece.FaceVertices.push_back(point.first->second);
-      const auto edge = edgeOf.emplace(fe[k], static_cast<Index>(edges.size()));
+      piece.FaceVertices.push_back(point.first);
+      const std::pair<Index, bool> edge = edgeOf.Emplace(fe[k], static_cast<Index>(edges.size()));
       if (edge.second)
       {
         edges.push_back(fe[k]);
       }
-      piece.FaceEdges.push_back(edge.first->second);
+      piece.FaceEdges.push_back(edge.first);
     }
     piece.FaceOffsets.push_back(static_cast<Index>(piece.FaceVertices.size()));
   }
