@@ -3,20 +3,21 @@
 //
 // Method. Each face of the cage is one parameter domain (a quad, a Loop triangle, or for a
 // Catmull-Clark polygon that is not a quad, the quad at each of its corners, as the limit
-// evaluator parametrizes it). A domain is a quadtree of cells, split into four at their edge
-// midpoints (and centre, for quads) while
-// - adaptive: a cell's chords are farther from the limit surface than the tolerance (the limit
-//   at each side's midpoint against the side's chord, at the centre against the better
-//   diagonal), or
+// evaluator parametrizes it). A domain is a tree of cells with integer (dyadic) corners: a quad
+// cell is cut across u, across v or both, a triangle into four, while
+// - adaptive: a cell's chords stray from the limit surface by more than the tolerance,
+//   measured along the limit's normal (a side along u: cut across u; likewise v; only the
+//   diagonal or the centroids of its two triangles: both ways), or
 // - selective: the cell is coarser than the level its face asks for,
 // up to a deepest level. Cells are triangulated with every point of a finer neighbour on
-// their sides (in the same domain or across a cage edge) as a vertex: a cell with such points
-// becomes a fan around its centre, so that each side of the mesh is made of the same segments
-// from both sides: no cracks and no T-junctions. Points at one place (a cage vertex, a point of
-// a cage edge at a dyadic parameter, ...) have one key and become one output point.
-// Adaptive: every triangle is then checked at its edge midpoints and centroid against the
-// limit there, and a cell with a triangle off by more than the tolerance is split again, until
-// every triangle is within it (or its cell is at the deepest level).
+// their sides (in the same domain or across a cage edge) as a vertex, the polygon cut corner by
+// corner, so that each side of the mesh is made of the same segments from both sides: no cracks
+// and no T-junctions. Points at one place (a cage vertex, a point of a cage edge at a dyadic
+// parameter, ...) have one key and become one output point (on a seam of the cage's
+// face-varying channel, one per side). Adaptive: the triangles of cells with such points are
+// then checked at their edge midpoints and centroids, and a cell with a triangle off by more
+// than the tolerance is cut again, until every triangle holds (or its cell is at the deepest
+// level). The surface is evaluated in one batch per face and level.
 #ifndef vtkSubDAdaptiveTessellation_h
 #define vtkSubDAdaptiveTessellation_h
 
@@ -36,7 +37,7 @@ struct vtkSubDAdaptiveSettings
   std::vector<int> FaceLevels;
   /// The deepest level any face is refined to.
   int MaximumLevel = 10;
-  /// The most cells the quadtrees may hold before the request is refused.
+  /// The most cells the trees may hold before the request is refused.
   double MaximumCells = 1e8;
 };
 

@@ -14,18 +14,22 @@
  *   of the input cell it comes from, and "FaceId" names that cell; or
  * - adaptively (Tessellation ADAPTIVE): triangles within Tolerance of the limit surface
  *   (relative to the cage's bounding-box diagonal, or in the cage's units with
- *   ToleranceIsAbsolute), measured at each triangle's edge midpoints and centroid, with as few
- *   triangles as the refinement finds: each face's domain (a Catmull-Clark polygon that is not a
- *   quad: the quad at each corner) is a quadtree, split where the chords stray from the surface,
- *   down to MaximumLevel (2^MaximumLevel segments per face edge); a cell next to finer cells
- *   is a fan around its centre through their points, so the mesh is watertight, with no cracks
- *   and no T-junctions, across faces as within them. Triangles the deepest level could not
- *   bring within the tolerance are counted in a warning;
+ *   ToleranceIsAbsolute), measured along the limit's normal at each triangle's edge midpoints
+ *   and centroid, with as few triangles as the refinement finds: each face's domain (a
+ *   Catmull-Clark polygon that is not a quad: the quad at each corner) is a tree of cells,
+ *   a quad cut across u, across v or both where its chords stray from the surface (a Loop
+ *   triangle into four), down to MaximumLevel (2^MaximumLevel segments per face edge); a cell
+ *   takes every point of its finer neighbours on its sides as a vertex of its triangles, so
+ *   the mesh is watertight, with no cracks and no T-junctions, across faces as within them (a
+ *   restricted subdivision of the parameter domains in the manner of Von Herzen and Barr,
+ *   "Accurate triangulations of deformed, intersecting surfaces", SIGGRAPH 1987, here without
+ *   the 2:1 restriction, on the exact limit). Triangles the deepest level could not bring
+ *   within the tolerance are counted in a warning;
  * - selectively (Tessellation SELECTIVE): each face refined to the level its cell-data array
  *   RefineLevelArrayName (default "RefineLevel") asks for (clamped to 0..MaximumLevel), its
- *   points those of the uniform tessellation at Resolution 2^level, with the same crack-free
- *   fans where levels meet. Both give triangles, with "FaceId" as above and "RefineLevel",
- *   the level of the quadtree cell each lies in;
+ *   points those of the uniform tessellation at Resolution 2^level, crack-free where levels
+ *   meet as above. Both give triangles, with "FaceId" as above and "RefineLevel",
+ *   the level of the tree cell each lies in;
  * - at the locations given on the second input (SetLocationsConnection): any vtkDataSet
  *   whose point data has "FaceId" (the input cell id of a polygon) and "FaceUV" (2
  *   components: (u, v) in the unit square of a quad, corners 0..3 at (0,0), (1,0), (1,1),

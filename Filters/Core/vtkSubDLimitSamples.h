@@ -27,7 +27,7 @@ struct vtkSubDLimitSamples
   vtkIdType Count = 0;
   vtkNew<vtkCellArray> Cells;
   vtkNew<vtkIdTypeArray> CellFace;
-  /// Adaptive and selective tessellations: per cell, the level of the quadtree cell it lies in
+  /// Adaptive and selective tessellations: per cell, the level of the tree cell it lies in
   /// (as a face's level: 2^level segments per face edge); empty otherwise.
   std::vector<int> CellLevels;
   /// (point, the first point at its place) for each point on the second side of a seam: the
