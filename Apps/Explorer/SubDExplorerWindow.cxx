@@ -54,12 +54,6 @@ namespace subdexplorer
 {
 namespace
 {
-// The schemes whose limit surface the Tolerance control tessellates.
-bool AdaptiveScheme(const subdapp::SchemeEntry* entry)
-{
-  return entry && (entry->Name == "catmull-clark" || entry->Name == "loop");
-}
-
 const char* const DefaultSchemes[ExplorerWindow::MaxViews] = { "catmull-clark", "loop", "butterfly", "doo-sabin" };
 
 // Ctrl+click selects the cage edge or vertex under the mouse (and is not passed on to the
@@ -740,7 +734,7 @@ subdapp::SchemeOptions ExplorerWindow::ViewOptions(int v) const
   options.ProjectToLimit = view.Limit->isChecked() && entry->LimitPositions;
   options.LimitCurvature = options.ProjectToLimit && entry->LimitCurvature &&
     this->Scene->GetColoring() != vtkSubDScene::COLOR_NONE;
-  if (AdaptiveScheme(entry) && this->GetTolerance() > 0.0)
+  if (entry->LimitCurvature && this->GetTolerance() > 0.0) // the schemes with an exact limit
   {
     options.Tolerance = this->GetTolerance();
     options.Levels = 12; // as deep as the tolerance needs: subd --tolerance's default

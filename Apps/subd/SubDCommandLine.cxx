@@ -584,29 +584,24 @@ Parsed ParseSurfaceSetting(ArgumentReader& arguments, CommandLine& cmd, std::str
     return ParseDouble(text, cmd.Options.Tension) ? Parsed::Done
                                                   : Fail("--tension wants a number, not '" + text + "'", error);
   }
-  if (arg == "--tolerance")
-  {
+  // A surface option taking a number that `inRange` accepts.
+  auto number = [&](double& value, bool (*inRange)(double), const char* wants) {
     cmd.SurfaceOptions.push_back(arg);
     if (!arguments.Value(text, error))
     {
       return Parsed::Failed;
     }
-    double& tolerance = cmd.Options.Tolerance;
-    return ParseDouble(text, tolerance) && tolerance > 0.0 && tolerance < 1.0
-      ? Parsed::Done
-      : Fail("--tolerance wants a fraction of the bounding-box diagonal in (0, 1), not '" + text + "'", error);
+    return ParseDouble(text, value) && inRange(value) ? Parsed::Done
+                                                      : Fail(arg + " wants " + wants + ", not '" + text + "'", error);
+  };
+  if (arg == "--tolerance")
+  {
+    return number(cmd.Options.Tolerance, [](double t) { return t > 0.0 && t < 1.0; },
+      "a fraction of the bounding-box diagonal in (0, 1)");
   }
   if (arg == "--feature-angle")
   {
-    cmd.SurfaceOptions.push_back(arg);
-    if (!arguments.Value(text, error))
-    {
-      return Parsed::Failed;
-    }
-    double& angle = cmd.Options.FeatureAngle;
-    return ParseDouble(text, angle) && angle > 0.0 && angle <= 180.0
-      ? Parsed::Done
-      : Fail("--feature-angle wants degrees in (0, 180], not '" + text + "'", error);
+    return number(cmd.Options.FeatureAngle, [](double a) { return a > 0.0 && a <= 180.0; }, "degrees in (0, 180]");
   }
   return Parsed::NotHere;
 }
@@ -796,7 +791,7 @@ bool CheckTolerance(CommandLine& cmd, std::string& error)
   {
     return true;
   }
-  if (cmd.Scheme != "catmull-clark" && cmd.Scheme != "loop")
+  if (!FindScheme(cmd.Scheme)->LimitCurvature)
   {
     error = "--tolerance tessellates the limit surface of catmull-clark or loop, not of " + cmd.Scheme;
     return false;

@@ -55,7 +55,9 @@ struct SchemeEntry
   std::string Summary;
   bool Curve;          ///< refines the input's lines (vtkSubDCurveFilter), not its polygons
   bool LimitPositions; ///< ProjectToLimit works (limit masks, or interpolating)
-  bool LimitCurvature; ///< exact limit normals and curvature (LimitNormals, LimitCurvature)
+  /// The exact limit evaluator: limit normals and curvature (LimitNormals, LimitCurvature), and
+  /// the adaptive tessellation of the limit (Tolerance).
+  bool LimitCurvature;
   /// A configured filter for the options.
   vtkSmartPointer<vtkPolyDataAlgorithm> (*Make)(const SchemeOptions&);
   /// --interpolate: the Scheme of vtkSubDInterpolateFilter (surfaces) or of

@@ -278,31 +278,6 @@ bool ReadFaceLevels(vtkPolyData* input, const char* name, const vtkSubDCage& cag
   return true;
 }
 
-// The largest distance allowed, in the cage's units: `tolerance` times the diagonal of the
-// cage's bounding box unless `absolute`.
-double AbsoluteTolerance(const vtkSubDCage& cage, double tolerance, bool absolute)
-{
-  if (absolute || cage.Points.empty())
-  {
-    return tolerance;
-  }
-  double lo[3], hi[3];
-  for (int j = 0; j < 3; ++j)
-  {
-    lo[j] = hi[j] = cage.Points[j];
-  }
-  for (size_t i = 0; i < cage.Points.size(); i += 3)
-  {
-    for (int j = 0; j < 3; ++j)
-    {
-      lo[j] = std::min(lo[j], cage.Points[i + j]);
-      hi[j] = std::max(hi[j], cage.Points[i + j]);
-    }
-  }
-  const double d[3] = { hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2] };
-  return tolerance * std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-}
-
 // "FaceId", "FaceUV", "SubFace": where each point of a tessellation was evaluated.
 void AddLocations(const vtkSubDCage& cage, const vtkSubDLimitSamples& samples, vtkPointData* pd)
 {
@@ -520,7 +495,8 @@ bool vtkSubDLimitFilter::Tessellate(vtkPolyData* input, const vtkSubDCage& cage,
       vtkErrorMacro(<< "Tolerance must be a positive number, not " << this->Tolerance << ".");
       return false;
     }
-    settings.Tolerance = AbsoluteTolerance(cage, this->Tolerance, this->ToleranceIsAbsolute);
+    // In the cage's units: a fraction of its bounding-box diagonal unless absolute.
+    settings.Tolerance = this->Tolerance * (this->ToleranceIsAbsolute ? 1.0 : input->GetLength());
   }
   else if (!ReadFaceLevels(input, this->RefineLevelArrayName, cage, settings.FaceLevels, error))
   {

@@ -234,9 +234,7 @@ int main(int argc, char* argv[])
     return 1;
   }
   subdbench::StartThreads(0);
-  double b[6];
-  cage->GetBounds(b);
-  const double diagonal = std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
+  const double diagonal = cage->GetLength();
   std::printf("%s, %s limit, %lld faces, %d threads\n", name.c_str(), scheme == vtkSubDLimitFilter::LOOP ? "loop" : "catmull-clark",
     static_cast<long long>(cage->GetNumberOfPolys()), vtkSMPTools::GetEstimatedNumberOfThreads());
   std::printf("%-9s %12s %9s %11s %12s %9s %9s %12s\n", "tolerance", "adaptive", "time s", "uniform R", "uniform",

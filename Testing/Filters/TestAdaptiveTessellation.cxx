@@ -59,13 +59,6 @@ vtkSmartPointer<vtkPolyData> Tessellate(vtkPolyData* cage, bool loop, int mode, 
   return triangles->GetOutput();
 }
 
-double Diagonal(vtkPolyData* mesh)
-{
-  double b[6];
-  mesh->GetBounds(b);
-  return std::sqrt((b[1] - b[0]) * (b[1] - b[0]) + (b[3] - b[2]) * (b[3] - b[2]) + (b[5] - b[4]) * (b[5] - b[4]));
-}
-
 // The largest distance from a point of a triangle (its corners, edge midpoints, centroid) of
 // `mesh` to `reference`, a dense tessellation of the surface.
 double LargestDistanceTo(vtkPolyData* mesh, vtkPolyData* reference)
@@ -202,7 +195,7 @@ TEST(AdaptiveTessellation, WatertightAndWithinTheToleranceOfTheLimit)
     // The reference: a uniform tessellation fine enough that its own chords are far inside
     // the tolerances below.
     vtkSmartPointer<vtkPolyData> dense = Tessellate(cage.Mesh, cage.Loop, vtkSubDLimitFilter::UNIFORM, 0, 64);
-    const double diagonal = Diagonal(cage.Mesh);
+    const double diagonal = cage.Mesh->GetLength();
     for (double tolerance : { 1e-2, 2e-3 })
     {
       vtkSmartPointer<vtkPolyData> out = Tessellate(cage.Mesh, cage.Loop, vtkSubDLimitFilter::ADAPTIVE, tolerance);
@@ -228,7 +221,7 @@ TEST(AdaptiveTessellation, WatertightAndWithinTheToleranceOfTheLimit)
 TEST(AdaptiveTessellation, FlatRegionsTakeFewTriangles)
 {
   vtkSmartPointer<vtkPolyData> box = RoundedBox(0.9, 4);
-  const double diagonal = Diagonal(box);
+  const double diagonal = box->GetLength();
   vtkSmartPointer<vtkPolyData> dense = Tessellate(box, false, vtkSubDLimitFilter::UNIFORM, 0, 64);
   for (double tolerance : { 1e-3, 3e-4 })
   {
