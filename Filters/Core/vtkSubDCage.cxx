@@ -34,6 +34,40 @@ vtkSubDSeams WeldSeams(vtkPolyData* input, subd::FaceScreening& screened, std::s
   }
   return seams;
 }
+
+// False, naming the first, when a face is not a triangle.
+bool OnlyTriangles(
+  const subd::FaceScreening& screened, const subd::LevelArray<vtkIdType>& faceCell, std::string& error)
+{
+  for (size_t f = 0; f + 1 < screened.Offsets.size(); ++f)
+  {
+    const subd::Index size = screened.Offsets[f + 1] - screened.Offsets[f];
+    if (size != 3)
+    {
+      error = "cell " + std::to_string(faceCell[f]) + " has " + std::to_string(size) +
+        " points; Loop needs triangles (use vtkTriangleFilter)";
+      return false;
+    }
+  }
+  return true;
+}
+
+// Each input cell's face; a polygon split into triangles is no face of its own (its triangles
+// are consecutive): locations cannot name it.
+std::unordered_map<vtkIdType, subd::Index> FacesOfWholeCells(const subd::LevelArray<vtkIdType>& faceCell)
+{
+  std::unordered_map<vtkIdType, subd::Index> faceOf;
+  for (size_t f = 0; f < faceCell.size(); ++f)
+  {
+    const bool whole =
+      (f == 0 || faceCell[f - 1] != faceCell[f]) && (f + 1 == faceCell.size() || faceCell[f + 1] != faceCell[f]);
+    if (whole)
+    {
+      faceOf.emplace(faceCell[f], static_cast<subd::Index>(f));
+    }
+  }
+  return faceOf;
+}
 }
 
 bool vtkSubDReadCage(vtkPolyData* input, vtkSubDCageFaces kind, subd::RepeatedCorners repeated,
@@ -74,15 +108,9 @@ bool vtkSubDReadCage(vtkPolyData* input, vtkSubDCageFaces kind, subd::RepeatedCo
   {
     cage.FaceCell.push_back(faces.CellIdOf(f, numPolys));
   }
-  for (size_t f = 0; f + 1 < screened.Offsets.size() && kind == vtkSubDCageFaces::Triangles; ++f)
+  if (kind == vtkSubDCageFaces::Triangles && !OnlyTriangles(screened, cage.FaceCell, error))
   {
-    const subd::Index size = screened.Offsets[f + 1] - screened.Offsets[f];
-    if (size != 3)
-    {
-      error = "cell " + std::to_string(cage.FaceCell[f]) + " has " + std::to_string(size) +
-        " points; Loop needs triangles (use vtkTriangleFilter)";
-      return false;
-    }
+    return false;
   }
   if (screened.KeptFaces.empty())
   {
@@ -110,16 +138,7 @@ bool vtkSubDReadCage(vtkPolyData* input, vtkSubDCageFaces kind, subd::RepeatedCo
   std::vector<subd::Index> unmatched;
   const subd::BaseTags tags = features.ToBaseTags(topology, input->GetPoints(), 0.0, creasing, unmatched);
   cage.Level = subd::MakeBaseLevel(std::move(topology), tags, rule);
-  // A polygon split into triangles is no face of its own: locations cannot name it.
-  for (size_t f = 0; f < cage.FaceCell.size(); ++f)
-  {
-    const bool whole = (f == 0 || cage.FaceCell[f - 1] != cage.FaceCell[f]) &&
-      (f + 1 == cage.FaceCell.size() || cage.FaceCell[f + 1] != cage.FaceCell[f]);
-    if (whole)
-    {
-      cage.FaceOfCell.emplace(cage.FaceCell[f], static_cast<subd::Index>(f));
-    }
-  }
+  cage.FaceOfCell = FacesOfWholeCells(cage.FaceCell);
   return true;
 }
 

@@ -147,15 +147,50 @@ FaceSample LimitEvaluator::CornerSample(Index faceSize, Index corner, bool quads
   return sample;
 }
 
-bool LimitEvaluator::EvaluateFace(Index face, const std::vector<FaceSample>& samples, std::vector<LimitStencil>& out,
-  std::string& error, int rows) const
+namespace
 {
-  rows = std::max(1, std::min(rows, static_cast<int>(NumPatchDerivatives)));
-  out.assign(samples.size(), LimitStencil());
-  if (!this->IsValid(error))
+// The stencils of samples in a regular patch: its basis over its points (a phantom point's
+// weights spread over the points it is made of).
+void RegularPatchStencils(
+  PatchKind kind, const RegularPatch& patch, const std::vector<FaceSample>& samples, std::vector<LimitStencil>& out)
+{
+  std::vector<Index> points;
+  for (int i = 0; i < patch.NumPoints; ++i)
   {
-    return false;
+    for (int k = 0; k < patch.Points[i].Count; ++k)
+    {
+      if (std::find(points.begin(), points.end(), patch.Points[i].Points[k]) == points.end())
+      {
+        points.push_back(patch.Points[i].Points[k]);
+      }
+    }
   }
+  const size_t n = points.size();
+  for (size_t s = 0; s < samples.size(); ++s)
+  {
+    double basis[NumPatchDerivatives][16];
+    EvaluatePatchBasis(kind, samples[s].U, samples[s].V, basis);
+    LimitStencil& stencil = out[s];
+    stencil.Points = points;
+    stencil.Weights.assign(NumPatchDerivatives * n, 0.0);
+    for (int i = 0; i < patch.NumPoints; ++i)
+    {
+      const PatchPoint& pp = patch.Points[i];
+      for (int k = 0; k < pp.Count; ++k)
+      {
+        const size_t slot = std::find(points.begin(), points.end(), pp.Points[k]) - points.begin();
+        for (int d = 0; d < NumPatchDerivatives; ++d)
+        {
+          stencil.Weights[d * n + slot] += basis[d][i] * pp.Weights[k];
+        }
+      }
+    }
+  }
+}
+}
+
+bool LimitEvaluator::CheckSamples(Index face, const std::vector<FaceSample>& samples, std::string& error) const
+{
   const MeshTopology& topo = this->TheLevel.Topology;
   if (face < 0 || face >= topo.GetNumFaces())
   {
@@ -188,43 +223,30 @@ bool LimitEvaluator::EvaluateFace(Index face, const std::vector<FaceSample>& sam
       return false;
     }
   }
+  return true;
+}
+
+bool LimitEvaluator::EvaluateFace(Index face, const std::vector<FaceSample>& samples, std::vector<LimitStencil>& out,
+  std::string& error, int rows) const
+{
+  rows = std::max(1, std::min(rows, static_cast<int>(NumPatchDerivatives)));
+  out.assign(samples.size(), LimitStencil());
+  if (!this->IsValid(error))
+  {
+    return false;
+  }
+  if (!this->CheckSamples(face, samples, error))
+  {
+    return false;
+  }
+  const Index size = this->TheLevel.Topology.GetFaceSize(face);
+  const bool splitFirst = this->Kind == PatchKind::BSpline && size != 4;
 
   // Regular faces: the patch, straight from the level.
   RegularPatch patch;
   if (!splitFirst && GatherRegularPatch(this->TheLevel, face, this->Kind, patch))
   {
-    std::vector<Index> points;
-    for (int i = 0; i < patch.NumPoints; ++i)
-    {
-      for (int k = 0; k < patch.Points[i].Count; ++k)
-      {
-        if (std::find(points.begin(), points.end(), patch.Points[i].Points[k]) == points.end())
-        {
-          points.push_back(patch.Points[i].Points[k]);
-        }
-      }
-    }
-    const size_t n = points.size();
-    for (size_t s = 0; s < samples.size(); ++s)
-    {
-      double basis[NumPatchDerivatives][16];
-      EvaluatePatchBasis(this->Kind, samples[s].U, samples[s].V, basis);
-      LimitStencil& stencil = out[s];
-      stencil.Points = points;
-      stencil.Weights.assign(NumPatchDerivatives * n, 0.0);
-      for (int i = 0; i < patch.NumPoints; ++i)
-      {
-        const PatchPoint& pp = patch.Points[i];
-        for (int k = 0; k < pp.Count; ++k)
-        {
-          const size_t slot = std::find(points.begin(), points.end(), pp.Points[k]) - points.begin();
-          for (int d = 0; d < NumPatchDerivatives; ++d)
-          {
-            stencil.Weights[d * n + slot] += basis[d][i] * pp.Weights[k];
-          }
-        }
-      }
-    }
+    RegularPatchStencils(this->Kind, patch, samples, out);
     return true;
   }
 
@@ -368,22 +390,10 @@ bool LimitEvaluator::Descend(const LocalLevel& local, Index face, std::vector<Pe
         " could not be evaluated (no regular patch after " + std::to_string(depth) + " levels)";
       return false;
     }
-    if (depth == CurvatureDepth && !p.ForCurvature && p.Rows == NumPatchDerivatives)
+    if (depth == CurvatureDepth && !p.ForCurvature && p.Rows == NumPatchDerivatives &&
+      !this->ReadCurvatureAtCentre(local, face, frame, depth, p, error))
     {
-      // Within 2^-CurvatureDepth of an irregular vertex curvature is read at the centre of
-      // this face, as at the vertex itself (EvaluateCorner).
-      double centre[2] = { size == 4 ? 0.5 : 1.0 / 3.0, size == 4 ? 0.5 : 1.0 / 3.0 };
-      LimitStencil nearby;
-      nearby.Points = p.Out->Points;
-      nearby.Weights.assign(p.Out->Weights.size(), 0.0);
-      std::vector<Pending> aux{ { { centre[0], centre[1] }, &nearby, true, NumPatchDerivatives } };
-      if (!this->Descend(local, face, aux, frame, depth, error))
-      {
-        return false;
-      }
-      std::copy(nearby.Weights.begin() + PatchDuu * n, nearby.Weights.end(), p.Out->Weights.begin() + PatchDuu * n);
-      p.Out->CurvatureWeights = std::move(nearby.Weights);
-      p.Rows = 3;
+      return false;
     }
     rest.push_back(p);
   }
@@ -391,6 +401,38 @@ bool LimitEvaluator::Descend(const LocalLevel& local, Index face, std::vector<Pe
   {
     return true;
   }
+  return this->DescendIntoChildren(local, face, rest, frame, depth, error);
+}
+
+// Within 2^-CurvatureDepth of an irregular vertex, curvature is read at the centre of this
+// face, as at the vertex itself (EvaluateCorner): the sample's second derivatives and curvature
+// rows from there; its first rows are still to be written.
+bool LimitEvaluator::ReadCurvatureAtCentre(const LocalLevel& local, Index face, const ParamFrame& frame, int depth,
+  Pending& p, std::string& error) const
+{
+  const Index size = this->Kind == PatchKind::BSpline ? 4 : 3;
+  const size_t n = static_cast<size_t>(local.SupportSize);
+  const double centre[2] = { size == 4 ? 0.5 : 1.0 / 3.0, size == 4 ? 0.5 : 1.0 / 3.0 };
+  LimitStencil nearby;
+  nearby.Points = p.Out->Points;
+  nearby.Weights.assign(p.Out->Weights.size(), 0.0);
+  std::vector<Pending> aux{ { { centre[0], centre[1] }, &nearby, true, NumPatchDerivatives } };
+  if (!this->Descend(local, face, aux, frame, depth, error))
+  {
+    return false;
+  }
+  std::copy(nearby.Weights.begin() + PatchDuu * n, nearby.Weights.end(), p.Out->Weights.begin() + PatchDuu * n);
+  p.Out->CurvatureWeights = std::move(nearby.Weights);
+  p.Rows = 3;
+  return true;
+}
+
+// Refines the face's neighbourhood once and hands each sample to the child face that holds
+// it, in the child's parameters.
+bool LimitEvaluator::DescendIntoChildren(const LocalLevel& local, Index face, std::vector<Pending>& rest,
+  const ParamFrame& frame, int depth, std::string& error) const
+{
+  const Index size = this->Kind == PatchKind::BSpline ? 4 : 3;
   const LocalLevel refined = RefineLocalLevel(this->TheScheme, local);
   std::vector<bool> placed(rest.size(), false);
   for (Index child : ChildOrder(local.Mesh, face, size, this->Kind))

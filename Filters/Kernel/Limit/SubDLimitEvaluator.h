@@ -100,6 +100,11 @@ public:
 
 private:
   struct Pending;
+  bool CheckSamples(Index face, const std::vector<FaceSample>& samples, std::string& error) const;
+  bool ReadCurvatureAtCentre(const LocalLevel& local, Index face, const ParamFrame& frame, int depth, Pending& p,
+    std::string& error) const;
+  bool DescendIntoChildren(const LocalLevel& local, Index face, std::vector<Pending>& rest, const ParamFrame& frame,
+    int depth, std::string& error) const;
   bool Descend(const LocalLevel& local, Index face, std::vector<Pending>& pending, const ParamFrame& frame,
     int depth, std::string& error) const;
   void EvaluateRegular(const LocalLevel& local, const RegularPatch& patch, const double p[2],
